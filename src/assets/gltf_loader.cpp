@@ -1,0 +1,339 @@
+// glTF 2.0 (.gltf and .glb) through tinygltf. The node hierarchy of the
+// default scene is flattened: every mesh instance becomes parts with its
+// world transform baked in. Follows the glTF 2.0 specification §3.6-3.9.
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <set>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+
+#include "assets/mesh.hpp"
+#include "core/error.hpp"
+
+namespace facet {
+namespace {
+
+// Deep hierarchies beyond this are almost certainly cycles or hostile files.
+constexpr int kMaxNodeDepth = 256;
+
+constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
+constexpr int kWrapClamp = 33071;
+
+[[noreturn]] void bad(const std::string& path, const std::string& what) {
+    throw Error(ExitCode::invalid_input, path + ": " + what);
+}
+
+double read_component(const uint8_t* p, int type, bool normalized) {
+    switch (type) {
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: { uint8_t v = *p; return normalized ? v / 255.0 : v; }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return normalized ? std::max(v / 127.0, -1.0) : v; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0 : v; }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0, -1.0) : v; }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
+        default: return 0;
+    }
+}
+
+// The bytes of a buffer view region, bounds-checked.
+const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t offset, size_t stride,
+                          size_t count, size_t element_size, const std::string& path,
+                          const std::string& what) {
+    if (view_index < 0 || static_cast<size_t>(view_index) >= model.bufferViews.size())
+        bad(path, what + " refers to missing bufferView " + std::to_string(view_index));
+    const auto& view = model.bufferViews[view_index];
+    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
+        bad(path, what + ": bufferView refers to missing buffer " + std::to_string(view.buffer));
+    const auto& buffer = model.buffers[view.buffer];
+    if (view.byteOffset + view.byteLength > buffer.data.size())
+        bad(path, what + ": bufferView runs past the end of its buffer (is the .bin missing or short?)");
+    if (count > 0 && offset + stride * (count - 1) + element_size > view.byteLength)
+        bad(path, what + ": data runs past the end of its bufferView");
+    return buffer.data.data() + view.byteOffset + offset;
+}
+
+// Reads an accessor as floats, `components` per element, applying sparse substitution.
+std::vector<float> read_floats(const tinygltf::Model& model, int index, int components,
+                               const std::string& path, const std::string& what) {
+    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
+        bad(path, what + " refers to missing accessor " + std::to_string(index));
+    const auto& acc = model.accessors[index];
+    int have = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(acc.type));
+    if (have != components)
+        bad(path, what + " has " + std::to_string(have) + " components per element, expected " +
+                      std::to_string(components));
+    int comp_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
+    if (comp_size <= 0) bad(path, what + " has an unknown component type");
+    std::vector<float> out(acc.count * components, 0.0f);
+    size_t element = static_cast<size_t>(comp_size) * components;
+    if (acc.bufferView >= 0) {
+        const auto& view = model.bufferViews.at(acc.bufferView);
+        size_t stride = view.byteStride ? view.byteStride : element;
+        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count,
+                                         element, path, what);
+        for (size_t i = 0; i < acc.count; ++i)
+            for (int c = 0; c < components; ++c)
+                out[i * components + c] = static_cast<float>(
+                    read_component(base + i * stride + c * comp_size, acc.componentType, acc.normalized));
+    }
+    if (acc.sparse.isSparse) {
+        const auto& sp = acc.sparse;
+        int index_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(sp.indices.componentType));
+        if (index_size <= 0) bad(path, what + ": sparse indices have an unknown type");
+        const uint8_t* idx = view_bytes(model, sp.indices.bufferView, sp.indices.byteOffset,
+                                        index_size, sp.count, index_size, path, what + " (sparse indices)");
+        const uint8_t* val = view_bytes(model, sp.values.bufferView, sp.values.byteOffset, element,
+                                        sp.count, element, path, what + " (sparse values)");
+        for (int i = 0; i < sp.count; ++i) {
+            auto target = static_cast<size_t>(read_component(idx + i * index_size, sp.indices.componentType, false));
+            if (target >= acc.count) bad(path, what + ": sparse index out of range");
+            for (int c = 0; c < components; ++c)
+                out[target * components + c] = static_cast<float>(
+                    read_component(val + i * element + c * comp_size, acc.componentType, acc.normalized));
+        }
+    }
+    for (float f : out)
+        if (!std::isfinite(f)) bad(path, what + " contains a value that is not finite");
+    return out;
+}
+
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& path) {
+    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
+        bad(path, "primitive indices refer to missing accessor " + std::to_string(index));
+    const auto& acc = model.accessors[index];
+    if (acc.type != TINYGLTF_TYPE_SCALAR) bad(path, "index accessor is not SCALAR");
+    int size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
+    if (acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
+        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
+        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
+        bad(path, "index accessor must be unsigned byte, short or int");
+    std::vector<uint32_t> out(acc.count, 0);
+    if (acc.bufferView >= 0) {
+        const auto& view = model.bufferViews.at(acc.bufferView);
+        size_t stride = view.byteStride ? view.byteStride : size;
+        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count, size, path, "indices");
+        for (size_t i = 0; i < acc.count; ++i)
+            out[i] = static_cast<uint32_t>(read_component(base + i * stride, acc.componentType, false));
+    }
+    return out;
+}
+
+glm::mat4 node_matrix(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        glm::dmat4 m;
+        std::memcpy(glm::value_ptr(m), node.matrix.data(), sizeof(double) * 16);  // column-major
+        return glm::mat4(m);
+    }
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3)
+        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (node.rotation.size() == 4) {
+        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // w, x, y, z
+        m = m * glm::mat4_cast(glm::normalize(q));
+    }
+    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return glm::mat4(m);
+}
+
+std::vector<uint32_t> triangle_list(int mode, const std::vector<uint32_t>& idx) {
+    std::vector<uint32_t> tris;
+    if (mode == kModeTriangles) {
+        tris.assign(idx.begin(), idx.begin() + (idx.size() / 3) * 3);
+    } else if (mode == kModeStrip) {
+        for (size_t i = 2; i < idx.size(); ++i) {
+            // Every other triangle of a strip is reversed to keep one winding (glTF §3.7.2.1).
+            if (i % 2 == 0) tris.insert(tris.end(), {idx[i - 2], idx[i - 1], idx[i]});
+            else tris.insert(tris.end(), {idx[i - 1], idx[i - 2], idx[i]});
+        }
+    } else if (mode == kModeFan) {
+        for (size_t i = 2; i < idx.size(); ++i) tris.insert(tris.end(), {idx[0], idx[i - 1], idx[i]});
+    }
+    return tris;
+}
+
+}  // namespace
+
+Mesh load_gltf(const std::string& path) {
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    bool binary = std::filesystem::path(path).extension() == ".glb" ||
+                  std::filesystem::path(path).extension() == ".GLB";
+    bool ok = false;
+    try {
+        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    } catch (const std::exception& e) {
+        err = e.what();
+    }
+    auto trim = [](std::string s) {
+        while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+        return s;
+    };
+    if (!ok) bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
+
+    Mesh mesh;
+    mesh.source = path;
+    if (!warn.empty()) mesh.warnings.push_back(trim(warn));
+    for (size_t i = 0; i < model.animations.size(); ++i)
+        mesh.animations.push_back(model.animations[i].name.empty() ? "animation" + std::to_string(i)
+                                                                   : model.animations[i].name);
+
+    // Materials, with textures decoded once each.
+    std::map<int, std::shared_ptr<const Texture>> textures;
+    auto texture_for = [&](int tex_index) -> std::shared_ptr<const Texture> {
+        if (tex_index < 0) return nullptr;
+        if (static_cast<size_t>(tex_index) >= model.textures.size())
+            bad(path, "material refers to missing texture " + std::to_string(tex_index));
+        auto& slot = textures[tex_index];
+        if (slot) return slot;
+        const auto& t = model.textures[tex_index];
+        if (t.source < 0 || static_cast<size_t>(t.source) >= model.images.size())
+            bad(path, "texture " + std::to_string(tex_index) + " has no image");
+        const auto& img = model.images[t.source];
+        if (img.image.empty()) bad(path, "image '" + img.uri + "' could not be decoded");
+        if (img.image.size() < static_cast<size_t>(img.width) * img.height * img.component * (img.bits / 8))
+            bad(path, "image '" + img.uri + "' has fewer bytes than its size says");
+        Texture tex;
+        try {
+            tex = texture_from_pixels(img.width, img.height, img.component, img.bits, img.image.data());
+        } catch (const Error& e) {
+            bad(path, "image '" + img.uri + "': " + e.what());
+        }
+        if (t.sampler >= 0 && static_cast<size_t>(t.sampler) < model.samplers.size())
+            tex.wrap = model.samplers[t.sampler].wrapS == kWrapClamp ? Wrap::clamp : Wrap::repeat;
+        slot = std::make_shared<Texture>(std::move(tex));
+        return slot;
+    };
+    for (const auto& m : model.materials) {
+        Material mat;
+        mat.name = m.name;
+        const auto& pbr = m.pbrMetallicRoughness;
+        if (pbr.baseColorFactor.size() >= 3)
+            mat.color = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
+        mat.texture = texture_for(pbr.baseColorTexture.index);
+        // A Phong reading of metal/roughness: smoother surfaces get tighter,
+        // stronger highlights (documented in docs/scene-format.md).
+        float roughness = static_cast<float>(std::clamp(pbr.roughnessFactor, 0.05, 1.0));
+        mat.shininess = std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
+        mat.shininess = std::max(mat.shininess, 1.0f);
+        mat.specular = 0.15f + 0.6f * (1.0f - roughness);
+        mat.double_sided = m.doubleSided;
+        mesh.materials.push_back(mat);
+    }
+    const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
+    mesh.materials.push_back(Material{"default", glm::vec3(1), 0.1f, 0.8f, 0.4f, 32, nullptr, false});
+
+    auto add_mesh = [&](int mesh_index, const glm::mat4& world) {
+        if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= model.meshes.size())
+            bad(path, "node refers to missing mesh " + std::to_string(mesh_index));
+        glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(world));
+        bool mirrored = glm::determinant(glm::mat3(world)) < 0;
+        const auto& gm = model.meshes[mesh_index];
+        for (size_t p = 0; p < gm.primitives.size(); ++p) {
+            const auto& prim = gm.primitives[p];
+            std::string what = "mesh '" + gm.name + "' primitive " + std::to_string(p);
+            int mode = prim.mode < 0 ? kModeTriangles : prim.mode;
+            if (mode != kModeTriangles && mode != kModeStrip && mode != kModeFan) {
+                mesh.warnings.push_back(what + ": points and lines are not rendered");
+                continue;
+            }
+            auto pos_it = prim.attributes.find("POSITION");
+            if (pos_it == prim.attributes.end()) {
+                mesh.warnings.push_back(what + ": no POSITION attribute, skipped");
+                continue;
+            }
+            MeshPart part;
+            auto pos = read_floats(model, pos_it->second, 3, path, what + " POSITION");
+            size_t count = pos.size() / 3;
+            for (size_t i = 0; i < count; ++i)
+                part.positions.push_back(glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1)));
+            bool has_normals = false;
+            if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
+                auto nrm = read_floats(model, it->second, 3, path, what + " NORMAL");
+                if (nrm.size() / 3 != count) bad(path, what + ": NORMAL count differs from POSITION count");
+                for (size_t i = 0; i < count; ++i) {
+                    glm::vec3 n = normal_matrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                    float len = glm::length(n);
+                    part.normals.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
+                }
+                has_normals = true;
+            }
+            part.material = default_material;
+            int uv_set = 0;
+            if (prim.material >= 0) {
+                if (static_cast<size_t>(prim.material) >= model.materials.size())
+                    bad(path, what + " refers to missing material " + std::to_string(prim.material));
+                part.material = static_cast<uint32_t>(prim.material);
+                uv_set = model.materials[prim.material].pbrMetallicRoughness.baseColorTexture.texCoord;
+            }
+            if (auto it = prim.attributes.find("TEXCOORD_" + std::to_string(uv_set)); it != prim.attributes.end()) {
+                auto uv = read_floats(model, it->second, 2, path, what + " TEXCOORD");
+                if (uv.size() / 2 != count) bad(path, what + ": TEXCOORD count differs from POSITION count");
+                for (size_t i = 0; i < count; ++i) part.uvs.push_back({uv[2 * i], uv[2 * i + 1]});
+            }
+            std::vector<uint32_t> idx;
+            if (prim.indices >= 0) {
+                idx = read_indices(model, prim.indices, path);
+            } else {
+                idx.resize(count);
+                for (size_t i = 0; i < count; ++i) idx[i] = static_cast<uint32_t>(i);
+            }
+            for (uint32_t i : idx)
+                if (i >= count) bad(path, what + ": index " + std::to_string(i) + " is out of range (" +
+                                              std::to_string(count) + " vertices)");
+            part.indices = triangle_list(mode, idx);
+            if (mirrored)
+                for (size_t t = 0; t + 2 < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
+            if (part.indices.empty()) continue;
+            // glTF §3.7.2.1: without normals, flat normals are used.
+            if (!has_normals) compute_normals(part, 0.0f);
+            validate_part(part, path);
+            mesh.parts.push_back(std::move(part));
+        }
+    };
+
+    std::function<void(int, const glm::mat4&, int, std::set<int>&)> visit =
+        [&](int node_index, const glm::mat4& parent, int depth, std::set<int>& on_path) {
+            if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size())
+                bad(path, "scene refers to missing node " + std::to_string(node_index));
+            if (depth > kMaxNodeDepth || on_path.count(node_index))
+                bad(path, "node hierarchy has a cycle through node " + std::to_string(node_index));
+            on_path.insert(node_index);
+            const auto& node = model.nodes[node_index];
+            glm::mat4 world = parent * node_matrix(node);
+            if (node.mesh >= 0) add_mesh(node.mesh, world);
+            for (int child : node.children) visit(child, world, depth + 1, on_path);
+            on_path.erase(node_index);
+        };
+
+    std::vector<int> roots;
+    if (!model.scenes.empty()) {
+        int scene = model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
+                        ? model.defaultScene : 0;
+        roots = model.scenes[scene].nodes;
+    } else {
+        // No scene: every node that is nobody's child is a root.
+        std::vector<bool> is_child(model.nodes.size(), false);
+        for (const auto& n : model.nodes)
+            for (int c : n.children)
+                if (c >= 0 && static_cast<size_t>(c) < is_child.size()) is_child[c] = true;
+        for (size_t i = 0; i < model.nodes.size(); ++i)
+            if (!is_child[i]) roots.push_back(static_cast<int>(i));
+    }
+    std::set<int> on_path;
+    for (int root : roots) visit(root, glm::mat4(1.0f), 0, on_path);
+    if (mesh.triangle_count() == 0) bad(path, "the glTF file has no triangles to render");
+    return mesh;
+}
+
+}  // namespace facet

@@ -1,0 +1,72 @@
+#pragma once
+// Triangle meshes as loaded from files or built procedurally. A mesh is a list
+// of parts; each part has one material and its own indexed vertices.
+#include <cstdint>
+#include <limits>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "assets/texture.hpp"
+
+namespace facet {
+
+struct Material {
+    std::string name;
+    glm::vec3 color = {0.8f, 0.8f, 0.8f};  // linear base colour
+    float ambient = 0.1f;
+    float diffuse = 0.8f;
+    float specular = 0.4f;
+    float shininess = 32;
+    std::shared_ptr<const Texture> texture;  // multiplies color
+    bool double_sided = false;
+};
+
+struct Bounds {
+    glm::vec3 min = glm::vec3(std::numeric_limits<float>::infinity());
+    glm::vec3 max = glm::vec3(-std::numeric_limits<float>::infinity());
+    bool empty() const { return min.x > max.x; }
+    void add(const glm::vec3& p);
+    void add(const Bounds& b);
+};
+
+struct MeshPart {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // one per position, unit length
+    std::vector<glm::vec2> uvs;      // one per position, or empty
+    std::vector<uint32_t> indices;   // three per triangle
+    uint32_t material = 0;
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+struct Mesh {
+    std::string source;  // file it came from, or the primitive's description
+    std::vector<MeshPart> parts;
+    std::vector<Material> materials;
+    std::vector<std::string> animations;  // names of animations stored in the file
+    std::vector<std::string> warnings;    // non-fatal problems found while loading
+
+    size_t triangle_count() const;
+    size_t vertex_count() const;
+    Bounds bounds() const;
+};
+
+// Loads .obj (with .mtl), .gltf or .glb by extension. Throws facet::Error
+// (invalid_input) with the file name and what is wrong.
+Mesh load_mesh(const std::string& path);
+Mesh load_obj(const std::string& path);
+Mesh load_gltf(const std::string& path);
+
+// Normals for a part from its triangles: per-vertex, area weighted, only
+// across faces within `crease_degrees` of each other (so cubes stay sharp).
+// Vertices are split where faces meeting at one position disagree.
+void compute_normals(MeshPart& part, float crease_degrees);
+
+// Checks indices against vertex counts and drops degenerate index triples;
+// throws if an index is out of range.
+void validate_part(const MeshPart& part, const std::string& source);
+
+}  // namespace facet

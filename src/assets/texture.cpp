@@ -1,0 +1,110 @@
+#include "assets/texture.hpp"
+
+#include <array>
+#include <cmath>
+#include <cstring>
+#include <stb/stb_image.h>
+
+#include "core/error.hpp"
+
+namespace facet {
+namespace {
+
+float srgb_to_linear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+const std::array<float, 256>& srgb8_table() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) t[i] = srgb_to_linear(static_cast<float>(i) / 255.0f);
+        return t;
+    }();
+    return table;
+}
+
+// Texel address for wrap mode; coordinates are whole texel indices.
+int wrap_index(int i, int size, Wrap wrap) {
+    if (wrap == Wrap::clamp) return i < 0 ? 0 : (i >= size ? size - 1 : i);
+    int m = i % size;
+    return m < 0 ? m + size : m;
+}
+
+}  // namespace
+
+glm::vec4 Texture::sample(glm::vec2 uv) const {
+    if (texels.empty()) return glm::vec4(1);
+    // Texel centres sit at half-integer coordinates.
+    float x = uv.x * static_cast<float>(width) - 0.5f;
+    float y = uv.y * static_cast<float>(height) - 0.5f;
+    if (!std::isfinite(x) || !std::isfinite(y)) return texels[0];
+    // Keep the float->int conversion in range for huge repeat counts.
+    x = std::fmod(x, 16777216.0f);
+    y = std::fmod(y, 16777216.0f);
+    float fx = std::floor(x), fy = std::floor(y);
+    float tx = x - fx, ty = y - fy;
+    int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
+    int xa = wrap_index(x0, width, wrap), xb = wrap_index(x0 + 1, width, wrap);
+    int ya = wrap_index(y0, height, wrap), yb = wrap_index(y0 + 1, height, wrap);
+    const glm::vec4& a = texels[static_cast<size_t>(ya) * width + xa];
+    const glm::vec4& b = texels[static_cast<size_t>(ya) * width + xb];
+    const glm::vec4& c = texels[static_cast<size_t>(yb) * width + xa];
+    const glm::vec4& d = texels[static_cast<size_t>(yb) * width + xb];
+    glm::vec4 top = a + (b - a) * tx;
+    glm::vec4 bottom = c + (d - c) * tx;
+    return top + (bottom - top) * ty;
+}
+
+Texture texture_from_pixels(int width, int height, int channels, int bits, const uint8_t* data) {
+    if (width <= 0 || height <= 0 || channels < 1 || channels > 4 || (bits != 8 && bits != 16))
+        throw Error(ExitCode::invalid_input, "unsupported image layout (" + std::to_string(width) +
+                                                 "x" + std::to_string(height) + ", " +
+                                                 std::to_string(channels) + " channels, " +
+                                                 std::to_string(bits) + " bits)");
+    Texture tex;
+    tex.width = width;
+    tex.height = height;
+    tex.texels.resize(static_cast<size_t>(width) * height);
+    const auto& table = srgb8_table();
+    for (size_t i = 0; i < tex.texels.size(); ++i) {
+        float v[4] = {0, 0, 0, 1};
+        for (int c = 0; c < channels; ++c) {
+            size_t at = i * channels + c;
+            if (bits == 8) {
+                uint8_t byte = data[at];
+                bool alpha = (channels == 2 && c == 1) || (channels == 4 && c == 3);
+                v[c] = alpha ? byte / 255.0f : table[byte];
+            } else {
+                uint16_t word;
+                std::memcpy(&word, data + 2 * at, 2);
+                bool alpha = (channels == 2 && c == 1) || (channels == 4 && c == 3);
+                float f = word / 65535.0f;
+                v[c] = alpha ? f : srgb_to_linear(f);
+            }
+        }
+        if (channels <= 2) tex.texels[i] = {v[0], v[0], v[0], channels == 2 ? v[1] : 1.0f};
+        else tex.texels[i] = {v[0], v[1], v[2], channels == 4 ? v[3] : 1.0f};
+    }
+    return tex;
+}
+
+Texture load_texture(const std::string& path) {
+    int w = 0, h = 0, channels = 0;
+    bool is16 = stbi_is_16_bit(path.c_str());
+    void* data = is16 ? static_cast<void*>(stbi_load_16(path.c_str(), &w, &h, &channels, 0))
+                      : static_cast<void*>(stbi_load(path.c_str(), &w, &h, &channels, 0));
+    if (!data)
+        throw Error(ExitCode::invalid_input,
+                    path + ": cannot decode image (" + stbi_failure_reason() + ")");
+    try {
+        Texture tex = texture_from_pixels(w, h, channels, is16 ? 16 : 8,
+                                          static_cast<const uint8_t*>(data));
+        stbi_image_free(data);
+        return tex;
+    } catch (const Error& e) {
+        stbi_image_free(data);
+        throw Error(ExitCode::invalid_input, path + ": " + e.what());
+    }
+}
+
+}  // namespace facet

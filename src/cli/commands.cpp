@@ -1,0 +1,218 @@
+#include "cli/commands.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "assets/mesh.hpp"
+#include "cli/progress.hpp"
+#include "core/error.hpp"
+#include "core/frame_range.hpp"
+#include "raster/raster_limits.hpp"
+#include "render/render_job.hpp"
+#include "render/world.hpp"
+
+#ifndef FACET_STYLES_DIR
+#define FACET_STYLES_DIR "styles"
+#endif
+
+namespace facet {
+namespace {
+
+struct RenderArgs {
+    std::string scene;
+    std::string frames;
+    std::string size;
+    std::string out = "out";
+    unsigned threads = 0;
+    std::string style;
+    std::vector<std::string> defines;
+    bool quiet = false;
+};
+
+SourceLocation command_line(const std::string& what) { return {"", 0, 0, "command line " + what}; }
+
+// Command-line settings become overrides of the scene's values, so they go
+// through exactly the checks the scene file's own values go through.
+SceneOptions scene_options(const RenderArgs& args) {
+    SceneOptions options;
+    options.style_dirs = default_style_dirs();
+    if (!args.size.empty()) {
+        auto [w, h] = parse_size(args.size);
+        options.overrides.push_back({"output.size", "[" + std::to_string(w) + ", " + std::to_string(h) + "]",
+                                     "command line --size " + args.size});
+    }
+    if (!args.style.empty()) {
+        std::string value = args.style;
+        // A file named on the command line is relative to where facet runs.
+        std::error_code ec;
+        if (std::filesystem::is_regular_file(value, ec)) value = std::filesystem::absolute(value).string();
+        options.overrides.push_back({"style", "\"" + value + "\"", "command line --style " + args.style});
+    }
+    for (const auto& d : args.defines) options.overrides.push_back(parse_define(d));
+    return options;
+}
+
+std::vector<int> selected_frames(const RenderArgs& args) {
+    if (args.frames.empty()) return {};
+    try {
+        return parse_frame_ranges(args.frames);
+    } catch (const std::invalid_argument& e) {
+        fail_input(command_line("--frames " + args.frames), "", e.what());
+    }
+}
+
+void print_warnings(const World& world) {
+    for (const auto& w : world.warnings) std::fprintf(stderr, "facet: warning: %s\n", w.c_str());
+}
+
+int render_command(const RenderArgs& args) {
+    SceneDesc scene = load_scene(args.scene, scene_options(args));
+    std::vector<int> frames = selected_frames(args);
+    World world = build_world(scene);
+    if (!args.quiet) print_warnings(world);
+    RenderOptions options;
+    options.frames = frames;
+    options.threads = args.threads;
+    options.out_dir = args.out;
+    ProgressReporter progress(stderr, args.quiet);
+    RenderResult result = render_scene(scene, world, options,
+                                       [&](const FrameProgress& p) { progress.frame_done(p); });
+    progress.finish();
+    if (!args.quiet)
+        std::printf("wrote %zu files to %s (manifest: %s)\n", result.files_written,
+                    result.output_dir.c_str(), result.manifest_path.c_str());
+    return 0;
+}
+
+int validate_command(const RenderArgs& args) {
+    SceneDesc scene = load_scene(args.scene, scene_options(args));
+    selected_frames(args);
+    World world = build_world(scene);
+    if (!args.quiet) {
+        print_warnings(world);
+        std::printf("%s: ok: %zu objects, %zu triangles, %zu lights, style '%s' (%s), %dx%d, frames %s (%zu)\n",
+                    scene.path.c_str(), scene.objects.size(), world.triangle_count(),
+                    scene.lights.size(), scene.style.name.c_str(),
+                    shading_model_name(scene.style.shading), scene.output.width,
+                    scene.output.height, scene.output.frames_text.c_str(), scene.output.frames.size());
+    }
+    return 0;
+}
+
+int info_command(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec)) throw Error(ExitCode::invalid_input, path + ": file not found");
+    Mesh mesh = load_mesh(path);
+    Bounds b = mesh.bounds();
+    std::printf("file:       %s\n", path.c_str());
+    std::printf("triangles:  %zu\n", mesh.triangle_count());
+    std::printf("vertices:   %zu\n", mesh.vertex_count());
+    std::printf("parts:      %zu\n", mesh.parts.size());
+    std::printf("bounds:     [%g, %g, %g] .. [%g, %g, %g]\n", b.min.x, b.min.y, b.min.z, b.max.x,
+                b.max.y, b.max.z);
+    std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z);
+    std::printf("materials:  %zu\n", mesh.materials.size());
+    for (const auto& m : mesh.materials)
+        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n", m.name.empty() ? "(unnamed)" : m.name.c_str(),
+                    m.color.r, m.color.g, m.color.b, m.texture ? ", textured" : "",
+                    m.double_sided ? ", double-sided" : "");
+    std::printf("animations: %zu\n", mesh.animations.size());
+    for (const auto& a : mesh.animations) std::printf("  - %s\n", a.c_str());
+    for (const auto& w : mesh.warnings) std::printf("warning: %s\n", w.c_str());
+    return 0;
+}
+
+void add_scene_options(CLI::App* cmd, RenderArgs& args) {
+    cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
+    cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
+    cmd->add_option("--style", args.style, "Style preset name or file");
+    cmd->add_option("-D,--define", args.defines, "Override a scene value: key.path=value (repeatable)")
+        ->take_all();
+    cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
+    cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
+}
+
+}  // namespace
+
+std::vector<std::string> default_style_dirs() {
+    std::vector<std::string> dirs;
+    if (const char* env = std::getenv("FACET_STYLE_PATH")) {
+        std::string list = env;
+        size_t start = 0;
+        while (start <= list.size()) {
+            size_t colon = list.find(':', start);
+            std::string dir = list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+            if (!dir.empty()) dirs.push_back(dir);
+            if (colon == std::string::npos) break;
+            start = colon + 1;
+        }
+    }
+    dirs.push_back(FACET_STYLES_DIR);
+    return dirs;
+}
+
+std::pair<int, int> parse_size(const std::string& text) {
+    int w = 0, h = 0;
+    char x = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
+        w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
+        fail_input(command_line("--size " + text), "",
+                   "expected WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide));
+    return {w, h};
+}
+
+Override parse_define(const std::string& text) {
+    size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        fail_input(command_line("-D " + text), "", "expected key.path=value, e.g. camera.fov=30");
+    return {text.substr(0, eq), text.substr(eq + 1), "command line -D " + text};
+}
+
+int run_command_line(int argc, char** argv) {
+    CLI::App app{"facet: scene-file driven offline renderer"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", "facet 0.1.0");
+
+    RenderArgs render_args;
+    CLI::App* render = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
+    add_scene_options(render, render_args);
+    render->add_option("--out", render_args.out, "Output folder (files go to OUT/SCENE/)");
+    render->add_option("--threads", render_args.threads, "Worker threads (0: one per core)")
+        ->check(CLI::Range(0u, 256u));
+
+    RenderArgs validate_args;
+    CLI::App* validate = app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
+    add_scene_options(validate, validate_args);
+
+    std::string mesh_path;
+    CLI::App* info = app.add_subcommand("info", "Describe a mesh file: triangles, bounds, materials, animations");
+    info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e);
+        return code == 0 ? 0 : static_cast<int>(ExitCode::invalid_input);
+    }
+    try {
+        if (render->parsed()) return render_command(render_args);
+        if (validate->parsed()) return validate_command(validate_args);
+        if (info->parsed()) return info_command(mesh_path);
+    } catch (const Error& e) {
+        std::fprintf(stderr, "facet: error: %s\n", e.what());
+        return static_cast<int>(e.code());
+    } catch (const std::bad_alloc&) {
+        std::fprintf(stderr, "facet: error: out of memory\n");
+        return static_cast<int>(ExitCode::runtime_failure);
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "facet: error: %s\n", e.what());
+        return static_cast<int>(ExitCode::runtime_failure);
+    }
+    return static_cast<int>(ExitCode::invalid_input);
+}
+
+}  // namespace facet

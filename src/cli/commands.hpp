@@ -1,0 +1,22 @@
+#pragma once
+// The facet command line (the only CLI11 user).
+#include <string>
+#include <vector>
+
+#include "scene/scene_desc.hpp"
+
+namespace facet {
+
+int run_command_line(int argc, char** argv);
+
+// Folders searched for style presets by name: $FACET_STYLE_PATH (colon
+// separated), then the styles/ folder facet was built with.
+std::vector<std::string> default_style_dirs();
+
+// "1280x720" -> {1280, 720}; throws facet::Error (invalid_input) otherwise.
+std::pair<int, int> parse_size(const std::string& text);
+
+// "key.path=value" -> Override; throws facet::Error (invalid_input) otherwise.
+Override parse_define(const std::string& text);
+
+}  // namespace facet

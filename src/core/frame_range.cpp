@@ -1,0 +1,70 @@
+#include "core/frame_range.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <stdexcept>
+
+namespace facet {
+namespace {
+
+// A frame list longer than this is almost certainly a typo (e.g. 1-1000000).
+constexpr long long kMaxFrames = 1000000;
+
+int parse_int(std::string_view text, const std::string& whole) {
+    int value = 0;
+    auto trimmed = text;
+    while (!trimmed.empty() && trimmed.front() == ' ') trimmed.remove_prefix(1);
+    while (!trimmed.empty() && trimmed.back() == ' ') trimmed.remove_suffix(1);
+    const char* begin = trimmed.data();
+    const char* end = begin + trimmed.size();
+    auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (trimmed.empty() || ec != std::errc() || ptr != end)
+        throw std::invalid_argument("'" + std::string(text) + "' in frame range '" + whole +
+                                    "' is not a whole number");
+    return value;
+}
+
+}  // namespace
+
+std::vector<int> parse_frame_ranges(const std::string& text) {
+    if (text.find_first_not_of(" ,") == std::string::npos)
+        throw std::invalid_argument("frame range is empty");
+    std::vector<int> frames;
+    size_t start = 0;
+    while (start <= text.size()) {
+        size_t comma = text.find(',', start);
+        std::string_view part(text.data() + start,
+                              (comma == std::string::npos ? text.size() : comma) - start);
+        start = comma == std::string::npos ? text.size() + 1 : comma + 1;
+        if (part.find_first_not_of(' ') == std::string_view::npos)
+            throw std::invalid_argument("frame range '" + text + "' has an empty item");
+
+        int step = 1;
+        if (size_t colon = part.find(':'); colon != std::string_view::npos) {
+            step = parse_int(part.substr(colon + 1), text);
+            part = part.substr(0, colon);
+            if (step < 1)
+                throw std::invalid_argument("step in frame range '" + text + "' must be >= 1");
+        }
+        // A '-' after the first character separates the bounds (the first may be a sign).
+        size_t dash = part.find('-', part.find_first_not_of(' ') + 1);
+        int first = 0, last = 0;
+        if (dash == std::string_view::npos) {
+            first = last = parse_int(part, text);
+        } else {
+            first = parse_int(part.substr(0, dash), text);
+            last = parse_int(part.substr(dash + 1), text);
+        }
+        if (last < first)
+            throw std::invalid_argument("frame range '" + std::string(part) + "' ends before it starts");
+        if ((static_cast<long long>(last) - first) / step + frames.size() >= kMaxFrames)
+            throw std::invalid_argument("frame range '" + text + "' has more than " +
+                                        std::to_string(kMaxFrames) + " frames");
+        for (long long f = first; f <= last; f += step) frames.push_back(static_cast<int>(f));
+    }
+    std::sort(frames.begin(), frames.end());
+    frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
+    return frames;
+}
+
+}  // namespace facet

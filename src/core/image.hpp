@@ -1,0 +1,29 @@
+#pragma once
+// Plain 2D pixel buffers. Rows are stored top to bottom.
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+namespace facet {
+
+template <typename Pixel>
+struct Image {
+    int width = 0;
+    int height = 0;
+    std::vector<Pixel> pixels;
+
+    Image() = default;
+    Image(int w, int h, Pixel fill = Pixel{})
+        : width(w), height(h), pixels(static_cast<size_t>(w) * static_cast<size_t>(h), fill) {}
+
+    Pixel& at(int x, int y) { return pixels[static_cast<size_t>(y) * width + x]; }
+    const Pixel& at(int x, int y) const { return pixels[static_cast<size_t>(y) * width + x]; }
+    bool empty() const { return pixels.empty(); }
+};
+
+using ColorImage = Image<glm::vec4>;  // linear RGBA
+using DepthImage = Image<float>;      // linear view depth, +inf for background
+
+}  // namespace facet

@@ -1,0 +1,79 @@
+#include "core/thread_pool.hpp"
+
+#include <algorithm>
+
+namespace facet {
+
+ThreadPool::ThreadPool(unsigned threads) {
+    if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+    for (unsigned i = 1; i < threads; ++i) workers_.emplace_back([this] { worker_loop(); });
+}
+
+ThreadPool::~ThreadPool() {
+    {
+        std::lock_guard lock(mutex_);
+        stopping_ = true;
+    }
+    wake_.notify_all();
+    for (auto& worker : workers_) worker.join();
+}
+
+void ThreadPool::run_tasks() {
+    for (;;) {
+        size_t i = next_.fetch_add(1, std::memory_order_relaxed);
+        if (i >= count_) return;
+        try {
+            (*task_)(i);
+        } catch (...) {
+            std::lock_guard lock(mutex_);
+            if (!failure_) failure_ = std::current_exception();
+            next_.store(count_, std::memory_order_relaxed);  // stop handing out work
+        }
+    }
+}
+
+void ThreadPool::worker_loop() {
+    unsigned seen = 0;
+    for (;;) {
+        {
+            std::unique_lock lock(mutex_);
+            wake_.wait(lock, [&] { return stopping_ || generation_ != seen; });
+            if (stopping_) return;
+            seen = generation_;
+        }
+        run_tasks();
+        {
+            std::lock_guard lock(mutex_);
+            if (--busy_ == 0) done_.notify_all();
+        }
+    }
+}
+
+void ThreadPool::parallel_for(size_t count, const std::function<void(size_t)>& task) {
+    if (count == 0) return;
+    if (workers_.empty() || count == 1) {
+        for (size_t i = 0; i < count; ++i) task(i);
+        return;
+    }
+    {
+        std::lock_guard lock(mutex_);
+        task_ = &task;
+        count_ = count;
+        next_.store(0);
+        busy_ = workers_.size();
+        failure_ = nullptr;
+        ++generation_;
+    }
+    wake_.notify_all();
+    run_tasks();
+    std::exception_ptr failure;
+    {
+        std::unique_lock lock(mutex_);
+        done_.wait(lock, [&] { return busy_ == 0; });
+        failure = failure_;
+        task_ = nullptr;
+    }
+    if (failure) std::rethrow_exception(failure);
+}
+
+}  // namespace facet

@@ -1,0 +1,47 @@
+#pragma once
+// A fixed set of worker threads that run index ranges. Work is handed out
+// as whole task indices; callers make results depend only on the index,
+// never on which thread ran it, so output is the same for any thread count.
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace facet {
+
+class ThreadPool {
+public:
+    // threads == 0 picks the hardware concurrency.
+    explicit ThreadPool(unsigned threads);
+    ~ThreadPool();
+    ThreadPool(const ThreadPool&) = delete;
+    ThreadPool& operator=(const ThreadPool&) = delete;
+
+    unsigned size() const { return static_cast<unsigned>(workers_.size()) + 1; }
+
+    // Runs task(i) for every i in [0, count), on all threads including the
+    // caller, and returns when all are done. The first exception is rethrown.
+    void parallel_for(size_t count, const std::function<void(size_t)>& task);
+
+private:
+    void worker_loop();
+    void run_tasks();
+
+    std::vector<std::thread> workers_;
+    std::mutex mutex_;
+    std::condition_variable wake_;
+    std::condition_variable done_;
+    const std::function<void(size_t)>* task_ = nullptr;
+    size_t count_ = 0;
+    std::atomic<size_t> next_{0};
+    size_t busy_ = 0;
+    unsigned generation_ = 0;
+    bool stopping_ = false;
+    std::exception_ptr failure_;
+};
+
+}  // namespace facet

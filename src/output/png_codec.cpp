@@ -1,0 +1,132 @@
+#include <png.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <csetjmp>
+
+#include "core/error.hpp"
+#include "output/encoders.hpp"
+
+namespace facet {
+namespace {
+
+// Linear [0,1] in 1/65535 steps -> 8-bit sRGB. A table is exact to well
+// under half an 8-bit step and ten times faster than pow per channel.
+const std::vector<uint8_t>& linear_to_srgb8_table() {
+    static const std::vector<uint8_t> table = [] {
+        std::vector<uint8_t> t(65536);
+        for (int i = 0; i < 65536; ++i) {
+            double c = i / 65535.0;
+            double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+            t[i] = static_cast<uint8_t>(std::lround(std::clamp(s, 0.0, 1.0) * 255.0));
+        }
+        return t;
+    }();
+    return table;
+}
+
+inline uint16_t unit_to_u16(float v) {
+    if (!(v > 0.0f)) return 0;  // also NaN
+    if (v >= 1.0f) return 65535;
+    return static_cast<uint16_t>(v * 65535.0f + 0.5f);
+}
+
+void append_bytes(png_structp png, png_bytep data, png_size_t length) {
+    auto* out = static_cast<std::vector<uint8_t>*>(png_get_io_ptr(png));
+    out->insert(out->end(), data, data + length);
+}
+
+// libpng reports errors by longjmp; nothing with a destructor lives in this
+// frame between setjmp and the write calls, and rows point into `pixels`.
+bool write_png(std::vector<uint8_t>& out, int width, int height, int bit_depth, int color_type,
+               const uint8_t* pixels, size_t row_bytes, int compression) {
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    if (!png) return false;
+    png_infop info = png_create_info_struct(png);
+    if (!info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        return false;
+    }
+    png_set_write_fn(png, &out, append_bytes, nullptr);
+    png_set_compression_level(png, compression);
+    // Level 0-2 is asked for speed: skip the adaptive filter search.
+    if (compression <= 2) png_set_filter(png, 0, PNG_FILTER_UP);
+    png_set_IHDR(png, info, width, height, bit_depth, color_type, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    if (color_type == PNG_COLOR_TYPE_RGBA) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    if (bit_depth == 16) png_set_swap(png);  // our samples are little-endian in memory
+    for (int y = 0; y < height; ++y)
+        png_write_row(png, const_cast<png_bytep>(pixels + static_cast<size_t>(y) * row_bytes));
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    return true;
+}
+
+}  // namespace
+
+std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) {
+    const auto& table = linear_to_srgb8_table();
+    std::vector<uint8_t> pixels(static_cast<size_t>(image.width) * image.height * 4);
+    for (size_t i = 0; i < image.pixels.size(); ++i) {
+        const glm::vec4& c = image.pixels[i];
+        pixels[4 * i + 0] = table[unit_to_u16(c.r)];
+        pixels[4 * i + 1] = table[unit_to_u16(c.g)];
+        pixels[4 * i + 2] = table[unit_to_u16(c.b)];
+        pixels[4 * i + 3] = static_cast<uint8_t>((unit_to_u16(c.a) * 255u + 32767u) / 65535u);
+    }
+    std::vector<uint8_t> out;
+    if (!write_png(out, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, pixels.data(),
+                   static_cast<size_t>(image.width) * 4, compression))
+        throw Error(ExitCode::runtime_failure, "PNG encoding failed");
+    return out;
+}
+
+std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression) {
+    std::vector<uint16_t> samples(depth.pixels.size());
+    const float span = range.y - range.x;
+    for (size_t i = 0; i < depth.pixels.size(); ++i) {
+        float d = depth.pixels[i];
+        samples[i] = std::isinf(d) ? 0 : unit_to_u16((range.y - d) / span);
+    }
+    std::vector<uint8_t> out;
+    if (!write_png(out, depth.width, depth.height, 16, PNG_COLOR_TYPE_GRAY,
+                   reinterpret_cast<const uint8_t*>(samples.data()),
+                   static_cast<size_t>(depth.width) * 2, compression))
+        throw Error(ExitCode::runtime_failure, "PNG encoding failed");
+    return out;
+}
+
+DecodedPng read_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path.c_str()))
+        throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
+    DecodedPng out;
+    out.width = static_cast<int>(image.width);
+    out.height = static_cast<int>(image.height);
+    const bool sixteen = (image.format & PNG_FORMAT_FLAG_LINEAR) != 0;
+    const bool colour = (image.format & PNG_FORMAT_FLAG_COLOR) != 0;
+    const bool alpha = (image.format & PNG_FORMAT_FLAG_ALPHA) != 0;
+    out.channels = (colour ? 3 : 1) + (alpha ? 1 : 0);
+    out.bit_depth = sixteen ? 16 : 8;
+    // Ask for the file's own layout, so values are not converted.
+    image.format = (colour ? PNG_FORMAT_FLAG_COLOR : 0) | (alpha ? PNG_FORMAT_FLAG_ALPHA : 0) |
+                   (sixteen ? PNG_FORMAT_FLAG_LINEAR : 0);
+    const size_t count = static_cast<size_t>(out.width) * out.height * out.channels;
+    if (sixteen) {
+        out.samples.resize(count);
+        if (!png_image_finish_read(&image, nullptr, out.samples.data(), 0, nullptr))
+            throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
+    } else {
+        std::vector<uint8_t> bytes(count);
+        if (!png_image_finish_read(&image, nullptr, bytes.data(), 0, nullptr))
+            throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
+        out.samples.assign(bytes.begin(), bytes.end());
+    }
+    png_image_free(&image);
+    return out;
+}
+
+}  // namespace facet

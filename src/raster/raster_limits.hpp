@@ -1,0 +1,30 @@
+#pragma once
+// Limits and precision of the rasterizer, named in one place.
+#include <cstdint>
+
+namespace facet {
+
+// Vertex positions snap to 1/256 of a pixel (8 fractional bits, as D3D11
+// and Vulkan implementations commonly use). Shared edges therefore use
+// exactly the same coordinates in both triangles, which the fill rule needs.
+constexpr int kSubpixelBits = 8;
+constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
+
+// Triangles are clipped geometrically only where they leave this band
+// around the screen; inside it the tile bounding boxes do the clipping.
+// It also bounds fixed-point coordinates to about 2^23, so edge function
+// values (products of two coordinate differences) fit easily in int64.
+constexpr float kGuardBandPixels = 8192.0f;
+
+// Screen tiles: each is rasterized and shaded by one thread at a time.
+constexpr int kTileSize = 64;
+
+// Source triangles per primitive-stage chunk. Fixed, so that the set of
+// chunks (and therefore the per-tile bin order) does not depend on the
+// thread count.
+constexpr uint32_t kTrianglesPerChunk = 8192;
+
+// Largest image side; keeps tile and pixel indices well inside int32.
+constexpr int kMaxImageSide = 16384;
+
+}  // namespace facet

@@ -1,0 +1,75 @@
+#pragma once
+// The raster core of one frame: primitive stage (clip, cull, set up, bin)
+// then tile stage (rasterize each tile into a visibility buffer and hand it
+// to a shading callback). Knows nothing of files, scenes or styles.
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "core/thread_pool.hpp"
+#include "raster/raster_limits.hpp"
+#include "raster/setup_bins.hpp"
+
+namespace facet {
+
+struct RasterInput {
+    const glm::vec4* clip = nullptr;  // clip-space positions, reversed-Z (render/camera.hpp)
+    size_t vertex_count = 0;
+    const uint32_t* indices = nullptr;  // three per triangle, counter-clockwise = front
+    size_t triangle_count = 0;
+    const uint8_t* cull_back = nullptr;  // per triangle: 1 drops back faces
+};
+
+// Marks a visibility-buffer sample that no triangle covers.
+constexpr uint32_t kNoTriangle = 0xffffffffu;
+
+// A rasterized tile: for each pixel the nearest triangle's id and depth.
+struct TileVisibility {
+    int x0, y0, width, height;  // the tile's pixel rectangle
+    const float* depth;         // reversed-Z, row stride kTileSize; 0 where empty
+    const uint32_t* id;         // triangle id for Rasterizer::shade_setup, or kNoTriangle
+};
+
+class Rasterizer {
+public:
+    Rasterizer(int width, int height);
+
+    int width() const { return width_; }
+    int height() const { return height_; }
+
+    // Primitive stage, in parallel over fixed chunks of triangles.
+    void set_geometry(const RasterInput& input, ThreadPool& pool);
+
+    // Tile stage. `shade` runs once per tile, possibly on several threads at
+    // once for different tiles; it must write only pixels inside its tile.
+    void draw_tiles(ThreadPool& pool, const std::function<void(const TileVisibility&)>& shade) const;
+
+    const ShadeSetup& shade_setup(uint32_t id) const {
+        return chunks_[id >> kLocalIdBits].shading[id & kLocalIdMask];
+    }
+
+    // Triangles that survived culling and clipping in the last set_geometry.
+    size_t setup_triangle_count() const;
+
+private:
+    // A triangle id is (chunk << 16) | index in chunk. Clipping turns one
+    // source triangle into at most 7, so a chunk produces at most
+    // 7 * kTrianglesPerChunk triangles, which must fit in 16 bits.
+    static constexpr uint32_t kLocalIdBits = 16;
+    static constexpr uint32_t kLocalIdMask = (1u << kLocalIdBits) - 1;
+    static_assert(7 * kTrianglesPerChunk <= (1u << kLocalIdBits));
+
+    void setup_chunk(const RasterInput& input, size_t chunk);
+    void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const;
+
+    int width_, height_;
+    int tiles_x_, tiles_y_;
+    float guard_x_, guard_y_;  // guard band half-size in NDC units
+    std::vector<ChunkBins> chunks_;
+    size_t chunk_count_ = 0;
+};
+
+}  // namespace facet

@@ -1,0 +1,48 @@
+#pragma once
+// The plain records the primitive stage hands to the tile stage (the
+// "bins"), in the manner of Mesa llvmpipe's setup/rasterizer split: the
+// tile stage reads only these.
+#include <cstdint>
+#include <vector>
+
+namespace facet {
+
+// Edge function E(px, py) = dx * px + dy * py + c, evaluated at the centre of
+// pixel (px, py); the pixel is covered when all three are >= 0. The
+// top-left fill rule is folded into c (Pineda 1988; D3D10 fill rules).
+struct EdgeFunction {
+    int64_t dx, dy, c;
+};
+
+struct SetupTriangle {
+    EdgeFunction edge[3];
+    int32_t min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, on screen
+    // Reversed-Z depth (1 at the near plane, 0 at the far plane), affine in
+    // screen space: z = z0 + dzdx * (x - x0) + dzdy * (y - y0), x and y in pixels.
+    float x0, y0, z0, dzdx, dzdy;
+};
+
+// What shading needs to recover perspective-correct barycentrics of the
+// *source* triangle at a pixel, also for pieces produced by clipping.
+// Each plane p gives p[0] + p[1] * (x - x0) + p[2] * (y - y0).
+struct ShadeSetup {
+    float x0, y0;
+    float inv_w[3];  // 1/w
+    float b1_w[3];   // b1/w, b1 = weight of the source triangle's second vertex
+    float b2_w[3];   // b2/w
+    uint32_t source_triangle;
+    uint32_t back_facing;  // 1 when the triangle faces away from the camera
+};
+
+// Triangles set up by one chunk of the primitive stage, and their bins:
+// the triangles touching tile t are tile_items[tile_start[t] .. tile_start[t+1]),
+// in submission order.
+struct ChunkBins {
+    std::vector<SetupTriangle> triangles;
+    std::vector<ShadeSetup> shading;
+    std::vector<uint32_t> tile_start;
+    std::vector<uint32_t> tile_items;
+    std::vector<uint32_t> scratch_tiles;  // (tile, triangle) pairs before sorting
+};
+
+}  // namespace facet

@@ -1,0 +1,74 @@
+// Tile stage: each tile replays its bins in submission order into a
+// visibility buffer (nearest depth and triangle id per pixel), then hands it
+// to shading. A tile is owned by one thread, so results never depend on
+// the thread count.
+#include <algorithm>
+#include <array>
+
+#include "raster/rasterizer.hpp"
+
+namespace facet {
+namespace {
+
+void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, int tile_x1,
+               int tile_y1, float* depth, uint32_t* ids) {
+    const int x_lo = std::max(tri.min_x, tile_x0), x_hi = std::min(tri.max_x, tile_x1);
+    const int y_lo = std::max(tri.min_y, tile_y0), y_hi = std::min(tri.max_y, tile_y1);
+    if (x_lo > x_hi || y_lo > y_hi) return;
+    const EdgeFunction& e0 = tri.edge[0];
+    const EdgeFunction& e1 = tri.edge[1];
+    const EdgeFunction& e2 = tri.edge[2];
+    for (int y = y_lo; y <= y_hi; ++y) {
+        int64_t w0 = e0.dx * x_lo + e0.dy * y + e0.c;
+        int64_t w1 = e1.dx * x_lo + e1.dy * y + e1.c;
+        int64_t w2 = e2.dx * x_lo + e2.dy * y + e2.c;
+        const float z_row = tri.z0 + tri.dzdy * ((static_cast<float>(y) + 0.5f) - tri.y0);
+        float* depth_row = depth + (y - tile_y0) * kTileSize - tile_x0;
+        uint32_t* id_row = ids + (y - tile_y0) * kTileSize - tile_x0;
+        for (int x = x_lo; x <= x_hi; ++x) {
+            if ((w0 | w1 | w2) >= 0) {
+                float z = z_row + tri.dzdx * ((static_cast<float>(x) + 0.5f) - tri.x0);
+                // Reversed-Z: larger is nearer. Strictly greater keeps the
+                // first-submitted triangle on ties, the same on every run.
+                if (z > depth_row[x]) {
+                    depth_row[x] = z;
+                    id_row[x] = id;
+                }
+            }
+            w0 += e0.dx;
+            w1 += e1.dx;
+            w2 += e2.dx;
+        }
+    }
+}
+
+}  // namespace
+
+void Rasterizer::draw_tiles(ThreadPool& pool,
+                            const std::function<void(const TileVisibility&)>& shade) const {
+    pool.parallel_for(static_cast<size_t>(tiles_x_) * tiles_y_,
+                      [&](size_t tile) { draw_tile(static_cast<int>(tile), shade); });
+}
+
+void Rasterizer::draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const {
+    std::array<float, kTileSize * kTileSize> depth;
+    std::array<uint32_t, kTileSize * kTileSize> ids;
+    depth.fill(0.0f);
+    ids.fill(kNoTriangle);
+    const int x0 = (tile % tiles_x_) * kTileSize;
+    const int y0 = (tile / tiles_x_) * kTileSize;
+    const int x1 = std::min(x0 + kTileSize, width_) - 1;
+    const int y1 = std::min(y0 + kTileSize, height_) - 1;
+    for (size_t c = 0; c < chunk_count_; ++c) {
+        const ChunkBins& bins = chunks_[c];
+        for (uint32_t k = bins.tile_start[tile]; k < bins.tile_start[tile + 1]; ++k) {
+            uint32_t local = bins.tile_items[k];
+            rasterize(bins.triangles[local], static_cast<uint32_t>(c << kLocalIdBits) | local, x0,
+                      y0, x1, y1, depth.data(), ids.data());
+        }
+    }
+    TileVisibility vis{x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth.data(), ids.data()};
+    shade(vis);
+}
+
+}  // namespace facet

@@ -1,0 +1,58 @@
+#pragma once
+// Renders one frame of a scene: vertex stage, raster core, shading. Owns the
+// per-frame buffers, which it reuses from frame to frame.
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "anim/frame_state.hpp"
+#include "core/image.hpp"
+#include "core/thread_pool.hpp"
+#include "raster/rasterizer.hpp"
+#include "render/camera.hpp"
+#include "render/world.hpp"
+#include "shade/lighting.hpp"
+
+namespace facet {
+
+struct FrameImages {
+    ColorImage color;  // linear RGBA
+    DepthImage depth;  // linear view depth, +inf where nothing was hit
+    glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
+};
+
+// Per-vertex results of the vertex stage for one frame.
+struct TransformedVertices {
+    std::vector<glm::vec4> clip;
+    std::vector<glm::vec3> world_position;
+    std::vector<glm::vec3> world_normal;
+    std::vector<LightingResult> lit;  // Gouraud only: lighting at each vertex
+};
+
+class FrameRenderer {
+public:
+    FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool);
+
+    FrameImages render(int frame);
+
+    // The depth range that fits the visible scene's bounding sphere.
+    glm::vec2 depth_view_range(const FrameState& state, const CameraMatrices& camera) const;
+
+private:
+    void vertex_stage(const FrameState& state, const CameraMatrices& camera,
+                      std::span<const ShadeLight> lights);
+    void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
+                    std::span<const ShadeLight> lights, glm::vec2 depth_range,
+                    FrameImages& out) const;
+
+    const SceneDesc& scene_;
+    const World& world_;
+    ThreadPool& pool_;
+    Rasterizer rasterizer_;
+    TransformedVertices vertices_;
+};
+
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights);
+
+}  // namespace facet

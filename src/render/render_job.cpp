@@ -1,0 +1,163 @@
+#include "render/render_job.hpp"
+
+#include <chrono>
+#include <condition_variable>
+#include <deque>
+#include <exception>
+#include <filesystem>
+#include <mutex>
+#include <thread>
+
+#include "core/sha256.hpp"
+#include "core/thread_pool.hpp"
+#include "output/atomic_file.hpp"
+#include "output/encoders.hpp"
+#include "output/manifest.hpp"
+#include "render/frame_renderer.hpp"
+
+namespace facet {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Frames waiting for the encoder; more would only hold memory, since the
+// encoder is then the bottleneck anyway.
+constexpr size_t kMaxQueuedFrames = 2;
+
+std::string frame_file_name(const std::string& pass, int frame, const std::string& ext) {
+    char number[32];
+    std::snprintf(number, sizeof number, "%04d", frame);
+    return pass + "." + number + "." + ext;
+}
+
+struct EncodeJob {
+    int frame;
+    double render_ms;
+    FrameImages images;
+};
+
+class Encoder {
+public:
+    Encoder(const SceneDesc& scene, std::string dir) : scene_(scene), dir_(std::move(dir)) {
+        thread_ = std::thread([this] { run(); });
+    }
+    ~Encoder() { stop(); }
+
+    void push(EncodeJob job) {
+        std::unique_lock lock(mutex_);
+        space_.wait(lock, [&] { return queue_.size() < kMaxQueuedFrames || failure_; });
+        if (failure_) std::rethrow_exception(failure_);
+        queue_.push_back(std::move(job));
+        ready_.notify_one();
+    }
+
+    // Waits for all queued frames; rethrows the first encoding failure.
+    Manifest finish() {
+        stop();
+        if (failure_) std::rethrow_exception(failure_);
+        return manifest_;
+    }
+
+private:
+    void stop() {
+        {
+            std::lock_guard lock(mutex_);
+            closed_ = true;
+        }
+        ready_.notify_one();
+        if (thread_.joinable()) thread_.join();
+    }
+
+    void run() {
+        for (;;) {
+            EncodeJob job;
+            {
+                std::unique_lock lock(mutex_);
+                ready_.wait(lock, [&] { return !queue_.empty() || closed_; });
+                if (queue_.empty()) return;
+                job = std::move(queue_.front());
+                queue_.pop_front();
+            }
+            space_.notify_one();
+            try {
+                encode(job);
+            } catch (...) {
+                std::lock_guard lock(mutex_);
+                failure_ = std::current_exception();
+                queue_.clear();
+                space_.notify_all();
+                return;
+            }
+        }
+    }
+
+    void write(int frame, const std::string& pass, const std::string& format,
+               const std::vector<uint8_t>& bytes) {
+        std::string name = frame_file_name(pass, frame, format);
+        write_file_atomically((std::filesystem::path(dir_) / name).string(), bytes);
+        manifest_.files.push_back({frame, pass, format, name, sha256_hex(bytes)});
+    }
+
+    void encode(const EncodeJob& job) {
+        const auto start = Clock::now();
+        const OutputDesc& out = scene_.output;
+        if (out.write_color && out.write_png)
+            write(job.frame, "color", "png", encode_png_color(job.images.color, out.png_compression));
+        if (out.write_color && out.write_exr)
+            write(job.frame, "color", "exr", encode_exr_color(job.images.color));
+        if (out.write_depth && out.write_png) {
+            glm::vec2 range = out.depth_range.value_or(job.images.depth_view_range);
+            write(job.frame, "depth", "png", encode_png_depth(job.images.depth, range, out.png_compression));
+        }
+        if (out.write_depth && out.write_exr)
+            write(job.frame, "depth", "exr", encode_exr_depth(job.images.depth));
+        manifest_.frames.push_back({job.frame, job.render_ms, ms_since(start)});
+    }
+
+    const SceneDesc& scene_;
+    std::string dir_;
+    std::thread thread_;
+    std::mutex mutex_;
+    std::condition_variable ready_, space_;
+    std::deque<EncodeJob> queue_;
+    bool closed_ = false;
+    std::exception_ptr failure_;
+    Manifest manifest_;  // touched only by the encoder thread until finish()
+};
+
+}  // namespace
+
+RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
+                          const std::function<void(const FrameProgress&)>& on_frame) {
+    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    RenderResult result;
+    result.output_dir = (std::filesystem::path(options.out_dir) / scene.name).string();
+    make_directories(result.output_dir);
+
+    ThreadPool pool(options.threads);
+    FrameRenderer renderer(scene, world, pool);
+    Encoder encoder(scene, result.output_dir);
+    for (size_t i = 0; i < frames.size(); ++i) {
+        const auto start = Clock::now();
+        FrameImages images = renderer.render(frames[i]);
+        const double render_ms = ms_since(start);
+        encoder.push({frames[i], render_ms, std::move(images)});
+        if (on_frame) on_frame({frames[i], i + 1, frames.size(), render_ms});
+    }
+    Manifest manifest = encoder.finish();
+    manifest.scene = scene.path;
+    manifest.style = scene.style.name;
+    manifest.width = scene.output.width;
+    manifest.height = scene.output.height;
+    manifest.threads = static_cast<int>(pool.size());
+    result.files_written = manifest.files.size();
+    result.manifest_path = (std::filesystem::path(result.output_dir) / "manifest.json").string();
+    write_manifest(result.manifest_path, manifest);
+    return result;
+}
+
+}  // namespace facet

@@ -1,0 +1,36 @@
+#pragma once
+// A whole run: frames rendered in order, each frame's files encoded and
+// written on a separate thread while the next frame renders, then the
+// manifest.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "render/world.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace facet {
+
+struct RenderOptions {
+    std::vector<int> frames;  // frames to render; empty means the scene's output.frames
+    unsigned threads = 0;     // 0: one per core
+    std::string out_dir = "out";
+};
+
+struct FrameProgress {
+    int frame;
+    size_t done;   // frames rendered so far, this one included
+    size_t total;
+    double render_ms;
+};
+
+struct RenderResult {
+    std::string output_dir;  // where files and manifest.json went
+    std::string manifest_path;
+    size_t files_written = 0;
+};
+
+RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
+                          const std::function<void(const FrameProgress&)>& on_frame);
+
+}  // namespace facet

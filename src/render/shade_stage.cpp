@@ -1,0 +1,155 @@
+// Shading stage: every visible pixel of a tile is shaded once (deferred),
+// from the triangle id and depth the tile stage left in the visibility buffer.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+
+#include "render/frame_renderer.hpp"
+
+namespace facet {
+
+void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
+                               std::span<const ShadeLight> lights, glm::vec2 depth_range,
+                               FrameImages& out) const {
+    const ShadingModel model = scene_.style.shading;
+    const glm::vec4 background = scene_.output.background;
+    const float infinity = std::numeric_limits<float>::infinity();
+    const Highlight highlight = model == ShadingModel::phong ? Highlight::phong : Highlight::blinn;
+
+    for (int ty = 0; ty < tile.height; ++ty) {
+        const int y = tile.y0 + ty;
+        glm::vec4* color_row = &out.color.at(tile.x0, y);
+        float* depth_row = &out.depth.at(tile.x0, y);
+        for (int tx = 0; tx < tile.width; ++tx) {
+            const uint32_t id = tile.id[ty * kTileSize + tx];
+            if (id == kNoTriangle) {
+                color_row[tx] = background;
+                depth_row[tx] = infinity;
+                continue;
+            }
+            const ShadeSetup& s = rasterizer_.shade_setup(id);
+            // Perspective-correct barycentrics of the source triangle: b/w and
+            // 1/w are affine in screen space, b is not (Heckbert & Moreton 1991).
+            const float fx = (static_cast<float>(tile.x0 + tx) + 0.5f) - s.x0;
+            const float fy = (static_cast<float>(y) + 0.5f) - s.y0;
+            const float inv_w = s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy;
+            const float w = 1.0f / inv_w;
+            const float b1 = (s.b1_w[0] + s.b1_w[1] * fx + s.b1_w[2] * fy) * w;
+            const float b2 = (s.b2_w[0] + s.b2_w[1] * fx + s.b2_w[2] * fy) * w;
+            const float b0 = 1.0f - b1 - b2;
+            depth_row[tx] = w;  // w_clip is the distance along the viewing axis
+
+            const uint32_t tri = s.source_triangle;
+            const uint32_t i0 = world_.indices[3 * tri], i1 = world_.indices[3 * tri + 1],
+                           i2 = world_.indices[3 * tri + 2];
+            const Draw& draw = world_.draws[world_.triangle_draw[tri]];
+            const Material& mat = world_.materials[draw.material];
+            const auto& wp = vertices_.world_position;
+            const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
+
+            glm::vec3 normal;
+            if (model == ShadingModel::flat) {
+                normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
+            } else {
+                const auto& wn = vertices_.world_normal;
+                normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
+            }
+            float len = glm::length(normal);
+            normal = len > 0 ? normal / len : glm::vec3(0, 1, 0);
+            if (s.back_facing) normal = -normal;
+
+            glm::vec3 albedo = mat.color;
+            float alpha = 1.0f;
+            if (mat.texture) {
+                const auto& uv = world_.uvs;
+                glm::vec4 texel = mat.texture->sample(b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]);
+                albedo *= glm::vec3(texel);
+            }
+
+            glm::vec3 rgb;
+            switch (model) {
+                case ShadingModel::unlit: rgb = albedo; break;
+                case ShadingModel::normal: {
+                    glm::vec3 n = normal * 0.5f + 0.5f;  // shown as stored bytes, so undo sRGB
+                    rgb = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z)};
+                    break;
+                }
+                case ShadingModel::depth: {
+                    float t = (depth_range.y - w) / (depth_range.y - depth_range.x);
+                    rgb = glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f)));
+                    break;
+                }
+                case ShadingModel::gouraud: {
+                    const auto& lit = vertices_.lit;
+                    glm::vec3 diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
+                    glm::vec3 specular = b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
+                    rgb = albedo * diffuse + specular;
+                    break;
+                }
+                default: {
+                    SurfacePoint p{position, normal, glm::normalize(camera.position - position)};
+                    LightingResult l = light_surface(
+                        p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess}, lights, highlight);
+                    rgb = albedo * l.diffuse + l.specular;
+                }
+            }
+            color_row[tx] = glm::vec4(rgb, alpha);
+        }
+    }
+}
+
+glm::vec2 FrameRenderer::depth_view_range(const FrameState& state, const CameraMatrices& camera) const {
+    // Fit the bounding sphere of everything visible; for an orbiting camera
+    // it stays constant, so animations do not flicker.
+    Bounds all;
+    for (const Draw& d : world_.draws) {
+        const Bounds& b = world_.object_bounds[d.object];
+        const glm::mat4& m = state.object_transforms[d.object];
+        for (int corner = 0; corner < 8; ++corner) {
+            glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                        (corner & 4) ? b.max.z : b.min.z);
+            all.add(glm::vec3(m * glm::vec4(p, 1.0f)));
+        }
+    }
+    if (all.empty()) return {camera.near, camera.far};
+    glm::vec3 centre = (all.min + all.max) * 0.5f;
+    float radius = glm::length(all.max - centre);
+    float d = glm::dot(centre - camera.position, camera.forward);
+    float near = std::max(camera.near, d - radius);
+    float far = std::max(near + 1e-3f, d + radius);
+    return {near, far};
+}
+
+FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
+    : scene_(scene), world_(world), pool_(pool),
+      rasterizer_(scene.output.width, scene.output.height) {}
+
+FrameImages FrameRenderer::render(int frame) {
+    const FrameState state = evaluate_frame(scene_, frame);
+    const float aspect = static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
+    const CameraMatrices camera = make_camera(state.camera, aspect);
+    const std::vector<ShadeLight> lights = make_shade_lights(state.lights);
+
+    vertex_stage(state, camera, lights);
+    RasterInput input;
+    input.clip = vertices_.clip.data();
+    input.vertex_count = vertices_.clip.size();
+    input.indices = world_.indices.data();
+    input.triangle_count = world_.triangle_count();
+    input.cull_back = world_.cull_back.data();
+    rasterizer_.set_geometry(input, pool_);
+
+    FrameImages out;
+    out.color = ColorImage(scene_.output.width, scene_.output.height);
+    out.depth = DepthImage(scene_.output.width, scene_.output.height);
+    out.depth_view_range = depth_view_range(state, camera);
+    const glm::vec2 style_range = scene_.style.depth_range.value_or(out.depth_view_range);
+    rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
+        shade_tile(tile, camera, lights, style_range, out);
+    });
+    return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,71 @@
+// Vertex stage: model -> world -> clip space for every vertex of the frame,
+// in parallel over fixed chunks (each vertex's result depends only on itself).
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+
+#include "render/frame_renderer.hpp"
+
+namespace facet {
+namespace {
+constexpr size_t kVerticesPerChunk = 16384;
+}
+
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights) {
+    std::vector<ShadeLight> out;
+    for (const LightDesc& l : lights) {
+        ShadeLight s;
+        s.is_point = l.type == LightType::point;
+        s.direction = s.is_point ? glm::vec3(0) : -glm::normalize(l.direction);
+        s.position = l.position;
+        s.radiance = l.color * l.intensity;
+        out.push_back(s);
+    }
+    return out;
+}
+
+void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& camera,
+                                 std::span<const ShadeLight> lights) {
+    const size_t count = world_.positions.size();
+    vertices_.clip.resize(count);
+    vertices_.world_position.resize(count);
+    vertices_.world_normal.resize(count);
+    const bool gouraud = scene_.style.shading == ShadingModel::gouraud;
+    vertices_.lit.resize(gouraud ? count : 0);
+
+    struct DrawTransform {
+        glm::mat4 model;
+        glm::mat3 normal;
+    };
+    std::vector<DrawTransform> transforms;
+    for (const Draw& d : world_.draws) {
+        const glm::mat4& m = state.object_transforms[d.object];
+        transforms.push_back({m, glm::transpose(glm::inverse(glm::mat3(m)))});
+    }
+
+    const size_t chunks = (count + kVerticesPerChunk - 1) / kVerticesPerChunk;
+    pool_.parallel_for(chunks, [&](size_t chunk) {
+        const size_t first = chunk * kVerticesPerChunk;
+        const size_t last = std::min(first + kVerticesPerChunk, count);
+        for (size_t v = first; v < last; ++v) {
+            const uint32_t draw = world_.vertex_draw[v];
+            const DrawTransform& t = transforms[draw];
+            glm::vec4 world = t.model * glm::vec4(world_.positions[v], 1.0f);
+            vertices_.world_position[v] = glm::vec3(world);
+            vertices_.clip[v] = camera.view_projection * world;
+            glm::vec3 n = t.normal * world_.normals[v];
+            float len = glm::length(n);
+            vertices_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
+            if (gouraud) {
+                const Material& mat = world_.materials[world_.draws[draw].material];
+                SurfacePoint p{vertices_.world_position[v], vertices_.world_normal[v],
+                               glm::normalize(camera.position - vertices_.world_position[v])};
+                vertices_.lit[v] = light_surface(
+                    p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess}, lights, Highlight::blinn);
+            }
+        }
+    });
+}
+
+}  // namespace facet

@@ -1,0 +1,47 @@
+#pragma once
+// Everything a run needs that does not change from frame to frame: meshes
+// and textures loaded once, materials resolved per object, and the
+// concatenated vertex and index arrays the vertex stage transforms.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "assets/mesh.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace facet {
+
+struct Draw {
+    uint32_t object;  // index into SceneDesc::objects
+    uint32_t first_vertex, vertex_count;
+    uint32_t first_triangle, triangle_count;
+    uint32_t material;  // index into World::materials
+};
+
+struct World {
+    std::vector<Material> materials;
+    std::vector<Draw> draws;
+    std::vector<Bounds> object_bounds;  // model space, per scene object
+    std::vector<std::string> warnings;  // from mesh loading, for the user
+
+    // Model-space vertex data of all draws, concatenated.
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<glm::vec2> uvs;
+    std::vector<uint32_t> vertex_draw;
+
+    std::vector<uint32_t> indices;        // global vertex indices, three per triangle
+    std::vector<uint32_t> triangle_draw;  // per triangle
+    std::vector<uint8_t> cull_back;       // per triangle
+
+    size_t triangle_count() const { return triangle_draw.size(); }
+};
+
+// Loads every mesh and texture the scene names. Errors name the scene file
+// location of the object that refers to the bad file.
+World build_world(const SceneDesc& scene);
+
+}  // namespace facet

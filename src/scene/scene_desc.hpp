@@ -1,0 +1,156 @@
+#pragma once
+// The scene as plain records, straight from the YAML files, each value that a
+// user can get wrong keeping the place it came from. Nothing here loads
+// meshes or builds render objects: that happens later, from these records.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/error.hpp"
+
+namespace facet {
+
+// The shading models a style can select (docs/styles.md).
+enum class ShadingModel { flat, gouraud, phong, blinn_phong, unlit, depth, normal };
+
+struct StyleDesc {
+    std::string name;         // preset name, file stem, or "inline"
+    std::string description;  // one line, shown by `facet styles`
+    ShadingModel shading = ShadingModel::blinn_phong;
+    // Depth view range in scene units; unset means "fit the scene's bounds".
+    std::optional<glm::vec2> depth_range;
+    SourceLocation where;
+};
+
+struct OutputDesc {
+    int width = 1280;
+    int height = 720;
+    std::vector<int> frames = {1};
+    std::string frames_text = "1";
+    double fps = 24;
+    bool write_color = true;
+    bool write_depth = false;
+    bool write_png = true;
+    bool write_exr = false;
+    glm::vec4 background = {0, 0, 0, 1};  // linear RGBA
+    int png_compression = 6;              // zlib level 0..9
+    // Range of linear depth mapped to white..black in the 16-bit depth PNG;
+    // unset means "fit the scene's bounds" (docs/scene-format.md).
+    std::optional<glm::vec2> depth_range;
+    SourceLocation where;
+};
+
+struct OrbitDesc {
+    glm::vec3 center = {0, 0, 0};
+    float radius = 5;
+    float elevation = 20;    // degrees above the centre's horizontal plane
+    float start_angle = 0;   // degrees around +Y; 0 puts the camera on +Z
+    float turns = 1;         // full circles over the frame range; negative turns clockwise
+};
+
+struct CameraDesc {
+    glm::vec3 position = {0, 1, 5};
+    glm::vec3 target = {0, 0, 0};
+    glm::vec3 up = {0, 1, 0};
+    float fov = 45;  // vertical, degrees
+    float near = 0.1f;
+    float far = 100;
+    std::optional<OrbitDesc> orbit;
+    SourceLocation where;
+};
+
+enum class LightType { directional, point };
+
+struct LightDesc {
+    LightType type = LightType::directional;
+    glm::vec3 direction = {0, -1, 0};  // the way the light travels (directional)
+    glm::vec3 position = {0, 0, 0};    // point lights
+    glm::vec3 color = {1, 1, 1};
+    float intensity = 1;
+    SourceLocation where;
+};
+
+enum class TextureWrap { repeat, clamp };
+
+// Values the scene sets on an object's material; unset ones keep what the
+// mesh file says (or the defaults for primitives).
+struct MaterialDesc {
+    std::optional<glm::vec3> color;
+    std::optional<float> ambient, diffuse, specular, shininess;
+    std::optional<std::string> texture;  // resolved against the scene file
+    SourceLocation texture_at;
+    std::optional<TextureWrap> wrap;
+    std::optional<bool> double_sided;
+};
+
+struct PrimitiveDesc {
+    std::string type;  // plane, cube, sphere, cylinder, cone
+    float size = 1;    // plane edge, cube edge
+    float radius = 0.5f;
+    float height = 1;
+    int segments = 32;  // around the axis
+    int rings = 16;     // sphere latitude bands
+    SourceLocation where;
+};
+
+struct SpinDesc {
+    glm::vec3 axis = {0, 1, 0};
+    float turns = 1;  // over the frame range
+};
+
+struct ObjectDesc {
+    std::string name;
+    std::string mesh;  // resolved path, empty for primitives
+    SourceLocation mesh_at;
+    std::optional<PrimitiveDesc> primitive;
+    glm::vec3 translate = {0, 0, 0};
+    glm::vec3 rotate = {0, 0, 0};  // Euler degrees, applied X then Y then Z
+    glm::vec3 scale = {1, 1, 1};
+    MaterialDesc material;
+    std::optional<SpinDesc> spin;
+    bool visible = true;
+    SourceLocation where;
+};
+
+struct SceneDesc {
+    std::string path;       // the scene file as given
+    std::string name;       // its stem, used in output paths
+    std::string directory;  // where relative paths resolve
+    OutputDesc output;
+    StyleDesc style;
+    CameraDesc camera;
+    std::vector<LightDesc> lights;
+    std::vector<ObjectDesc> objects;
+};
+
+// One `-D key.path=value` (or a command-line option turned into one).
+struct Override {
+    std::string path;   // dotted, list items by index: objects.0.material.color
+    std::string value;  // YAML text
+    std::string origin; // how the user wrote it, for error messages
+};
+
+struct SceneOptions {
+    std::vector<Override> overrides;
+    // Folders searched for style presets by name, in order.
+    std::vector<std::string> style_dirs;
+};
+
+// Reads and checks a scene file. Throws facet::Error (exit code 2) naming
+// file, line, column and key for anything wrong.
+SceneDesc load_scene(const std::string& path, const SceneOptions& options);
+
+// Reads a style preset file.
+StyleDesc load_style_file(const std::string& path);
+
+// The preset files found in the given folders: name -> path, first folder wins.
+std::vector<std::pair<std::string, std::string>> list_style_presets(
+    const std::vector<std::string>& style_dirs);
+
+const char* shading_model_name(ShadingModel model);
+
+}  // namespace facet

@@ -1,0 +1,291 @@
+#include "scene/yaml_field.hpp"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "scene/scene_desc.hpp"
+
+namespace facet {
+namespace {
+
+std::string join_path(const std::string& parent, const std::string& key) {
+    return parent.empty() ? key : parent + "." + key;
+}
+
+float srgb_to_linear(float c) {
+    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
+
+bool parse_hex_color(const std::string& text, glm::vec4& out) {
+    if (text.size() != 7 && text.size() != 9) return false;
+    if (text[0] != '#') return false;
+    float channels[4] = {0, 0, 0, 1};
+    for (size_t i = 1, c = 0; i < text.size(); i += 2, ++c) {
+        char* end = nullptr;
+        std::string byte = text.substr(i, 2);
+        long value = std::strtol(byte.c_str(), &end, 16);
+        if (end != byte.c_str() + 2) return false;
+        channels[c] = static_cast<float>(value) / 255.0f;
+    }
+    // Colour pickers give sRGB; shading is linear (shared/design.md §2). Alpha is linear.
+    out = {srgb_to_linear(channels[0]), srgb_to_linear(channels[1]), srgb_to_linear(channels[2]),
+           channels[3]};
+    return true;
+}
+
+std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& name) {
+    auto doc = std::make_shared<YamlDocument>();
+    doc->file = name;
+    try {
+        doc->root = YAML::Load(text);
+    } catch (const YAML::Exception& e) {
+        SourceLocation where{name, e.mark.line + 1, e.mark.column + 1, ""};
+        throw Error(ExitCode::invalid_input, where, "", "YAML syntax error: " + e.msg);
+    }
+    return doc;
+}
+
+}  // namespace
+
+std::shared_ptr<YamlDocument> read_yaml_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw Error(ExitCode::invalid_input, path + ": cannot open file");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) throw Error(ExitCode::io_failure, path + ": read error");
+    return parse(buffer.str(), path);
+}
+
+std::shared_ptr<YamlDocument> read_yaml_text(const std::string& text, const std::string& name) {
+    return parse(text, name);
+}
+
+Field root_field(const std::shared_ptr<YamlDocument>& doc) { return Field(doc, doc->root, ""); }
+
+Field::Field(std::shared_ptr<const YamlDocument> doc, YAML::Node node, std::string path)
+    : doc_(std::move(doc)), node_(std::move(node)), path_(std::move(path)) {}
+
+SourceLocation Field::where() const {
+    // A value set from the command line is reported as the command line.
+    for (const auto& [path, origin] : doc_->overridden) {
+        if (path_ == path || path_.rfind(path + ".", 0) == 0) return {"", 0, 0, origin};
+    }
+    SourceLocation loc{doc_->file, 0, 0, ""};
+    if (node_) {
+        YAML::Mark mark = node_.Mark();
+        if (!mark.is_null()) {
+            loc.line = mark.line + 1;
+            loc.column = mark.column + 1;
+        }
+    }
+    return loc;
+}
+
+void Field::fail(const std::string& message) const {
+    fail_input(where(), path_.empty() ? "" : path_, message);
+}
+
+std::string Field::scalar_for_message() const {
+    if (!node_ || node_.IsNull()) return "nothing";
+    if (node_.IsScalar()) return "'" + node_.Scalar() + "'";
+    if (node_.IsSequence()) return "a list";
+    return "a mapping";
+}
+
+void Field::expect_map() const {
+    if (!node_.IsMap()) fail("must be a mapping of keys to values, got " + scalar_for_message());
+}
+
+void Field::check_keys(std::initializer_list<const char*> allowed) const {
+    expect_map();
+    for (auto it = node_.begin(); it != node_.end(); ++it) {
+        std::string key = it->first.Scalar();
+        bool known = false;
+        for (const char* name : allowed) known = known || key == name;
+        if (!known) {
+            std::string list;
+            for (const char* name : allowed) list += std::string(list.empty() ? "" : ", ") + name;
+            Field key_field(doc_, it->first, join_path(path_, key));
+            key_field.fail("unknown key (expected one of: " + list + ")");
+        }
+    }
+}
+
+bool Field::has(const std::string& key) const {
+    return node_.IsMap() && node_[key] && !node_[key].IsNull();
+}
+
+Field Field::operator[](const std::string& key) const {
+    expect_map();
+    return Field(doc_, node_[key], join_path(path_, key));
+}
+
+Field Field::require(const std::string& key) const {
+    if (!has(key)) fail("missing required key '" + key + "'");
+    return (*this)[key];
+}
+
+std::vector<std::string> Field::keys() const {
+    expect_map();
+    std::vector<std::string> out;
+    for (auto it = node_.begin(); it != node_.end(); ++it) out.push_back(it->first.Scalar());
+    return out;
+}
+
+size_t Field::size() const {
+    if (!node_.IsSequence()) fail("must be a list, got " + scalar_for_message());
+    return node_.size();
+}
+
+Field Field::operator[](size_t index) const {
+    return Field(doc_, node_[index], join_path(path_, std::to_string(index)));
+}
+
+std::string Field::text() const {
+    if (!node_.IsScalar()) fail("must be a text value, got " + scalar_for_message());
+    return node_.Scalar();
+}
+
+double Field::number(double min, double max) const {
+    if (!node_.IsScalar()) fail("must be a number, got " + scalar_for_message());
+    const std::string& s = node_.Scalar();
+    char* end = nullptr;
+    double value = std::strtod(s.c_str(), &end);
+    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
+        fail("must be a number, got '" + s + "'");
+    if (value < min || value > max) {
+        std::ostringstream range;
+        range << "must be between " << min << " and " << max << ", got " << s;
+        fail(range.str());
+    }
+    return value;
+}
+
+int Field::integer(int min, int max) const {
+    double value = number(min, max);
+    if (value != std::floor(value)) fail("must be a whole number, got " + node_.Scalar());
+    return static_cast<int>(value);
+}
+
+bool Field::boolean() const {
+    if (node_.IsScalar()) {
+        const std::string& s = node_.Scalar();
+        if (s == "true" || s == "yes" || s == "on") return true;
+        if (s == "false" || s == "no" || s == "off") return false;
+    }
+    fail("must be true or false, got " + scalar_for_message());
+}
+
+std::vector<double> Field::numbers(size_t min_count, size_t max_count) const {
+    if (!node_.IsSequence() || node_.size() < min_count || node_.size() > max_count) {
+        std::string count = min_count == max_count ? std::to_string(min_count)
+                                                   : std::to_string(min_count) + " or " +
+                                                         std::to_string(max_count);
+        fail("must be a list of " + count + " numbers, got " + scalar_for_message() +
+             (node_.IsSequence() ? " of " + std::to_string(node_.size()) : ""));
+    }
+    std::vector<double> out;
+    for (size_t i = 0; i < node_.size(); ++i) out.push_back((*this)[i].number(-1e30, 1e30));
+    return out;
+}
+
+glm::vec2 Field::vec2() const {
+    auto v = numbers(2, 2);
+    return {v[0], v[1]};
+}
+
+glm::vec3 Field::vec3() const {
+    auto v = numbers(3, 3);
+    return {v[0], v[1], v[2]};
+}
+
+glm::vec4 Field::color4() const {
+    glm::vec4 out;
+    if (node_.IsScalar() && parse_hex_color(node_.Scalar(), out)) return out;
+    if (node_.IsScalar()) fail("must be a colour: [r, g, b], [r, g, b, a] or '#rrggbb', got '" +
+                               node_.Scalar() + "'");
+    auto v = numbers(3, 4);
+    for (size_t i = 0; i < v.size(); ++i)
+        if (v[i] < 0) (*this)[i].fail("colour components must be >= 0");
+    return {v[0], v[1], v[2], v.size() == 4 ? v[3] : 1.0};
+}
+
+glm::vec3 Field::color3() const {
+    if (node_.IsSequence() && node_.size() != 3) numbers(3, 3);  // reports the count
+    if (node_.IsScalar() && node_.Scalar().size() == 9) fail("must be an RGB colour '#rrggbb'");
+    return glm::vec3(color4());
+}
+
+std::string Field::choice(std::initializer_list<const char*> words) const {
+    std::string value = text();
+    std::string list;
+    for (const char* word : words) {
+        if (value == word) return value;
+        list += std::string(list.empty() ? "" : ", ") + word;
+    }
+    fail("must be one of: " + list + "; got '" + value + "'");
+}
+
+std::vector<std::string> Field::choices(std::initializer_list<const char*> words) const {
+    std::vector<std::string> out;
+    if (node_.IsScalar()) return {choice(words)};
+    for (size_t i = 0; i < size(); ++i) out.push_back((*this)[i].choice(words));
+    return out;
+}
+
+void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) {
+    for (const Override& ov : overrides) {
+        SourceLocation origin{"", 0, 0, ov.origin};
+        if (ov.path.empty()) fail_input(origin, "", "the key path is empty");
+        YAML::Node value;
+        try {
+            value = YAML::Load(ov.value);
+        } catch (const YAML::Exception& e) {
+            fail_input(origin, ov.path, "value is not valid YAML: " + e.msg);
+        }
+        if (!doc.root || doc.root.IsNull()) doc.root = YAML::Node(YAML::NodeType::Map);
+        YAML::Node current = doc.root;
+        std::string walked;
+        size_t start = 0;
+        for (;;) {
+            size_t dot = ov.path.find('.', start);
+            std::string part = ov.path.substr(start, dot == std::string::npos ? std::string::npos
+                                                                               : dot - start);
+            walked = join_path(walked, part);
+            if (part.empty()) fail_input(origin, ov.path, "the key path has an empty part");
+            bool last = dot == std::string::npos;
+            if (current.IsSequence()) {
+                char* end = nullptr;
+                long index = std::strtol(part.c_str(), &end, 10);
+                if (end != part.c_str() + part.size() || index < 0 ||
+                    static_cast<size_t>(index) >= current.size())
+                    fail_input(origin, walked,
+                               "'" + walked + "' is a list of " + std::to_string(current.size()) +
+                                   " items; use an index from 0 to " +
+                                   std::to_string(current.size() == 0 ? 0 : current.size() - 1));
+                if (last) {
+                    current[static_cast<size_t>(index)] = value;
+                    break;
+                }
+                YAML::Node next = current[static_cast<size_t>(index)];
+                current.reset(next);  // rebind, do not assign through the reference
+            } else {
+                if (current.IsScalar())
+                    fail_input(origin, walked, "cannot set a key inside a plain value");
+                if (last) {
+                    current[part] = value;
+                    break;
+                }
+                if (!current[part] || current[part].IsNull() || current[part].IsScalar())
+                    current[part] = YAML::Node(YAML::NodeType::Map);
+                YAML::Node next = current[part];
+                current.reset(next);
+            }
+            start = dot + 1;
+        }
+        doc.overridden[ov.path] = ov.origin;
+    }
+}
+
+}  // namespace facet

@@ -1,0 +1,85 @@
+#pragma once
+// A YAML node together with its dotted key path and the file it came from,
+// so that every conversion can report exactly where a bad value is.
+// Internal to the scene module (the only yaml-cpp user).
+#include <initializer_list>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <yaml-cpp/yaml.h>
+
+#include "core/error.hpp"
+
+namespace facet {
+
+struct YamlDocument {
+    std::string file;
+    YAML::Node root;
+    // Key paths whose values came from the command line, with how the user wrote them.
+    std::map<std::string, std::string> overridden;
+};
+
+// Parses a YAML file; syntax errors become facet::Error with line and column.
+std::shared_ptr<YamlDocument> read_yaml_file(const std::string& path);
+std::shared_ptr<YamlDocument> read_yaml_text(const std::string& text, const std::string& name);
+
+class Field {
+public:
+    Field(std::shared_ptr<const YamlDocument> doc, YAML::Node node, std::string path);
+
+    const std::string& path() const { return path_; }
+    SourceLocation where() const;
+    [[noreturn]] void fail(const std::string& message) const;
+
+    bool is_map() const { return node_.IsMap(); }
+    bool is_sequence() const { return node_.IsSequence(); }
+    bool is_scalar() const { return node_.IsScalar(); }
+    bool is_null() const { return !node_ || node_.IsNull(); }
+
+    // Mapping access. Every key of the mapping must be in `allowed`.
+    void expect_map() const;
+    void check_keys(std::initializer_list<const char*> allowed) const;
+    bool has(const std::string& key) const;
+    Field operator[](const std::string& key) const;  // key must exist (see has)
+    Field require(const std::string& key) const;     // fails at this mapping if missing
+    std::vector<std::string> keys() const;
+
+    // Sequence access.
+    size_t size() const;
+    Field operator[](size_t index) const;
+
+    // Conversions; each fails with the key and the allowed range.
+    std::string text() const;
+    double number(double min, double max) const;
+    int integer(int min, int max) const;
+    bool boolean() const;
+    glm::vec2 vec2() const;
+    glm::vec3 vec3() const;
+    glm::vec3 color3() const;  // [r, g, b] linear, or "#rrggbb" sRGB
+    glm::vec4 color4() const;  // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
+    // One of the given words.
+    std::string choice(std::initializer_list<const char*> words) const;
+    // A list of words from the given set.
+    std::vector<std::string> choices(std::initializer_list<const char*> words) const;
+
+private:
+    std::vector<double> numbers(size_t min_count, size_t max_count) const;
+    std::string scalar_for_message() const;
+
+    std::shared_ptr<const YamlDocument> doc_;
+    YAML::Node node_;
+    std::string path_;
+};
+
+Field root_field(const std::shared_ptr<YamlDocument>& doc);
+
+// Applies command-line overrides to the document, remembering their origin.
+struct Override;
+void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides);
+
+}  // namespace facet
