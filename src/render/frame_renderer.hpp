@@ -34,7 +34,9 @@ class FrameRenderer {
 public:
     FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool);
 
-    FrameImages render(int frame);
+    // Renders into `out`, reusing its buffers when they have the right size
+    // (fresh pages cost more to fault in and clear than the shading itself).
+    void render(int frame, FrameImages& out);
 
     // The depth range that fits the visible scene's bounding sphere.
     glm::vec2 depth_view_range(const FrameState& state, const CameraMatrices& camera) const;

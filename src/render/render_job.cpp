@@ -55,6 +55,15 @@ public:
         ready_.notify_one();
     }
 
+    // Buffers of a frame already written, to render the next one into.
+    FrameImages take_spare() {
+        std::lock_guard lock(mutex_);
+        if (spare_.empty()) return {};
+        FrameImages images = std::move(spare_.back());
+        spare_.pop_back();
+        return images;
+    }
+
     // Waits for all queued frames; rethrows the first encoding failure.
     Manifest finish() {
         stop();
@@ -82,9 +91,11 @@ private:
                 job = std::move(queue_.front());
                 queue_.pop_front();
             }
-            space_.notify_one();
             try {
                 encode(job);
+                std::lock_guard lock(mutex_);
+                spare_.push_back(std::move(job.images));
+                space_.notify_one();
             } catch (...) {
                 std::lock_guard lock(mutex_);
                 failure_ = std::current_exception();
@@ -124,6 +135,7 @@ private:
     std::mutex mutex_;
     std::condition_variable ready_, space_;
     std::deque<EncodeJob> queue_;
+    std::vector<FrameImages> spare_;
     bool closed_ = false;
     std::exception_ptr failure_;
     Manifest manifest_;  // touched only by the encoder thread until finish()
@@ -143,7 +155,8 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     Encoder encoder(scene, result.output_dir);
     for (size_t i = 0; i < frames.size(); ++i) {
         const auto start = Clock::now();
-        FrameImages images = renderer.render(frames[i]);
+        FrameImages images = encoder.take_spare();
+        renderer.render(frames[i], images);
         const double render_ms = ms_since(start);
         encoder.push({frames[i], render_ms, std::move(images)});
         if (on_frame) on_frame({frames[i], i + 1, frames.size(), render_ms});

@@ -126,7 +126,7 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
     : scene_(scene), world_(world), pool_(pool),
       rasterizer_(scene.output.width, scene.output.height) {}
 
-FrameImages FrameRenderer::render(int frame) {
+void FrameRenderer::render(int frame, FrameImages& out) {
     const FrameState state = evaluate_frame(scene_, frame);
     const float aspect = static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);
@@ -141,15 +141,17 @@ FrameImages FrameRenderer::render(int frame) {
     input.cull_back = world_.cull_back.data();
     rasterizer_.set_geometry(input, pool_);
 
-    FrameImages out;
-    out.color = ColorImage(scene_.output.width, scene_.output.height);
-    out.depth = DepthImage(scene_.output.width, scene_.output.height);
+    // Every pixel is written by shading (background included), so reused
+    // buffers need no clearing.
+    if (out.color.width != scene_.output.width || out.color.height != scene_.output.height)
+        out.color = ColorImage(scene_.output.width, scene_.output.height);
+    if (out.depth.width != scene_.output.width || out.depth.height != scene_.output.height)
+        out.depth = DepthImage(scene_.output.width, scene_.output.height);
     out.depth_view_range = depth_view_range(state, camera);
     const glm::vec2 style_range = scene_.style.depth_range.value_or(out.depth_view_range);
     rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
         shade_tile(tile, camera, lights, style_range, out);
     });
-    return out;
 }
 
 }  // namespace facet

@@ -1,0 +1,129 @@
+#!/usr/bin/env python3
+"""Builds the demo scene's assets from nothing but maths (so they are ours,
+CC0): a trefoil-knot tube as a binary glTF, and a checker texture as PNG.
+Run from anywhere; writes into scenes/assets/. Needs only Python 3."""
+import json
+import math
+import struct
+import zlib
+from pathlib import Path
+
+OUT = Path(__file__).resolve().parent.parent / "scenes" / "assets"
+
+
+def trefoil(t):
+    # The (2,3) torus knot, scaled to about one unit across.
+    x = math.sin(t) + 2 * math.sin(2 * t)
+    y = math.cos(t) - 2 * math.cos(2 * t)
+    z = -math.sin(3 * t)
+    return (x * 0.3, y * 0.3, z * 0.3)
+
+
+def sub(a, b): return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+def cross(a, b): return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+def norm(a):
+    n = math.sqrt(a[0] ** 2 + a[1] ** 2 + a[2] ** 2)
+    return (a[0] / n, a[1] / n, a[2] / n)
+
+
+def knot_mesh(segments=360, sides=32, radius=0.16):
+    positions, normals, uvs, indices = [], [], [], []
+    # Parallel-transport frames keep the tube from twisting.
+    tangents = [norm(sub(trefoil(2 * math.pi * (i + 1) / segments), trefoil(2 * math.pi * (i - 1) / segments)))
+                for i in range(segments)]
+    normal = norm(cross(tangents[0], (0.0, 0.0, 1.0)))
+    frames = []
+    for i in range(segments):
+        t = tangents[i]
+        normal = norm(sub(normal, tuple(t[k] * sum(normal[j] * t[j] for j in range(3)) for k in range(3))))
+        frames.append((normal, cross(t, normal)))
+    for i in range(segments + 1):
+        centre = trefoil(2 * math.pi * (i % segments) / segments)
+        n1, n2 = frames[i % segments]
+        for j in range(sides + 1):
+            a = 2 * math.pi * j / sides
+            d = tuple(n1[k] * math.cos(a) + n2[k] * math.sin(a) for k in range(3))
+            positions.append(tuple(centre[k] + radius * d[k] for k in range(3)))
+            normals.append(d)
+            uvs.append((i / segments * 8.0, j / sides))
+    row = sides + 1
+    for i in range(segments):
+        for j in range(sides):
+            a, b, c, d = i * row + j, (i + 1) * row + j, (i + 1) * row + j + 1, i * row + j + 1
+            indices += [a, d, c, a, c, b]
+    return positions, normals, uvs, indices
+
+
+def check_winding(positions, normals, indices):
+    # Outward normals and counter-clockwise faces must agree; flip if not.
+    p, n = positions, normals
+    a, b, c = indices[0:3]
+    face = cross(sub(p[b], p[a]), sub(p[c], p[a]))
+    if sum(face[k] * n[a][k] for k in range(3)) < 0:
+        for t in range(0, len(indices), 3):
+            indices[t + 1], indices[t + 2] = indices[t + 2], indices[t + 1]
+
+
+def write_glb(path, positions, normals, uvs, indices):
+    blobs = [b"".join(struct.pack("<3f", *v) for v in positions),
+             b"".join(struct.pack("<3f", *v) for v in normals),
+             b"".join(struct.pack("<2f", *v) for v in uvs),
+             b"".join(struct.pack("<I", i) for i in indices)]
+    offsets, data = [], b""
+    for blob in blobs:
+        offsets.append(len(data))
+        data += blob + b"\0" * (-len(blob) % 4)
+    lo = [min(v[k] for v in positions) for k in range(3)]
+    hi = [max(v[k] for v in positions) for k in range(3)]
+    gltf = {
+        "asset": {"version": "2.0", "generator": "facet scripts/make_demo_assets.py", "copyright": "CC0 1.0"},
+        "scene": 0, "scenes": [{"nodes": [0]}],
+        "nodes": [{"mesh": 0, "name": "knot"}],
+        "meshes": [{"name": "trefoil", "primitives": [{
+            "attributes": {"POSITION": 0, "NORMAL": 1, "TEXCOORD_0": 2}, "indices": 3, "material": 0}]}],
+        "materials": [{"name": "glaze", "pbrMetallicRoughness": {
+            "baseColorFactor": [0.9, 0.32, 0.12, 1.0], "metallicFactor": 0.0, "roughnessFactor": 0.35}}],
+        "buffers": [{"byteLength": len(data)}],
+        "bufferViews": [
+            {"buffer": 0, "byteOffset": offsets[0], "byteLength": len(blobs[0]), "target": 34962},
+            {"buffer": 0, "byteOffset": offsets[1], "byteLength": len(blobs[1]), "target": 34962},
+            {"buffer": 0, "byteOffset": offsets[2], "byteLength": len(blobs[2]), "target": 34962},
+            {"buffer": 0, "byteOffset": offsets[3], "byteLength": len(blobs[3]), "target": 34963}],
+        "accessors": [
+            {"bufferView": 0, "componentType": 5126, "count": len(positions), "type": "VEC3", "min": lo, "max": hi},
+            {"bufferView": 1, "componentType": 5126, "count": len(normals), "type": "VEC3"},
+            {"bufferView": 2, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
+            {"bufferView": 3, "componentType": 5125, "count": len(indices), "type": "SCALAR"}],
+    }
+    js = json.dumps(gltf, separators=(",", ":")).encode()
+    js += b" " * (-len(js) % 4)
+    body = struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(data), 0x004E4942) + data
+    path.write_bytes(struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body)
+
+
+def write_png(path, width, height, pixel):
+    raw = b"".join(b"\0" + b"".join(bytes(pixel(x, y)) for x in range(width)) for y in range(height))
+    def chunk(kind, payload):
+        return struct.pack(">I", len(payload)) + kind + payload + struct.pack(">I", zlib.crc32(kind + payload))
+    png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0))
+    png += chunk(b"IDAT", zlib.compress(raw, 9)) + chunk(b"IEND", b"")
+    path.write_bytes(png)
+
+
+def main():
+    OUT.mkdir(parents=True, exist_ok=True)
+    positions, normals, uvs, indices = knot_mesh()
+    check_winding(positions, normals, indices)
+    write_glb(OUT / "knot.glb", positions, normals, uvs, indices)
+    # 8x8 checker with a soft line between squares, 256x256 pixels.
+    def checker(x, y):
+        square = ((x // 32) + (y // 32)) % 2
+        edge = min(x % 32, y % 32) == 0
+        v = 70 if edge else (200 if square else 165)
+        return (v, v, v - 8)
+    write_png(OUT / "checker.png", 256, 256, checker)
+    print("wrote", OUT / "knot.glb", "and", OUT / "checker.png", f"({len(indices) // 3} triangles)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages facet needs (only those missing), then
+# configures and builds it (Release, -j2). Safe to run again: a second run
+# with nothing to do takes about a second.
+#
+#   scripts/setup.sh            build dependencies, then build
+#   scripts/setup.sh --tests    also the test data (assimp-testmodels)
+#   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build="${FACET_BUILD_DIR:-$root/build}"
+
+packages=(g++ cmake make pkg-config
+          libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
+          libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev)
+for arg in "$@"; do
+    case "$arg" in
+        --tests) packages+=(assimp-testmodels) ;;
+        --bench) packages+=(libosmesa6-dev) ;;
+        *) echo "setup.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
+    esac
+done
+
+missing=()
+for p in "${packages[@]}"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+    echo "setup: installing ${missing[*]}" >&2
+    if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null; then sudo=(sudo); else
+        echo "setup: need root to install: apt-get install ${missing[*]}" >&2; exit 1
+    fi
+    export DEBIAN_FRONTEND=noninteractive
+    "${sudo[@]}" apt-get update -qq
+    "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+fi
+cmake --build "$build" -j2 -- --no-print-directory 2>&1 | grep -vE '^\[ *[0-9]+%\]|^Consolidate|^Scanning' >&2 || true
+test -x "$build/facet" || { echo "setup: build failed" >&2; exit 1; }
