@@ -231,7 +231,10 @@ Mesh load_gltf(const std::string& path) {
         mesh.materials.push_back(mat);
     }
     const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
-    mesh.materials.push_back(Material{"default", glm::vec3(1), 0.1f, 0.8f, 0.4f, 32, nullptr, false});
+    Material fallback;
+    fallback.name = "default";
+    fallback.color = glm::vec3(1);
+    mesh.materials.push_back(fallback);
 
     auto add_mesh = [&](int mesh_index, const glm::mat4& world) {
         if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= model.meshes.size())

@@ -22,6 +22,7 @@ struct Material {
     float specular = 0.4f;
     float shininess = 32;
     std::shared_ptr<const Texture> texture;  // multiplies color
+    glm::vec2 uv_scale = {1, 1};             // texture coordinates are multiplied by this
     bool double_sided = false;
 };
 

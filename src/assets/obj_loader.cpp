@@ -1,4 +1,5 @@
 // Wavefront OBJ + MTL through tinyobjloader.
+#include <algorithm>
 #include <filesystem>
 #include <map>
 #include <tuple>
@@ -60,7 +61,10 @@ Mesh load_obj(const std::string& path) {
         mat.specular = ks;
         if (m.shininess > 0) mat.shininess = m.shininess;
         if (!m.diffuse_texname.empty()) {
-            std::string tex_path = (std::filesystem::path(dir) / m.diffuse_texname).lexically_normal().string();
+            // Files written on Windows often name textures with backslashes.
+            std::string name = m.diffuse_texname;
+            std::replace(name.begin(), name.end(), '\\', '/');
+            std::string tex_path = (std::filesystem::path(dir) / name).lexically_normal().string();
             auto& slot = textures[tex_path];
             if (!slot) {
                 try {

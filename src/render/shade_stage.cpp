@@ -64,7 +64,7 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             float alpha = 1.0f;
             if (mat.texture) {
                 const auto& uv = world_.uvs;
-                glm::vec4 texel = mat.texture->sample(b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]);
+                glm::vec4 texel = mat.texture->sample((b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]) * mat.uv_scale);
                 albedo *= glm::vec3(texel);
             }
 

@@ -17,6 +17,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     if (desc.specular) m.specular = *desc.specular;
     if (desc.shininess) m.shininess = *desc.shininess;
     if (desc.double_sided) m.double_sided = *desc.double_sided;
+    if (desc.uv_scale) m.uv_scale = *desc.uv_scale;
     if (desc.texture) {
         auto& slot = textures[*desc.texture];
         if (!slot) {

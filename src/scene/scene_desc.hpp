@@ -84,6 +84,7 @@ struct MaterialDesc {
     std::optional<std::string> texture;  // resolved against the scene file
     SourceLocation texture_at;
     std::optional<TextureWrap> wrap;
+    std::optional<glm::vec2> uv_scale;  // texture repeats across the surface
     std::optional<bool> double_sided;
 };
 

@@ -130,7 +130,7 @@ LightDesc parse_light(const Field& f) {
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
     f.check_keys({"color", "ambient", "diffuse", "specular", "shininess", "texture", "wrap",
-                  "double_sided"});
+                  "uv_scale", "double_sided"});
     if (f.has("color")) m.color = f["color"].color3();
     if (f.has("ambient")) m.ambient = static_cast<float>(f["ambient"].number(0, 1000));
     if (f.has("diffuse")) m.diffuse = static_cast<float>(f["diffuse"].number(0, 1000));
@@ -143,6 +143,10 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     if (f.has("wrap"))
         m.wrap = f["wrap"].choice({"repeat", "clamp"}) == "clamp" ? TextureWrap::clamp
                                                                    : TextureWrap::repeat;
+    if (f.has("uv_scale")) {
+        Field s = f["uv_scale"];
+        m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();
+    }
     if (f.has("double_sided")) m.double_sided = f["double_sided"].boolean();
     return m;
 }

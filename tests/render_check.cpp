@@ -1,0 +1,82 @@
+#include "render_check.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+
+#include "core/thread_pool.hpp"
+#include "output/atomic_file.hpp"
+#include "output/encoders.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/world.hpp"
+#include "support.hpp"
+
+namespace facet::test {
+namespace fs = std::filesystem;
+
+void check_render(const RenderCase& c) {
+    SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    if (!c.style.empty()) options.overrides.push_back({"style", c.style, "test style"});
+    for (const auto& d : c.defines) {
+        size_t eq = d.find('=');
+        options.overrides.push_back({d.substr(0, eq), d.substr(eq + 1), "test -D " + d});
+    }
+    SceneDesc scene = load_scene(source_path(c.scene), options);
+    World world = build_world(scene);
+    ThreadPool pool(2);
+    FrameRenderer renderer(scene, world, pool);
+    FrameImages images;
+    renderer.render(c.frame, images);
+
+    const fs::path out_dir = fs::path("render-test-output");
+    fs::create_directories(out_dir);
+    const std::string actual_path = (out_dir / c.reference).string();
+    write_file_atomically(actual_path, encode_png_color(images.color, 6));
+    const std::string reference_path = (fs::path(FACET_BASELINES) / c.reference).string();
+
+    const char* update = std::getenv("FACET_UPDATE_BASELINES");
+    if ((update && std::string(update) == "1") || !fs::exists(reference_path)) {
+        fs::copy_file(actual_path, reference_path, fs::copy_options::overwrite_existing);
+        FAIL("wrote a new reference " << reference_path << ": look at it, then commit it if it is right");
+    }
+
+    DecodedPng actual = read_png(actual_path);
+    DecodedPng reference = read_png(reference_path);
+    REQUIRE(actual.width == reference.width);
+    REQUIRE(actual.height == reference.height);
+    REQUIRE(actual.channels == reference.channels);
+    const size_t pixels = static_cast<size_t>(actual.width) * actual.height;
+    double sum = 0;
+    size_t outliers = 0;
+    std::vector<uint8_t> diff(pixels * 4, 255);
+    for (size_t p = 0; p < pixels; ++p) {
+        int worst = 0;
+        for (int ch = 0; ch < actual.channels; ++ch) {
+            size_t i = p * actual.channels + ch;
+            worst = std::max(worst, std::abs(int(actual.samples[i]) - int(reference.samples[i])));
+        }
+        sum += worst;
+        if (worst > 24) ++outliers;
+        uint8_t v = static_cast<uint8_t>(std::min(255, worst * 8));
+        diff[4 * p] = v;
+        diff[4 * p + 1] = diff[4 * p + 2] = 0;
+    }
+    const double mean = sum / static_cast<double>(pixels);
+    const double outlier_fraction = static_cast<double>(outliers) / static_cast<double>(pixels);
+    if (mean > c.tolerance.mean || outlier_fraction > c.tolerance.outliers) {
+        ColorImage diff_image(actual.width, actual.height);
+        for (size_t p = 0; p < pixels; ++p)
+            diff_image.pixels[p] = {diff[4 * p] / 255.0f, 0, 0, 1};
+        write_file_atomically((out_dir / ("diff-" + c.reference)).string(), encode_png_color(diff_image, 1));
+    }
+    INFO(c.reference << ": mean difference " << mean << " (allowed " << c.tolerance.mean << "), outliers "
+                     << outlier_fraction << " (allowed " << c.tolerance.outliers << "); actual image in "
+                     << fs::absolute(actual_path).string());
+    CHECK(mean <= c.tolerance.mean);
+    CHECK(outlier_fraction <= c.tolerance.outliers);
+}
+
+}  // namespace facet::test

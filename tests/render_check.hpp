@@ -1,0 +1,29 @@
+#pragma once
+// Render tests compare a frame against a reviewed reference image in
+// tests/baselines. A test is one line: scene, frame, reference, thresholds.
+#include <string>
+#include <vector>
+
+#include "scene/scene_desc.hpp"
+
+namespace facet::test {
+
+struct Tolerance {
+    double mean = 0.5;           // mean over pixels of the largest channel difference (0..255)
+    double outliers = 0.002;     // fraction of pixels allowed to differ by more than 24
+};
+
+struct RenderCase {
+    std::string scene;      // relative to the repository
+    int frame = 1;
+    std::string reference;  // file name in tests/baselines
+    Tolerance tolerance;
+    std::vector<std::string> defines;  // -D style overrides, "key=value"
+    std::string style;                 // --style, if not empty
+};
+
+// Renders the case and compares. A missing reference (or FACET_UPDATE_BASELINES=1)
+// writes the rendered image into tests/baselines for review and fails.
+void check_render(const RenderCase& c);
+
+}  // namespace facet::test

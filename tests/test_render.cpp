@@ -1,0 +1,21 @@
+// Render tests: each line renders one frame and compares it with a reviewed
+// reference in tests/baselines (see render_check.hpp for the thresholds).
+#include <catch2/catch.hpp>
+
+#include "render_check.hpp"
+
+using facet::test::check_render;
+
+// clang-format off
+TEST_CASE("render: demo turntable",       "[render]") { check_render({"scenes/turntable.yaml", 10, "turntable-0010.png", {}, {"output.size=[480, 270]"}}); }
+TEST_CASE("render: shapes blinn-phong",   "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-blinn-phong.png"}); }
+TEST_CASE("render: shapes phong",         "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-phong.png", {}, {}, "phong"}); }
+TEST_CASE("render: shapes gouraud",       "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-gouraud.png", {}, {}, "gouraud"}); }
+TEST_CASE("render: shapes flat",          "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-flat.png", {}, {}, "flat"}); }
+TEST_CASE("render: shapes depth view",    "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-depth.png", {}, {}, "depth"}); }
+TEST_CASE("render: shapes normals",       "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-normals.png", {}, {}, "normals"}); }
+TEST_CASE("render: floor through near",   "[render]") { check_render({"tests/scenes/near_floor.yaml", 1, "near-floor.png"}); }
+TEST_CASE("render: OBJ spider textured",  "[render]") { check_render({"tests/scenes/spider.yaml", 1, "spider.png"}); }
+TEST_CASE("render: glTF box textured",    "[render]") { check_render({"tests/scenes/box_textured.yaml", 1, "box-textured.png"}); }
+TEST_CASE("render: double-sided tubes",   "[render]") { check_render({"tests/scenes/double_sided.yaml", 1, "double-sided.png"}); }
+// clang-format on
