@@ -117,8 +117,20 @@ void add_side(Builder& b, float radius_bottom, float radius_top, float height, i
 
 Mesh make_primitive(const PrimitiveSpec& spec) {
     Builder b;
-    if (spec.segments < 3 || spec.rings < 2 || !(spec.size > 0) || !(spec.radius > 0) || !(spec.height > 0))
-        throw Error(ExitCode::invalid_input, "primitive '" + spec.type + "': sizes must be > 0, segments >= 3, rings >= 2");
+    // Sizes must be finite too: an infinite radius gives NaN normals and
+    // infinite bounds that poison the camera framing downstream.
+    auto positive = [](float v) { return v > 0 && std::isfinite(v); };
+    if (spec.segments < 3 || spec.rings < 2 || !positive(spec.size) || !positive(spec.radius) || !positive(spec.height))
+        throw Error(ExitCode::invalid_input, "primitive '" + spec.type + "': sizes must be finite and > 0, segments >= 3, rings >= 2");
+    // A scene file can ask for any tessellation; beyond this the vertex count
+    // would overflow the index arithmetic or exhaust memory instead of failing cleanly.
+    constexpr int kMaxDivisions = 65536;
+    constexpr long long kMaxGridVertices = 1 << 24;
+    if (spec.segments > kMaxDivisions || spec.rings > kMaxDivisions ||
+        (static_cast<long long>(spec.segments) + 1) * (static_cast<long long>(spec.rings) + 1) > kMaxGridVertices)
+        throw Error(ExitCode::invalid_input, "primitive '" + spec.type + "': segments and rings are too large (at most " +
+                                                 std::to_string(kMaxDivisions) + " each and " +
+                                                 std::to_string(kMaxGridVertices) + " grid vertices)");
     if (spec.type == "plane") add_plane(b, spec.size);
     else if (spec.type == "cube") add_cube(b, spec.size);
     else if (spec.type == "sphere") add_sphere(b, spec.radius, spec.segments, spec.rings);

@@ -130,8 +130,11 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
     cmd->add_option("--style", args.style, "Style preset name or file");
+    // One value per -D: a vector option would otherwise also swallow the
+    // words after it, so `render -D camera.fov=30 scene.yaml` lost its scene.
     cmd->add_option("-D,--define", args.defines, "Override a scene value: key.path=value (repeatable)")
-        ->take_all();
+        ->take_all()
+        ->allow_extra_args(false);
     cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
     cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
 }

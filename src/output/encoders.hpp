@@ -11,7 +11,8 @@
 
 namespace facet {
 
-// 8-bit sRGB RGBA PNG from linear colour. `compression` is zlib's 0..9.
+// 8-bit sRGB PNG from linear colour: RGB when every pixel is opaque, RGBA
+// otherwise. `compression` is zlib's 0..9.
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 
 // 16-bit grey PNG view of linear depth: range.x (near) maps to 65535,

@@ -54,7 +54,7 @@ bool write_png(std::vector<uint8_t>& out, int width, int height, int bit_depth, 
     if (compression <= 2) png_set_filter(png, 0, PNG_FILTER_UP);
     png_set_IHDR(png, info, width, height, bit_depth, color_type, PNG_INTERLACE_NONE,
                  PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-    if (color_type == PNG_COLOR_TYPE_RGBA) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    if (color_type != PNG_COLOR_TYPE_GRAY) png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
     png_write_info(png, info);
     if (bit_depth == 16) png_set_swap(png);  // our samples are little-endian in memory
     for (int y = 0; y < height; ++y)
@@ -68,17 +68,22 @@ bool write_png(std::vector<uint8_t>& out, int width, int height, int bit_depth, 
 
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) {
     const auto& table = linear_to_srgb8_table();
-    std::vector<uint8_t> pixels(static_cast<size_t>(image.width) * image.height * 4);
+    // Opaque images are written as RGB: a quarter less data to compress.
+    bool opaque = true;
+    for (const glm::vec4& c : image.pixels) opaque = opaque && c.a >= 1.0f;
+    const size_t channels = opaque ? 3 : 4;
+    std::vector<uint8_t> pixels(static_cast<size_t>(image.width) * image.height * channels);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
         const glm::vec4& c = image.pixels[i];
-        pixels[4 * i + 0] = table[unit_to_u16(c.r)];
-        pixels[4 * i + 1] = table[unit_to_u16(c.g)];
-        pixels[4 * i + 2] = table[unit_to_u16(c.b)];
-        pixels[4 * i + 3] = static_cast<uint8_t>((unit_to_u16(c.a) * 255u + 32767u) / 65535u);
+        uint8_t* p = &pixels[channels * i];
+        p[0] = table[unit_to_u16(c.r)];
+        p[1] = table[unit_to_u16(c.g)];
+        p[2] = table[unit_to_u16(c.b)];
+        if (!opaque) p[3] = static_cast<uint8_t>((unit_to_u16(c.a) * 255u + 32767u) / 65535u);
     }
     std::vector<uint8_t> out;
-    if (!write_png(out, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, pixels.data(),
-                   static_cast<size_t>(image.width) * 4, compression))
+    if (!write_png(out, image.width, image.height, 8, opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA,
+                   pixels.data(), static_cast<size_t>(image.width) * channels, compression))
         throw Error(ExitCode::runtime_failure, "PNG encoding failed");
     return out;
 }

@@ -7,8 +7,42 @@
 #include <glm/geometric.hpp>
 
 #include "render/frame_renderer.hpp"
+#include "shade/lighting_batch.hpp"
 
 namespace facet {
+
+namespace {
+
+// Pixels waiting for lighting, gathered so eight are lit at once.
+struct PendingPixels {
+    SurfaceBatch surface;
+    glm::vec3 albedo[simd::kLanes];
+    float alpha[simd::kLanes];
+    glm::vec4* target[simd::kLanes];
+    int count = 0;
+};
+
+void flush(PendingPixels& pending, const glm::vec3& eye, std::span<const ShadeLight> lights,
+           Highlight highlight) {
+    if (pending.count == 0) return;
+    // Unused lanes repeat lane 0, so they compute harmless values.
+    for (int i = pending.count; i < simd::kLanes; ++i) {
+        for (simd::vf* v : {&pending.surface.px, &pending.surface.py, &pending.surface.pz,
+                            &pending.surface.nx, &pending.surface.ny, &pending.surface.nz,
+                            &pending.surface.ambient, &pending.surface.diffuse,
+                            &pending.surface.specular, &pending.surface.shininess})
+            (*v)[i] = (*v)[0];
+    }
+    LightingBatch l = light_surface_batch(pending.surface, eye, lights, highlight);
+    for (int i = 0; i < pending.count; ++i) {
+        const glm::vec3& a = pending.albedo[i];
+        *pending.target[i] = {a.x * l.dr[i] + l.sr[i], a.y * l.dg[i] + l.sg[i],
+                              a.z * l.db[i] + l.sb[i], pending.alpha[i]};
+    }
+    pending.count = 0;
+}
+
+}  // namespace
 
 void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
                                std::span<const ShadeLight> lights, glm::vec2 depth_range,
@@ -17,6 +51,7 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
     const glm::vec4 background = scene_.output.background;
     const float infinity = std::numeric_limits<float>::infinity();
     const Highlight highlight = model == ShadingModel::phong ? Highlight::phong : Highlight::blinn;
+    PendingPixels pending;
 
     for (int ty = 0; ty < tile.height; ++ty) {
         const int y = tile.y0 + ty;
@@ -47,18 +82,6 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             const Draw& draw = world_.draws[world_.triangle_draw[tri]];
             const Material& mat = world_.materials[draw.material];
             const auto& wp = vertices_.world_position;
-            const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
-
-            glm::vec3 normal;
-            if (model == ShadingModel::flat) {
-                normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
-            } else {
-                const auto& wn = vertices_.world_normal;
-                normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
-            }
-            float len = glm::length(normal);
-            normal = len > 0 ? normal / len : glm::vec3(0, 1, 0);
-            if (s.back_facing) normal = -normal;
 
             glm::vec3 albedo = mat.color;
             float alpha = 1.0f;
@@ -67,37 +90,55 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
                 glm::vec4 texel = mat.texture->sample((b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]) * mat.uv_scale);
                 albedo *= glm::vec3(texel);
             }
-
-            glm::vec3 rgb;
-            switch (model) {
-                case ShadingModel::unlit: rgb = albedo; break;
-                case ShadingModel::normal: {
-                    glm::vec3 n = normal * 0.5f + 0.5f;  // shown as stored bytes, so undo sRGB
-                    rgb = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z)};
-                    break;
-                }
-                case ShadingModel::depth: {
-                    float t = (depth_range.y - w) / (depth_range.y - depth_range.x);
-                    rgb = glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f)));
-                    break;
-                }
-                case ShadingModel::gouraud: {
-                    const auto& lit = vertices_.lit;
-                    glm::vec3 diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
-                    glm::vec3 specular = b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
-                    rgb = albedo * diffuse + specular;
-                    break;
-                }
-                default: {
-                    SurfacePoint p{position, normal, glm::normalize(camera.position - position)};
-                    LightingResult l = light_surface(
-                        p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess}, lights, highlight);
-                    rgb = albedo * l.diffuse + l.specular;
-                }
+            if (model == ShadingModel::unlit) {
+                color_row[tx] = glm::vec4(albedo, alpha);
+                continue;
             }
-            color_row[tx] = glm::vec4(rgb, alpha);
+            if (model == ShadingModel::depth) {
+                float t = (depth_range.y - w) / (depth_range.y - depth_range.x);
+                color_row[tx] = glm::vec4(glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f))), 1.0f);
+                continue;
+            }
+            if (model == ShadingModel::gouraud) {
+                const auto& lit = vertices_.lit;
+                glm::vec3 diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
+                glm::vec3 specular = b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
+                color_row[tx] = glm::vec4(albedo * diffuse + specular, alpha);
+                continue;
+            }
+
+            glm::vec3 normal;
+            if (model == ShadingModel::flat) {
+                normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
+            } else {
+                const auto& wn = vertices_.world_normal;
+                normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
+            }
+            if (s.back_facing) normal = -normal;
+            if (model == ShadingModel::normal) {
+                float len = glm::length(normal);
+                glm::vec3 n = (len > 0 ? normal / len : glm::vec3(0, 1, 0)) * 0.5f + 0.5f;
+                // Shown as the stored bytes, so undo the sRGB encoding to come.
+                color_row[tx] = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z), 1.0f};
+                continue;
+            }
+            // flat, phong and blinn_phong: lit eight pixels at a time.
+            const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
+            const int lane = pending.count++;
+            SurfaceBatch& sb = pending.surface;
+            sb.px[lane] = position.x; sb.py[lane] = position.y; sb.pz[lane] = position.z;
+            sb.nx[lane] = normal.x; sb.ny[lane] = normal.y; sb.nz[lane] = normal.z;
+            sb.ambient[lane] = mat.ambient;
+            sb.diffuse[lane] = mat.diffuse;
+            sb.specular[lane] = mat.specular;
+            sb.shininess[lane] = mat.shininess;
+            pending.albedo[lane] = albedo;
+            pending.alpha[lane] = alpha;
+            pending.target[lane] = &color_row[tx];
+            if (pending.count == simd::kLanes) flush(pending, camera.position, lights, highlight);
         }
     }
+    flush(pending, camera.position, lights, highlight);
 }
 
 glm::vec2 FrameRenderer::depth_view_range(const FrameState& state, const CameraMatrices& camera) const {

@@ -247,10 +247,13 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     if (objects.size() == 0) objects.fail("the scene has no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
         scene.objects.push_back(parse_object(objects[i], i, scene.directory));
-        for (size_t j = 0; j < i; ++j)
-            if (scene.objects[j].name == scene.objects[i].name)
-                objects[i]["name"].fail("another object is already named '" +
-                                        scene.objects[i].name + "'");
+        for (size_t j = 0; j < i; ++j) {
+            if (scene.objects[j].name != scene.objects[i].name) continue;
+            // An unnamed object got its name from its index; it has no `name`
+            // text to point at, so the object itself is blamed.
+            Field at = objects[i].has("name") ? objects[i]["name"] : objects[i];
+            at.fail("another object is already named '" + scene.objects[i].name + "'");
+        }
     }
     return scene;
 }

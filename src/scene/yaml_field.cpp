@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 #include "scene/scene_desc.hpp"
@@ -99,8 +100,14 @@ void Field::expect_map() const {
 
 void Field::check_keys(std::initializer_list<const char*> allowed) const {
     expect_map();
+    std::set<std::string> seen;
     for (auto it = node_.begin(); it != node_.end(); ++it) {
         std::string key = it->first.Scalar();
+        // yaml-cpp accepts repeated keys and lookups find the first, so a
+        // later `fov: 40` under `fov: 30` would be silently ignored. YAML
+        // itself forbids repeats.
+        if (!seen.insert(key).second)
+            Field(doc_, it->first, join_path(path_, key)).fail("key given more than once");
         bool known = false;
         for (const char* name : allowed) known = known || key == name;
         if (!known) {
@@ -240,7 +247,13 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
         if (ov.path.empty()) fail_input(origin, "", "the key path is empty");
         YAML::Node value;
         try {
-            value = YAML::Load(ov.value);
+            // On the command line '#rrggbb' is a colour, not a YAML comment
+            // (which would make the value null and the override vanish).
+            size_t first = ov.value.find_first_not_of(' ');
+            if (first != std::string::npos && ov.value[first] == '#')
+                value = YAML::Node(ov.value.substr(first));
+            else
+                value = YAML::Load(ov.value);
         } catch (const YAML::Exception& e) {
             fail_input(origin, ov.path, "value is not valid YAML: " + e.msg);
         }
@@ -252,18 +265,21 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
             size_t dot = ov.path.find('.', start);
             std::string part = ov.path.substr(start, dot == std::string::npos ? std::string::npos
                                                                                : dot - start);
+            const std::string parent = walked;
             walked = join_path(walked, part);
             if (part.empty()) fail_input(origin, ov.path, "the key path has an empty part");
             bool last = dot == std::string::npos;
             if (current.IsSequence()) {
                 char* end = nullptr;
                 long index = std::strtol(part.c_str(), &end, 10);
+                if (current.size() == 0)
+                    fail_input(origin, walked, "'" + parent + "' is an empty list; there is no item " + part);
                 if (end != part.c_str() + part.size() || index < 0 ||
                     static_cast<size_t>(index) >= current.size())
                     fail_input(origin, walked,
                                "'" + walked + "' is a list of " + std::to_string(current.size()) +
                                    " items; use an index from 0 to " +
-                                   std::to_string(current.size() == 0 ? 0 : current.size() - 1));
+                                   std::to_string(current.size() - 1));
                 if (last) {
                     current[static_cast<size_t>(index)] = value;
                     break;

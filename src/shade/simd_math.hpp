@@ -1,0 +1,69 @@
+#pragma once
+// Eight-lane float maths with GCC vector extensions. Only IEEE-exact
+// operations are used (add, mul, div, sqrt, compares, bit moves), so every
+// lane gives the same bits as the same code run one value at a time, on
+// any x86-64 (SSE2 or AVX2 code paths alike). That keeps images identical
+// across machines, not only across thread counts.
+#include <cstdint>
+
+// The vectors are 32 bytes; on baseline x86-64 GCC warns that passing them
+// by value differs from AVX code. These helpers are inlined, never called
+// across that boundary.
+#pragma GCC diagnostic ignored "-Wpsabi"
+
+namespace facet::simd {
+
+constexpr int kLanes = 8;
+typedef float vf __attribute__((vector_size(32)));
+typedef int32_t vi __attribute__((vector_size(32)));
+
+inline vf splat(float v) { return vf{v, v, v, v, v, v, v, v}; }
+inline vi splat_i(int32_t v) { return vi{v, v, v, v, v, v, v, v}; }
+
+inline vf vsqrt(vf x) {
+    vf r;
+    for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(x[i]);
+    return r;
+}
+
+inline vf vmax(vf a, vf b) { return a > b ? a : b; }
+inline vf vmin(vf a, vf b) { return a < b ? a : b; }
+
+// log2 for positive, normal x. The mantissa is centred on 1 (in
+// [sqrt(1/2), sqrt(2))) and log(m) summed as 2 atanh((m-1)/(m+1)), whose
+// odd series converges fast there: five terms give about 1e-7 relative.
+inline vf vlog2(vf x) {
+    vi bits = (vi)x;
+    vi exponent = ((bits >> 23) & 0xff) - 127;
+    vi mantissa_bits = (bits & 0x7fffff) | 0x3f800000;
+    vf m = (vf)mantissa_bits;
+    vi big = m > splat(1.41421356f);  // -1 where true
+    m = big ? m * 0.5f : m;
+    exponent -= big;
+    vf t = (m - 1.0f) / (m + 1.0f);
+    vf t2 = t * t;
+    vf series = t * (2.0f + t2 * (2.0f / 3 + t2 * (2.0f / 5 + t2 * (2.0f / 7 + t2 * (2.0f / 9)))));
+    return __builtin_convertvector(exponent, vf) + series * 1.44269504f;  // 1/ln 2
+}
+
+// 2^y for y in [-126, 0]; smaller y gives about 1e-38.
+inline vf vexp2(vf y) {
+    y = vmax(y, splat(-126.0f));
+    vi whole = __builtin_convertvector(y, vi);  // truncates towards zero
+    whole += (__builtin_convertvector(whole, vf) > y);  // -1 where truncation rounded up: floor
+    vf f = y - __builtin_convertvector(whole, vf);  // in [0, 1)
+    // e^(f ln 2) by Taylor series to degree 8: error below 1e-7 on [0, 1).
+    vf z = f * 0.69314718f;
+    vf p = 1.0f + z * (1.0f + z * (0.5f + z * (1.0f / 6 + z * (1.0f / 24 + z * (1.0f / 120 +
+                z * (1.0f / 720 + z * (1.0f / 5040 + z * (1.0f / 40320))))))));
+    vi scale_bits = (whole + 127) << 23;
+    return p * (vf)scale_bits;
+}
+
+// x^s for x in (0, 1] and s >= 0, as a highlight needs.
+inline vf vpow_unit(vf x, vf s) {
+    x = vmax(x, splat(1e-30f));
+    return vexp2(s * vlog2(x));
+}
+
+}  // namespace facet::simd
