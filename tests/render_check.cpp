@@ -40,7 +40,8 @@ void check_render(const RenderCase& c) {
     const char* update = std::getenv("FACET_UPDATE_BASELINES");
     if ((update && std::string(update) == "1") || !fs::exists(reference_path)) {
         fs::copy_file(actual_path, reference_path, fs::copy_options::overwrite_existing);
-        FAIL("wrote a new reference " << reference_path << ": look at it, then commit it if it is right");
+        FAIL("wrote a new reference " << reference_path
+                                      << ": look at it, then commit it if it is right");
     }
 
     DecodedPng actual = read_png(actual_path);
@@ -70,13 +71,13 @@ void check_render(const RenderCase& c) {
     const double outlier_fraction = static_cast<double>(outliers) / static_cast<double>(pixels);
     if (mean > c.tolerance.mean || outlier_fraction > c.tolerance.outliers) {
         ColorImage diff_image(actual.width, actual.height);
-        for (size_t p = 0; p < pixels; ++p)
-            diff_image.pixels[p] = {diff[4 * p] / 255.0f, 0, 0, 1};
-        write_file_atomically((out_dir / ("diff-" + c.reference)).string(), encode_png_color(diff_image, 1));
+        for (size_t p = 0; p < pixels; ++p) diff_image.pixels[p] = {diff[4 * p] / 255.0f, 0, 0, 1};
+        write_file_atomically((out_dir / ("diff-" + c.reference)).string(),
+                              encode_png_color(diff_image, 1));
     }
-    INFO(c.reference << ": mean difference " << mean << " (allowed " << c.tolerance.mean << "), outliers "
-                     << outlier_fraction << " (allowed " << c.tolerance.outliers << "); actual image in "
-                     << fs::absolute(actual_path).string());
+    INFO(c.reference << ": mean difference " << mean << " (allowed " << c.tolerance.mean
+                     << "), outliers " << outlier_fraction << " (allowed " << c.tolerance.outliers
+                     << "); actual image in " << fs::absolute(actual_path).string());
     CHECK(mean <= c.tolerance.mean);
     CHECK(outlier_fraction <= c.tolerance.outliers);
 }

@@ -9,12 +9,12 @@
 namespace facet::test {
 
 struct Tolerance {
-    double mean = 0.5;           // mean over pixels of the largest channel difference (0..255)
-    double outliers = 0.002;     // fraction of pixels allowed to differ by more than 24
+    double mean = 0.5;        // mean over pixels of the largest channel difference (0..255)
+    double outliers = 0.002;  // fraction of pixels allowed to differ by more than 24
 };
 
 struct RenderCase {
-    std::string scene;      // relative to the repository
+    std::string scene;  // relative to the repository
     int frame = 1;
     std::string reference;  // file name in tests/baselines
     Tolerance tolerance;

@@ -1,19 +1,20 @@
 #pragma once
 // Helpers shared by the test files: temporary folders, writing small files,
 // and running the facet executable as a user would.
+#include <sys/wait.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
-#include <sys/wait.h>
 
 namespace facet::test {
 
 // A fresh folder under the system temp dir, removed when the object dies.
 class TempDir {
-public:
+  public:
     explicit TempDir(const std::string& tag) {
-        std::string base = (std::filesystem::temp_directory_path() / ("facet-test-" + tag + "-XXXXXX")).string();
+        std::string base =
+            (std::filesystem::temp_directory_path() / ("facet-test-" + tag + "-XXXXXX")).string();
         path_ = ::mkdtemp(base.data()) ? base : std::string();
     }
     ~TempDir() {
@@ -21,9 +22,11 @@ public:
         if (!path_.empty()) std::filesystem::remove_all(path_, ec);
     }
     const std::string& path() const { return path_; }
-    std::string file(const std::string& name) const { return (std::filesystem::path(path_) / name).string(); }
+    std::string file(const std::string& name) const {
+        return (std::filesystem::path(path_) / name).string();
+    }
 
-private:
+  private:
     std::string path_;
 };
 

@@ -37,7 +37,7 @@ TEST_CASE("depth and colour passes hold what the docs say", "[output]") {
     REQUIRE(depth.width == 64);
     const auto& z = depth.channels[0];
     CHECK(z[24 * 64 + 32] == Approx(4.5f).epsilon(1e-5));  // centre: the front face
-    CHECK(std::isinf(z[0]));                                // corner: background
+    CHECK(std::isinf(z[0]));                               // corner: background
 
     // 16-bit PNG: depth_range [4, 5] maps 4 -> 65535 and 5 -> 0, so 4.5 -> half.
     DecodedPng depth_png = read_png(base + "depth.0001.png");

@@ -26,14 +26,16 @@ std::vector<int> coverage_of(const std::vector<glm::vec4>& clip, const std::vect
     r.draw_tiles(pool, [&](const TileVisibility& t) {
         for (int y = 0; y < t.height; ++y)
             for (int x = 0; x < t.width; ++x)
-                if (t.id[y * kTileSize + x] != kNoTriangle) covered[(t.y0 + y) * width + t.x0 + x] = 1;
+                if (t.id[y * kTileSize + x] != kNoTriangle)
+                    covered[(t.y0 + y) * width + t.x0 + x] = 1;
     });
     return covered;
 }
 
 // Pixel coordinates (x right, y down) -> NDC at w = 1.
 glm::vec4 ndc(double px, double py, int width, int height) {
-    return {static_cast<float>(px / width * 2 - 1), static_cast<float>(1 - py / height * 2), 0.5f, 1.0f};
+    return {static_cast<float>(px / width * 2 - 1), static_cast<float>(1 - py / height * 2), 0.5f,
+            1.0f};
 }
 
 // Möller & Trumbore 1997: ray/triangle hit, returning distance and barycentrics.
@@ -62,9 +64,11 @@ struct View {
     }
 };
 
-View make_view(glm::vec3 eye, glm::vec3 target, float fov = 60, float near = 0.1f, float far = 100) {
+View make_view(glm::vec3 eye, glm::vec3 target, float fov = 60, float near = 0.1f,
+               float far = 100) {
     View v;
-    v.camera = make_camera({eye, target, {0, 1, 0}, fov, near, far}, float(v.width) / float(v.height));
+    v.camera =
+        make_camera({eye, target, {0, 1, 0}, fov, near, far}, float(v.width) / float(v.height));
     return v;
 }
 
@@ -85,8 +89,13 @@ TEST_CASE("shared edges are covered exactly once (top-left rule)", "[raster][fil
             double x = 8.2 + i * 12.0, y = 6.3 + j * 11.0;
             bool border = i == 0 || j == 0 || i == N || j == N;
             if (!border) {
-                if ((i + j) % 3 == 0) { x = std::floor(x) + 0.5; y = std::floor(y) + 0.5; }
-                else { x += jitter(rng); y += jitter(rng); }
+                if ((i + j) % 3 == 0) {
+                    x = std::floor(x) + 0.5;
+                    y = std::floor(y) + 0.5;
+                } else {
+                    x += jitter(rng);
+                    y += jitter(rng);
+                }
             }
             grid.push_back({x, y});
         }
@@ -97,8 +106,9 @@ TEST_CASE("shared edges are covered exactly once (top-left rule)", "[raster][fil
         for (int i = 0; i < N; ++i) {
             uint32_t a = j * (N + 1) + i, b = a + 1, c = a + N + 1, d = c + 1;
             // Alternate the diagonal, and give some triangles the other winding.
-            std::vector<std::vector<uint32_t>> tris = (i + j) % 2 ? std::vector<std::vector<uint32_t>>{{a, c, b}, {b, c, d}}
-                                                                  : std::vector<std::vector<uint32_t>>{{a, d, b}, {a, c, d}};
+            std::vector<std::vector<uint32_t>> tris =
+                (i + j) % 2 ? std::vector<std::vector<uint32_t>>{{a, c, b}, {b, c, d}}
+                            : std::vector<std::vector<uint32_t>>{{a, d, b}, {a, c, d}};
             for (auto& t : tris) {
                 auto cov = coverage_of(clip, t, W, H, pool);
                 for (int k = 0; k < W * H; ++k) total[k] += cov[k];
@@ -121,13 +131,15 @@ TEST_CASE("a pixel centre on an edge goes to the left or top triangle only", "[r
     const int W = 16, H = 16;
     // Vertical edge exactly through centres x = 8.5: a left edge of the right
     // triangle (owned by it), a right edge of the left one.
-    std::vector<glm::vec4> clip = {ndc(8.5, 2, W, H), ndc(8.5, 14, W, H), ndc(2, 8, W, H), ndc(14, 8, W, H)};
+    std::vector<glm::vec4> clip = {ndc(8.5, 2, W, H), ndc(8.5, 14, W, H), ndc(2, 8, W, H),
+                                   ndc(14, 8, W, H)};
     auto left = coverage_of(clip, {0, 2, 1}, W, H, pool);
     auto right = coverage_of(clip, {0, 1, 3}, W, H, pool);
     CHECK(left[8 * W + 8] == 0);
     CHECK(right[8 * W + 8] == 1);
     // Horizontal edge through centres y = 8.5: the lower triangle has it as its top edge.
-    std::vector<glm::vec4> clip2 = {ndc(2, 8.5, W, H), ndc(14, 8.5, W, H), ndc(8, 2, W, H), ndc(8, 14, W, H)};
+    std::vector<glm::vec4> clip2 = {ndc(2, 8.5, W, H), ndc(14, 8.5, W, H), ndc(8, 2, W, H),
+                                    ndc(8, 14, W, H)};
     auto upper = coverage_of(clip2, {0, 1, 2}, W, H, pool);
     auto lower = coverage_of(clip2, {0, 3, 1}, W, H, pool);
     CHECK(upper[8 * W + 8] == 0);
@@ -139,7 +151,11 @@ TEST_CASE("back faces are culled only when asked", "[raster][cull]") {
     const int W = 32, H = 32;
     // Counter-clockwise in NDC (y up) is the front.
     std::vector<glm::vec4> clip = {ndc(4, 28, W, H), ndc(28, 28, W, H), ndc(16, 4, W, H)};
-    auto count = [](const std::vector<int>& c) { int n = 0; for (int v : c) n += v; return n; };
+    auto count = [](const std::vector<int>& c) {
+        int n = 0;
+        for (int v : c) n += v;
+        return n;
+    };
     CHECK(count(coverage_of(clip, {0, 1, 2}, W, H, pool, true)) > 100);
     CHECK(count(coverage_of(clip, {0, 2, 1}, W, H, pool, true)) == 0);
     CHECK(count(coverage_of(clip, {0, 2, 1}, W, H, pool, false)) ==
@@ -150,15 +166,19 @@ namespace {
 
 // Renders world-space triangles through the camera and checks every pixel
 // against a ray cast: coverage, perspective-correct barycentrics and depth.
-void check_against_rays(const View& view, const std::vector<glm::vec3>& world, const std::vector<uint32_t>& indices,
-                        int expect_min_covered) {
+void check_against_rays(const View& view, const std::vector<glm::vec3>& world,
+                        const std::vector<uint32_t>& indices, int expect_min_covered) {
     ThreadPool pool(2);
     std::vector<glm::vec4> clip;
     for (auto& p : world) clip.push_back(view.camera.view_projection * glm::vec4(p, 1));
     std::vector<uint8_t> cull(indices.size() / 3, 0);
     Rasterizer r(view.width, view.height);
-    r.set_geometry({clip.data(), clip.size(), indices.data(), indices.size() / 3, cull.data()}, pool);
-    struct Sample { uint32_t tri = kNoTriangle; float b1 = 0, b2 = 0, depth = 0; };
+    r.set_geometry({clip.data(), clip.size(), indices.data(), indices.size() / 3, cull.data()},
+                   pool);
+    struct Sample {
+        uint32_t tri = kNoTriangle;
+        float b1 = 0, b2 = 0, depth = 0;
+    };
     std::vector<Sample> samples(view.width * view.height);
     r.draw_tiles(pool, [&](const TileVisibility& t) {
         for (int y = 0; y < t.height; ++y)
@@ -185,10 +205,14 @@ void check_against_rays(const View& view, const std::vector<glm::vec3>& world, c
             uint32_t best_tri = kNoTriangle;
             for (size_t t = 0; t < indices.size() / 3; ++t) {
                 double d, u, v;
-                if (ray_hit(eye, dir, world[indices[3 * t]], world[indices[3 * t + 1]], world[indices[3 * t + 2]], d, u, v)) {
+                if (ray_hit(eye, dir, world[indices[3 * t]], world[indices[3 * t + 1]],
+                            world[indices[3 * t + 2]], d, u, v)) {
                     double along = d * glm::dot(dir, forward);
                     if (along >= view.camera.near && along <= view.camera.far && d < best) {
-                        best = d; bu = u; bv = v; best_tri = static_cast<uint32_t>(t);
+                        best = d;
+                        bu = u;
+                        bv = v;
+                        best_tri = static_cast<uint32_t>(t);
                     }
                 }
             }
@@ -214,7 +238,8 @@ void check_against_rays(const View& view, const std::vector<glm::vec3>& world, c
 
 }  // namespace
 
-TEST_CASE("perspective-correct barycentrics and linear depth match ray casting", "[raster][interp]") {
+TEST_CASE("perspective-correct barycentrics and linear depth match ray casting",
+          "[raster][interp]") {
     View view = make_view({0.3f, 1.2f, 3}, {0, 0, 0});
     // A steeply slanted triangle: affine (screen-space) interpolation would be far off.
     check_against_rays(view, {{-2, -0.5f, 1.5f}, {2, -0.5f, 1}, {0, 0.8f, -8}}, {0, 1, 2}, 2000);
@@ -224,7 +249,8 @@ TEST_CASE("triangles crossing the near plane are clipped correctly", "[raster][c
     // A floor running under and behind the camera: two of its corners are
     // behind the eye (w < 0), which only homogeneous clipping gets right.
     View view = make_view({0, 1, 0}, {0, 0.6f, -5}, 70, 0.5f, 60);
-    check_against_rays(view, {{-6, 0, 4}, {6, 0, 4}, {6, 0, -20}, {-6, 0, -20}}, {0, 1, 2, 0, 2, 3}, 3000);
+    check_against_rays(view, {{-6, 0, 4}, {6, 0, 4}, {6, 0, -20}, {-6, 0, -20}}, {0, 1, 2, 0, 2, 3},
+                       3000);
 }
 
 TEST_CASE("triangles far outside the screen are clipped to the guard band", "[raster][clip]") {
@@ -241,6 +267,7 @@ TEST_CASE("the far plane cuts geometry beyond it", "[raster][clip]") {
 TEST_CASE("nearer triangles win the depth test regardless of order", "[raster][depth]") {
     View view = make_view({0, 0, 4}, {0, 0, 0});
     // Two interpenetrating triangles: each is in front over part of the screen.
-    check_against_rays(view, {{-2, -1, -1}, {2, -1, 1}, {0, 1.5f, 0}, {-2, -1, 1}, {2, -1, -1}, {0, 1.4f, 0.2f}},
-                       {0, 1, 2, 3, 4, 5}, 2000);
+    check_against_rays(
+        view, {{-2, -1, -1}, {2, -1, 1}, {0, 1.5f, 0}, {-2, -1, 1}, {2, -1, -1}, {0, 1.4f, 0.2f}},
+        {0, 1, 2, 3, 4, 5}, 2000);
 }

@@ -8,13 +8,13 @@
 #include <map>
 #include <set>
 
+#include <tiny_gltf.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
-#include <tiny_gltf.h>
 
 #include "assets/mesh.hpp"
 #include "core/error.hpp"
@@ -34,19 +34,43 @@ constexpr int kWrapClamp = 33071;
 
 double read_component(const uint8_t* p, int type, bool normalized) {
     switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: { float f; std::memcpy(&f, p, 4); return f; }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: { uint8_t v = *p; return normalized ? v / 255.0 : v; }
-        case TINYGLTF_COMPONENT_TYPE_BYTE: { int8_t v; std::memcpy(&v, p, 1); return normalized ? std::max(v / 127.0, -1.0) : v; }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: { uint16_t v; std::memcpy(&v, p, 2); return normalized ? v / 65535.0 : v; }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: { int16_t v; std::memcpy(&v, p, 2); return normalized ? std::max(v / 32767.0, -1.0) : v; }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: { uint32_t v; std::memcpy(&v, p, 4); return v; }
-        default: return 0;
+        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+            float f;
+            std::memcpy(&f, p, 4);
+            return f;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
+            uint8_t v = *p;
+            return normalized ? v / 255.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_BYTE: {
+            int8_t v;
+            std::memcpy(&v, p, 1);
+            return normalized ? std::max(v / 127.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+            uint16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? v / 65535.0 : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_SHORT: {
+            int16_t v;
+            std::memcpy(&v, p, 2);
+            return normalized ? std::max(v / 32767.0, -1.0) : v;
+        }
+        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+            uint32_t v;
+            std::memcpy(&v, p, 4);
+            return v;
+        }
+        default:
+            return 0;
     }
 }
 
 // The bytes of a buffer view region, bounds-checked.
-const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t offset, size_t stride,
-                          size_t count, size_t element_size, const std::string& path,
+const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t offset,
+                          size_t stride, size_t count, size_t element_size, const std::string& path,
                           const std::string& what) {
     if (view_index < 0 || static_cast<size_t>(view_index) >= model.bufferViews.size())
         bad(path, what + " refers to missing bufferView " + std::to_string(view_index));
@@ -55,7 +79,8 @@ const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t o
         bad(path, what + ": bufferView refers to missing buffer " + std::to_string(view.buffer));
     const auto& buffer = model.buffers[view.buffer];
     if (view.byteOffset + view.byteLength > buffer.data.size())
-        bad(path, what + ": bufferView runs past the end of its buffer (is the .bin missing or short?)");
+        bad(path,
+            what + ": bufferView runs past the end of its buffer (is the .bin missing or short?)");
     if (count > 0 && offset + stride * (count - 1) + element_size > view.byteLength)
         bad(path, what + ": data runs past the end of its bufferView");
     return buffer.data.data() + view.byteOffset + offset;
@@ -82,23 +107,26 @@ std::vector<float> read_floats(const tinygltf::Model& model, int index, int comp
                                          element, path, what);
         for (size_t i = 0; i < acc.count; ++i)
             for (int c = 0; c < components; ++c)
-                out[i * components + c] = static_cast<float>(
-                    read_component(base + i * stride + c * comp_size, acc.componentType, acc.normalized));
+                out[i * components + c] = static_cast<float>(read_component(
+                    base + i * stride + c * comp_size, acc.componentType, acc.normalized));
     }
     if (acc.sparse.isSparse) {
         const auto& sp = acc.sparse;
-        int index_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(sp.indices.componentType));
+        int index_size =
+            tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(sp.indices.componentType));
         if (index_size <= 0) bad(path, what + ": sparse indices have an unknown type");
-        const uint8_t* idx = view_bytes(model, sp.indices.bufferView, sp.indices.byteOffset,
-                                        index_size, sp.count, index_size, path, what + " (sparse indices)");
+        const uint8_t* idx =
+            view_bytes(model, sp.indices.bufferView, sp.indices.byteOffset, index_size, sp.count,
+                       index_size, path, what + " (sparse indices)");
         const uint8_t* val = view_bytes(model, sp.values.bufferView, sp.values.byteOffset, element,
                                         sp.count, element, path, what + " (sparse values)");
         for (int i = 0; i < sp.count; ++i) {
-            auto target = static_cast<size_t>(read_component(idx + i * index_size, sp.indices.componentType, false));
+            auto target = static_cast<size_t>(
+                read_component(idx + i * index_size, sp.indices.componentType, false));
             if (target >= acc.count) bad(path, what + ": sparse index out of range");
             for (int c = 0; c < components; ++c)
-                out[target * components + c] = static_cast<float>(
-                    read_component(val + i * element + c * comp_size, acc.componentType, acc.normalized));
+                out[target * components + c] = static_cast<float>(read_component(
+                    val + i * element + c * comp_size, acc.componentType, acc.normalized));
         }
     }
     for (float f : out)
@@ -106,7 +134,8 @@ std::vector<float> read_floats(const tinygltf::Model& model, int index, int comp
     return out;
 }
 
-std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index, const std::string& path) {
+std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index,
+                                   const std::string& path) {
     if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
         bad(path, "primitive indices refer to missing accessor " + std::to_string(index));
     const auto& acc = model.accessors[index];
@@ -120,9 +149,11 @@ std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index, cons
     if (acc.bufferView >= 0) {
         const auto& view = model.bufferViews.at(acc.bufferView);
         size_t stride = view.byteStride ? view.byteStride : size;
-        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count, size, path, "indices");
+        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count,
+                                         size, path, "indices");
         for (size_t i = 0; i < acc.count; ++i)
-            out[i] = static_cast<uint32_t>(read_component(base + i * stride, acc.componentType, false));
+            out[i] =
+                static_cast<uint32_t>(read_component(base + i * stride, acc.componentType, false));
     }
     return out;
 }
@@ -135,12 +166,15 @@ glm::mat4 node_matrix(const tinygltf::Node& node) {
     }
     glm::dmat4 m(1.0);
     if (node.translation.size() == 3)
-        m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+        m = glm::translate(
+            m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
     if (node.rotation.size() == 4) {
-        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);  // w, x, y, z
+        glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1],
+                     node.rotation[2]);  // w, x, y, z
         m = m * glm::mat4_cast(glm::normalize(q));
     }
-    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    if (node.scale.size() == 3)
+        m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
     return glm::mat4(m);
 }
 
@@ -151,11 +185,14 @@ std::vector<uint32_t> triangle_list(int mode, const std::vector<uint32_t>& idx) 
     } else if (mode == kModeStrip) {
         for (size_t i = 2; i < idx.size(); ++i) {
             // Every other triangle of a strip is reversed to keep one winding (glTF §3.7.2.1).
-            if (i % 2 == 0) tris.insert(tris.end(), {idx[i - 2], idx[i - 1], idx[i]});
-            else tris.insert(tris.end(), {idx[i - 1], idx[i - 2], idx[i]});
+            if (i % 2 == 0)
+                tris.insert(tris.end(), {idx[i - 2], idx[i - 1], idx[i]});
+            else
+                tris.insert(tris.end(), {idx[i - 1], idx[i - 2], idx[i]});
         }
     } else if (mode == kModeFan) {
-        for (size_t i = 2; i < idx.size(); ++i) tris.insert(tris.end(), {idx[0], idx[i - 1], idx[i]});
+        for (size_t i = 2; i < idx.size(); ++i)
+            tris.insert(tris.end(), {idx[0], idx[i - 1], idx[i]});
     }
     return tris;
 }
@@ -179,7 +216,8 @@ Mesh load_gltf(const std::string& path) {
         while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
         return s;
     };
-    if (!ok) bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
+    if (!ok)
+        bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
 
     Mesh mesh;
     mesh.source = path;
@@ -201,11 +239,13 @@ Mesh load_gltf(const std::string& path) {
             bad(path, "texture " + std::to_string(tex_index) + " has no image");
         const auto& img = model.images[t.source];
         if (img.image.empty()) bad(path, "image '" + img.uri + "' could not be decoded");
-        if (img.image.size() < static_cast<size_t>(img.width) * img.height * img.component * (img.bits / 8))
+        if (img.image.size() <
+            static_cast<size_t>(img.width) * img.height * img.component * (img.bits / 8))
             bad(path, "image '" + img.uri + "' has fewer bytes than its size says");
         Texture tex;
         try {
-            tex = texture_from_pixels(img.width, img.height, img.component, img.bits, img.image.data());
+            tex = texture_from_pixels(img.width, img.height, img.component, img.bits,
+                                      img.image.data());
         } catch (const Error& e) {
             bad(path, "image '" + img.uri + "': " + e.what());
         }
@@ -224,7 +264,8 @@ Mesh load_gltf(const std::string& path) {
         // A Phong reading of metal/roughness: smoother surfaces get tighter,
         // stronger highlights (documented in docs/scene-format.md).
         float roughness = static_cast<float>(std::clamp(pbr.roughnessFactor, 0.05, 1.0));
-        mat.shininess = std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
+        mat.shininess =
+            std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
         mat.shininess = std::max(mat.shininess, 1.0f);
         mat.specular = 0.15f + 0.6f * (1.0f - roughness);
         mat.double_sided = m.doubleSided;
@@ -259,13 +300,16 @@ Mesh load_gltf(const std::string& path) {
             auto pos = read_floats(model, pos_it->second, 3, path, what + " POSITION");
             size_t count = pos.size() / 3;
             for (size_t i = 0; i < count; ++i)
-                part.positions.push_back(glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1)));
+                part.positions.push_back(
+                    glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1)));
             bool has_normals = false;
             if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
                 auto nrm = read_floats(model, it->second, 3, path, what + " NORMAL");
-                if (nrm.size() / 3 != count) bad(path, what + ": NORMAL count differs from POSITION count");
+                if (nrm.size() / 3 != count)
+                    bad(path, what + ": NORMAL count differs from POSITION count");
                 for (size_t i = 0; i < count; ++i) {
-                    glm::vec3 n = normal_matrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                    glm::vec3 n =
+                        normal_matrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
                     float len = glm::length(n);
                     part.normals.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
                 }
@@ -275,13 +319,17 @@ Mesh load_gltf(const std::string& path) {
             int uv_set = 0;
             if (prim.material >= 0) {
                 if (static_cast<size_t>(prim.material) >= model.materials.size())
-                    bad(path, what + " refers to missing material " + std::to_string(prim.material));
+                    bad(path,
+                        what + " refers to missing material " + std::to_string(prim.material));
                 part.material = static_cast<uint32_t>(prim.material);
-                uv_set = model.materials[prim.material].pbrMetallicRoughness.baseColorTexture.texCoord;
+                uv_set =
+                    model.materials[prim.material].pbrMetallicRoughness.baseColorTexture.texCoord;
             }
-            if (auto it = prim.attributes.find("TEXCOORD_" + std::to_string(uv_set)); it != prim.attributes.end()) {
+            if (auto it = prim.attributes.find("TEXCOORD_" + std::to_string(uv_set));
+                it != prim.attributes.end()) {
                 auto uv = read_floats(model, it->second, 2, path, what + " TEXCOORD");
-                if (uv.size() / 2 != count) bad(path, what + ": TEXCOORD count differs from POSITION count");
+                if (uv.size() / 2 != count)
+                    bad(path, what + ": TEXCOORD count differs from POSITION count");
                 for (size_t i = 0; i < count; ++i) part.uvs.push_back({uv[2 * i], uv[2 * i + 1]});
             }
             std::vector<uint32_t> idx;
@@ -292,11 +340,13 @@ Mesh load_gltf(const std::string& path) {
                 for (size_t i = 0; i < count; ++i) idx[i] = static_cast<uint32_t>(i);
             }
             for (uint32_t i : idx)
-                if (i >= count) bad(path, what + ": index " + std::to_string(i) + " is out of range (" +
-                                              std::to_string(count) + " vertices)");
+                if (i >= count)
+                    bad(path, what + ": index " + std::to_string(i) + " is out of range (" +
+                                  std::to_string(count) + " vertices)");
             part.indices = triangle_list(mode, idx);
             if (mirrored)
-                for (size_t t = 0; t + 2 < part.indices.size(); t += 3) std::swap(part.indices[t + 1], part.indices[t + 2]);
+                for (size_t t = 0; t + 2 < part.indices.size(); t += 3)
+                    std::swap(part.indices[t + 1], part.indices[t + 2]);
             if (part.indices.empty()) continue;
             // glTF §3.7.2.1: without normals, flat normals are used.
             if (!has_normals) compute_normals(part, 0.0f);
@@ -321,8 +371,10 @@ Mesh load_gltf(const std::string& path) {
 
     std::vector<int> roots;
     if (!model.scenes.empty()) {
-        int scene = model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
-                        ? model.defaultScene : 0;
+        int scene =
+            model.defaultScene >= 0 && static_cast<size_t>(model.defaultScene) < model.scenes.size()
+                ? model.defaultScene
+                : 0;
         roots = model.scenes[scene].nodes;
     } else {
         // No scene: every node that is nobody's child is a root.

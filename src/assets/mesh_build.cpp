@@ -77,7 +77,8 @@ void compute_normals(MeshPart& part, float crease_degrees) {
     std::unordered_map<glm::vec3, uint32_t, Vec3Hash> weld;
     std::vector<uint32_t> weld_id(part.positions.size());
     for (size_t i = 0; i < part.positions.size(); ++i)
-        weld_id[i] = weld.emplace(part.positions[i], static_cast<uint32_t>(weld.size())).first->second;
+        weld_id[i] =
+            weld.emplace(part.positions[i], static_cast<uint32_t>(weld.size())).first->second;
 
     std::vector<glm::vec3> face_normal(triangles), face_unit(triangles);
     std::vector<uint32_t> incident_start(weld.size() + 1, 0);
@@ -94,7 +95,8 @@ void compute_normals(MeshPart& part, float crease_degrees) {
     std::vector<uint32_t> incident(incident_start.back());
     std::vector<uint32_t> fill(incident_start.begin(), incident_start.end() - 1);
     for (size_t t = 0; t < triangles; ++t)
-        for (int k = 0; k < 3; ++k) incident[fill[weld_id[part.indices[3 * t + k]]]++] = uint32_t(t);
+        for (int k = 0; k < 3; ++k)
+            incident[fill[weld_id[part.indices[3 * t + k]]]++] = uint32_t(t);
 
     const float cos_crease = std::cos(glm::radians(std::clamp(crease_degrees, 0.0f, 180.0f)));
     MeshPart out;
@@ -108,10 +110,13 @@ void compute_normals(MeshPart& part, float crease_degrees) {
             glm::vec3 sum(0);
             for (uint32_t i = incident_start[w]; i < incident_start[w + 1]; ++i) {
                 uint32_t g = incident[i];
-                if (g == t || glm::dot(face_unit[t], face_unit[g]) >= cos_crease) sum += face_normal[g];
+                if (g == t || glm::dot(face_unit[t], face_unit[g]) >= cos_crease)
+                    sum += face_normal[g];
             }
             float len = glm::length(sum);
-            glm::vec3 n = len > 0 ? sum / len : (glm::length(face_unit[t]) > 0 ? face_unit[t] : glm::vec3(0, 1, 0));
+            glm::vec3 n = len > 0
+                              ? sum / len
+                              : (glm::length(face_unit[t]) > 0 ? face_unit[t] : glm::vec3(0, 1, 0));
             auto [it, added] = corners.emplace(CornerKey{v, n}, uint32_t(out.positions.size()));
             if (added) {
                 out.positions.push_back(part.positions[v]);
@@ -132,10 +137,9 @@ void validate_part(const MeshPart& part, const std::string& source) {
         throw Error(ExitCode::invalid_input, source + ": vertex attribute counts differ");
     for (uint32_t i : part.indices)
         if (i >= part.positions.size())
-            throw Error(ExitCode::invalid_input, source + ": index " + std::to_string(i) +
-                                                     " is out of range (" +
-                                                     std::to_string(part.positions.size()) +
-                                                     " vertices)");
+            throw Error(ExitCode::invalid_input,
+                        source + ": index " + std::to_string(i) + " is out of range (" +
+                            std::to_string(part.positions.size()) + " vertices)");
     for (const auto& p : part.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw Error(ExitCode::invalid_input, source + ": a vertex position is not finite");

@@ -1,11 +1,15 @@
 // Wavefront OBJ + MTL through tinyobjloader.
 #include <algorithm>
+#include <array>
 #include <filesystem>
+#include <fstream>
 #include <map>
+#include <sstream>
 #include <tuple>
 
-#include <glm/geometric.hpp>
 #include <tiny_obj_loader.h>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "assets/mesh.hpp"
 #include "core/error.hpp"
@@ -29,33 +33,274 @@ std::vector<std::string> split_lines(const std::string& text, const std::string&
     return out;
 }
 
+// Windows exporters write "mtllib .\\models\\box.mtl"; on POSIX the backslash
+// is part of the file name, so the library would never be found.
+std::string portable_path(std::string p) {
+    for (auto& c : p)
+        if (c == '\\') c = '/';
+    return p;
+}
+
+void append_utf8(std::string& out, uint32_t u) {
+    if (u < 0x80) {
+        out += static_cast<char>(u);
+    } else if (u < 0x800) {
+        out += static_cast<char>(0xC0 | (u >> 6));
+        out += static_cast<char>(0x80 | (u & 0x3F));
+    } else if (u < 0x10000) {
+        out += static_cast<char>(0xE0 | (u >> 12));
+        out += static_cast<char>(0x80 | ((u >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (u & 0x3F));
+    } else {
+        out += static_cast<char>(0xF0 | (u >> 18));
+        out += static_cast<char>(0x80 | ((u >> 12) & 0x3F));
+        out += static_cast<char>(0x80 | ((u >> 6) & 0x3F));
+        out += static_cast<char>(0x80 | (u & 0x3F));
+    }
+}
+
+// The file as UTF-8 text. Some exporters write UTF-16 with a byte order mark
+// (assimp's box_UTF16BE.obj); tinyobjloader only reads bytes, so such a file
+// would silently come out empty.
+std::string read_obj_text(const std::string& path) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(ExitCode::invalid_input, path + ": cannot read OBJ: no such file");
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    if (!in && !in.eof())
+        throw Error(ExitCode::invalid_input, path + ": cannot read OBJ: read failed");
+    std::string raw = ss.str();
+    auto byte = [&](size_t i) { return static_cast<unsigned char>(raw[i]); };
+    if (raw.size() >= 3 && byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF)
+        return raw.substr(3);
+    const bool be = raw.size() >= 2 && byte(0) == 0xFE && byte(1) == 0xFF;
+    const bool le = raw.size() >= 2 && byte(0) == 0xFF && byte(1) == 0xFE;
+    if (!be && !le) return raw;
+    std::string out;
+    out.reserve(raw.size() / 2);
+    auto unit = [&](size_t i) -> uint32_t {
+        return be ? (byte(i) << 8) | byte(i + 1) : byte(i) | (byte(i + 1) << 8);
+    };
+    for (size_t i = 2; i + 1 < raw.size(); i += 2) {
+        uint32_t u = unit(i);
+        if (u >= 0xD800 && u <= 0xDBFF && i + 3 < raw.size()) {
+            uint32_t low = unit(i + 2);
+            if (low >= 0xDC00 && low <= 0xDFFF) {
+                u = 0x10000 + ((u - 0xD800) << 10) + (low - 0xDC00);
+                i += 2;
+            }
+        }
+        append_utf8(out, u);
+    }
+    return out;
+}
+
+// tinyobjloader reads only the first word after "usemtl", but material names
+// may contain spaces ("newmtl Hard Shiny Plastic White", assimp issue #545),
+// so such faces silently lost their material. Names are joined with this
+// character in both files before parsing, and split again in Material::name.
+constexpr char kNameSpace = '\x1f';
+
+std::string material_key(const std::string& name) {
+    std::string out;
+    bool gap = false;
+    for (char c : name) {
+        if (c == ' ' || c == '\t' || c == '\r') {
+            gap = !out.empty();
+            continue;
+        }
+        if (gap) out += kNameSpace;
+        gap = false;
+        out += c;
+    }
+    return out;
+}
+
+std::string material_name(std::string key) {
+    std::replace(key.begin(), key.end(), kNameSpace, ' ');
+    return key;
+}
+
+std::string join_usemtl_names(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        size_t i = text.find_first_not_of(" \t", start);
+        if (i < end && text.compare(i, 6, "usemtl") == 0 && i + 6 < end && (text[i + 6] == ' ' || text[i + 6] == '\t')) {
+            out += "usemtl " + material_key(text.substr(i + 7, end - i - 7));
+        } else {
+            out.append(text, start, end - start);
+        }
+        if (end < text.size()) out += '\n';
+        start = end + 1;
+    }
+    return out;
+}
+
+// .mtl files next to the .obj. tinyobjloader's own reader splits its search
+// path at ':' (so folders with a colon break) and keeps Windows separators.
+class MtlReader : public tinyobj::MaterialReader {
+  public:
+    explicit MtlReader(std::filesystem::path dir) : dir_(std::move(dir)) {}
+    bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
+                    std::map<std::string, int>* names, std::string* warn,
+                    std::string* err) override {
+        std::ifstream in(dir_ / portable_path(name));
+        if (!in) {
+            if (warn) *warn += "material library '" + name + "' not found\n";
+            return false;
+        }
+        const size_t first = materials->size();
+        tinyobj::LoadMtl(names, materials, &in, warn, err);
+        for (size_t i = first; i < materials->size(); ++i) {
+            auto& m = (*materials)[i];
+            std::string key = material_key(m.name);
+            if (key == m.name) continue;
+            auto it = names->find(m.name);
+            if (it != names->end() && it->second == static_cast<int>(i)) names->erase(it);
+            names->emplace(key, static_cast<int>(i));
+            m.name = key;
+        }
+        return true;
+    }
+
+  private:
+    std::filesystem::path dir_;
+};
+
+// Splits a planar polygon into corners.size() - 2 triangles wound like the
+// polygon, by ear clipping in the polygon's own plane. tinyobjloader's
+// built-in triangulation folds concave faces over themselves (it decides
+// convexity from the area of a triangle with the origin), so it is not used.
+std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dvec3>& pts) {
+    const size_t n = pts.size();
+    std::vector<std::array<size_t, 3>> tris;
+    tris.reserve(n - 2);
+    glm::dvec3 normal(0);  // Newell's method: robust for concave outlines
+    for (size_t i = 0; i < n; ++i) normal += glm::cross(pts[i], pts[(i + 1) % n]);
+    const double len = glm::length(normal);
+    if (!(len > 0)) {  // no area at all: any split is as good as another
+        for (size_t i = 1; i + 1 < n; ++i) tris.push_back({0, i, i + 1});
+        return tris;
+    }
+    normal /= len;
+    // Axes with u x v = normal, so the outline runs counter-clockwise in (u, v).
+    glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    glm::dvec3 u = glm::normalize(glm::cross(helper, normal));
+    glm::dvec3 v = glm::cross(normal, u);
+    std::vector<glm::dvec2> p(n);
+    for (size_t i = 0; i < n; ++i) p[i] = {glm::dot(pts[i], u), glm::dot(pts[i], v)};
+
+    std::vector<size_t> prev(n), next(n);
+    for (size_t i = 0; i < n; ++i) {
+        prev[i] = (i + n - 1) % n;
+        next[i] = (i + 1) % n;
+    }
+    auto turn = [&](size_t a, size_t b, size_t c) {
+        return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x);
+    };
+    auto is_ear = [&](size_t b) {
+        size_t a = prev[b], c = next[b];
+        if (!(turn(a, b, c) > 0)) return false;  // reflex or straight corner
+        for (size_t j = next[c]; j != a; j = next[j]) {
+            // Corners repeated by a bridge to a hole coincide with the ear's own.
+            if (p[j] == p[a] || p[j] == p[b] || p[j] == p[c]) continue;
+            if (turn(a, b, j) >= 0 && turn(b, c, j) >= 0 && turn(c, a, j) >= 0) return false;
+        }
+        return true;
+    };
+    auto clip = [&](size_t b) {
+        tris.push_back({prev[b], b, next[b]});
+        next[prev[b]] = next[b];
+        prev[next[b]] = prev[b];
+        return next[b];
+    };
+    size_t remaining = n, at = 0, misses = 0;
+    while (remaining > 3) {
+        if (is_ear(at)) {
+            at = clip(at);
+            --remaining;
+            misses = 0;
+            continue;
+        }
+        at = next[at];
+        if (++misses >= remaining) {
+            // No clean ear: the outline crosses itself or is degenerate. Clip
+            // the most convex corner so the face still gives n - 2 triangles.
+            size_t best = at;
+            double best_turn = turn(prev[at], at, next[at]);
+            for (size_t j = next[at]; j != at; j = next[j])
+                if (double t = turn(prev[j], j, next[j]); t > best_turn) {
+                    best = j;
+                    best_turn = t;
+                }
+            at = clip(best);
+            --remaining;
+            misses = 0;
+        }
+    }
+    tris.push_back({prev[at], at, next[at]});
+    return tris;
+}
+
 }  // namespace
 
 Mesh load_obj(const std::string& path) {
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    config.mtl_search_path = std::filesystem::path(path).parent_path().string();
-    tinyobj::ObjReader reader;
-    bool ok = reader.ParseFromFile(path, config);
+    const std::string text = join_usemtl_names(read_obj_text(path));
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    tinyobj::attrib_t attrib;
+    std::vector<tinyobj::shape_t> shapes;
+    std::vector<tinyobj::material_t> obj_materials;
+    std::string warn, err;
+    auto parse = [&](bool triangulate) {
+        attrib = tinyobj::attrib_t();
+        shapes.clear();
+        obj_materials.clear();
+        warn.clear();
+        err.clear();
+        std::istringstream in(text);
+        MtlReader mtl(dir);
+        return tinyobj::LoadObj(&attrib, &shapes, &obj_materials, &warn, &err, &in, &mtl,
+                                triangulate, false);
+    };
+    // Polygons are triangulated here (see triangulate_polygon), so ask for them whole.
+    bool ok = parse(false);
+    // tinyobjloader keeps corner counts in an unsigned char: a face with more
+    // than 255 corners wraps, and the counts no longer add up to the indices.
+    // Such files fall back to tinyobjloader's own triangulation.
+    bool whole_polygons = true;
+    for (const auto& shape : shapes) {
+        size_t sum = 0;
+        for (unsigned char c : shape.mesh.num_face_vertices) sum += c;
+        if (sum != shape.mesh.indices.size()) whole_polygons = false;
+    }
+    if (ok && !whole_polygons) {
+        ok = parse(true);
+        // In that mode tinyobjloader drops quads with bad indices with only a warning.
+        if (ok && warn.find("invalid vertex index") != std::string::npos)
+            throw Error(ExitCode::invalid_input,
+                        path + ": a face refers to a vertex that does not exist");
+    }
     if (!ok) {
-        std::string why = reader.Error();
+        std::string why = err;
         while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
-        throw Error(ExitCode::invalid_input, path + ": cannot read OBJ: " + (why.empty() ? "unknown error" : why));
+        throw Error(ExitCode::invalid_input,
+                    path + ": cannot read OBJ: " + (why.empty() ? "unknown error" : why));
     }
 
     Mesh mesh;
     mesh.source = path;
-    mesh.warnings = split_lines(reader.Warning(), "");
-    const auto& attrib = reader.GetAttrib();
-    const auto& shapes = reader.GetShapes();
-    const auto& obj_materials = reader.GetMaterials();
-    const std::string dir = config.mtl_search_path;
+    mesh.warnings = split_lines(warn, "");
 
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (const auto& m : obj_materials) {
         Material mat;
-        mat.name = m.name;
+        mat.name = material_name(m.name);
         mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
         float ks = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0f;
         mat.specular = ks;
@@ -99,10 +344,31 @@ Mesh load_obj(const std::string& path) {
         const auto& m = shape.mesh;
         size_t offset = 0;
         for (size_t face = 0; face < m.num_face_vertices.size(); ++face) {
-            size_t count = m.num_face_vertices[face];
-            if (count != 3) {  // triangulation failed for this face: skip it
+            const size_t count = m.num_face_vertices[face];
+            if (count < 3 || offset + count > m.indices.size()) {  // not a surface: skip it
                 offset += count;
                 continue;
+            }
+            for (size_t k = 0; k < count; ++k) {
+                const tinyobj::index_t& idx = m.indices[offset + k];
+                if (idx.vertex_index < 0 || static_cast<size_t>(idx.vertex_index) >= position_count)
+                    throw Error(ExitCode::invalid_input,
+                                path + ": shape '" + shape.name + "' face " +
+                                    std::to_string(face + 1) + " refers to vertex " +
+                                    std::to_string(idx.vertex_index + 1) + " but the file has " +
+                                    std::to_string(position_count));
+            }
+            std::vector<std::array<size_t, 3>> triangles;
+            if (count == 3) {
+                triangles.push_back({0, 1, 2});
+            } else {
+                std::vector<glm::dvec3> corners(count);
+                for (size_t k = 0; k < count; ++k) {
+                    size_t v = static_cast<size_t>(m.indices[offset + k].vertex_index);
+                    corners[k] = {attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                                  attrib.vertices[3 * v + 2]};
+                }
+                triangles = triangulate_polygon(corners);
             }
             int mat_id = face < m.material_ids.size() ? m.material_ids[face] : -1;
             uint32_t material = (mat_id >= 0 && static_cast<size_t>(mat_id) < mesh.materials.size())
@@ -111,37 +377,36 @@ Mesh load_obj(const std::string& path) {
             used_default = used_default || material == default_material;
             Building& b = parts[material];
             b.part.material = material;
-            for (size_t k = 0; k < 3; ++k) {
-                const tinyobj::index_t& idx = m.indices[offset + k];
-                if (idx.vertex_index < 0 || static_cast<size_t>(idx.vertex_index) >= position_count)
-                    throw Error(ExitCode::invalid_input,
-                                path + ": shape '" + shape.name + "' face " + std::to_string(face + 1) +
-                                    " refers to vertex " + std::to_string(idx.vertex_index + 1) +
-                                    " but the file has " + std::to_string(position_count));
-                int n = idx.normal_index;
-                if (n >= 0 && static_cast<size_t>(n) >= normal_count) n = -1;
-                int t = idx.texcoord_index;
-                if (t >= 0 && static_cast<size_t>(t) >= uv_count) t = -1;
-                if (n < 0) b.missing_normals = true;
-                if (t >= 0) b.any_uv = true;
-                auto key = std::make_tuple(idx.vertex_index, n, t);
-                auto [it, added] = b.unique.emplace(key, static_cast<uint32_t>(b.part.positions.size()));
-                if (added) {
-                    size_t v = static_cast<size_t>(idx.vertex_index);
-                    b.part.positions.push_back({attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
-                                                attrib.vertices[3 * v + 2]});
-                    b.part.normals.push_back(n >= 0 ? glm::vec3(attrib.normals[3 * n],
-                                                                attrib.normals[3 * n + 1],
-                                                                attrib.normals[3 * n + 2])
-                                                    : glm::vec3(0));
-                    // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
-                    b.part.uvs.push_back(t >= 0 ? glm::vec2(attrib.texcoords[2 * t],
-                                                            1.0f - attrib.texcoords[2 * t + 1])
-                                                : glm::vec2(0));
+            for (const auto& tri : triangles) {
+                for (size_t corner : tri) {
+                    const tinyobj::index_t& idx = m.indices[offset + corner];
+                    int n = idx.normal_index;
+                    if (n >= 0 && static_cast<size_t>(n) >= normal_count) n = -1;
+                    int t = idx.texcoord_index;
+                    if (t >= 0 && static_cast<size_t>(t) >= uv_count) t = -1;
+                    if (n < 0) b.missing_normals = true;
+                    if (t >= 0) b.any_uv = true;
+                    auto key = std::make_tuple(idx.vertex_index, n, t);
+                    auto [it, added] =
+                        b.unique.emplace(key, static_cast<uint32_t>(b.part.positions.size()));
+                    if (added) {
+                        size_t v = static_cast<size_t>(idx.vertex_index);
+                        b.part.positions.push_back({attrib.vertices[3 * v],
+                                                    attrib.vertices[3 * v + 1],
+                                                    attrib.vertices[3 * v + 2]});
+                        b.part.normals.push_back(n >= 0 ? glm::vec3(attrib.normals[3 * n],
+                                                                    attrib.normals[3 * n + 1],
+                                                                    attrib.normals[3 * n + 2])
+                                                        : glm::vec3(0));
+                        // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
+                        b.part.uvs.push_back(t >= 0 ? glm::vec2(attrib.texcoords[2 * t],
+                                                                1.0f - attrib.texcoords[2 * t + 1])
+                                                    : glm::vec2(0));
+                    }
+                    b.part.indices.push_back(it->second);
                 }
-                b.part.indices.push_back(it->second);
             }
-            offset += 3;
+            offset += count;
         }
     }
     if (used_default) {
@@ -159,7 +424,8 @@ Mesh load_obj(const std::string& path) {
         validate_part(b.part, path);
         mesh.parts.push_back(std::move(b.part));
     }
-    if (mesh.triangle_count() == 0) throw Error(ExitCode::invalid_input, path + ": the OBJ file has no faces");
+    if (mesh.triangle_count() == 0)
+        throw Error(ExitCode::invalid_input, path + ": the OBJ file has no faces");
     return mesh;
 }
 

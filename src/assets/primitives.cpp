@@ -19,7 +19,9 @@ struct Builder {
         part.uvs.push_back(uv);
         return static_cast<uint32_t>(part.positions.size() - 1);
     }
-    void triangle(uint32_t a, uint32_t b, uint32_t c) { part.indices.insert(part.indices.end(), {a, b, c}); }
+    void triangle(uint32_t a, uint32_t b, uint32_t c) {
+        part.indices.insert(part.indices.end(), {a, b, c});
+    }
     // Quad a-b-c-d counter-clockwise seen from the front.
     void quad(uint32_t a, uint32_t b, uint32_t c, uint32_t d) {
         triangle(a, b, c);
@@ -40,9 +42,9 @@ void add_cube(Builder& b, float size) {
     float h = size / 2;
     // For each face: outward normal and two in-plane axes with u x v = normal.
     const glm::vec3 faces[6][3] = {
-        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}},  {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
-        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}},  {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
-        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},   {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
+        {{1, 0, 0}, {0, 0, -1}, {0, 1, 0}}, {{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}},
+        {{0, 1, 0}, {1, 0, 0}, {0, 0, -1}}, {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+        {{0, 0, 1}, {1, 0, 0}, {0, 1, 0}},  {{0, 0, -1}, {-1, 0, 0}, {0, 1, 0}},
     };
     for (const auto& f : faces) {
         glm::vec3 n = f[0], u = f[1], v = f[2];
@@ -62,18 +64,23 @@ void add_sphere(Builder& b, float radius, int segments, int rings) {
         float theta = kPi * static_cast<float>(r) / static_cast<float>(rings);
         for (int s = 0; s <= segments; ++s) {
             float phi = 2 * kPi * static_cast<float>(s) / static_cast<float>(segments);
-            glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta), std::sin(theta) * std::cos(phi));
+            glm::vec3 n(std::sin(theta) * std::sin(phi), std::cos(theta),
+                        std::sin(theta) * std::cos(phi));
             if (r == 0) n = {0, 1, 0};
             if (r == rings) n = {0, -1, 0};
-            b.vertex(n * radius, n, {static_cast<float>(s) / segments, static_cast<float>(r) / rings});
+            b.vertex(n * radius, n,
+                     {static_cast<float>(s) / segments, static_cast<float>(r) / rings});
         }
     }
     auto at = [&](int r, int s) { return first + static_cast<uint32_t>(r * (segments + 1) + s); };
     for (int r = 0; r < rings; ++r)
         for (int s = 0; s < segments; ++s) {
-            if (r == 0) b.triangle(at(0, s), at(1, s), at(1, s + 1));
-            else if (r == rings - 1) b.triangle(at(r, s), at(r + 1, s), at(r, s + 1));
-            else b.quad(at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
+            if (r == 0)
+                b.triangle(at(0, s), at(1, s), at(1, s + 1));
+            else if (r == rings - 1)
+                b.triangle(at(r, s), at(r + 1, s), at(r, s + 1));
+            else
+                b.quad(at(r, s), at(r + 1, s), at(r + 1, s + 1), at(r, s + 1));
         }
 }
 
@@ -87,8 +94,10 @@ void add_disc(Builder& b, float radius, float y, int segments, bool up) {
         b.vertex({x * radius, y, z * radius}, n, {0.5f + 0.5f * x, 0.5f - 0.5f * z});
     }
     for (int s = 0; s < segments; ++s) {
-        if (up) b.triangle(centre, ring + s, ring + s + 1);
-        else b.triangle(centre, ring + s + 1, ring + s);
+        if (up)
+            b.triangle(centre, ring + s, ring + s + 1);
+        else
+            b.triangle(centre, ring + s + 1, ring + s);
     }
 }
 
@@ -108,8 +117,10 @@ void add_side(Builder& b, float radius_bottom, float radius_top, float height, i
     }
     for (int s = 0; s < segments; ++s) {
         uint32_t a = first + 2 * s, c = first + 2 * (s + 1);
-        if (radius_top > 0) b.quad(a, c, c + 1, a + 1);
-        else b.triangle(a, c, a + 1);
+        if (radius_top > 0)
+            b.quad(a, c, c + 1, a + 1);
+        else
+            b.triangle(a, c, a + 1);
     }
 }
 
@@ -120,20 +131,28 @@ Mesh make_primitive(const PrimitiveSpec& spec) {
     // Sizes must be finite too: an infinite radius gives NaN normals and
     // infinite bounds that poison the camera framing downstream.
     auto positive = [](float v) { return v > 0 && std::isfinite(v); };
-    if (spec.segments < 3 || spec.rings < 2 || !positive(spec.size) || !positive(spec.radius) || !positive(spec.height))
-        throw Error(ExitCode::invalid_input, "primitive '" + spec.type + "': sizes must be finite and > 0, segments >= 3, rings >= 2");
+    if (spec.segments < 3 || spec.rings < 2 || !positive(spec.size) || !positive(spec.radius) ||
+        !positive(spec.height))
+        throw Error(ExitCode::invalid_input,
+                    "primitive '" + spec.type +
+                        "': sizes must be finite and > 0, segments >= 3, rings >= 2");
     // A scene file can ask for any tessellation; beyond this the vertex count
     // would overflow the index arithmetic or exhaust memory instead of failing cleanly.
     constexpr int kMaxDivisions = 65536;
     constexpr long long kMaxGridVertices = 1 << 24;
     if (spec.segments > kMaxDivisions || spec.rings > kMaxDivisions ||
-        (static_cast<long long>(spec.segments) + 1) * (static_cast<long long>(spec.rings) + 1) > kMaxGridVertices)
-        throw Error(ExitCode::invalid_input, "primitive '" + spec.type + "': segments and rings are too large (at most " +
-                                                 std::to_string(kMaxDivisions) + " each and " +
-                                                 std::to_string(kMaxGridVertices) + " grid vertices)");
-    if (spec.type == "plane") add_plane(b, spec.size);
-    else if (spec.type == "cube") add_cube(b, spec.size);
-    else if (spec.type == "sphere") add_sphere(b, spec.radius, spec.segments, spec.rings);
+        (static_cast<long long>(spec.segments) + 1) * (static_cast<long long>(spec.rings) + 1) >
+            kMaxGridVertices)
+        throw Error(ExitCode::invalid_input,
+                    "primitive '" + spec.type + "': segments and rings are too large (at most " +
+                        std::to_string(kMaxDivisions) + " each and " +
+                        std::to_string(kMaxGridVertices) + " grid vertices)");
+    if (spec.type == "plane")
+        add_plane(b, spec.size);
+    else if (spec.type == "cube")
+        add_cube(b, spec.size);
+    else if (spec.type == "sphere")
+        add_sphere(b, spec.radius, spec.segments, spec.rings);
     else if (spec.type == "cylinder") {
         add_side(b, spec.radius, spec.radius, spec.height, spec.segments);
         add_disc(b, spec.radius, spec.height / 2, spec.segments, true);

@@ -1,9 +1,9 @@
 #include "assets/texture.hpp"
 
+#include <stb/stb_image.h>
 #include <array>
 #include <cmath>
 #include <cstring>
-#include <stb/stb_image.h>
 
 #include "core/error.hpp"
 
@@ -82,8 +82,10 @@ Texture texture_from_pixels(int width, int height, int channels, int bits, const
                 v[c] = alpha ? f : srgb_to_linear(f);
             }
         }
-        if (channels <= 2) tex.texels[i] = {v[0], v[0], v[0], channels == 2 ? v[1] : 1.0f};
-        else tex.texels[i] = {v[0], v[1], v[2], channels == 4 ? v[3] : 1.0f};
+        if (channels <= 2)
+            tex.texels[i] = {v[0], v[0], v[0], channels == 2 ? v[1] : 1.0f};
+        else
+            tex.texels[i] = {v[0], v[1], v[2], channels == 4 ? v[3] : 1.0f};
     }
     return tex;
 }
@@ -97,8 +99,8 @@ Texture load_texture(const std::string& path) {
         throw Error(ExitCode::invalid_input,
                     path + ": cannot decode image (" + stbi_failure_reason() + ")");
     try {
-        Texture tex = texture_from_pixels(w, h, channels, is16 ? 16 : 8,
-                                          static_cast<const uint8_t*>(data));
+        Texture tex =
+            texture_from_pixels(w, h, channels, is16 ? 16 : 8, static_cast<const uint8_t*>(data));
         stbi_image_free(data);
         return tex;
     } catch (const Error& e) {

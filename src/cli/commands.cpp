@@ -33,7 +33,9 @@ struct RenderArgs {
     bool quiet = false;
 };
 
-SourceLocation command_line(const std::string& what) { return {"", 0, 0, "command line " + what}; }
+SourceLocation command_line(const std::string& what) {
+    return {"", 0, 0, "command line " + what};
+}
 
 // Command-line settings become overrides of the scene's values, so they go
 // through exactly the checks the scene file's own values go through.
@@ -42,15 +44,18 @@ SceneOptions scene_options(const RenderArgs& args) {
     options.style_dirs = default_style_dirs();
     if (!args.size.empty()) {
         auto [w, h] = parse_size(args.size);
-        options.overrides.push_back({"output.size", "[" + std::to_string(w) + ", " + std::to_string(h) + "]",
+        options.overrides.push_back({"output.size",
+                                     "[" + std::to_string(w) + ", " + std::to_string(h) + "]",
                                      "command line --size " + args.size});
     }
     if (!args.style.empty()) {
         std::string value = args.style;
         // A file named on the command line is relative to where facet runs.
         std::error_code ec;
-        if (std::filesystem::is_regular_file(value, ec)) value = std::filesystem::absolute(value).string();
-        options.overrides.push_back({"style", "\"" + value + "\"", "command line --style " + args.style});
+        if (std::filesystem::is_regular_file(value, ec))
+            value = std::filesystem::absolute(value).string();
+        options.overrides.push_back(
+            {"style", "\"" + value + "\"", "command line --style " + args.style});
     }
     for (const auto& d : args.defines) options.overrides.push_back(parse_define(d));
     return options;
@@ -94,18 +99,20 @@ int validate_command(const RenderArgs& args) {
     World world = build_world(scene);
     if (!args.quiet) {
         print_warnings(world);
-        std::printf("%s: ok: %zu objects, %zu triangles, %zu lights, style '%s' (%s), %dx%d, frames %s (%zu)\n",
-                    scene.path.c_str(), scene.objects.size(), world.triangle_count(),
-                    scene.lights.size(), scene.style.name.c_str(),
-                    shading_model_name(scene.style.shading), scene.output.width,
-                    scene.output.height, scene.output.frames_text.c_str(), scene.output.frames.size());
+        std::printf(
+            "%s: ok: %zu objects, %zu triangles, %zu lights, style '%s' (%s), %dx%d, frames %s "
+            "(%zu)\n",
+            scene.path.c_str(), scene.objects.size(), world.triangle_count(), scene.lights.size(),
+            scene.style.name.c_str(), shading_model_name(scene.style.shading), scene.output.width,
+            scene.output.height, scene.output.frames_text.c_str(), scene.output.frames.size());
     }
     return 0;
 }
 
 int info_command(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) throw Error(ExitCode::invalid_input, path + ": file not found");
+    if (!std::filesystem::is_regular_file(path, ec))
+        throw Error(ExitCode::invalid_input, path + ": file not found");
     Mesh mesh = load_mesh(path);
     Bounds b = mesh.bounds();
     std::printf("file:       %s\n", path.c_str());
@@ -114,12 +121,13 @@ int info_command(const std::string& path) {
     std::printf("parts:      %zu\n", mesh.parts.size());
     std::printf("bounds:     [%g, %g, %g] .. [%g, %g, %g]\n", b.min.x, b.min.y, b.min.z, b.max.x,
                 b.max.y, b.max.z);
-    std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y, b.max.z - b.min.z);
+    std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y,
+                b.max.z - b.min.z);
     std::printf("materials:  %zu\n", mesh.materials.size());
     for (const auto& m : mesh.materials)
-        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n", m.name.empty() ? "(unnamed)" : m.name.c_str(),
-                    m.color.r, m.color.g, m.color.b, m.texture ? ", textured" : "",
-                    m.double_sided ? ", double-sided" : "");
+        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n",
+                    m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
+                    m.texture ? ", textured" : "", m.double_sided ? ", double-sided" : "");
     std::printf("animations: %zu\n", mesh.animations.size());
     for (const auto& a : mesh.animations) std::printf("  - %s\n", a.c_str());
     for (const auto& w : mesh.warnings) std::printf("warning: %s\n", w.c_str());
@@ -132,7 +140,8 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("--style", args.style, "Style preset name or file");
     // One value per -D: a vector option would otherwise also swallow the
     // words after it, so `render -D camera.fov=30 scene.yaml` lost its scene.
-    cmd->add_option("-D,--define", args.defines, "Override a scene value: key.path=value (repeatable)")
+    cmd->add_option("-D,--define", args.defines,
+                    "Override a scene value: key.path=value (repeatable)")
         ->take_all()
         ->allow_extra_args(false);
     cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
@@ -148,7 +157,8 @@ std::vector<std::string> default_style_dirs() {
         size_t start = 0;
         while (start <= list.size()) {
             size_t colon = list.find(':', start);
-            std::string dir = list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
+            std::string dir =
+                list.substr(start, colon == std::string::npos ? std::string::npos : colon - start);
             if (!dir.empty()) dirs.push_back(dir);
             if (colon == std::string::npos) break;
             start = colon + 1;
@@ -163,8 +173,9 @@ std::pair<int, int> parse_size(const std::string& text) {
     char x = 0, extra = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
         w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-        fail_input(command_line("--size " + text), "",
-                   "expected WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide));
+        fail_input(
+            command_line("--size " + text), "",
+            "expected WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide));
     return {w, h};
 }
 
@@ -188,11 +199,13 @@ int run_command_line(int argc, char** argv) {
         ->check(CLI::Range(0u, 256u));
 
     RenderArgs validate_args;
-    CLI::App* validate = app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
+    CLI::App* validate =
+        app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
     add_scene_options(validate, validate_args);
 
     std::string mesh_path;
-    CLI::App* info = app.add_subcommand("info", "Describe a mesh file: triangles, bounds, materials, animations");
+    CLI::App* info = app.add_subcommand(
+        "info", "Describe a mesh file: triangles, bounds, materials, animations");
     info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
 
     try {

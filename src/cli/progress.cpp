@@ -7,13 +7,18 @@
 namespace facet {
 
 ProgressReporter::ProgressReporter(std::FILE* stream, bool quiet)
-    : stream_(stream), quiet_(quiet), terminal_(::isatty(::fileno(stream)) != 0),
+    : stream_(stream),
+      quiet_(quiet),
+      terminal_(::isatty(::fileno(stream)) != 0),
       start_(std::chrono::steady_clock::now()) {}
 
 void ProgressReporter::frame_done(const FrameProgress& p) {
     if (quiet_) return;
-    double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    double eta = p.done > 0 ? elapsed / static_cast<double>(p.done) * static_cast<double>(p.total - p.done) : 0;
+    double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    double eta = p.done > 0
+                     ? elapsed / static_cast<double>(p.done) * static_cast<double>(p.total - p.done)
+                     : 0;
     if (terminal_) {
         constexpr int kWidth = 30;
         int filled = static_cast<int>(kWidth * p.done / p.total);

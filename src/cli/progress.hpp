@@ -9,12 +9,12 @@
 namespace facet {
 
 class ProgressReporter {
-public:
+  public:
     ProgressReporter(std::FILE* stream, bool quiet);
     void frame_done(const FrameProgress& p);
     void finish();
 
-private:
+  private:
     std::FILE* stream_;
     bool quiet_;
     bool terminal_;

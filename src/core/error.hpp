@@ -27,14 +27,14 @@ struct SourceLocation {
 };
 
 class Error : public std::runtime_error {
-public:
+  public:
     Error(ExitCode code, const std::string& message);
     Error(ExitCode code, const SourceLocation& where, const std::string& key,
           const std::string& message);
 
     ExitCode code() const { return code_; }
 
-private:
+  private:
     ExitCode code_;
 };
 

@@ -56,7 +56,8 @@ std::vector<int> parse_frame_ranges(const std::string& text) {
             last = parse_int(part.substr(dash + 1), text);
         }
         if (last < first)
-            throw std::invalid_argument("frame range '" + std::string(part) + "' ends before it starts");
+            throw std::invalid_argument("frame range '" + std::string(part) +
+                                        "' ends before it starts");
         if ((static_cast<long long>(last) - first) / step + frames.size() >= kMaxFrames)
             throw std::invalid_argument("frame range '" + text + "' has more than " +
                                         std::to_string(kMaxFrames) + " frames");

@@ -14,7 +14,7 @@
 namespace facet {
 
 class ThreadPool {
-public:
+  public:
     // threads == 0 picks the hardware concurrency.
     explicit ThreadPool(unsigned threads);
     ~ThreadPool();
@@ -27,7 +27,7 @@ public:
     // caller, and returns when all are done. The first exception is rethrown.
     void parallel_for(size_t count, const std::function<void(size_t)>& task);
 
-private:
+  private:
     void worker_loop();
     void run_tasks();
 

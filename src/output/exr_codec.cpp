@@ -1,10 +1,10 @@
+#include <Imath/half.h>
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfFrameBuffer.h>
 #include <OpenEXR/ImfHeader.h>
 #include <OpenEXR/ImfIO.h>
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
-#include <Imath/half.h>
 
 #include <cstring>
 
@@ -16,7 +16,7 @@ namespace {
 
 // OpenEXR writes through a seekable stream; this one collects bytes in memory.
 class MemoryStream : public Imf::OStream {
-public:
+  public:
     MemoryStream() : Imf::OStream("memory") {}
     void write(const char c[], int n) override {
         if (position_ + n > bytes_.size()) bytes_.resize(position_ + n);
@@ -27,7 +27,7 @@ public:
     void seekp(uint64_t pos) override { position_ = pos; }
     std::vector<uint8_t> take() { return std::move(bytes_); }
 
-private:
+  private:
     std::vector<uint8_t> bytes_;
     uint64_t position_ = 0;
 };
@@ -69,7 +69,8 @@ std::vector<uint8_t> encode_exr_depth(const DepthImage& depth) {
     Imf::Header header = make_header(depth.width, depth.height);
     header.channels().insert("Z", Imf::Channel(Imf::FLOAT));
     Imf::FrameBuffer fb;
-    fb.insert("Z", Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(const_cast<float*>(depth.pixels.data())),
+    fb.insert("Z", Imf::Slice(Imf::FLOAT,
+                              reinterpret_cast<char*>(const_cast<float*>(depth.pixels.data())),
                               sizeof(float), sizeof(float) * depth.width));
     MemoryStream stream;
     try {
@@ -96,8 +97,11 @@ DecodedExr read_exr(const std::string& path) {
         out.channels.resize(out.channel_names.size(), std::vector<float>(count));
         for (size_t c = 0; c < out.channel_names.size(); ++c) {
             char* base = reinterpret_cast<char*>(out.channels[c].data()) -
-                         (static_cast<ptrdiff_t>(window.min.x) + static_cast<ptrdiff_t>(window.min.y) * out.width) * sizeof(float);
-            fb.insert(out.channel_names[c], Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * out.width));
+                         (static_cast<ptrdiff_t>(window.min.x) +
+                          static_cast<ptrdiff_t>(window.min.y) * out.width) *
+                             sizeof(float);
+            fb.insert(out.channel_names[c],
+                      Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * out.width));
         }
         file.setFrameBuffer(fb);
         file.readPixels(window.min.y, window.max.y);

@@ -66,11 +66,15 @@ void write_manifest(const std::string& path, Manifest manifest) {
     j["threads"] = manifest.threads;
     j["frames"] = nlohmann::ordered_json::array();
     for (const auto& f : manifest.frames)
-        j["frames"].push_back({{"frame", f.frame}, {"render_ms", f.render_ms}, {"encode_ms", f.encode_ms}});
+        j["frames"].push_back(
+            {{"frame", f.frame}, {"render_ms", f.render_ms}, {"encode_ms", f.encode_ms}});
     j["files"] = nlohmann::ordered_json::array();
     for (const auto& f : manifest.files)
-        j["files"].push_back({{"frame", f.frame}, {"pass", f.pass}, {"format", f.format},
-                              {"path", f.path}, {"sha256", f.sha256}});
+        j["files"].push_back({{"frame", f.frame},
+                              {"pass", f.pass},
+                              {"format", f.format},
+                              {"path", f.path},
+                              {"sha256", f.sha256}});
     write_file_atomically(path, j.dump(2) + "\n");
 }
 

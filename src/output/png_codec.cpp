@@ -82,8 +82,9 @@ std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) 
         if (!opaque) p[3] = static_cast<uint8_t>((unit_to_u16(c.a) * 255u + 32767u) / 65535u);
     }
     std::vector<uint8_t> out;
-    if (!write_png(out, image.width, image.height, 8, opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA,
-                   pixels.data(), static_cast<size_t>(image.width) * channels, compression))
+    if (!write_png(out, image.width, image.height, 8,
+                   opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA, pixels.data(),
+                   static_cast<size_t>(image.width) * channels, compression))
         throw Error(ExitCode::runtime_failure, "PNG encoding failed");
     return out;
 }

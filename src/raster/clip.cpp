@@ -9,12 +9,18 @@ namespace {
 // plane is z = w and the far plane z = 0 (see render/camera.cpp).
 inline float plane_distance(int plane, const glm::vec4& p, float gx, float gy) {
     switch (plane) {
-        case 0: return p.w - p.z;       // near
-        case 1: return p.z;             // far
-        case 2: return gx * p.w + p.x;  // left guard band
-        case 3: return gx * p.w - p.x;  // right
-        case 4: return gy * p.w + p.y;  // bottom
-        default: return gy * p.w - p.y; // top
+        case 0:
+            return p.w - p.z;  // near
+        case 1:
+            return p.z;  // far
+        case 2:
+            return gx * p.w + p.x;  // left guard band
+        case 3:
+            return gx * p.w - p.x;  // right
+        case 4:
+            return gy * p.w + p.y;  // bottom
+        default:
+            return gy * p.w - p.y;  // top
     }
 }
 

@@ -138,8 +138,10 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
         shade.x0 = tri.x0;
         shade.y0 = tri.y0;
         ps.solve(inv_w[0], inv_w[1], inv_w[2], shade.inv_w);
-        ps.solve(double(bary[0].y) * inv_w[0], double(bary[1].y) * inv_w[1], double(bary[2].y) * inv_w[2], shade.b1_w);
-        ps.solve(double(bary[0].z) * inv_w[0], double(bary[1].z) * inv_w[1], double(bary[2].z) * inv_w[2], shade.b2_w);
+        ps.solve(double(bary[0].y) * inv_w[0], double(bary[1].y) * inv_w[1],
+                 double(bary[2].y) * inv_w[2], shade.b1_w);
+        ps.solve(double(bary[0].z) * inv_w[0], double(bary[1].z) * inv_w[1],
+                 double(bary[2].z) * inv_w[2], shade.b2_w);
         shade.source_triangle = source;
         shade.back_facing = back_facing ? 1 : 0;
 

@@ -34,7 +34,7 @@ struct TileVisibility {
 };
 
 class Rasterizer {
-public:
+  public:
     Rasterizer(int width, int height);
 
     int width() const { return width_; }
@@ -45,7 +45,8 @@ public:
 
     // Tile stage. `shade` runs once per tile, possibly on several threads at
     // once for different tiles; it must write only pixels inside its tile.
-    void draw_tiles(ThreadPool& pool, const std::function<void(const TileVisibility&)>& shade) const;
+    void draw_tiles(ThreadPool& pool,
+                    const std::function<void(const TileVisibility&)>& shade) const;
 
     const ShadeSetup& shade_setup(uint32_t id) const {
         return chunks_[id >> kLocalIdBits].shading[id & kLocalIdMask];
@@ -54,7 +55,7 @@ public:
     // Triangles that survived culling and clipping in the last set_geometry.
     size_t setup_triangle_count() const;
 
-private:
+  private:
     // A triangle id is (chunk << 16) | index in chunk. Clipping turns one
     // source triangle into at most 7, so a chunk produces at most
     // 7 * kTrianglesPerChunk triangles, which must fit in 16 bits.

@@ -50,7 +50,8 @@ void Rasterizer::draw_tiles(ThreadPool& pool,
                       [&](size_t tile) { draw_tile(static_cast<int>(tile), shade); });
 }
 
-void Rasterizer::draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const {
+void Rasterizer::draw_tile(int tile,
+                           const std::function<void(const TileVisibility&)>& shade) const {
     std::array<float, kTileSize * kTileSize> depth;
     std::array<uint32_t, kTileSize * kTileSize> ids;
     depth.fill(0.0f);

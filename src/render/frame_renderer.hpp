@@ -17,8 +17,8 @@
 namespace facet {
 
 struct FrameImages {
-    ColorImage color;  // linear RGBA
-    DepthImage depth;  // linear view depth, +inf where nothing was hit
+    ColorImage color;            // linear RGBA
+    DepthImage depth;            // linear view depth, +inf where nothing was hit
     glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
 };
 
@@ -31,7 +31,7 @@ struct TransformedVertices {
 };
 
 class FrameRenderer {
-public:
+  public:
     FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool);
 
     // Renders into `out`, reusing its buffers when they have the right size
@@ -41,7 +41,7 @@ public:
     // The depth range that fits the visible scene's bounding sphere.
     glm::vec2 depth_view_range(const FrameState& state, const CameraMatrices& camera) const;
 
-private:
+  private:
     void vertex_stage(const FrameState& state, const CameraMatrices& camera,
                       std::span<const ShadeLight> lights);
     void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,

@@ -41,7 +41,7 @@ struct EncodeJob {
 };
 
 class Encoder {
-public:
+  public:
     Encoder(const SceneDesc& scene, std::string dir) : scene_(scene), dir_(std::move(dir)) {
         thread_ = std::thread([this] { run(); });
     }
@@ -71,7 +71,7 @@ public:
         return manifest_;
     }
 
-private:
+  private:
     void stop() {
         {
             std::lock_guard lock(mutex_);
@@ -117,12 +117,14 @@ private:
         const auto start = Clock::now();
         const OutputDesc& out = scene_.output;
         if (out.write_color && out.write_png)
-            write(job.frame, "color", "png", encode_png_color(job.images.color, out.png_compression));
+            write(job.frame, "color", "png",
+                  encode_png_color(job.images.color, out.png_compression));
         if (out.write_color && out.write_exr)
             write(job.frame, "color", "exr", encode_exr_color(job.images.color));
         if (out.write_depth && out.write_png) {
             glm::vec2 range = out.depth_range.value_or(job.images.depth_view_range);
-            write(job.frame, "depth", "png", encode_png_depth(job.images.depth, range, out.png_compression));
+            write(job.frame, "depth", "png",
+                  encode_png_depth(job.images.depth, range, out.png_compression));
         }
         if (out.write_depth && out.write_exr)
             write(job.frame, "depth", "exr", encode_exr_depth(job.images.depth));

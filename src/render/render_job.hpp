@@ -19,7 +19,7 @@ struct RenderOptions {
 
 struct FrameProgress {
     int frame;
-    size_t done;   // frames rendered so far, this one included
+    size_t done;  // frames rendered so far, this one included
     size_t total;
     double render_ms;
 };

@@ -27,10 +27,10 @@ void flush(PendingPixels& pending, const glm::vec3& eye, std::span<const ShadeLi
     if (pending.count == 0) return;
     // Unused lanes repeat lane 0, so they compute harmless values.
     for (int i = pending.count; i < simd::kLanes; ++i) {
-        for (simd::vf* v : {&pending.surface.px, &pending.surface.py, &pending.surface.pz,
-                            &pending.surface.nx, &pending.surface.ny, &pending.surface.nz,
-                            &pending.surface.ambient, &pending.surface.diffuse,
-                            &pending.surface.specular, &pending.surface.shininess})
+        for (simd::vf* v :
+             {&pending.surface.px, &pending.surface.py, &pending.surface.pz, &pending.surface.nx,
+              &pending.surface.ny, &pending.surface.nz, &pending.surface.ambient,
+              &pending.surface.diffuse, &pending.surface.specular, &pending.surface.shininess})
             (*v)[i] = (*v)[0];
     }
     LightingBatch l = light_surface_batch(pending.surface, eye, lights, highlight);
@@ -87,7 +87,8 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             float alpha = 1.0f;
             if (mat.texture) {
                 const auto& uv = world_.uvs;
-                glm::vec4 texel = mat.texture->sample((b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]) * mat.uv_scale);
+                glm::vec4 texel =
+                    mat.texture->sample((b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]) * mat.uv_scale);
                 albedo *= glm::vec3(texel);
             }
             if (model == ShadingModel::unlit) {
@@ -96,13 +97,16 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             }
             if (model == ShadingModel::depth) {
                 float t = (depth_range.y - w) / (depth_range.y - depth_range.x);
-                color_row[tx] = glm::vec4(glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f))), 1.0f);
+                color_row[tx] =
+                    glm::vec4(glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f))), 1.0f);
                 continue;
             }
             if (model == ShadingModel::gouraud) {
                 const auto& lit = vertices_.lit;
-                glm::vec3 diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
-                glm::vec3 specular = b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
+                glm::vec3 diffuse =
+                    b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
+                glm::vec3 specular =
+                    b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
                 color_row[tx] = glm::vec4(albedo * diffuse + specular, alpha);
                 continue;
             }
@@ -119,15 +123,20 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
                 float len = glm::length(normal);
                 glm::vec3 n = (len > 0 ? normal / len : glm::vec3(0, 1, 0)) * 0.5f + 0.5f;
                 // Shown as the stored bytes, so undo the sRGB encoding to come.
-                color_row[tx] = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z), 1.0f};
+                color_row[tx] = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z),
+                                 1.0f};
                 continue;
             }
             // flat, phong and blinn_phong: lit eight pixels at a time.
             const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
             const int lane = pending.count++;
             SurfaceBatch& sb = pending.surface;
-            sb.px[lane] = position.x; sb.py[lane] = position.y; sb.pz[lane] = position.z;
-            sb.nx[lane] = normal.x; sb.ny[lane] = normal.y; sb.nz[lane] = normal.z;
+            sb.px[lane] = position.x;
+            sb.py[lane] = position.y;
+            sb.pz[lane] = position.z;
+            sb.nx[lane] = normal.x;
+            sb.ny[lane] = normal.y;
+            sb.nz[lane] = normal.z;
             sb.ambient[lane] = mat.ambient;
             sb.diffuse[lane] = mat.diffuse;
             sb.specular[lane] = mat.specular;
@@ -141,7 +150,8 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
     flush(pending, camera.position, lights, highlight);
 }
 
-glm::vec2 FrameRenderer::depth_view_range(const FrameState& state, const CameraMatrices& camera) const {
+glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
+                                          const CameraMatrices& camera) const {
     // Fit the bounding sphere of everything visible; for an orbiting camera
     // it stays constant, so animations do not flicker.
     Bounds all;
@@ -164,12 +174,15 @@ glm::vec2 FrameRenderer::depth_view_range(const FrameState& state, const CameraM
 }
 
 FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
-    : scene_(scene), world_(world), pool_(pool),
+    : scene_(scene),
+      world_(world),
+      pool_(pool),
       rasterizer_(scene.output.width, scene.output.height) {}
 
 void FrameRenderer::render(int frame, FrameImages& out) {
     const FrameState state = evaluate_frame(scene_, frame);
-    const float aspect = static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
+    const float aspect =
+        static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);
     const std::vector<ShadeLight> lights = make_shade_lights(state.lights);
 

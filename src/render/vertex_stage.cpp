@@ -61,8 +61,9 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
                 const Material& mat = world_.materials[world_.draws[draw].material];
                 SurfacePoint p{vertices_.world_position[v], vertices_.world_normal[v],
                                glm::normalize(camera.position - vertices_.world_position[v])};
-                vertices_.lit[v] = light_surface(
-                    p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess}, lights, Highlight::blinn);
+                vertices_.lit[v] =
+                    light_surface(p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess},
+                                  lights, Highlight::blinn);
             }
         }
     });

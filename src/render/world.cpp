@@ -60,8 +60,8 @@ World build_world(const SceneDesc& scene) {
         } else {
             const PrimitiveDesc& p = *obj.primitive;
             try {
-                mesh = std::make_shared<Mesh>(make_primitive(
-                    {p.type, p.size, p.radius, p.height, p.segments, p.rings}));
+                mesh = std::make_shared<Mesh>(
+                    make_primitive({p.type, p.size, p.radius, p.height, p.segments, p.rings}));
             } catch (const Error& e) {
                 fail_input(p.where, "objects." + std::to_string(o) + ".primitive", e.what());
             }
@@ -82,10 +82,13 @@ World build_world(const SceneDesc& scene) {
             d.triangle_count = static_cast<uint32_t>(part.triangle_count());
             d.material = material_base + part.material;
             const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
-            world.positions.insert(world.positions.end(), part.positions.begin(), part.positions.end());
+            world.positions.insert(world.positions.end(), part.positions.begin(),
+                                   part.positions.end());
             world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
-            if (part.uvs.empty()) world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
-            else world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
+            if (part.uvs.empty())
+                world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
+            else
+                world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
             world.vertex_draw.resize(world.positions.size(), draw_index);
             for (uint32_t i : part.indices) world.indices.push_back(d.first_vertex + i);
             world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);

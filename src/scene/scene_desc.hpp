@@ -47,9 +47,9 @@ struct OutputDesc {
 struct OrbitDesc {
     glm::vec3 center = {0, 0, 0};
     float radius = 5;
-    float elevation = 20;    // degrees above the centre's horizontal plane
-    float start_angle = 0;   // degrees around +Y; 0 puts the camera on +Z
-    float turns = 1;         // full circles over the frame range; negative turns clockwise
+    float elevation = 20;   // degrees above the centre's horizontal plane
+    float start_angle = 0;  // degrees around +Y; 0 puts the camera on +Z
+    float turns = 1;        // full circles over the frame range; negative turns clockwise
 };
 
 struct CameraDesc {
@@ -130,9 +130,9 @@ struct SceneDesc {
 
 // One `-D key.path=value` (or a command-line option turned into one).
 struct Override {
-    std::string path;   // dotted, list items by index: objects.0.material.color
-    std::string value;  // YAML text
-    std::string origin; // how the user wrote it, for error messages
+    std::string path;    // dotted, list items by index: objects.0.material.color
+    std::string value;   // YAML text
+    std::string origin;  // how the user wrote it, for error messages
 };
 
 struct SceneOptions {

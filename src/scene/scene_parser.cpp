@@ -90,17 +90,20 @@ CameraDesc parse_camera(const Field& f) {
     if (f.has("near")) cam.near = static_cast<float>(f["near"].number(1e-6, kMaxCoordinate));
     if (f.has("far")) cam.far = static_cast<float>(f["far"].number(1e-6, kMaxCoordinate));
     if (cam.far <= cam.near)
-        (f.has("far") ? f["far"] : f).fail("far (" + std::to_string(cam.far) +
-                                           ") must be greater than near (" +
-                                           std::to_string(cam.near) + ")");
+        (f.has("far") ? f["far"] : f)
+            .fail("far (" + std::to_string(cam.far) + ") must be greater than near (" +
+                  std::to_string(cam.near) + ")");
     if (f.has("orbit")) {
         Field o = f["orbit"];
         o.check_keys({"center", "radius", "elevation", "start_angle", "turns"});
         OrbitDesc orbit;
         if (o.has("center")) orbit.center = o["center"].vec3();
-        if (o.has("radius")) orbit.radius = static_cast<float>(o["radius"].number(1e-6, kMaxCoordinate));
-        if (o.has("elevation")) orbit.elevation = static_cast<float>(o["elevation"].number(-89.9, 89.9));
-        if (o.has("start_angle")) orbit.start_angle = static_cast<float>(o["start_angle"].number(-36000, 36000));
+        if (o.has("radius"))
+            orbit.radius = static_cast<float>(o["radius"].number(1e-6, kMaxCoordinate));
+        if (o.has("elevation"))
+            orbit.elevation = static_cast<float>(o["elevation"].number(-89.9, 89.9));
+        if (o.has("start_angle"))
+            orbit.start_angle = static_cast<float>(o["start_angle"].number(-36000, 36000));
         if (o.has("turns")) orbit.turns = static_cast<float>(o["turns"].number(-1000, 1000));
         cam.orbit = orbit;
     } else if (glm::vec3 d = cam.target - cam.position; d.x == 0 && d.y == 0 && d.z == 0) {
@@ -117,7 +120,8 @@ LightDesc parse_light(const Field& f) {
     light.type = type == "point" ? LightType::point : LightType::directional;
     if (light.type == LightType::directional) {
         light.direction = nonzero_direction(f.require("direction"));
-        if (f.has("position")) f["position"].fail("a directional light has no position; use direction");
+        if (f.has("position"))
+            f["position"].fail("a directional light has no position; use direction");
     } else {
         light.position = f.require("position").vec3();
         if (f.has("direction")) f["direction"].fail("a point light has no direction; use position");
@@ -142,7 +146,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     }
     if (f.has("wrap"))
         m.wrap = f["wrap"].choice({"repeat", "clamp"}) == "clamp" ? TextureWrap::clamp
-                                                                   : TextureWrap::repeat;
+                                                                  : TextureWrap::repeat;
     if (f.has("uv_scale")) {
         Field s = f["uv_scale"];
         m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();
@@ -171,7 +175,9 @@ PrimitiveDesc parse_primitive(const Field& f) {
 glm::vec3 parse_axis(const Field& f) {
     if (f.is_scalar()) {
         std::string axis = f.choice({"x", "y", "z"});
-        return axis == "x" ? glm::vec3(1, 0, 0) : axis == "y" ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+        return axis == "x"   ? glm::vec3(1, 0, 0)
+               : axis == "y" ? glm::vec3(0, 1, 0)
+                             : glm::vec3(0, 0, 1);
     }
     return nonzero_direction(f);
 }
@@ -198,8 +204,9 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("rotate")) obj.rotate = f["rotate"].vec3();
     if (f.has("scale")) {
         Field s = f["scale"];
-        obj.scale = s.is_scalar() ? glm::vec3(static_cast<float>(s.number(-kMaxCoordinate, kMaxCoordinate)))
-                                  : s.vec3();
+        obj.scale = s.is_scalar()
+                        ? glm::vec3(static_cast<float>(s.number(-kMaxCoordinate, kMaxCoordinate)))
+                        : s.vec3();
         if (obj.scale.x == 0 || obj.scale.y == 0 || obj.scale.z == 0)
             s.fail("scale must not be zero on any axis");
     }

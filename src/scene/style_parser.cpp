@@ -11,8 +11,8 @@ namespace fs = std::filesystem;
 namespace {
 
 ShadingModel parse_shading(const Field& f) {
-    std::string name = f.choice({"flat", "gouraud", "phong", "blinn_phong", "blinn-phong", "unlit",
-                                 "depth", "normal"});
+    std::string name = f.choice(
+        {"flat", "gouraud", "phong", "blinn_phong", "blinn-phong", "unlit", "depth", "normal"});
     if (name == "flat") return ShadingModel::flat;
     if (name == "gouraud") return ShadingModel::gouraud;
     if (name == "phong") return ShadingModel::phong;
@@ -47,13 +47,20 @@ bool looks_like_path(const std::string& text) {
 
 const char* shading_model_name(ShadingModel model) {
     switch (model) {
-        case ShadingModel::flat: return "flat";
-        case ShadingModel::gouraud: return "gouraud";
-        case ShadingModel::phong: return "phong";
-        case ShadingModel::blinn_phong: return "blinn_phong";
-        case ShadingModel::unlit: return "unlit";
-        case ShadingModel::depth: return "depth";
-        case ShadingModel::normal: return "normal";
+        case ShadingModel::flat:
+            return "flat";
+        case ShadingModel::gouraud:
+            return "gouraud";
+        case ShadingModel::phong:
+            return "phong";
+        case ShadingModel::blinn_phong:
+            return "blinn_phong";
+        case ShadingModel::unlit:
+            return "unlit";
+        case ShadingModel::depth:
+            return "depth";
+        case ShadingModel::normal:
+            return "normal";
     }
     return "?";
 }
@@ -100,8 +107,8 @@ StyleDesc parse_style_field(const Field& field, const std::string& base_dir,
         if (name == text) return load_style_file(path);
     std::string names;
     for (const auto& preset : presets) names += (names.empty() ? "" : ", ") + preset.first;
-    field.fail("no style preset named '" + text + "' (available: " +
-               (names.empty() ? "none found" : names) + ")");
+    field.fail("no style preset named '" + text +
+               "' (available: " + (names.empty() ? "none found" : names) + ")");
 }
 
 }  // namespace facet

@@ -62,7 +62,9 @@ std::shared_ptr<YamlDocument> read_yaml_text(const std::string& text, const std:
     return parse(text, name);
 }
 
-Field root_field(const std::shared_ptr<YamlDocument>& doc) { return Field(doc, doc->root, ""); }
+Field root_field(const std::shared_ptr<YamlDocument>& doc) {
+    return Field(doc, doc->root, "");
+}
 
 Field::Field(std::shared_ptr<const YamlDocument> doc, YAML::Node node, std::string path)
     : doc_(std::move(doc)), node_(std::move(node)), path_(std::move(path)) {}
@@ -186,9 +188,9 @@ bool Field::boolean() const {
 
 std::vector<double> Field::numbers(size_t min_count, size_t max_count) const {
     if (!node_.IsSequence() || node_.size() < min_count || node_.size() > max_count) {
-        std::string count = min_count == max_count ? std::to_string(min_count)
-                                                   : std::to_string(min_count) + " or " +
-                                                         std::to_string(max_count);
+        std::string count = min_count == max_count
+                                ? std::to_string(min_count)
+                                : std::to_string(min_count) + " or " + std::to_string(max_count);
         fail("must be a list of " + count + " numbers, got " + scalar_for_message() +
              (node_.IsSequence() ? " of " + std::to_string(node_.size()) : ""));
     }
@@ -210,8 +212,9 @@ glm::vec3 Field::vec3() const {
 glm::vec4 Field::color4() const {
     glm::vec4 out;
     if (node_.IsScalar() && parse_hex_color(node_.Scalar(), out)) return out;
-    if (node_.IsScalar()) fail("must be a colour: [r, g, b], [r, g, b, a] or '#rrggbb', got '" +
-                               node_.Scalar() + "'");
+    if (node_.IsScalar())
+        fail("must be a colour: [r, g, b], [r, g, b, a] or '#rrggbb', got '" + node_.Scalar() +
+             "'");
     auto v = numbers(3, 4);
     for (size_t i = 0; i < v.size(); ++i)
         if (v[i] < 0) (*this)[i].fail("colour components must be >= 0");
@@ -263,8 +266,8 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
         size_t start = 0;
         for (;;) {
             size_t dot = ov.path.find('.', start);
-            std::string part = ov.path.substr(start, dot == std::string::npos ? std::string::npos
-                                                                               : dot - start);
+            std::string part =
+                ov.path.substr(start, dot == std::string::npos ? std::string::npos : dot - start);
             const std::string parent = walked;
             walked = join_path(walked, part);
             if (part.empty()) fail_input(origin, ov.path, "the key path has an empty part");
@@ -273,7 +276,8 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
                 char* end = nullptr;
                 long index = std::strtol(part.c_str(), &end, 10);
                 if (current.size() == 0)
-                    fail_input(origin, walked, "'" + parent + "' is an empty list; there is no item " + part);
+                    fail_input(origin, walked,
+                               "'" + parent + "' is an empty list; there is no item " + part);
                 if (end != part.c_str() + part.size() || index < 0 ||
                     static_cast<size_t>(index) >= current.size())
                     fail_input(origin, walked,

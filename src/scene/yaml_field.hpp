@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <yaml-cpp/yaml.h>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
-#include <yaml-cpp/yaml.h>
 
 #include "core/error.hpp"
 
@@ -29,7 +29,7 @@ std::shared_ptr<YamlDocument> read_yaml_file(const std::string& path);
 std::shared_ptr<YamlDocument> read_yaml_text(const std::string& text, const std::string& name);
 
 class Field {
-public:
+  public:
     Field(std::shared_ptr<const YamlDocument> doc, YAML::Node node, std::string path);
 
     const std::string& path() const { return path_; }
@@ -67,7 +67,7 @@ public:
     // A list of words from the given set.
     std::vector<std::string> choices(std::initializer_list<const char*> words) const;
 
-private:
+  private:
     std::vector<double> numbers(size_t min_count, size_t max_count) const;
     std::string scalar_for_message() const;
 

@@ -8,9 +8,9 @@ using simd::vi;
 
 // Built twice: for AVX2 and for baseline x86-64. Both do the same IEEE
 // operations in the same order, so they give the same bits.
-__attribute__((target_clones("avx2", "default")))
-LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& eye,
-                                  std::span<const ShadeLight> lights, Highlight highlight) {
+__attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_batch(
+    const SurfaceBatch& surface, const glm::vec3& eye, std::span<const ShadeLight> lights,
+    Highlight highlight) {
     struct Unit {
         vf nx, ny, nz, ex, ey, ez;
     };
@@ -20,7 +20,9 @@ LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& 
         vi ok = len > splat(0.0f);
         vf inv = 1.0f / (ok ? len : splat(1.0f));
         if (eye_vector) {
-            u.ex = x * inv; u.ey = y * inv; u.ez = z * inv;
+            u.ex = x * inv;
+            u.ey = y * inv;
+            u.ez = z * inv;
         } else {
             u.nx = ok ? x * inv : splat(0.0f);
             u.ny = ok ? y * inv : splat(1.0f);
@@ -39,7 +41,8 @@ LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& 
         vf lx, ly, lz, rr, rg, rb;
         vi usable = simd::splat_i(-1);
         if (light.is_point) {
-            vf dx = light.position.x - p.px, dy = light.position.y - p.py, dz = light.position.z - p.pz;
+            vf dx = light.position.x - p.px, dy = light.position.y - p.py,
+               dz = light.position.z - p.pz;
             vf dist2 = dx * dx + dy * dy + dz * dz;
             usable = dist2 > zero;
             vf safe = usable ? dist2 : splat(1.0f);

@@ -17,8 +17,12 @@ constexpr int kLanes = 8;
 typedef float vf __attribute__((vector_size(32)));
 typedef int32_t vi __attribute__((vector_size(32)));
 
-inline vf splat(float v) { return vf{v, v, v, v, v, v, v, v}; }
-inline vi splat_i(int32_t v) { return vi{v, v, v, v, v, v, v, v}; }
+inline vf splat(float v) {
+    return vf{v, v, v, v, v, v, v, v};
+}
+inline vi splat_i(int32_t v) {
+    return vi{v, v, v, v, v, v, v, v};
+}
 
 inline vf vsqrt(vf x) {
     vf r;
@@ -26,8 +30,12 @@ inline vf vsqrt(vf x) {
     return r;
 }
 
-inline vf vmax(vf a, vf b) { return a > b ? a : b; }
-inline vf vmin(vf a, vf b) { return a < b ? a : b; }
+inline vf vmax(vf a, vf b) {
+    return a > b ? a : b;
+}
+inline vf vmin(vf a, vf b) {
+    return a < b ? a : b;
+}
 
 // log2 for positive, normal x. The mantissa is centred on 1 (in
 // [sqrt(1/2), sqrt(2))) and log(m) summed as 2 atanh((m-1)/(m+1)), whose
@@ -49,13 +57,18 @@ inline vf vlog2(vf x) {
 // 2^y for y in [-126, 0]; smaller y gives about 1e-38.
 inline vf vexp2(vf y) {
     y = vmax(y, splat(-126.0f));
-    vi whole = __builtin_convertvector(y, vi);  // truncates towards zero
+    vi whole = __builtin_convertvector(y, vi);          // truncates towards zero
     whole += (__builtin_convertvector(whole, vf) > y);  // -1 where truncation rounded up: floor
-    vf f = y - __builtin_convertvector(whole, vf);  // in [0, 1)
+    vf f = y - __builtin_convertvector(whole, vf);      // in [0, 1)
     // e^(f ln 2) by Taylor series to degree 8: error below 1e-7 on [0, 1).
     vf z = f * 0.69314718f;
-    vf p = 1.0f + z * (1.0f + z * (0.5f + z * (1.0f / 6 + z * (1.0f / 24 + z * (1.0f / 120 +
-                z * (1.0f / 720 + z * (1.0f / 5040 + z * (1.0f / 40320))))))));
+    vf p = 1.0f +
+           z * (1.0f +
+                z * (0.5f +
+                     z * (1.0f / 6 +
+                          z * (1.0f / 24 +
+                               z * (1.0f / 120 +
+                                    z * (1.0f / 720 + z * (1.0f / 5040 + z * (1.0f / 40320))))))));
     vi scale_bits = (whole + 127) << 23;
     return p * (vf)scale_bits;
 }
