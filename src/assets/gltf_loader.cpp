@@ -1,6 +1,7 @@
 // glTF 2.0 (.gltf and .glb) through tinygltf. The node hierarchy of the
 // default scene is flattened: every mesh instance becomes parts with its
 // world transform baked in. Follows the glTF 2.0 specification §3.6-3.9.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -78,12 +79,41 @@ const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t o
     if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
         bad(path, what + ": bufferView refers to missing buffer " + std::to_string(view.buffer));
     const auto& buffer = model.buffers[view.buffer];
-    if (view.byteOffset + view.byteLength > buffer.data.size())
+    // Each comparison is arranged so that no sum or product can wrap around:
+    // the counts and offsets come straight from the file.
+    if (view.byteOffset > buffer.data.size() ||
+        view.byteLength > buffer.data.size() - view.byteOffset)
         bad(path,
             what + ": bufferView runs past the end of its buffer (is the .bin missing or short?)");
-    if (count > 0 && offset + stride * (count - 1) + element_size > view.byteLength)
+    if (count > 0 &&
+        (offset > view.byteLength || element_size > view.byteLength - offset ||
+         count - 1 > (view.byteLength - offset - element_size) / std::max<size_t>(stride, 1)))
         bad(path, what + ": data runs past the end of its bufferView");
     return buffer.data.data() + view.byteOffset + offset;
+}
+
+// An accessor without a bufferView is zeros (plus sparse values); nothing in
+// the file bounds its count, so a hostile count would allocate without limit.
+constexpr size_t kMaxDatalessCount = size_t(1) << 24;
+
+// The accessor's data, checked against its bufferView before anything is
+// allocated from its count; nullptr when it has no bufferView.
+const uint8_t* accessor_bytes(const tinygltf::Model& model, const tinygltf::Accessor& acc,
+                              size_t element, size_t& stride, const std::string& path,
+                              const std::string& what) {
+    stride = element;
+    if (acc.bufferView < 0) {
+        if (acc.count > kMaxDatalessCount)
+            bad(path,
+                what + ": accessor without data claims " + std::to_string(acc.count) + " elements");
+        return nullptr;
+    }
+    if (static_cast<size_t>(acc.bufferView) >= model.bufferViews.size())
+        bad(path, what + " refers to missing bufferView " + std::to_string(acc.bufferView));
+    const auto& view = model.bufferViews[acc.bufferView];
+    if (view.byteStride) stride = view.byteStride;
+    return view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count, element, path,
+                      what);
 }
 
 // Reads an accessor as floats, `components` per element, applying sparse substitution.
@@ -98,13 +128,11 @@ std::vector<float> read_floats(const tinygltf::Model& model, int index, int comp
                       std::to_string(components));
     int comp_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
     if (comp_size <= 0) bad(path, what + " has an unknown component type");
-    std::vector<float> out(acc.count * components, 0.0f);
     size_t element = static_cast<size_t>(comp_size) * components;
-    if (acc.bufferView >= 0) {
-        const auto& view = model.bufferViews.at(acc.bufferView);
-        size_t stride = view.byteStride ? view.byteStride : element;
-        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count,
-                                         element, path, what);
+    size_t stride = element;
+    const uint8_t* base = accessor_bytes(model, acc, element, stride, path, what);
+    std::vector<float> out(acc.count * components, 0.0f);
+    if (base) {
         for (size_t i = 0; i < acc.count; ++i)
             for (int c = 0; c < components; ++c)
                 out[i * components + c] = static_cast<float>(read_component(
@@ -145,12 +173,11 @@ std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index,
         acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
         acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
         bad(path, "index accessor must be unsigned byte, short or int");
+    const size_t element = static_cast<size_t>(size);
+    size_t stride = element;
+    const uint8_t* base = accessor_bytes(model, acc, element, stride, path, "indices");
     std::vector<uint32_t> out(acc.count, 0);
-    if (acc.bufferView >= 0) {
-        const auto& view = model.bufferViews.at(acc.bufferView);
-        size_t stride = view.byteStride ? view.byteStride : size;
-        const uint8_t* base = view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count,
-                                         size, path, "indices");
+    if (base) {
         for (size_t i = 0; i < acc.count; ++i)
             out[i] =
                 static_cast<uint32_t>(read_component(base + i * stride, acc.componentType, false));
@@ -218,6 +245,12 @@ Mesh load_gltf(const std::string& path) {
     };
     if (!ok)
         bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
+
+    // Geometry compressed by these extensions is not in the accessors read
+    // below: they have no bufferView and would load as a heap of zeros.
+    for (const auto& ext : model.extensionsRequired)
+        if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
+            bad(path, "needs the " + ext + " extension, which facet cannot decode");
 
     Mesh mesh;
     mesh.source = path;
@@ -303,6 +336,7 @@ Mesh load_gltf(const std::string& path) {
                 part.positions.push_back(
                     glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1)));
             bool has_normals = false;
+            std::vector<uint32_t> unusable_normals;  // zero length, or a singular node matrix
             if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
                 auto nrm = read_floats(model, it->second, 3, path, what + " NORMAL");
                 if (nrm.size() / 3 != count)
@@ -311,7 +345,9 @@ Mesh load_gltf(const std::string& path) {
                     glm::vec3 n =
                         normal_matrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
                     float len = glm::length(n);
-                    part.normals.push_back(len > 0 ? n / len : glm::vec3(0, 1, 0));
+                    bool usable = len > 0 && std::isfinite(len);
+                    part.normals.push_back(usable ? n / len : glm::vec3(0));
+                    if (!usable) unusable_normals.push_back(static_cast<uint32_t>(i));
                 }
                 has_normals = true;
             }
@@ -350,6 +386,25 @@ Mesh load_gltf(const std::string& path) {
             if (part.indices.empty()) continue;
             // glTF §3.7.2.1: without normals, flat normals are used.
             if (!has_normals) compute_normals(part, 0.0f);
+            if (!unusable_normals.empty()) {
+                // Zero normals (BoxBadNormals) would shade as if facing an
+                // arbitrary way; the faces around the vertex know better.
+                std::vector<glm::vec3> sum(count, glm::vec3(0));
+                for (size_t t = 0; t + 2 < part.indices.size(); t += 3) {
+                    const uint32_t a = part.indices[t], b = part.indices[t + 1],
+                                   c = part.indices[t + 2];
+                    glm::vec3 face = glm::cross(part.positions[b] - part.positions[a],
+                                                part.positions[c] - part.positions[a]);
+                    for (uint32_t v : {a, b, c}) sum[v] += face;
+                }
+                for (uint32_t v : unusable_normals) {
+                    float len = glm::length(sum[v]);
+                    part.normals[v] =
+                        len > 0 && std::isfinite(len) ? sum[v] / len : glm::vec3(0, 1, 0);
+                }
+                mesh.warnings.push_back(what + ": " + std::to_string(unusable_normals.size()) +
+                                        " normals of zero length replaced by face normals");
+            }
             validate_part(part, path);
             mesh.parts.push_back(std::move(part));
         }
@@ -359,8 +414,11 @@ Mesh load_gltf(const std::string& path) {
         [&](int node_index, const glm::mat4& parent, int depth, std::set<int>& on_path) {
             if (node_index < 0 || static_cast<size_t>(node_index) >= model.nodes.size())
                 bad(path, "scene refers to missing node " + std::to_string(node_index));
-            if (depth > kMaxNodeDepth || on_path.count(node_index))
+            if (on_path.count(node_index))
                 bad(path, "node hierarchy has a cycle through node " + std::to_string(node_index));
+            if (depth > kMaxNodeDepth)
+                bad(path,
+                    "node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " levels");
             on_path.insert(node_index);
             const auto& node = model.nodes[node_index];
             glm::mat4 world = parent * node_matrix(node);
@@ -368,6 +426,14 @@ Mesh load_gltf(const std::string& path) {
             for (int child : node.children) visit(child, world, depth + 1, on_path);
             on_path.erase(node_index);
         };
+
+    // glTF §3.5.3: nodes form strict trees. A node with several parents is
+    // walked once per path to it, so a few dozen shared levels never finish.
+    std::vector<int> parents(model.nodes.size(), 0);
+    for (const auto& n : model.nodes)
+        for (int c : n.children)
+            if (c >= 0 && static_cast<size_t>(c) < parents.size() && ++parents[c] > 1)
+                bad(path, "node " + std::to_string(c) + " has more than one parent");
 
     std::vector<int> roots;
     if (!model.scenes.empty()) {

@@ -33,14 +33,6 @@ std::vector<std::string> split_lines(const std::string& text, const std::string&
     return out;
 }
 
-// Windows exporters write "mtllib .\\models\\box.mtl"; on POSIX the backslash
-// is part of the file name, so the library would never be found.
-std::string portable_path(std::string p) {
-    for (auto& c : p)
-        if (c == '\\') c = '/';
-    return p;
-}
-
 void append_utf8(std::string& out, uint32_t u) {
     if (u < 0x80) {
         out += static_cast<char>(u);
@@ -123,7 +115,11 @@ std::string material_name(std::string key) {
     return key;
 }
 
-std::string join_usemtl_names(const std::string& text) {
+// Rewrites the two kinds of line tinyobjloader misreads: material names with
+// spaces (see above), and "mtllib .\\libs\\a.mtl" from Windows exporters, where
+// it takes each backslash as an escape and drops it. A backslash before a
+// space stays: that is tinyobjloader's escape for a space in the file name.
+std::string normalise_obj_lines(const std::string& text) {
     std::string out;
     out.reserve(text.size());
     size_t start = 0;
@@ -131,8 +127,12 @@ std::string join_usemtl_names(const std::string& text) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         size_t i = text.find_first_not_of(" \t", start);
-        if (i < end && text.compare(i, 6, "usemtl") == 0 && i + 6 < end && (text[i + 6] == ' ' || text[i + 6] == '\t')) {
+        if (i < end && text.compare(i, 6, "usemtl") == 0 && i + 6 < end &&
+            (text[i + 6] == ' ' || text[i + 6] == '\t')) {
             out += "usemtl " + material_key(text.substr(i + 7, end - i - 7));
+        } else if (i < end && text.compare(i, 6, "mtllib") == 0) {
+            for (size_t k = start; k < end; ++k)
+                out += text[k] == '\\' && k + 1 < end && text[k + 1] != ' ' ? '/' : text[k];
         } else {
             out.append(text, start, end - start);
         }
@@ -143,14 +143,14 @@ std::string join_usemtl_names(const std::string& text) {
 }
 
 // .mtl files next to the .obj. tinyobjloader's own reader splits its search
-// path at ':' (so folders with a colon break) and keeps Windows separators.
+// path at ':', so models in a folder whose name has a colon lost their materials.
 class MtlReader : public tinyobj::MaterialReader {
   public:
     explicit MtlReader(std::filesystem::path dir) : dir_(std::move(dir)) {}
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warn,
                     std::string* err) override {
-        std::ifstream in(dir_ / portable_path(name));
+        std::ifstream in(dir_ / name);
         if (!in) {
             if (warn) *warn += "material library '" + name + "' not found\n";
             return false;
@@ -195,6 +195,24 @@ std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dv
     glm::dvec3 v = glm::cross(normal, u);
     std::vector<glm::dvec2> p(n);
     for (size_t i = 0; i < n; ++i) p[i] = {glm::dot(pts[i], u), glm::dot(pts[i], v)};
+
+    if (n == 4) {
+        // Quads split along the shorter diagonal, as tinyobjloader did (in
+        // float, ties to 1-3), so existing renders keep their triangles; the
+        // other diagonal only when that one would leave the quad (concave).
+        auto sq = [&](size_t a, size_t b) {
+            glm::vec3 d = glm::vec3(pts[b]) - glm::vec3(pts[a]);
+            return d.x * d.x + d.y * d.y + d.z * d.z;
+        };
+        auto ccw = [&](size_t a, size_t b, size_t c) {
+            return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x) >
+                   0;
+        };
+        const bool via02 = ccw(0, 1, 2) && ccw(0, 2, 3), via13 = ccw(0, 1, 3) && ccw(1, 2, 3);
+        const bool prefer02 = sq(0, 2) < sq(1, 3);
+        if (via02 && (prefer02 || !via13)) return {{0, 1, 2}, {0, 2, 3}};
+        if (via13) return {{0, 1, 3}, {1, 2, 3}};
+    }
 
     std::vector<size_t> prev(n), next(n);
     for (size_t i = 0; i < n; ++i) {
@@ -251,7 +269,7 @@ std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dv
 }  // namespace
 
 Mesh load_obj(const std::string& path) {
-    const std::string text = join_usemtl_names(read_obj_text(path));
+    const std::string text = normalise_obj_lines(read_obj_text(path));
     const std::string dir = std::filesystem::path(path).parent_path().string();
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;

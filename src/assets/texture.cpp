@@ -1,6 +1,7 @@
 #include "assets/texture.hpp"
 
 #include <stb/stb_image.h>
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstring>
@@ -38,6 +39,12 @@ glm::vec4 Texture::sample(glm::vec2 uv) const {
     float x = uv.x * static_cast<float>(width) - 0.5f;
     float y = uv.y * static_cast<float>(height) - 0.5f;
     if (!std::isfinite(x) || !std::isfinite(y)) return texels[0];
+    if (wrap == Wrap::clamp) {
+        // Clamp before the fmod below: far outside the image the edge texel
+        // must win, not whatever texel the remainder happens to land on.
+        x = std::clamp(x, -1.0f, static_cast<float>(width));
+        y = std::clamp(y, -1.0f, static_cast<float>(height));
+    }
     // Keep the float->int conversion in range for huge repeat counts.
     x = std::fmod(x, 16777216.0f);
     y = std::fmod(y, 16777216.0f);
