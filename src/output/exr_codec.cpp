@@ -32,9 +32,14 @@ class MemoryStream : public Imf::OStream {
     uint64_t position_ = 0;
 };
 
+// ZIP at zlib level 1: on half and float data, higher levels save only a
+// few percent and take several times longer (measured in docs/performance.md).
+constexpr int kExrZipLevel = 1;
+
 Imf::Header make_header(int width, int height) {
     Imf::Header header(width, height);
     header.compression() = Imf::ZIP_COMPRESSION;
+    header.zipCompressionLevel() = kExrZipLevel;
     return header;
 }
 

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -56,8 +57,10 @@ void write_manifest(const std::string& path, Manifest manifest) {
     }
     std::stable_sort(manifest.frames.begin(), manifest.frames.end(),
                      [](const auto& a, const auto& b) { return a.frame < b.frame; });
-    std::stable_sort(manifest.files.begin(), manifest.files.end(),
-                     [](const auto& a, const auto& b) { return a.frame < b.frame; });
+    std::stable_sort(
+        manifest.files.begin(), manifest.files.end(), [](const auto& a, const auto& b) {
+            return std::tie(a.frame, a.pass, a.format) < std::tie(b.frame, b.pass, b.format);
+        });
 
     nlohmann::ordered_json j;
     j["scene"] = manifest.scene;

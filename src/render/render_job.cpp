@@ -40,10 +40,16 @@ struct EncodeJob {
     FrameImages images;
 };
 
+// Encodes and writes finished frames on worker threads of its own, while the
+// caller renders the next frame. Each frame is encoded by one worker; the
+// files' bytes depend only on the frame, so the order workers finish in
+// changes nothing but the order of lines gathered for the manifest, which
+// write_manifest sorts.
 class Encoder {
   public:
-    Encoder(const SceneDesc& scene, std::string dir) : scene_(scene), dir_(std::move(dir)) {
-        thread_ = std::thread([this] { run(); });
+    Encoder(const SceneDesc& scene, std::string dir, unsigned workers)
+        : scene_(scene), dir_(std::move(dir)) {
+        for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { run(); });
     }
     ~Encoder() { stop(); }
 
@@ -77,8 +83,9 @@ class Encoder {
             std::lock_guard lock(mutex_);
             closed_ = true;
         }
-        ready_.notify_one();
-        if (thread_.joinable()) thread_.join();
+        ready_.notify_all();
+        for (auto& worker : workers_)
+            if (worker.joinable()) worker.join();
     }
 
     void run() {
@@ -86,61 +93,66 @@ class Encoder {
             EncodeJob job;
             {
                 std::unique_lock lock(mutex_);
-                ready_.wait(lock, [&] { return !queue_.empty() || closed_; });
-                if (queue_.empty()) return;
+                ready_.wait(lock, [&] { return !queue_.empty() || closed_ || failure_; });
+                if (queue_.empty() || failure_) return;
                 job = std::move(queue_.front());
                 queue_.pop_front();
             }
             try {
-                encode(job);
+                Manifest written = encode(job);
                 std::lock_guard lock(mutex_);
+                manifest_.frames.insert(manifest_.frames.end(), written.frames.begin(),
+                                        written.frames.end());
+                manifest_.files.insert(manifest_.files.end(), written.files.begin(),
+                                       written.files.end());
                 spare_.push_back(std::move(job.images));
                 space_.notify_one();
             } catch (...) {
                 std::lock_guard lock(mutex_);
-                failure_ = std::current_exception();
+                if (!failure_) failure_ = std::current_exception();
                 queue_.clear();
                 space_.notify_all();
+                ready_.notify_all();
                 return;
             }
         }
     }
 
-    void write(int frame, const std::string& pass, const std::string& format,
-               const std::vector<uint8_t>& bytes) {
-        std::string name = frame_file_name(pass, frame, format);
-        write_file_atomically((std::filesystem::path(dir_) / name).string(), bytes);
-        manifest_.files.push_back({frame, pass, format, name, sha256_hex(bytes)});
-    }
-
-    void encode(const EncodeJob& job) {
+    // Encodes one frame's passes and writes its files; returns their manifest lines.
+    Manifest encode(const EncodeJob& job) const {
         const auto start = Clock::now();
         const OutputDesc& out = scene_.output;
+        Manifest written;
+        auto write = [&](const std::string& pass, const std::string& format,
+                         const std::vector<uint8_t>& bytes) {
+            std::string name = frame_file_name(pass, job.frame, format);
+            write_file_atomically((std::filesystem::path(dir_) / name).string(), bytes);
+            written.files.push_back({job.frame, pass, format, name, sha256_hex(bytes)});
+        };
         if (out.write_color && out.write_png)
-            write(job.frame, "color", "png",
-                  encode_png_color(job.images.color, out.png_compression));
+            write("color", "png", encode_png_color(job.images.color, out.png_compression));
         if (out.write_color && out.write_exr)
-            write(job.frame, "color", "exr", encode_exr_color(job.images.color));
+            write("color", "exr", encode_exr_color(job.images.color));
         if (out.write_depth && out.write_png) {
             glm::vec2 range = out.depth_range.value_or(job.images.depth_view_range);
-            write(job.frame, "depth", "png",
-                  encode_png_depth(job.images.depth, range, out.png_compression));
+            write("depth", "png", encode_png_depth(job.images.depth, range, out.png_compression));
         }
         if (out.write_depth && out.write_exr)
-            write(job.frame, "depth", "exr", encode_exr_depth(job.images.depth));
-        manifest_.frames.push_back({job.frame, job.render_ms, ms_since(start)});
+            write("depth", "exr", encode_exr_depth(job.images.depth));
+        written.frames.push_back({job.frame, job.render_ms, ms_since(start)});
+        return written;
     }
 
     const SceneDesc& scene_;
     std::string dir_;
-    std::thread thread_;
+    std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable ready_, space_;
     std::deque<EncodeJob> queue_;
     std::vector<FrameImages> spare_;
     bool closed_ = false;
     std::exception_ptr failure_;
-    Manifest manifest_;  // touched only by the encoder thread until finish()
+    Manifest manifest_;  // guarded by mutex_ until the workers have stopped
 };
 
 }  // namespace
@@ -154,7 +166,9 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
 
     ThreadPool pool(options.threads);
     FrameRenderer renderer(scene, world, pool);
-    Encoder encoder(scene, result.output_dir);
+    // Encoding a 1080p frame can take longer than rendering it, so with
+    // more than one thread two frames are encoded at once.
+    Encoder encoder(scene, result.output_dir, pool.size() > 1 ? 2 : 1);
     for (size_t i = 0; i < frames.size(); ++i) {
         const auto start = Clock::now();
         FrameImages images = encoder.take_spare();

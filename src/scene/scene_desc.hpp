@@ -37,7 +37,7 @@ struct OutputDesc {
     bool write_png = true;
     bool write_exr = false;
     glm::vec4 background = {0, 0, 0, 1};  // linear RGBA
-    int png_compression = 6;              // zlib level 0..9
+    int png_compression = 1;              // zlib level 0..9; 1 is fast, 9 small
     // Range of linear depth mapped to white..black in the 16-bit depth PNG;
     // unset means "fit the scene's bounds" (docs/scene-format.md).
     std::optional<glm::vec2> depth_range;
