@@ -37,7 +37,12 @@ if [ ${#missing[@]} -gt 0 ]; then
 fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then
+    echo "setup: configuring and building facet in $build (a few minutes the first time)" >&2
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
 fi
-cmake --build "$build" -j2 -- --no-print-directory 2>&1 | grep -vE '^\[ *[0-9]+%\]|^Consolidate|^Scanning' >&2 || true
-test -x "$build/facet" || { echo "setup: build failed" >&2; exit 1; }
+log="$build/build.log"
+if ! cmake --build "$build" -j2 >"$log" 2>&1; then
+    tail -n 40 "$log" >&2
+    echo "setup: build failed (full log: $log)" >&2
+    exit 1
+fi
