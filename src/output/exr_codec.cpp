@@ -36,6 +36,19 @@ class MemoryStream : public Imf::OStream {
 // few percent and take several times longer (measured in docs/performance.md).
 constexpr int kExrZipLevel = 1;
 
+// Writes the frame buffer's channels (already listed in the header) to bytes.
+std::vector<uint8_t> write_exr(const Imf::Header& header, const Imf::FrameBuffer& fb, int height) {
+    MemoryStream stream;
+    try {
+        Imf::OutputFile file(stream, header, 1);
+        file.setFrameBuffer(fb);
+        file.writePixels(height);
+    } catch (const std::exception& e) {
+        throw Error(ExitCode::runtime_failure, std::string("EXR encoding failed: ") + e.what());
+    }
+    return stream.take();
+}
+
 Imf::Header make_header(int width, int height) {
     Imf::Header header(width, height);
     header.compression() = Imf::ZIP_COMPRESSION;
@@ -59,15 +72,7 @@ std::vector<uint8_t> encode_exr_color(const ColorImage& image) {
         fb.insert(names[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(planes[c].data()),
                                        sizeof(Imath::half), sizeof(Imath::half) * image.width));
     }
-    MemoryStream stream;
-    try {
-        Imf::OutputFile file(stream, header, 1);
-        file.setFrameBuffer(fb);
-        file.writePixels(image.height);
-    } catch (const std::exception& e) {
-        throw Error(ExitCode::runtime_failure, std::string("EXR encoding failed: ") + e.what());
-    }
-    return stream.take();
+    return write_exr(header, fb, image.height);
 }
 
 std::vector<uint8_t> encode_exr_depth(const DepthImage& depth) {
@@ -77,15 +82,7 @@ std::vector<uint8_t> encode_exr_depth(const DepthImage& depth) {
     fb.insert("Z", Imf::Slice(Imf::FLOAT,
                               reinterpret_cast<char*>(const_cast<float*>(depth.pixels.data())),
                               sizeof(float), sizeof(float) * depth.width));
-    MemoryStream stream;
-    try {
-        Imf::OutputFile file(stream, header, 1);
-        file.setFrameBuffer(fb);
-        file.writePixels(depth.height);
-    } catch (const std::exception& e) {
-        throw Error(ExitCode::runtime_failure, std::string("EXR encoding failed: ") + e.what());
-    }
-    return stream.take();
+    return write_exr(header, fb, depth.height);
 }
 
 DecodedExr read_exr(const std::string& path) {

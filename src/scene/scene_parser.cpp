@@ -70,12 +70,7 @@ OutputDesc parse_output(const Field& f) {
     }
     if (f.has("background")) out.background = f["background"].color4();
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
-    if (f.has("depth_range")) {
-        glm::vec2 range = f["depth_range"].vec2();
-        if (!(range.x >= 0 && range.y > range.x))
-            f["depth_range"].fail("must be [near, far] with 0 <= near < far");
-        out.depth_range = range;
-    }
+    if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;
 }
 

@@ -30,12 +30,7 @@ StyleDesc parse_style_mapping(const Field& f, const std::string& name) {
     if (f.has("name")) style.name = f["name"].text();
     if (f.has("description")) style.description = f["description"].text();
     if (f.has("shading")) style.shading = parse_shading(f["shading"]);
-    if (f.has("depth_range")) {
-        glm::vec2 range = f["depth_range"].vec2();
-        if (!(range.x >= 0 && range.y > range.x))
-            f["depth_range"].fail("must be [near, far] with 0 <= near < far");
-        style.depth_range = range;
-    }
+    if (f.has("depth_range")) style.depth_range = f["depth_range"].distance_range();
     return style;
 }
 

@@ -209,6 +209,12 @@ glm::vec3 Field::vec3() const {
     return {v[0], v[1], v[2]};
 }
 
+glm::vec2 Field::distance_range() const {
+    glm::vec2 range = vec2();
+    if (!(range.x >= 0 && range.y > range.x)) fail("must be [near, far] with 0 <= near < far");
+    return range;
+}
+
 glm::vec4 Field::color4() const {
     glm::vec4 out;
     if (node_.IsScalar() && parse_hex_color(node_.Scalar(), out)) return out;

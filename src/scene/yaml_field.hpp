@@ -61,6 +61,7 @@ class Field {
     glm::vec2 vec2() const;
     glm::vec3 vec3() const;
     glm::vec3 color3() const;  // [r, g, b] linear, or "#rrggbb" sRGB
+    glm::vec2 distance_range() const;  // [near, far] with 0 <= near < far
     glm::vec4 color4() const;  // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
     // One of the given words.
     std::string choice(std::initializer_list<const char*> words) const;
