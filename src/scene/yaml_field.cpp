@@ -1,5 +1,6 @@
 #include "scene/yaml_field.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <set>
@@ -33,6 +34,22 @@ bool parse_hex_color(const std::string& text, glm::vec4& out) {
     out = {srgb_to_linear(channels[0]), srgb_to_linear(channels[1]), srgb_to_linear(channels[2]),
            channels[3]};
     return true;
+}
+
+// Levenshtein distance, for "did you mean" hints on misspelt keys.
+size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<size_t> row(b.size() + 1);
+    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (size_t i = 1; i <= a.size(); ++i) {
+        size_t diagonal = row[0];
+        row[0] = i;
+        for (size_t j = 1; j <= b.size(); ++j) {
+            size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
 }
 
 std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& name) {
@@ -113,10 +130,17 @@ void Field::check_keys(std::initializer_list<const char*> allowed) const {
         bool known = false;
         for (const char* name : allowed) known = known || key == name;
         if (!known) {
-            std::string list;
-            for (const char* name : allowed) list += std::string(list.empty() ? "" : ", ") + name;
+            std::string list, closest;
+            size_t best = 3;  // suggest only names within two edits
+            for (const char* name : allowed) {
+                list += std::string(list.empty() ? "" : ", ") + name;
+                size_t d = edit_distance(key, name);
+                if (d < best) best = d, closest = name;
+            }
             Field key_field(doc_, it->first, join_path(path_, key));
-            key_field.fail("unknown key (expected one of: " + list + ")");
+            key_field.fail(closest.empty() ? "unknown key (expected one of: " + list + ")"
+                                           : "unknown key; did you mean '" + closest +
+                                                 "'? (expected one of: " + list + ")");
         }
     }
 }
