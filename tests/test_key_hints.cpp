@@ -28,7 +28,8 @@ TEST_CASE("unknown keys suggest the nearest known key", "[scene][hints]") {
                Catch::Contains("did you mean 'shininess'?"));
     CHECK_THAT(error_for("camera: { fvo: 30 }\nobjects: [ { primitive: cube } ]\n"),
                Catch::Contains("did you mean 'fov'?"));
-    CHECK_THAT(error_for("objets: [ { primitive: cube } ]\n"), Catch::Contains("did you mean 'objects'?"));
+    CHECK_THAT(error_for("objets: [ { primitive: cube } ]\n"),
+               Catch::Contains("did you mean 'objects'?"));
     // Nothing close: no guess, just the list.
     std::string far = error_for("camera: { zoom: 2 }\nobjects: [ { primitive: cube } ]\n");
     CHECK_THAT(far, !Catch::Contains("did you mean"));

@@ -1,5 +1,7 @@
 #include "cli/commands.hpp"
 
+#include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -21,6 +23,14 @@
 
 namespace facet {
 namespace {
+
+// Set by SIGINT/SIGTERM. A signal handler can only reach a global; this is
+// the one piece of global mutable state, and only the handler writes it.
+std::atomic<bool> g_interrupted{false};
+
+extern "C" void on_interrupt(int) {
+    g_interrupted.store(true);
+}
 
 struct RenderArgs {
     std::string scene;
@@ -83,6 +93,14 @@ int render_command(const RenderArgs& args) {
     options.frames = frames;
     options.threads = args.threads;
     options.out_dir = args.out;
+    options.cancel = &g_interrupted;
+    // Ctrl-C finishes the frames already rendered instead of leaving files
+    // half written; a second Ctrl-C is not caught and ends facet at once.
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
     ProgressReporter progress(stderr, args.quiet);
     RenderResult result = render_scene(scene, world, options,
                                        [&](const FrameProgress& p) { progress.frame_done(p); });

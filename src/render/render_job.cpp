@@ -8,6 +8,7 @@
 #include <mutex>
 #include <thread>
 
+#include "core/error.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
 #include "output/atomic_file.hpp"
@@ -169,13 +170,16 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
     Encoder encoder(scene, result.output_dir, pool.size() > 1 ? 2 : 1);
+    size_t rendered = 0;
     for (size_t i = 0; i < frames.size(); ++i) {
+        if (options.cancel && options.cancel->load()) break;
         const auto start = Clock::now();
         FrameImages images = encoder.take_spare();
         renderer.render(frames[i], images);
         const double render_ms = ms_since(start);
         encoder.push({frames[i], render_ms, std::move(images)});
         if (on_frame) on_frame({frames[i], i + 1, frames.size(), render_ms});
+        rendered = i + 1;
     }
     Manifest manifest = encoder.finish();
     manifest.scene = scene.path;
@@ -186,6 +190,11 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     result.files_written = manifest.files.size();
     result.manifest_path = (std::filesystem::path(result.output_dir) / "manifest.json").string();
     write_manifest(result.manifest_path, manifest);
+    if (rendered < frames.size())
+        throw Error(ExitCode::runtime_failure, "interrupted: " + std::to_string(rendered) + " of " +
+                                                   std::to_string(frames.size()) +
+                                                   " frames were written, and are listed in " +
+                                                   result.manifest_path);
     return result;
 }
 

@@ -2,6 +2,7 @@
 // A whole run: frames rendered in order, each frame's files encoded and
 // written on a separate thread while the next frame renders, then the
 // manifest.
+#include <atomic>
 #include <functional>
 #include <string>
 #include <vector>
@@ -15,6 +16,9 @@ struct RenderOptions {
     std::vector<int> frames;  // frames to render; empty means the scene's output.frames
     unsigned threads = 0;     // 0: one per core
     std::string out_dir = "out";
+    // When set (e.g. by Ctrl-C), no new frame starts; frames already rendered
+    // are still written, with the manifest, and render_scene then throws.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct FrameProgress {

@@ -1,0 +1,49 @@
+// Ctrl-C (SIGINT) stops a render cleanly: the frames already rendered are
+// written whole and listed in the manifest, and no temporary file is left.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+
+#include <nlohmann/json.hpp>
+
+#include "support.hpp"
+
+using namespace facet;
+
+TEST_CASE("an interrupted render leaves whole files and a matching manifest", "[cli][interrupt]") {
+    test::TempDir dir("interrupt");
+    std::string scene = test::write_text(dir.file("long.yaml"), R"(
+output: { size: [640, 360], frames: "1-2000", passes: [color, depth], formats: [png, exr] }
+camera: { orbit: { radius: 4 } }
+lights: [ { type: directional, direction: [-1, -1, -1] } ]
+objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
+)");
+    // `timeout` sends SIGINT after half a second, well before 2000 frames are done.
+    std::string command = "timeout -s INT 0.5 '" + std::string(FACET_EXECUTABLE) + "' render '" +
+                          scene + "' --out '" + dir.file("out") + "' --quiet; echo \"exit=$?\"";
+    FILE* pipe = ::popen(command.c_str(), "r");
+    REQUIRE(pipe);
+    std::string output;
+    char buffer[512];
+    while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+    ::pclose(pipe);
+    INFO(output);
+    REQUIRE(output.find("exit=1") != std::string::npos);
+    CHECK(output.find("interrupted") != std::string::npos);
+
+    const std::filesystem::path folder = dir.file("out/long");
+    std::ifstream in(folder / "manifest.json");
+    REQUIRE(in);
+    nlohmann::json manifest = nlohmann::json::parse(in);
+    const size_t frames = manifest["frames"].size();
+    CHECK(frames < 2000);
+    CHECK(manifest["files"].size() == 4 * frames);
+    size_t files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+        const std::string name = entry.path().filename().string();
+        CHECK(name.find(".tmp") == std::string::npos);
+        if (name != "manifest.json") ++files;
+    }
+    CHECK(files == 4 * frames);
+}
