@@ -20,8 +20,8 @@ lights: [ { type: directional, direction: [-1, -1, -1] } ]
 objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
 )");
     // `timeout` sends SIGINT after half a second, well before 2000 frames are done.
-    std::string command = "timeout -s INT 0.5 '" + std::string(FACET_EXECUTABLE) + "' render '" +
-                          scene + "' --out '" + dir.file("out") + "' --quiet; echo \"exit=$?\"";
+    std::string command = "timeout --preserve-status -s INT 0.5 '" + std::string(FACET_EXECUTABLE) + "' render '" +
+                          scene + "' --out '" + dir.file("out") + "' --quiet 2>&1; echo \"exit=$?.\"";
     FILE* pipe = ::popen(command.c_str(), "r");
     REQUIRE(pipe);
     std::string output;
@@ -29,7 +29,7 @@ objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
     while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
     ::pclose(pipe);
     INFO(output);
-    REQUIRE(output.find("exit=1") != std::string::npos);
+    REQUIRE(output.find("exit=1.") != std::string::npos);
     CHECK(output.find("interrupted") != std::string::npos);
 
     const std::filesystem::path folder = dir.file("out/long");
