@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -270,4 +271,18 @@ TEST_CASE("nearer triangles win the depth test regardless of order", "[raster][d
     check_against_rays(
         view, {{-2, -1, -1}, {2, -1, 1}, {0, 1.5f, 0}, {-2, -1, 1}, {2, -1, -1}, {0, 1.4f, 0.2f}},
         {0, 1, 2, 3, 4, 5}, 2000);
+}
+
+TEST_CASE("triangles with infinite or NaN coordinates are dropped", "[raster][clip]") {
+    ThreadPool pool(1);
+    const int W = 32, H = 32;
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    for (glm::vec4 bad : {glm::vec4(inf, 0, 0.5f, 1), glm::vec4(0, nan, 0.5f, 1), glm::vec4(0, 0, 0.5f, inf)}) {
+        std::vector<glm::vec4> clip = {ndc(4, 28, W, H), ndc(28, 28, W, H), bad};
+        auto covered = coverage_of(clip, {0, 1, 2}, W, H, pool);
+        int n = 0;
+        for (int c : covered) n += c;
+        CHECK(n == 0);
+    }
 }

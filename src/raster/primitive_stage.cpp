@@ -160,6 +160,13 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
     for (size_t t = first; t < last; ++t) {
         const uint32_t* idx = input.indices + 3 * t;
         glm::vec4 v[3] = {input.clip[idx[0]], input.clip[idx[1]], input.clip[idx[2]]};
+        // Values that overflowed to infinity or NaN upstream (absurd
+        // transforms) would make the fixed-point maths meaningless: drop them.
+        bool finite = true;
+        for (int i = 0; i < 3; ++i)
+            finite = finite && std::isfinite(v[i].x) && std::isfinite(v[i].y) &&
+                     std::isfinite(v[i].z) && std::isfinite(v[i].w);
+        if (!finite) continue;
         uint32_t oc[3];
         for (int i = 0; i < 3; ++i) oc[i] = clip_outcode(v[i], guard_x_, guard_y_);
         if (oc[0] & oc[1] & oc[2]) continue;  // entirely outside one plane
