@@ -1,11 +1,19 @@
 #pragma once
-// Helpers shared by the test files: temporary folders, writing small files,
-// and running the facet executable as a user would.
+// Helpers shared by the test files: temporary folders, reading and writing
+// small files, expecting facet::Error, and running the facet executable as a
+// user would.
+#include <catch2/catch.hpp>
+
 #include <sys/wait.h>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
+#include <vector>
+
+#include "core/error.hpp"
 
 namespace facet::test {
 
@@ -34,6 +42,55 @@ inline std::string write_text(const std::string& path, const std::string& text) 
     std::filesystem::create_directories(std::filesystem::path(path).parent_path());
     std::ofstream(path, std::ios::binary) << text;
     return path;
+}
+
+inline std::string write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
+    std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+    std::ofstream(path, std::ios::binary)
+        .write(reinterpret_cast<const char*>(bytes.data()),
+               static_cast<std::streamsize>(bytes.size()));
+    return path;
+}
+
+// The whole file as it is on disk (empty if it cannot be read).
+inline std::string read_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+// Runs `run` and requires a facet::Error with exit code `code` whose message
+// contains `needle` (normally the file name). Any other exception escapes and
+// fails the test.
+template <typename F>
+void require_error(F&& run, facet::ExitCode code, const std::string& needle) {
+    try {
+        run();
+        FAIL("expected facet::Error mentioning '" << needle << "'");
+    } catch (const facet::Error& e) {
+        CHECK(e.code() == code);
+        CHECK_THAT(e.what(), Catch::Contains(needle));
+    }
+}
+
+template <typename F>
+void require_input_error(F&& run, const std::string& needle) {
+    require_error(run, facet::ExitCode::invalid_input, needle);
+}
+
+// For inputs a loader may fairly either accept or reject: what `load` returns
+// must pass `check`, and a rejection must be an invalid-input facet::Error
+// whose message contains `needle`.
+template <typename Load, typename Check>
+void require_checked_or_input_error(Load&& load, const std::string& needle, Check&& check) {
+    try {
+        auto loaded = load();
+        check(loaded);
+    } catch (const facet::Error& e) {
+        CHECK(e.code() == facet::ExitCode::invalid_input);
+        CHECK_THAT(e.what(), Catch::Contains(needle));
+    }
 }
 
 struct RunResult {

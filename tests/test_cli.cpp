@@ -4,10 +4,10 @@
 
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -17,6 +17,7 @@
 #include "support.hpp"
 
 using Catch::Contains;
+using facet::test::read_file;
 using facet::test::run_facet;
 using facet::test::TempDir;
 using facet::test::write_text;
@@ -42,12 +43,6 @@ objects:
 
 std::string shell_quoted(const std::string& s) {
     return "'" + s + "'";
-}
-
-std::vector<uint8_t> read_bytes(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::vector<uint8_t>(std::istreambuf_iterator<char>(in),
-                                std::istreambuf_iterator<char>());
 }
 
 nlohmann::json read_json(const std::string& path) {
@@ -128,7 +123,8 @@ TEST_CASE("render writes the frames and a manifest that describes them", "[cli]"
         frames_with_files.insert(f.at("frame").get<int>());
         std::string file = (folder / rel).string();
         REQUIRE(fs::is_regular_file(file));
-        CHECK(f.at("sha256") == facet::sha256_hex(read_bytes(file)));
+        const std::string bytes = read_file(file);
+        CHECK(f.at("sha256") == facet::sha256_hex(bytes.data(), bytes.size()));
         auto png = facet::read_png(file);
         CHECK(png.width == 64);
         CHECK(png.height == 48);
@@ -162,28 +158,27 @@ TEST_CASE("the same frames come out bit-identical for any thread count", "[cli]"
 TEST_CASE("the --size and -D options change what the scene file says", "[cli]") {
     TempDir dir("cli");
     std::string scene = write_text(dir.file("sized.yaml"), kTinyScene);
-    auto first_png = [](const Rendered& r) {
+    // Renders with `args`, which must succeed; returns the run and its first PNG.
+    auto render_ok = [&](const std::string& args) {
+        Rendered r = render(dir, scene, args);
+        INFO(r.run.output);
+        REQUIRE(r.run.exit_code == 0);
         nlohmann::json m = read_json(r.manifest_path);
         REQUIRE(!m.at("files").empty());
-        return facet::read_png(
+        auto png = facet::read_png(
             (fs::path(r.manifest_path).parent_path() / m["files"][0]["path"].get<std::string>())
                 .string());
+        return std::make_pair(r, png);
     };
 
     SECTION("--size") {
-        Rendered r = render(dir, scene, "--size 32x24");
-        INFO(r.run.output);
-        REQUIRE(r.run.exit_code == 0);
-        auto png = first_png(r);
+        auto [r, png] = render_ok("--size 32x24");
         CHECK(png.width == 32);
         CHECK(png.height == 24);
         CHECK(read_json(r.manifest_path).at("size") == nlohmann::json::array({32, 24}));
     }
     SECTION("-D after the scene") {
-        Rendered r = render(dir, scene, "-D 'output.size=[40, 30]' -D output.frames=3");
-        INFO(r.run.output);
-        REQUIRE(r.run.exit_code == 0);
-        auto png = first_png(r);
+        auto [r, png] = render_ok("-D 'output.size=[40, 30]' -D output.frames=3");
         CHECK(png.width == 40);
         CHECK(png.height == 30);
         CHECK(manifest_frames(read_json(r.manifest_path)) == std::vector<int>{3});
@@ -198,10 +193,7 @@ TEST_CASE("the --size and -D options change what the scene file says", "[cli]") 
         CHECK(png.width == 40);
     }
     SECTION("-D is applied after --size") {
-        Rendered r = render(dir, scene, "--size 32x24 -D 'output.size=[20, 10]'");
-        INFO(r.run.output);
-        REQUIRE(r.run.exit_code == 0);
-        auto png = first_png(r);
+        auto [r, png] = render_ok("--size 32x24 -D 'output.size=[20, 10]'");
         CHECK(png.width == 20);
         CHECK(png.height == 10);
     }

@@ -19,9 +19,10 @@ camera: { orbit: { radius: 4 } }
 lights: [ { type: directional, direction: [-1, -1, -1] } ]
 objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
 )");
-    // `timeout` sends SIGINT after half a second, well before 2000 frames are done.
-    std::string command = "timeout --preserve-status -s INT 0.5 '" + std::string(FACET_EXECUTABLE) + "' render '" +
-                          scene + "' --out '" + dir.file("out") + "' --quiet 2>&1; echo \"exit=$?.\"";
+    // `timeout` sends SIGINT after 1.5 s, well before 2000 frames are done.
+    std::string command = "timeout --preserve-status -s INT 1.5 '" + std::string(FACET_EXECUTABLE) +
+                          "' render '" + scene + "' --out '" + dir.file("out") +
+                          "' --quiet 2>&1; echo \"exit=$?.\"";
     FILE* pipe = ::popen(command.c_str(), "r");
     REQUIRE(pipe);
     std::string output;

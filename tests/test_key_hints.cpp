@@ -2,6 +2,7 @@
 #include <catch2/catch.hpp>
 
 #include "scene/scene_desc.hpp"
+#include "scene_support.hpp"
 #include "support.hpp"
 
 using namespace facet;
@@ -10,15 +11,7 @@ namespace {
 
 std::string error_for(const std::string& yaml) {
     test::TempDir dir("hints");
-    std::string path = test::write_text(dir.file("scene.yaml"), yaml);
-    try {
-        load_scene(path, {});
-    } catch (const Error& e) {
-        CHECK(e.code() == ExitCode::invalid_input);
-        return e.what();
-    }
-    FAIL("the scene was accepted");
-    return "";
+    return test::load_error(test::write_text(dir.file("scene.yaml"), yaml));
 }
 
 }  // namespace

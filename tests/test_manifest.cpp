@@ -19,16 +19,13 @@
 using facet::Manifest;
 using facet::ManifestFile;
 using facet::ManifestFrame;
+using facet::test::read_file;
+using facet::test::require_error;
 using facet::test::TempDir;
 using facet::test::write_text;
 namespace fs = std::filesystem;
 
 namespace {
-
-std::string read_all(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
 
 // A manifest for `frames` of `scene`, one colour PNG per frame, with a digest
 // that encodes the tag so that replaced entries can be told apart.
@@ -120,7 +117,7 @@ TEST_CASE("the manifest file has the documented JSON layout", "[manifest]") {
     std::string path = dir.file("manifest.json");
     facet::write_manifest(path, make_manifest("a.yaml", {2, 1}, "x"));
 
-    nlohmann::json j = nlohmann::json::parse(read_all(path));
+    nlohmann::json j = nlohmann::json::parse(read_file(path));
     CHECK(j.at("scene") == "a.yaml");
     CHECK(j.at("style") == "flat");
     CHECK(j.at("size") == nlohmann::json::array({64, 48}));
@@ -212,23 +209,11 @@ TEST_CASE("reading something that is not a manifest fails cleanly", "[manifest]"
     TempDir dir("manifest");
     SECTION("missing file is an I/O failure naming it") {
         std::string path = dir.file("nope.json");
-        try {
-            facet::read_manifest(path);
-            FAIL("no error");
-        } catch (const facet::Error& e) {
-            CHECK(e.code() == facet::ExitCode::io_failure);
-            CHECK_THAT(e.what(), Catch::Contains(path));
-        }
+        require_error([&] { facet::read_manifest(path); }, facet::ExitCode::io_failure, path);
     }
     SECTION("JSON without the manifest's keys is invalid input") {
         std::string path = write_text(dir.file("other.json"), R"({"scene": "a.yaml"})");
-        try {
-            facet::read_manifest(path);
-            FAIL("no error");
-        } catch (const facet::Error& e) {
-            CHECK(e.code() == facet::ExitCode::invalid_input);
-            CHECK_THAT(e.what(), Catch::Contains(path));
-        }
+        require_error([&] { facet::read_manifest(path); }, facet::ExitCode::invalid_input, path);
     }
 }
 
@@ -239,16 +224,16 @@ TEST_CASE("write_file_atomically writes and replaces whole files", "[atomic_file
     SECTION("a new file gets exactly the bytes, zeros included") {
         std::vector<uint8_t> bytes = {0, 1, 2, 0, 255, 0};
         facet::write_file_atomically(path, bytes);
-        std::string back = read_all(path);
+        std::string back = read_file(path);
         CHECK(std::vector<uint8_t>(back.begin(), back.end()) == bytes);
         CHECK(entries(dir.path()) == std::vector<std::string>{"data.bin"});
     }
     SECTION("an existing file is replaced, not appended to or partly overwritten") {
         write_text(path, std::string(1000, 'x'));
         facet::write_file_atomically(path, std::string("short"));
-        CHECK(read_all(path) == "short");
+        CHECK(read_file(path) == "short");
         facet::write_file_atomically(path, std::string("second version"));
-        CHECK(read_all(path) == "second version");
+        CHECK(read_file(path) == "second version");
         CHECK(entries(dir.path()) == std::vector<std::string>{"data.bin"});
     }
     SECTION("an empty file") {
@@ -263,17 +248,12 @@ TEST_CASE("write_file_atomically writes and replaces whole files", "[atomic_file
         facet::write_file_atomically(path, std::string("new"));
         std::string seen((std::istreambuf_iterator<char>(old)), std::istreambuf_iterator<char>());
         CHECK(seen == "old contents");
-        CHECK(read_all(path) == "new");
+        CHECK(read_file(path) == "new");
     }
     SECTION("a missing folder is an I/O failure that leaves nothing behind") {
         std::string bad = dir.file("no/such/folder/file.bin");
-        try {
-            facet::write_file_atomically(bad, std::string("x"));
-            FAIL("no error");
-        } catch (const facet::Error& e) {
-            CHECK(e.code() == facet::ExitCode::io_failure);
-            CHECK_THAT(e.what(), Catch::Contains(bad));
-        }
+        require_error([&] { facet::write_file_atomically(bad, std::string("x")); },
+                      facet::ExitCode::io_failure, bad);
         CHECK(entries(dir.path()).empty());
     }
     CHECK_FALSE(has_temp_files(dir.path()));

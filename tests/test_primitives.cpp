@@ -14,8 +14,18 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "asset_support.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
+
+using facet::test::centroid;
+using facet::test::corner;
+using facet::test::face_cross;
+using facet::test::require_bounds;
+using facet::test::require_closed_and_oriented;
+using facet::test::require_normals_agree_with_winding;
+using facet::test::surface_area;
+using facet::test::Topology;
 
 namespace {
 
@@ -32,15 +42,6 @@ facet::PrimitiveSpec spec(const std::string& type, int segments = 32, int rings 
 const facet::MeshPart& only_part(const facet::Mesh& mesh) {
     REQUIRE(mesh.parts.size() == 1);
     return mesh.parts[0];
-}
-
-glm::vec3 corner(const facet::MeshPart& p, size_t t, int k) {
-    return p.positions[p.indices[3 * t + k]];
-}
-
-glm::vec3 face_cross(const facet::MeshPart& p, size_t t) {
-    glm::vec3 a = corner(p, t, 0), b = corner(p, t, 1), c = corner(p, t, 2);
-    return glm::cross(b - a, c - a);
 }
 
 void check_attributes(const facet::Mesh& mesh) {
@@ -61,63 +62,12 @@ void check_attributes(const facet::Mesh& mesh) {
         CHECK(glm::length(face_cross(part, t)) > 0);  // no slivers
 }
 
-// Winding: the geometric normal of each triangle agrees with its vertex normals.
-void check_winding_matches_normals(const facet::MeshPart& part) {
-    for (size_t t = 0; t < part.triangle_count(); ++t) {
-        glm::vec3 f = glm::normalize(face_cross(part, t));
-        for (int k = 0; k < 3; ++k) {
-            INFO("triangle " << t << " corner " << k);
-            CHECK(glm::dot(f, part.normals[part.indices[3 * t + k]]) > 0.0f);
-        }
-    }
-}
-
 // Outward: for shapes convex around the origin, normals and faces point away from it.
 void check_outward(const facet::MeshPart& part) {
     for (size_t i = 0; i < part.positions.size(); ++i)
         CHECK(glm::dot(part.normals[i], part.positions[i]) > 0);
-    for (size_t t = 0; t < part.triangle_count(); ++t) {
-        glm::vec3 centroid = (corner(part, t, 0) + corner(part, t, 1) + corner(part, t, 2)) / 3.0f;
-        CHECK(glm::dot(face_cross(part, t), centroid) > 0);
-    }
-}
-
-struct Topology {
-    size_t vertices = 0, edges = 0, faces = 0;
-};
-
-// Welds positions (within eps), then requires every undirected edge to be used
-// by exactly two triangles, once in each direction.
-Topology check_closed(const facet::MeshPart& part, float eps) {
-    std::vector<glm::vec3> welded;
-    std::vector<size_t> id(part.positions.size());
-    for (size_t i = 0; i < part.positions.size(); ++i) {
-        size_t found = welded.size();
-        for (size_t j = 0; j < welded.size(); ++j)
-            if (glm::length(welded[j] - part.positions[i]) <= eps) {
-                found = j;
-                break;
-            }
-        if (found == welded.size()) welded.push_back(part.positions[i]);
-        id[i] = found;
-    }
-    std::map<std::pair<size_t, size_t>, int> directed;
     for (size_t t = 0; t < part.triangle_count(); ++t)
-        for (int k = 0; k < 3; ++k)
-            ++directed[{id[part.indices[3 * t + k]], id[part.indices[3 * t + (k + 1) % 3]]}];
-    size_t bad = 0;
-    for (const auto& [edge, count] : directed) {
-        auto back = directed.find({edge.second, edge.first});
-        if (count != 1 || back == directed.end() || back->second != 1) ++bad;
-    }
-    CHECK(bad == 0);
-    return {welded.size(), directed.size() / 2, part.triangle_count()};
-}
-
-double surface_area(const facet::MeshPart& part) {
-    double a = 0;
-    for (size_t t = 0; t < part.triangle_count(); ++t) a += 0.5 * glm::length(face_cross(part, t));
-    return a;
+        CHECK(glm::dot(face_cross(part, t), centroid(part, t)) > 0);
 }
 
 // Signed volume by the divergence theorem: positive when faces point outward.
@@ -126,14 +76,6 @@ double signed_volume(const facet::MeshPart& part) {
     for (size_t t = 0; t < part.triangle_count(); ++t)
         v += glm::dot(corner(part, t, 0), glm::cross(corner(part, t, 1), corner(part, t, 2))) / 6.0;
     return v;
-}
-
-void require_bounds(const facet::Mesh& mesh, glm::vec3 lo, glm::vec3 hi, float eps = 1e-5f) {
-    facet::Bounds b = mesh.bounds();
-    for (int k = 0; k < 3; ++k) {
-        CHECK(b.min[k] == Approx(lo[k]).margin(eps));
-        CHECK(b.max[k] == Approx(hi[k]).margin(eps));
-    }
 }
 
 // Shapes round the Y axis: exact in y; the ring starts at +Z, so z reaches
@@ -147,7 +89,29 @@ void require_round_bounds(const facet::Mesh& mesh, float radius, float half_heig
         CHECK(glm::length(glm::vec2(p.x, p.z)) <= radius * (1 + 1e-6f));
 }
 
-void require_input_error(const facet::PrimitiveSpec& s) {
+// Closed, consistently wound, and shaped like a sphere (Euler characteristic
+// 2), with `vertices` distinct corners once seams are welded within `eps`.
+void require_closed_sphere_like(const facet::Mesh& mesh, size_t vertices, float eps = 1e-5f) {
+    Topology topo = require_closed_and_oriented(mesh, eps);
+    CHECK(topo.vertices == vertices);
+    CHECK(topo.vertices - topo.edges + topo.faces == 2);
+}
+
+// A cylinder or cone, with the checks every solid round the Y axis passes:
+// attributes, outward faces, winding that agrees with the normals, bounds.
+facet::Mesh round_solid(const std::string& type, int segments, float radius, float height) {
+    facet::PrimitiveSpec s = spec(type, segments);
+    s.radius = radius;
+    s.height = height;
+    facet::Mesh mesh = facet::make_primitive(s);
+    check_attributes(mesh);
+    check_outward(only_part(mesh));
+    require_normals_agree_with_winding(only_part(mesh));
+    require_round_bounds(mesh, radius, height / 2);
+    return mesh;
+}
+
+void require_rejected(const facet::PrimitiveSpec& s) {
     try {
         facet::make_primitive(s);
         FAIL("expected facet::Error for type '" << s.type << "'");
@@ -171,7 +135,7 @@ TEST_CASE("primitive plane", "[assets][primitives]") {
     for (const auto& n : part.normals) CHECK(n == glm::vec3(0, 1, 0));
     for (size_t t = 0; t < 2; ++t) CHECK(glm::normalize(face_cross(part, t)).y == Approx(1.0f));
     CHECK(surface_area(part) == Approx(9.0));
-    check_winding_matches_normals(part);
+    require_normals_agree_with_winding(part);
     // The four corners get the four corners of texture space.
     std::map<std::pair<float, float>, int> uv_corners;
     for (const auto& uv : part.uvs) ++uv_corners[{uv.x, uv.y}];
@@ -191,13 +155,10 @@ TEST_CASE("primitive cube", "[assets][primitives]") {
             const float h = size / 2;
             require_bounds(mesh, glm::vec3(-h), glm::vec3(h));
             check_outward(part);
-            check_winding_matches_normals(part);
+            require_normals_agree_with_winding(part);
             for (const auto& n : part.normals)
                 CHECK(std::abs(n.x) + std::abs(n.y) + std::abs(n.z) == Approx(1.0f));
-            Topology topo = check_closed(part, 1e-5f);
-            CHECK(topo.vertices == 8);
-            CHECK(topo.vertices - topo.edges + topo.faces ==
-                  2);  // Euler characteristic of a sphere
+            require_closed_sphere_like(mesh, 8);
             CHECK(surface_area(part) == Approx(6.0 * size * size));
             CHECK(signed_volume(part) == Approx(double(size) * size * size));
         }
@@ -220,16 +181,15 @@ TEST_CASE("primitive sphere", "[assets][primitives]") {
             // One triangle per segment in each polar cap, two per segment in the other rings.
             CHECK(mesh.triangle_count() == static_cast<size_t>(2 * c.segments * (c.rings - 1)));
             check_outward(part);
-            check_winding_matches_normals(part);
+            require_normals_agree_with_winding(part);
             for (size_t i = 0; i < part.positions.size(); ++i) {
                 CHECK(glm::length(part.positions[i]) == Approx(c.radius).epsilon(1e-5));
                 // Smooth: the normal is the radial direction.
                 CHECK(glm::dot(part.normals[i], part.positions[i] / c.radius) ==
                       Approx(1.0f).margin(1e-5));
             }
-            Topology topo = check_closed(part, 1e-5f * c.radius);
-            CHECK(topo.vertices == static_cast<size_t>(c.segments * (c.rings - 1) + 2));
-            CHECK(topo.vertices - topo.edges + topo.faces == 2);
+            require_closed_sphere_like(mesh, static_cast<size_t>(c.segments * (c.rings - 1) + 2),
+                                       1e-5f * c.radius);
             CHECK(signed_volume(part) > 0);
             facet::Bounds b = mesh.bounds();
             CHECK(b.max.y == Approx(c.radius));
@@ -249,17 +209,10 @@ TEST_CASE("primitive sphere", "[assets][primitives]") {
 TEST_CASE("primitive cylinder", "[assets][primitives]") {
     for (int segments : {3, 6, 33}) {
         DYNAMIC_SECTION(segments << " segments") {
-            facet::PrimitiveSpec s = spec("cylinder", segments);
-            s.radius = 0.75f;
-            s.height = 3.0f;
-            facet::Mesh mesh = facet::make_primitive(s);
-            check_attributes(mesh);
+            facet::Mesh mesh = round_solid("cylinder", segments, 0.75f, 3.0f);
             const auto& part = only_part(mesh);
             // Side: two per segment; each cap: one per segment.
             CHECK(mesh.triangle_count() == static_cast<size_t>(4 * segments));
-            check_outward(part);
-            check_winding_matches_normals(part);
-            require_round_bounds(mesh, 0.75f, 1.5f);
             for (size_t i = 0; i < part.positions.size(); ++i) {
                 const auto& n = part.normals[i];
                 const auto& p = part.positions[i];
@@ -273,9 +226,7 @@ TEST_CASE("primitive cylinder", "[assets][primitives]") {
                           Approx(1.0f).margin(1e-5));
                 }
             }
-            Topology topo = check_closed(part, 1e-5f);
-            CHECK(topo.vertices == static_cast<size_t>(2 * segments + 2));
-            CHECK(topo.vertices - topo.edges + topo.faces == 2);
+            require_closed_sphere_like(mesh, static_cast<size_t>(2 * segments + 2));
             // The inscribed prism: n triangles of the polygon times the height.
             double polygon = 0.5 * segments * 0.75 * 0.75 * std::sin(2 * kPi / segments);
             CHECK(signed_volume(part) == Approx(polygon * 3.0).epsilon(1e-4));
@@ -286,17 +237,10 @@ TEST_CASE("primitive cylinder", "[assets][primitives]") {
 TEST_CASE("primitive cone", "[assets][primitives]") {
     for (int segments : {3, 5, 48}) {
         DYNAMIC_SECTION(segments << " segments") {
-            facet::PrimitiveSpec s = spec("cone", segments);
-            s.radius = 1.0f;
-            s.height = 2.0f;
-            facet::Mesh mesh = facet::make_primitive(s);
-            check_attributes(mesh);
+            facet::Mesh mesh = round_solid("cone", segments, 1.0f, 2.0f);
             const auto& part = only_part(mesh);
             // Side: one triangle per segment up to the apex; base: one per segment.
             CHECK(mesh.triangle_count() == static_cast<size_t>(2 * segments));
-            check_outward(part);
-            check_winding_matches_normals(part);
-            require_round_bounds(mesh, 1.0f, 1.0f);
             // The side's normals lean up by the slope: n.y / |n.xz| = radius / height.
             for (size_t i = 0; i < part.positions.size(); ++i) {
                 const auto& n = part.normals[i];
@@ -305,9 +249,8 @@ TEST_CASE("primitive cone", "[assets][primitives]") {
                     CHECK(n.y / horizontal == Approx(0.5f).epsilon(1e-4));
                 }
             }
-            Topology topo = check_closed(part, 1e-5f);
-            CHECK(topo.vertices == static_cast<size_t>(segments + 2));  // ring, apex, base centre
-            CHECK(topo.vertices - topo.edges + topo.faces == 2);
+            // The ring, the apex and the base centre.
+            require_closed_sphere_like(mesh, static_cast<size_t>(segments + 2));
             double polygon = 0.5 * segments * std::sin(2 * kPi / segments);
             CHECK(signed_volume(part) == Approx(polygon * 2.0 / 3.0).epsilon(1e-4));
         }
@@ -329,36 +272,26 @@ TEST_CASE("primitive sources and materials", "[assets][primitives]") {
 TEST_CASE("primitive parameters out of range are errors", "[assets][primitives]") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    require_input_error(spec("torus"));
-    require_input_error(spec(""));
-    require_input_error(spec("Cube "));
+    require_rejected(spec("torus"));
+    require_rejected(spec(""));
+    require_rejected(spec("Cube "));
     for (const std::string type : {"plane", "cube", "sphere", "cylinder", "cone"}) {
         DYNAMIC_SECTION(type) {
-            facet::PrimitiveSpec s;
-            s = spec(type, 2);
-            require_input_error(s);
-            s = spec(type, -5);
-            require_input_error(s);
-            s = spec(type, 32, 1);
-            require_input_error(s);
-            for (float bad : {0.0f, -1.0f, nan, inf}) {
-                s = spec(type);
-                s.size = bad;
-                require_input_error(s);
-                s = spec(type);
-                s.radius = bad;
-                require_input_error(s);
-                s = spec(type);
-                s.height = bad;
-                require_input_error(s);
-            }
+            require_rejected(spec(type, 2));
+            require_rejected(spec(type, -5));
+            require_rejected(spec(type, 32, 1));
+            for (float bad : {0.0f, -1.0f, nan, inf})
+                for (float facet::PrimitiveSpec::*field :
+                     {&facet::PrimitiveSpec::size, &facet::PrimitiveSpec::radius,
+                      &facet::PrimitiveSpec::height}) {
+                    facet::PrimitiveSpec s = spec(type);
+                    s.*field = bad;
+                    require_rejected(s);
+                }
             // Tessellation so fine it could only exhaust memory.
-            s = spec(type, INT_MAX, 16);
-            require_input_error(s);
-            s = spec(type, 32, INT_MAX);
-            require_input_error(s);
-            s = spec(type, 1 << 20, 1 << 20);
-            require_input_error(s);
+            require_rejected(spec(type, INT_MAX, 16));
+            require_rejected(spec(type, 32, INT_MAX));
+            require_rejected(spec(type, 1 << 20, 1 << 20));
         }
     }
 }

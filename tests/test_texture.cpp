@@ -6,7 +6,6 @@
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <fstream>
 #include <limits>
 #include <string>
 #include <vector>
@@ -34,7 +33,9 @@
 #pragma GCC diagnostic pop
 #endif
 
+using facet::test::require_input_error;
 using facet::test::TempDir;
+using facet::test::write_bytes;
 
 namespace {
 
@@ -107,28 +108,10 @@ std::vector<uint8_t> make_png(int width, int height, int color_type, int bit_dep
     return png;
 }
 
-std::string write_bytes(const std::string& path, const std::vector<uint8_t>& bytes) {
-    std::ofstream(path, std::ios::binary)
-        .write(reinterpret_cast<const char*>(bytes.data()),
-               static_cast<std::streamsize>(bytes.size()));
-    return path;
-}
-
 void require_texel(const glm::vec4& got, const glm::vec4& want, float eps = 1e-5f) {
     INFO("got (" << got.r << ", " << got.g << ", " << got.b << ", " << got.a << ") want (" << want.r
                  << ", " << want.g << ", " << want.b << ", " << want.a << ")");
     for (int c = 0; c < 4; ++c) CHECK(got[c] == Approx(want[c]).margin(eps));
-}
-
-template <typename F>
-void require_input_error(F&& load, const std::string& needle) {
-    try {
-        load();
-        FAIL("expected facet::Error mentioning '" << needle << "'");
-    } catch (const facet::Error& e) {
-        CHECK(e.code() == facet::ExitCode::invalid_input);
-        CHECK_THAT(e.what(), Catch::Contains(needle));
-    }
 }
 
 // A texture made directly from linear values, for sampling tests.

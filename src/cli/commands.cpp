@@ -85,6 +85,14 @@ void print_warnings(const World& world) {
 }
 
 int render_command(const RenderArgs& args) {
+    // Ctrl-C finishes the frames already rendered instead of leaving files
+    // half written; a second Ctrl-C is not caught and ends facet at once.
+    // Installed first, so an interrupt while loading also ends cleanly.
+    struct sigaction action {};
+    action.sa_handler = on_interrupt;
+    action.sa_flags = SA_RESETHAND;
+    sigaction(SIGINT, &action, nullptr);
+    sigaction(SIGTERM, &action, nullptr);
     SceneDesc scene = load_scene(args.scene, scene_options(args));
     std::vector<int> frames = selected_frames(args);
     World world = build_world(scene);
@@ -94,13 +102,6 @@ int render_command(const RenderArgs& args) {
     options.threads = args.threads;
     options.out_dir = args.out;
     options.cancel = &g_interrupted;
-    // Ctrl-C finishes the frames already rendered instead of leaving files
-    // half written; a second Ctrl-C is not caught and ends facet at once.
-    struct sigaction action {};
-    action.sa_handler = on_interrupt;
-    action.sa_flags = SA_RESETHAND;
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
     ProgressReporter progress(stderr, args.quiet);
     RenderResult result = render_scene(scene, world, options,
                                        [&](const FrameProgress& p) { progress.frame_done(p); });
