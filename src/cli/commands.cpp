@@ -36,6 +36,8 @@ struct RenderArgs {
     std::string scene;
     std::string frames;
     std::string size;
+    std::string passes;   // e.g. "color,depth"
+    std::string formats;  // e.g. "png,exr"
     std::string out = "out";
     unsigned threads = 0;
     std::string style;
@@ -67,6 +69,13 @@ SceneOptions scene_options(const RenderArgs& args) {
         options.overrides.push_back(
             {"style", "\"" + value + "\"", "command line --style " + args.style});
     }
+    // "a,b" -> "[a,b]": the scene's own list syntax, checked by the scene reader.
+    if (!args.passes.empty())
+        options.overrides.push_back(
+            {"output.passes", "[" + args.passes + "]", "command line --passes " + args.passes});
+    if (!args.formats.empty())
+        options.overrides.push_back(
+            {"output.formats", "[" + args.formats + "]", "command line --formats " + args.formats});
     for (const auto& d : args.defines) options.overrides.push_back(parse_define(d));
     return options;
 }
@@ -156,6 +165,8 @@ int info_command(const std::string& path) {
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
+    cmd->add_option("--passes", args.passes, "Passes to write: color, depth or color,depth");
+    cmd->add_option("--formats", args.formats, "File formats: png, exr or png,exr");
     cmd->add_option("--style", args.style, "Style preset name or file");
     // One value per -D: a vector option would otherwise also swallow the
     // words after it, so `render -D camera.fov=30 scene.yaml` lost its scene.
