@@ -26,7 +26,7 @@ std::set<std::string> files_in(const std::string& folder) {
 
 }  // namespace
 
-TEST_CASE("--passes and --formats pick the files written", "[cli]") {
+TEST_CASE("the passes and formats options pick the files written", "[cli]") {
     test::TempDir dir("passes");
     std::string scene = test::write_text(dir.file("s.yaml"), kScene);
     auto run = test::run_facet("render '" + scene + "' --out '" + dir.file("a") +
@@ -41,7 +41,7 @@ TEST_CASE("--passes and --formats pick the files written", "[cli]") {
           std::set<std::string>{"color.0001.png", "color.0002.png", "manifest.json"});
 }
 
-TEST_CASE("bad --passes and --formats values are usage errors", "[cli]") {
+TEST_CASE("bad passes and formats options are usage errors", "[cli]") {
     test::TempDir dir("badpasses");
     std::string scene = test::write_text(dir.file("s.yaml"), kScene);
     auto run =
