@@ -33,8 +33,9 @@ int wrap_index(int i, int size, Wrap wrap) {
 
 }  // namespace
 
-glm::vec4 Texture::sample(glm::vec2 uv) const {
-    if (texels.empty()) return glm::vec4(1);
+namespace {
+
+glm::vec4 bilinear(const glm::vec4* texels, int width, int height, Wrap wrap, glm::vec2 uv) {
     // Texel centres sit at half-integer coordinates.
     float x = uv.x * static_cast<float>(width) - 0.5f;
     float y = uv.y * static_cast<float>(height) - 0.5f;
@@ -60,6 +61,61 @@ glm::vec4 Texture::sample(glm::vec2 uv) const {
     glm::vec4 top = a + (b - a) * tx;
     glm::vec4 bottom = c + (d - c) * tx;
     return top + (bottom - top) * ty;
+}
+
+}  // namespace
+
+glm::vec4 Texture::sample(glm::vec2 uv) const {
+    if (texels.empty()) return glm::vec4(1);
+    return bilinear(texels.data(), width, height, wrap, uv);
+}
+
+glm::vec4 Texture::sample(glm::vec2 uv, float lod) const {
+    if (texels.empty()) return glm::vec4(1);
+    if (!(lod > 0.0f) || mips.empty()) return sample(uv);  // also NaN
+    const float top = static_cast<float>(mips.size());
+    if (lod >= top) {
+        const MipLevel& m = mips.back();
+        return bilinear(m.texels.data(), m.width, m.height, wrap, uv);
+    }
+    const int level = static_cast<int>(lod);
+    const float t = lod - static_cast<float>(level);
+    auto at = [&](int l) {
+        if (l == 0) return bilinear(texels.data(), width, height, wrap, uv);
+        const MipLevel& m = mips[static_cast<size_t>(l - 1)];
+        return bilinear(m.texels.data(), m.width, m.height, wrap, uv);
+    };
+    glm::vec4 fine = at(level);
+    glm::vec4 coarse = at(level + 1);
+    return fine + (coarse - fine) * t;
+}
+
+void Texture::build_mipmaps() {
+    mips.clear();
+    int w = width, h = height;
+    const glm::vec4* src = texels.data();
+    while (w > 1 || h > 1) {
+        // Halve, rounding up; an odd last row or column is averaged with itself.
+        MipLevel next;
+        next.width = (w + 1) / 2;
+        next.height = (h + 1) / 2;
+        next.texels.resize(static_cast<size_t>(next.width) * next.height);
+        for (int y = 0; y < next.height; ++y) {
+            const int y0 = 2 * y, y1 = std::min(2 * y + 1, h - 1);
+            for (int x = 0; x < next.width; ++x) {
+                const int x0 = 2 * x, x1 = std::min(2 * x + 1, w - 1);
+                next.texels[static_cast<size_t>(y) * next.width + x] =
+                    (src[static_cast<size_t>(y0) * w + x0] + src[static_cast<size_t>(y0) * w + x1] +
+                     src[static_cast<size_t>(y1) * w + x0] +
+                     src[static_cast<size_t>(y1) * w + x1]) *
+                    0.25f;
+            }
+        }
+        mips.push_back(std::move(next));
+        w = mips.back().width;
+        h = mips.back().height;
+        src = mips.back().texels.data();
+    }
 }
 
 Texture texture_from_pixels(int width, int height, int channels, int bits, const uint8_t* data) {
@@ -94,6 +150,7 @@ Texture texture_from_pixels(int width, int height, int channels, int bits, const
         else
             tex.texels[i] = {v[0], v[1], v[2], channels == 4 ? v[3] : 1.0f};
     }
+    tex.build_mipmaps();
     return tex;
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Decoded textures, kept as linear RGBA floats, sampled bilinearly.
+// Decoded textures, kept as linear RGBA floats with a mipmap chain, sampled
+// trilinearly (Williams 1983, "Pyramidal Parametrics").
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -11,15 +12,29 @@ namespace facet {
 
 enum class Wrap { repeat, clamp };
 
+struct MipLevel {
+    int width = 0;
+    int height = 0;
+    std::vector<glm::vec4> texels;
+};
+
 struct Texture {
     int width = 0;
     int height = 0;
-    std::vector<glm::vec4> texels;  // linear RGBA, rows top to bottom
+    std::vector<glm::vec4> texels;  // level 0: linear RGBA, rows top to bottom
+    std::vector<MipLevel> mips;     // levels 1, 2, ... each half the size, down to 1x1
     Wrap wrap = Wrap::repeat;
 
-    // Bilinear lookup. uv (0,0) is the top-left corner of the image, as in
-    // glTF and as OBJ files are commonly authored after their v flip.
+    // Bilinear lookup in level 0. uv (0,0) is the top-left corner of the
+    // image, as in glTF and as OBJ files are commonly authored after their v flip.
     glm::vec4 sample(glm::vec2 uv) const;
+
+    // Trilinear lookup: `lod` is log2 of the texels one pixel step covers;
+    // 0 or less is level 0, and each step up halves the resolution.
+    glm::vec4 sample(glm::vec2 uv, float lod) const;
+
+    // Fills `mips` from `texels` with a 2x2 box filter.
+    void build_mipmaps();
 };
 
 // Reads PNG or JPEG (8 or 16 bit, grey, grey+alpha, RGB, RGBA). Colour

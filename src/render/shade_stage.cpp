@@ -87,9 +87,20 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             float alpha = 1.0f;
             if (mat.texture) {
                 const auto& uv = world_.uvs;
-                glm::vec4 texel =
-                    mat.texture->sample((b0 * uv[i0] + b1 * uv[i1] + b2 * uv[i2]) * mat.uv_scale);
-                albedo *= glm::vec3(texel);
+                const glm::vec2 uv0 = uv[i0] * mat.uv_scale;
+                const glm::vec2 e1 = uv[i1] * mat.uv_scale - uv0, e2 = uv[i2] * mat.uv_scale - uv0;
+                // Texels per pixel step, for the mip level: the screen-space
+                // derivatives of b = (b/w) / (1/w) by the quotient rule.
+                const float db1dx = (s.b1_w[1] - b1 * s.inv_w[1]) * w;
+                const float db1dy = (s.b1_w[2] - b1 * s.inv_w[2]) * w;
+                const float db2dx = (s.b2_w[1] - b2 * s.inv_w[1]) * w;
+                const float db2dy = (s.b2_w[2] - b2 * s.inv_w[2]) * w;
+                const glm::vec2 size(mat.texture->width, mat.texture->height);
+                const glm::vec2 ddx = (e1 * db1dx + e2 * db2dx) * size;
+                const glm::vec2 ddy = (e1 * db1dy + e2 * db2dy) * size;
+                const float texels = std::max(glm::length(ddx), glm::length(ddy));
+                const float lod = texels > 1.0f ? std::log2(texels) : 0.0f;
+                albedo *= glm::vec3(mat.texture->sample(uv0 + e1 * b1 + e2 * b2, lod));
             }
             if (model == ShadingModel::unlit) {
                 color_row[tx] = glm::vec4(albedo, alpha);
