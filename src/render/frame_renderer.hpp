@@ -51,8 +51,10 @@ class FrameRenderer {
     const SceneDesc& scene_;
     const World& world_;
     ThreadPool& pool_;
+    int side_;  // samples per pixel side: output.samples = side_ * side_
     Rasterizer rasterizer_;
     TransformedVertices vertices_;
+    FrameImages supersampled_;  // shading target when side_ > 1
 };
 
 std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights);

@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "post/resolve.hpp"
 #include "render/frame_renderer.hpp"
 #include "shade/lighting_batch.hpp"
 
@@ -184,11 +185,22 @@ glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
     return {near, far};
 }
 
+namespace {
+
+int samples_per_side(int samples) {
+    int side = 1;
+    while (side * side < samples) ++side;
+    return side;
+}
+
+}  // namespace
+
 FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
     : scene_(scene),
       world_(world),
       pool_(pool),
-      rasterizer_(scene.output.width, scene.output.height) {}
+      side_(samples_per_side(scene.output.samples)),
+      rasterizer_(scene.output.width * side_, scene.output.height * side_) {}
 
 void FrameRenderer::render(int frame, FrameImages& out) {
     const FrameState state = evaluate_frame(scene_, frame);
@@ -208,15 +220,24 @@ void FrameRenderer::render(int frame, FrameImages& out) {
 
     // Every pixel is written by shading (background included), so reused
     // buffers need no clearing.
-    if (out.color.width != scene_.output.width || out.color.height != scene_.output.height)
-        out.color = ColorImage(scene_.output.width, scene_.output.height);
-    if (out.depth.width != scene_.output.width || out.depth.height != scene_.output.height)
-        out.depth = DepthImage(scene_.output.width, scene_.output.height);
+    auto fit = [](FrameImages& images, int width, int height) {
+        if (images.color.width != width || images.color.height != height)
+            images.color = ColorImage(width, height);
+        if (images.depth.width != width || images.depth.height != height)
+            images.depth = DepthImage(width, height);
+    };
+    fit(out, scene_.output.width, scene_.output.height);
     out.depth_view_range = depth_view_range(state, camera);
     const glm::vec2 style_range = scene_.style.depth_range.value_or(out.depth_view_range);
+    // With supersampling, shade at side x side the size, then resolve (post/).
+    FrameImages& target = side_ == 1 ? out : supersampled_;
+    if (side_ > 1) fit(supersampled_, rasterizer_.width(), rasterizer_.height());
     rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
-        shade_tile(tile, camera, lights, style_range, out);
+        shade_tile(tile, camera, lights, style_range, target);
     });
+    if (side_ > 1)
+        resolve_supersampled(supersampled_.color, supersampled_.depth, side_, out.color, out.depth,
+                             pool_);
 }
 
 }  // namespace facet

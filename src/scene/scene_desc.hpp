@@ -37,6 +37,9 @@ struct OutputDesc {
     bool write_png = true;
     bool write_exr = false;
     glm::vec4 background = {0, 0, 0, 1};  // linear RGBA
+    // Samples per pixel on a regular grid (1, 4, 9, 16, 25): anti-aliasing
+    // by supersampling, resolved in post/resolve.cpp.
+    int samples = 1;
     int png_compression = 1;              // zlib level 0..9; 1 is fast, 9 small
     // Range of linear depth mapped to white..black in the 16-bit depth PNG;
     // unset means "fit the scene's bounds" (docs/scene-format.md).

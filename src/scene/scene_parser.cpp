@@ -38,8 +38,8 @@ glm::vec3 nonzero_direction(const Field& field) {
 OutputDesc parse_output(const Field& f) {
     OutputDesc out;
     out.where = f.where();
-    f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "png_compression",
-                  "depth_range"});
+    f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
+                  "png_compression", "depth_range"});
     if (f.has("size")) {
         Field size = f["size"];
         if (!size.is_sequence() || size.size() != 2) size.fail("must be [width, height]");
@@ -69,6 +69,16 @@ OutputDesc parse_output(const Field& f) {
         for (auto& fmt : formats) (fmt == "png" ? out.write_png : out.write_exr) = true;
     }
     if (f.has("background")) out.background = f["background"].color4();
+    if (f.has("samples")) {
+        out.samples = f["samples"].integer(1, 25);
+        int side = 1;
+        while (side * side < out.samples) ++side;
+        if (side * side != out.samples) f["samples"].fail("must be a square: 1, 4, 9, 16 or 25");
+        if (out.width * side > kMaxImageSide || out.height * side > kMaxImageSide)
+            f["samples"].fail("the supersampled image (" + std::to_string(out.width * side) + "x" +
+                              std::to_string(out.height * side) + ") would be larger than " +
+                              std::to_string(kMaxImageSide) + " on a side");
+    }
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;
