@@ -6,7 +6,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "post/resolve.hpp"
 #include "render/frame_renderer.hpp"
 #include "shade/lighting_batch.hpp"
 
@@ -160,84 +159,6 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
         }
     }
     flush(pending, camera.position, lights, highlight);
-}
-
-glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
-                                          const CameraMatrices& camera) const {
-    // Fit the bounding sphere of everything visible; for an orbiting camera
-    // it stays constant, so animations do not flicker.
-    Bounds all;
-    for (const Draw& d : world_.draws) {
-        const Bounds& b = world_.object_bounds[d.object];
-        const glm::mat4& m = state.object_transforms[d.object];
-        for (int corner = 0; corner < 8; ++corner) {
-            glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
-                        (corner & 4) ? b.max.z : b.min.z);
-            all.add(glm::vec3(m * glm::vec4(p, 1.0f)));
-        }
-    }
-    if (all.empty()) return {camera.near, camera.far};
-    glm::vec3 centre = (all.min + all.max) * 0.5f;
-    float radius = glm::length(all.max - centre);
-    float d = glm::dot(centre - camera.position, camera.forward);
-    float near = std::max(camera.near, d - radius);
-    float far = std::max(near + 1e-3f, d + radius);
-    return {near, far};
-}
-
-namespace {
-
-int samples_per_side(int samples) {
-    int side = 1;
-    while (side * side < samples) ++side;
-    return side;
-}
-
-}  // namespace
-
-FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
-    : scene_(scene),
-      world_(world),
-      pool_(pool),
-      side_(samples_per_side(scene.output.samples)),
-      rasterizer_(scene.output.width * side_, scene.output.height * side_) {}
-
-void FrameRenderer::render(int frame, FrameImages& out) {
-    const FrameState state = evaluate_frame(scene_, frame);
-    const float aspect =
-        static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
-    const CameraMatrices camera = make_camera(state.camera, aspect);
-    const std::vector<ShadeLight> lights = make_shade_lights(state.lights);
-
-    vertex_stage(state, camera, lights);
-    RasterInput input;
-    input.clip = vertices_.clip.data();
-    input.vertex_count = vertices_.clip.size();
-    input.indices = world_.indices.data();
-    input.triangle_count = world_.triangle_count();
-    input.cull_back = world_.cull_back.data();
-    rasterizer_.set_geometry(input, pool_);
-
-    // Every pixel is written by shading (background included), so reused
-    // buffers need no clearing.
-    auto fit = [](FrameImages& images, int width, int height) {
-        if (images.color.width != width || images.color.height != height)
-            images.color = ColorImage(width, height);
-        if (images.depth.width != width || images.depth.height != height)
-            images.depth = DepthImage(width, height);
-    };
-    fit(out, scene_.output.width, scene_.output.height);
-    out.depth_view_range = depth_view_range(state, camera);
-    const glm::vec2 style_range = scene_.style.depth_range.value_or(out.depth_view_range);
-    // With supersampling, shade at side x side the size, then resolve (post/).
-    FrameImages& target = side_ == 1 ? out : supersampled_;
-    if (side_ > 1) fit(supersampled_, rasterizer_.width(), rasterizer_.height());
-    rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
-        shade_tile(tile, camera, lights, style_range, target);
-    });
-    if (side_ > 1)
-        resolve_supersampled(supersampled_.color, supersampled_.depth, side_, out.color, out.depth,
-                             pool_);
 }
 
 }  // namespace facet
