@@ -272,7 +272,7 @@ TEST_CASE("primitive sources and materials", "[assets][primitives]") {
 TEST_CASE("primitive parameters out of range are errors", "[assets][primitives]") {
     const float nan = std::numeric_limits<float>::quiet_NaN();
     const float inf = std::numeric_limits<float>::infinity();
-    require_rejected(spec("torus"));
+    require_rejected(spec("teapot"));
     require_rejected(spec(""));
     require_rejected(spec("Cube "));
     for (const std::string type : {"plane", "cube", "sphere", "cylinder", "cone"}) {

@@ -19,4 +19,5 @@ TEST_CASE("render: OBJ spider textured",  "[render]") { check_render({"tests/sce
 TEST_CASE("render: glTF box textured",    "[render]") { check_render({"tests/scenes/box_textured.yaml", 1, "box-textured.png"}); }
 TEST_CASE("render: double-sided tubes",   "[render]") { check_render({"tests/scenes/double_sided.yaml", 1, "double-sided.png"}); }
 TEST_CASE("render: shapes 4 samples",     "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-aa4.png", {}, {"output.samples=4"}}); }
+TEST_CASE("render: polyhedra",            "[render]") { check_render({"tests/scenes/polyhedra.yaml", 1, "polyhedra.png"}); }
 // clang-format on

@@ -59,9 +59,20 @@ World build_world(const SceneDesc& scene) {
             mesh = slot;
         } else {
             const PrimitiveDesc& p = *obj.primitive;
+            PrimitiveSpec spec;
+            spec.type = p.type;
+            spec.size = p.size;
+            spec.box_size = p.box_size;
+            spec.radius = p.radius;
+            spec.height = p.height;
+            spec.segments = p.segments;
+            spec.rings = p.rings;
+            spec.sides = p.sides;
+            spec.tube = p.tube;
+            spec.subdivisions = p.subdivisions;
+            spec.smooth = p.smooth;
             try {
-                mesh = std::make_shared<Mesh>(
-                    make_primitive({p.type, p.size, p.radius, p.height, p.segments, p.rings}));
+                mesh = std::make_shared<Mesh>(make_primitive(spec));
             } catch (const Error& e) {
                 fail_input(p.where, "objects." + std::to_string(o) + ".primitive", e.what());
             }

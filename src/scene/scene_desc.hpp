@@ -40,7 +40,7 @@ struct OutputDesc {
     // Samples per pixel on a regular grid (1, 4, 9, 16, 25): anti-aliasing
     // by supersampling, resolved in post/resolve.cpp.
     int samples = 1;
-    int png_compression = 1;              // zlib level 0..9; 1 is fast, 9 small
+    int png_compression = 1;  // zlib level 0..9; 1 is fast, 9 small
     // Range of linear depth mapped to white..black in the 16-bit depth PNG;
     // unset means "fit the scene's bounds" (docs/scene-format.md).
     std::optional<glm::vec2> depth_range;
@@ -91,13 +91,20 @@ struct MaterialDesc {
     std::optional<bool> double_sided;
 };
 
+// Which keys apply to which type: docs/scene-format.md, "Primitives".
 struct PrimitiveDesc {
-    std::string type;  // plane, cube, sphere, cylinder, cone
+    std::string type;  // plane, cube, box, sphere, cylinder, cone, tetrahedron, octahedron,
+                       // icosahedron, dodecahedron, prism, antiprism, pyramid, icosphere, torus
     float size = 1;    // plane edge, cube edge
-    float radius = 0.5f;
+    glm::vec3 box_size = {1, 1, 1};  // box: `size` as [x, y, z] (or one number for all three)
+    float radius = 0.5f;             // circumradius; the major radius of a torus
     float height = 1;
-    int segments = 32;  // around the axis
-    int rings = 16;     // sphere latitude bands
+    int segments = 32;           // around the axis
+    int rings = 16;              // sphere latitude bands; divisions round a torus's tube
+    int sides = 6;               // prism, antiprism, pyramid
+    float tube = 0.25f;          // torus minor radius; half of `radius` unless given
+    int subdivisions = 2;        // icosphere
+    std::optional<bool> smooth;  // round types only; unset keeps the type's default
     SourceLocation where;
 };
 

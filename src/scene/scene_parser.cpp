@@ -1,5 +1,7 @@
 // YAML scene file -> SceneDesc records (docs/scene-format.md).
+#include <algorithm>
 #include <filesystem>
+#include <sstream>
 
 #include "core/frame_range.hpp"
 #include "scene/scene_desc.hpp"
@@ -160,20 +162,94 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     return m;
 }
 
+// The keys each primitive type takes besides `type` (docs/scene-format.md).
+struct PrimitiveKeys {
+    const char* type;
+    std::vector<std::string> keys;
+};
+
+const std::vector<PrimitiveKeys> kPrimitiveKeys = {
+    {"plane", {"size"}},
+    {"cube", {"size"}},
+    {"box", {"size"}},
+    {"sphere", {"radius", "segments", "rings", "smooth"}},
+    {"cylinder", {"radius", "height", "segments", "smooth"}},
+    {"cone", {"radius", "height", "segments", "smooth"}},
+    {"tetrahedron", {"radius"}},
+    {"octahedron", {"radius"}},
+    {"icosahedron", {"radius"}},
+    {"dodecahedron", {"radius"}},
+    {"prism", {"sides", "radius", "height"}},
+    {"antiprism", {"sides", "radius", "height"}},
+    {"pyramid", {"sides", "radius", "height"}},
+    {"icosphere", {"radius", "subdivisions", "smooth"}},
+    {"torus", {"radius", "tube", "segments", "rings", "smooth"}},
+};
+
+constexpr int kMaxDivisions = 4096;
+constexpr int kMaxSubdivisions = 7;  // 327680 triangles
+
+const PrimitiveKeys& primitive_type(const Field& f) {
+    std::string type = f.text();
+    std::string list;
+    for (const auto& entry : kPrimitiveKeys) {
+        if (type == entry.type) return entry;
+        list += std::string(list.empty() ? "" : ", ") + entry.type;
+    }
+    f.fail("must be one of: " + list + "; got '" + type + "'");
+}
+
+float length_value(const Field& f) {
+    return static_cast<float>(f.number(1e-6, kMaxCoordinate));
+}
+
 PrimitiveDesc parse_primitive(const Field& f) {
     PrimitiveDesc p;
     p.where = f.where();
     if (f.is_scalar()) {  // shorthand: `primitive: sphere`
-        p.type = f.choice({"plane", "cube", "sphere", "cylinder", "cone"});
+        p.type = primitive_type(f).type;
         return p;
     }
-    f.check_keys({"type", "size", "radius", "height", "segments", "rings"});
-    p.type = f.require("type").choice({"plane", "cube", "sphere", "cylinder", "cone"});
-    if (f.has("size")) p.size = static_cast<float>(f["size"].number(1e-6, kMaxCoordinate));
-    if (f.has("radius")) p.radius = static_cast<float>(f["radius"].number(1e-6, kMaxCoordinate));
-    if (f.has("height")) p.height = static_cast<float>(f["height"].number(1e-6, kMaxCoordinate));
-    if (f.has("segments")) p.segments = f["segments"].integer(3, 4096);
-    if (f.has("rings")) p.rings = f["rings"].integer(2, 4096);
+    f.check_keys({"type", "size", "radius", "height", "segments", "rings", "sides", "tube",
+                  "subdivisions", "smooth"});
+    const PrimitiveKeys& type = primitive_type(f.require("type"));
+    p.type = type.type;
+    for (const std::string& key : f.keys()) {
+        if (key == "type" || std::find(type.keys.begin(), type.keys.end(), key) != type.keys.end())
+            continue;
+        std::string list = "type";
+        for (const auto& k : type.keys) list += ", " + k;
+        f.key(key).fail("'" + key + "' does not apply to a " + p.type + " (its keys are: " + list +
+                        ")");
+    }
+    if (f.has("size")) {
+        Field size = f["size"];
+        if (p.type != "box") {
+            p.size = length_value(size);
+        } else if (size.is_scalar()) {
+            p.box_size = glm::vec3(length_value(size));
+        } else {
+            size.vec3();  // reports anything but a list of three numbers
+            for (int k = 0; k < 3; ++k) p.box_size[k] = length_value(size[static_cast<size_t>(k)]);
+        }
+    }
+    if (f.has("radius")) p.radius = length_value(f["radius"]);
+    if (f.has("height")) p.height = length_value(f["height"]);
+    if (f.has("segments")) p.segments = f["segments"].integer(3, kMaxDivisions);
+    if (f.has("rings")) p.rings = f["rings"].integer(p.type == "torus" ? 3 : 2, kMaxDivisions);
+    if (f.has("sides")) p.sides = f["sides"].integer(3, kMaxDivisions);
+    if (f.has("subdivisions")) p.subdivisions = f["subdivisions"].integer(0, kMaxSubdivisions);
+    if (f.has("smooth")) p.smooth = f["smooth"].boolean();
+    p.tube = p.radius / 2;
+    if (f.has("tube")) {
+        p.tube = length_value(f["tube"]);
+        if (p.tube >= p.radius) {
+            std::ostringstream s;
+            s << "must be greater than 0 and less than the radius (" << p.radius << "), got "
+              << f["tube"].text();
+            f["tube"].fail(s.str());
+        }
+    }
     return p;
 }
 

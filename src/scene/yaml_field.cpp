@@ -45,7 +45,8 @@ size_t edit_distance(const std::string& a, const std::string& b) {
         row[0] = i;
         for (size_t j = 1; j <= b.size(); ++j) {
             size_t above = row[j];
-            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            row[j] =
+                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
             diagonal = above;
         }
     }
@@ -164,6 +165,13 @@ std::vector<std::string> Field::keys() const {
     std::vector<std::string> out;
     for (auto it = node_.begin(); it != node_.end(); ++it) out.push_back(it->first.Scalar());
     return out;
+}
+
+Field Field::key(const std::string& name) const {
+    expect_map();
+    for (auto it = node_.begin(); it != node_.end(); ++it)
+        if (it->first.Scalar() == name) return Field(doc_, it->first, join_path(path_, name));
+    return (*this)[name];
 }
 
 size_t Field::size() const {

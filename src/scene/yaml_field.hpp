@@ -48,6 +48,8 @@ class Field {
     Field operator[](const std::string& key) const;  // key must exist (see has)
     Field require(const std::string& key) const;     // fails at this mapping if missing
     std::vector<std::string> keys() const;
+    // The key `name` itself rather than its value, for errors about the key.
+    Field key(const std::string& name) const;
 
     // Sequence access.
     size_t size() const;
@@ -60,9 +62,9 @@ class Field {
     bool boolean() const;
     glm::vec2 vec2() const;
     glm::vec3 vec3() const;
-    glm::vec3 color3() const;  // [r, g, b] linear, or "#rrggbb" sRGB
+    glm::vec3 color3() const;          // [r, g, b] linear, or "#rrggbb" sRGB
     glm::vec2 distance_range() const;  // [near, far] with 0 <= near < far
-    glm::vec4 color4() const;  // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
+    glm::vec4 color4() const;          // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
     // One of the given words.
     std::string choice(std::initializer_list<const char*> words) const;
     // A list of words from the given set.
