@@ -141,6 +141,23 @@ struct Topology {
     size_t vertices = 0, edges = 0, faces = 0;
 };
 
+// Welds positions within `eps` (quadratic, fine for test meshes): returns
+// each vertex's index in `welded`, which gains the new positions.
+inline std::vector<size_t> weld_positions(const MeshPart& part, float eps,
+                                          std::vector<glm::vec3>& welded) {
+    std::vector<size_t> id(part.positions.size());
+    for (size_t i = 0; i < part.positions.size(); ++i) {
+        id[i] = welded.size();
+        for (size_t j = 0; j < welded.size(); ++j)
+            if (glm::length(welded[j] - part.positions[i]) <= eps) {
+                id[i] = j;
+                break;
+            }
+        if (id[i] == welded.size()) welded.push_back(part.positions[i]);
+    }
+    return id;
+}
+
 // Welds positions within `eps` and requires every undirected edge to be used
 // by exactly two triangles, once in each direction (closed and consistently
 // wound). Returns the welded counts, for checks of the Euler characteristic.
@@ -149,16 +166,7 @@ inline Topology require_closed_and_oriented(const Mesh& mesh, float eps = 1e-5f)
     std::map<std::pair<size_t, size_t>, int> directed;
     size_t faces = 0;
     for (const auto& part : mesh.parts) {
-        std::vector<size_t> id(part.positions.size());
-        for (size_t i = 0; i < part.positions.size(); ++i) {
-            id[i] = welded.size();
-            for (size_t j = 0; j < welded.size(); ++j)
-                if (glm::length(welded[j] - part.positions[i]) <= eps) {
-                    id[i] = j;
-                    break;
-                }
-            if (id[i] == welded.size()) welded.push_back(part.positions[i]);
-        }
+        std::vector<size_t> id = weld_positions(part, eps, welded);
         for (size_t t = 0; t < part.triangle_count(); ++t)
             for (int k = 0; k < 3; ++k)
                 ++directed[{id[part.indices[3 * t + k]], id[part.indices[3 * t + (k + 1) % 3]]}];

@@ -56,16 +56,7 @@ struct Polyhedron {
 Polyhedron polyhedron_of(const facet::MeshPart& part, float eps = 1e-5f,
                          bool quads_by_construction = false) {
     std::vector<glm::vec3> welded;
-    std::vector<size_t> id(part.positions.size());
-    for (size_t i = 0; i < part.positions.size(); ++i) {
-        id[i] = welded.size();
-        for (size_t j = 0; j < welded.size(); ++j)
-            if (glm::length(welded[j] - part.positions[i]) <= eps) {
-                id[i] = j;
-                break;
-            }
-        if (id[i] == welded.size()) welded.push_back(part.positions[i]);
-    }
+    std::vector<size_t> id = facet::test::weld_positions(part, eps, welded);
     const size_t triangles = part.triangle_count();
     std::vector<glm::vec3> normal(triangles);
     std::map<std::pair<size_t, size_t>, std::vector<size_t>> edge_triangles;
