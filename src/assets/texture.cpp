@@ -6,14 +6,11 @@
 #include <cmath>
 #include <cstring>
 
+#include "core/color.hpp"
 #include "core/error.hpp"
 
 namespace facet {
 namespace {
-
-float srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
-}
 
 const std::array<float, 256>& srgb8_table() {
     static const std::array<float, 256> table = [] {

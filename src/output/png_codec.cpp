@@ -5,6 +5,7 @@
 #include <cmath>
 #include <csetjmp>
 
+#include "core/color.hpp"
 #include "core/error.hpp"
 #include "output/encoders.hpp"
 
@@ -16,11 +17,8 @@ namespace {
 const std::vector<uint8_t>& linear_to_srgb8_table() {
     static const std::vector<uint8_t> table = [] {
         std::vector<uint8_t> t(65536);
-        for (int i = 0; i < 65536; ++i) {
-            double c = i / 65535.0;
-            double s = c <= 0.0031308 ? c * 12.92 : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
-            t[i] = static_cast<uint8_t>(std::lround(std::clamp(s, 0.0, 1.0) * 255.0));
-        }
+        for (int i = 0; i < 65536; ++i)
+            t[i] = static_cast<uint8_t>(std::lround(linear_to_srgb(i / 65535.0) * 255.0));
         return t;
     }();
     return table;

@@ -33,21 +33,11 @@ glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
     return {near, far};
 }
 
-namespace {
-
-int samples_per_side(int samples) {
-    int side = 1;
-    while (side * side < samples) ++side;
-    return side;
-}
-
-}  // namespace
-
 FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
     : scene_(scene),
       world_(world),
       pool_(pool),
-      side_(samples_per_side(scene.output.samples)),
+      side_(scene.output.samples_per_side()),
       rasterizer_(scene.output.width * side_, scene.output.height * side_) {}
 
 void FrameRenderer::render(int frame, FrameImages& out) {

@@ -1,6 +1,7 @@
 #pragma once
 // Renders one frame of a scene: vertex stage, raster core, shading. Owns the
 // per-frame buffers, which it reuses from frame to frame.
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -44,6 +45,8 @@ class FrameRenderer {
   private:
     void vertex_stage(const FrameState& state, const CameraMatrices& camera,
                       std::span<const ShadeLight> lights);
+    void light_vertices(size_t first, size_t last, const glm::vec3& eye,
+                        std::span<const ShadeLight> lights);
     void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
                     std::span<const ShadeLight> lights, glm::vec2 depth_range,
                     FrameImages& out) const;

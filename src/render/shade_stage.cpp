@@ -6,6 +6,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/color.hpp"
 #include "render/frame_renderer.hpp"
 #include "shade/lighting_batch.hpp"
 
@@ -25,14 +26,7 @@ struct PendingPixels {
 void flush(PendingPixels& pending, const glm::vec3& eye, std::span<const ShadeLight> lights,
            Highlight highlight) {
     if (pending.count == 0) return;
-    // Unused lanes repeat lane 0, so they compute harmless values.
-    for (int i = pending.count; i < simd::kLanes; ++i) {
-        for (simd::vf* v :
-             {&pending.surface.px, &pending.surface.py, &pending.surface.pz, &pending.surface.nx,
-              &pending.surface.ny, &pending.surface.nz, &pending.surface.ambient,
-              &pending.surface.diffuse, &pending.surface.specular, &pending.surface.shininess})
-            (*v)[i] = (*v)[0];
-    }
+    pad_batch(pending.surface, pending.count);
     LightingBatch l = light_surface_batch(pending.surface, eye, lights, highlight);
     for (int i = 0; i < pending.count; ++i) {
         const glm::vec3& a = pending.albedo[i];

@@ -6,6 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "render/frame_renderer.hpp"
+#include "shade/lighting_batch.hpp"
 
 namespace facet {
 namespace {
@@ -23,6 +24,30 @@ std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights) 
         out.push_back(s);
     }
     return out;
+}
+
+// Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
+// batch lighting as per-pixel shading.
+void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& eye,
+                                   std::span<const ShadeLight> lights) {
+    for (size_t start = first; start < last; start += simd::kLanes) {
+        const int count = static_cast<int>(std::min<size_t>(simd::kLanes, last - start));
+        SurfaceBatch s;
+        for (int i = 0; i < count; ++i) {
+            const size_t v = start + i;
+            const glm::vec3& p = vertices_.world_position[v];
+            const glm::vec3& n = vertices_.world_normal[v];
+            const Material& m = world_.materials[world_.draws[world_.vertex_draw[v]].material];
+            s.px[i] = p.x, s.py[i] = p.y, s.pz[i] = p.z;
+            s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
+            s.ambient[i] = m.ambient, s.diffuse[i] = m.diffuse;
+            s.specular[i] = m.specular, s.shininess[i] = m.shininess;
+        }
+        pad_batch(s, count);
+        const LightingBatch l = light_surface_batch(s, eye, lights, Highlight::blinn);
+        for (int i = 0; i < count; ++i)
+            vertices_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
+    }
 }
 
 void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& camera,
@@ -57,15 +82,8 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
             glm::vec3 n = t.normal * world_.normals[v];
             float len = glm::length(n);
             vertices_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
-            if (gouraud) {
-                const Material& mat = world_.materials[world_.draws[draw].material];
-                SurfacePoint p{vertices_.world_position[v], vertices_.world_normal[v],
-                               glm::normalize(camera.position - vertices_.world_position[v])};
-                vertices_.lit[v] =
-                    light_surface(p, {mat.ambient, mat.diffuse, mat.specular, mat.shininess},
-                                  lights, Highlight::blinn);
-            }
         }
+        if (gouraud) light_vertices(first, last, camera.position, lights);
     });
 }
 

@@ -40,6 +40,12 @@ struct OutputDesc {
     // Samples per pixel on a regular grid (1, 4, 9, 16, 25): anti-aliasing
     // by supersampling, resolved in post/resolve.cpp.
     int samples = 1;
+    // k of the k x k sample grid (rounded up if `samples` is not a square).
+    int samples_per_side() const {
+        int k = 1;
+        while (k * k < samples) ++k;
+        return k;
+    }
     int png_compression = 1;  // zlib level 0..9; 1 is fast, 9 small
     // Range of linear depth mapped to white..black in the 16-bit depth PNG;
     // unset means "fit the scene's bounds" (docs/scene-format.md).

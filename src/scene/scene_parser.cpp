@@ -73,8 +73,7 @@ OutputDesc parse_output(const Field& f) {
     if (f.has("background")) out.background = f["background"].color4();
     if (f.has("samples")) {
         out.samples = f["samples"].integer(1, 25);
-        int side = 1;
-        while (side * side < out.samples) ++side;
+        const int side = out.samples_per_side();
         if (side * side != out.samples) f["samples"].fail("must be a square: 1, 4, 9, 16 or 25");
         if (out.width * side > kMaxImageSide || out.height * side > kMaxImageSide)
             f["samples"].fail("the supersampled image (" + std::to_string(out.width * side) + "x" +

@@ -6,6 +6,7 @@
 #include <set>
 #include <sstream>
 
+#include "core/color.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
@@ -13,10 +14,6 @@ namespace {
 
 std::string join_path(const std::string& parent, const std::string& key) {
     return parent.empty() ? key : parent + "." + key;
-}
-
-float srgb_to_linear(float c) {
-    return c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
 }
 
 bool parse_hex_color(const std::string& text, glm::vec4& out) {

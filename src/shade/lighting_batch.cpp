@@ -6,6 +6,13 @@ using simd::splat;
 using simd::vf;
 using simd::vi;
 
+void pad_batch(SurfaceBatch& s, int count) {
+    for (int i = count; i < simd::kLanes; ++i)
+        for (vf* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.ambient, &s.diffuse, &s.specular,
+                      &s.shininess})
+            (*v)[i] = (*v)[0];
+}
+
 // Built twice: for AVX2 and for baseline x86-64. Both do the same IEEE
 // operations in the same order, so they give the same bits.
 __attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_batch(

@@ -1,7 +1,7 @@
 #pragma once
-// The lighting of lighting.hpp for eight surface points at once (the
-// shading stage's hot loop). Results agree with light_surface to about
-// 1e-6 and are identical on every CPU.
+// Lighting for eight surface points at once: the per-pixel shading stage
+// and Gouraud's per-vertex lighting both go through here, so there is one
+// implementation of the formulas. Results are identical on every CPU.
 #include <span>
 
 #include "shade/lighting.hpp"
@@ -19,6 +19,10 @@ struct LightingBatch {
     simd::vf dr, dg, db;  // diffuse light (multiplies albedo)
     simd::vf sr, sg, sb;  // specular light (added)
 };
+
+// Fills lanes [count, 8) with copies of lane 0, so a partly filled batch
+// computes harmless values in its unused lanes.
+void pad_batch(SurfaceBatch& s, int count);
 
 LightingBatch light_surface_batch(const SurfaceBatch& s, const glm::vec3& eye,
                                   std::span<const ShadeLight> lights, Highlight highlight);
