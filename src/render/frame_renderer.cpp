@@ -10,6 +10,19 @@
 
 namespace facet {
 
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights) {
+    std::vector<ShadeLight> out;
+    for (const LightDesc& l : lights) {
+        ShadeLight s;
+        s.is_point = l.type == LightType::point;
+        s.direction = s.is_point ? glm::vec3(0) : -glm::normalize(l.direction);
+        s.position = l.position;
+        s.radiance = l.color * l.intensity;
+        out.push_back(s);
+    }
+    return out;
+}
+
 glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
                                           const CameraMatrices& camera) const {
     // Fit the bounding sphere of everything visible; for an orbiting camera

@@ -13,19 +13,6 @@ namespace {
 constexpr size_t kVerticesPerChunk = 16384;
 }
 
-std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights) {
-    std::vector<ShadeLight> out;
-    for (const LightDesc& l : lights) {
-        ShadeLight s;
-        s.is_point = l.type == LightType::point;
-        s.direction = s.is_point ? glm::vec3(0) : -glm::normalize(l.direction);
-        s.position = l.position;
-        s.radiance = l.color * l.intensity;
-        out.push_back(s);
-    }
-    return out;
-}
-
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
 // batch lighting as per-pixel shading.
 void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& eye,
