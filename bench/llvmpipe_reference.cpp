@@ -69,7 +69,7 @@ struct Gl {
     }
 };
 
-// Per-pixel Blinn-Phong, term for term what src/shade/lighting.cpp and
+// Per-pixel Blinn-Phong, term for term what src/shade/lighting_batch.cpp and
 // src/render/shade_stage.cpp compute: colour = albedo * (ambient + sum of
 // diffuse) + sum of specular; directional radiance = colour * intensity,
 // point radiance divided by distance squared; normals interpolated in world
