@@ -179,7 +179,7 @@ FacetResult bench_facet(const facet::SceneDesc& scene, const facet::World& world
     for (int frame : frames) {
         const double c0 = process_cpu_ms();
         auto t0 = Clock::now();
-        renderer.render(frame, images);
+        renderer.render(frame, 0, images);
         auto t1 = Clock::now();
         cpu.push_back(process_cpu_ms() - c0);
         std::vector<uint8_t> png = facet::encode_png_color(images.color, scene.output.png_compression);

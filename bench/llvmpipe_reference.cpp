@@ -243,7 +243,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     r.min_covered = SIZE_MAX;
     const float aspect = static_cast<float>(width) / static_cast<float>(height);
     auto draw_frame = [&](int frame) {
-        const facet::FrameState state = facet::evaluate_frame(scene, frame);
+        const facet::FrameState state = facet::evaluate_frame(scene, world.object_bounds, frame);
         // Same view as facet (make_camera), standard GL projection (depth -1..1).
         const facet::CameraMatrices cam = facet::make_camera(state.camera, aspect);
         const glm::mat4 projection = glm::perspective(glm::radians(state.camera.fov_degrees), aspect,
@@ -267,7 +267,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
         }
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         for (const facet::Draw& d : world.draws) {
-            const glm::mat4& model = state.object_transforms[d.object];
+            const glm::mat4& model = state.objects[d.object].transform;
             const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
             const facet::Material& m = world.materials[d.material];
             gl.UniformMatrix4fv(u_model, 1, GL_FALSE, glm::value_ptr(model));
@@ -320,7 +320,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     facet::ThreadPool pool(2);
     facet::FrameRenderer renderer(scene, world, pool);
     facet::FrameImages ours;
-    renderer.render(frames.front(), ours);
+    renderer.render(frames.front(), 0, ours);
     double diff_sum = 0;
     size_t mismatched = 0, both = 0;
     for (int y = 0; y < height; ++y)

@@ -29,7 +29,7 @@ void check_render(const RenderCase& c) {
     ThreadPool pool(2);
     FrameRenderer renderer(scene, world, pool);
     FrameImages images;
-    renderer.render(c.frame, images);
+    renderer.render(c.frame, 0, images);
 
     const fs::path out_dir = fs::path("render-test-output");
     fs::create_directories(out_dir);

@@ -133,7 +133,8 @@ TEST_CASE("glTF real small scenes", "[assets][gltf][real]") {
         check_sane(mesh);
         CHECK(mesh.triangle_count() == 8);
         require_bounds(mesh, {0, 0, 0}, {1, 2, 0});
-        CHECK(mesh.animations.size() == 1);
+        REQUIRE(mesh.rig != nullptr);
+        CHECK(mesh.rig->animations.size() == 1);
     }
     SECTION("cameras: rotated square, cameras ignored") {
         facet::Mesh mesh = facet::load_gltf(kGltfDir + "cameras/Cameras.gltf");
@@ -160,8 +161,9 @@ TEST_CASE("glTF real small scenes", "[assets][gltf][real]") {
             kGltfDir + "glTF-Sample-Models/AnimatedMorphCube-glTF/AnimatedMorphCube.gltf");
         check_sane(mesh);
         CHECK(mesh.triangle_count() == 12);
-        REQUIRE(mesh.animations.size() == 1);
-        CHECK(mesh.animations[0] == "Square");
+        REQUIRE(mesh.rig != nullptr);
+        REQUIRE(mesh.rig->animations.size() == 1);
+        CHECK(mesh.rig->animations[0].name == "Square");
     }
 }
 

@@ -38,9 +38,9 @@ Manifest make_manifest(const std::string& scene, std::vector<int> frames, const 
     m.height = height;
     m.threads = 2;
     for (int f : frames) {
-        m.frames.push_back({f, 10.0 + f, 1.0 + f});
-        m.files.push_back(
-            {f, "color", "png", "color." + std::to_string(f) + ".png", tag + std::to_string(f)});
+        m.frames.push_back({f, "main", 10.0 + f, 1.0 + f});
+        m.files.push_back({f, "main", "color", "png", "color." + std::to_string(f) + ".png",
+                           tag + std::to_string(f)});
     }
     return m;
 }
@@ -82,10 +82,10 @@ TEST_CASE("a manifest reads back as it was written", "[manifest]") {
     m.width = 320;
     m.height = 240;
     m.threads = 3;
-    m.frames = {{1, 12.5, 0.25}, {2, 0.1, 3.0}};
-    m.files = {{1, "color", "png", "color.0001.png", std::string(64, 'a')},
-               {1, "depth", "exr", "depth.0001.exr", std::string(64, 'b')},
-               {2, "color", "png", "color.0002.png", std::string(64, 'c')}};
+    m.frames = {{1, "main", 12.5, 0.25}, {2, "side", 0.1, 3.0}};
+    m.files = {{1, "main", "color", "png", "color.0001.png", std::string(64, 'a')},
+               {1, "main", "depth", "exr", "depth.0001.exr", std::string(64, 'b')},
+               {2, "side", "color", "png", "color.0002.png", std::string(64, 'c')}};
     facet::write_manifest(path, m);
 
     Manifest r = facet::read_manifest(path);
@@ -96,6 +96,8 @@ TEST_CASE("a manifest reads back as it was written", "[manifest]") {
     CHECK(r.threads == 3);
     REQUIRE(r.frames.size() == 2);
     CHECK(r.frames[0].frame == 1);
+    CHECK(r.frames[0].camera == "main");
+    CHECK(r.frames[1].camera == "side");
     CHECK(r.frames[0].render_ms == 12.5);
     CHECK(r.frames[0].encode_ms == 0.25);
     CHECK(r.frames[1].frame == 2);

@@ -240,8 +240,8 @@ TEST_CASE("the camera's far plane must be beyond its near plane", "[scene][error
         {"far equal to near", "camera:\n  near: 2\n  far: 2\n" + objects, "camera.far", "far: 2", 5,
          "greater than near"},
         // Without `far` the default (100) applies and the camera mapping is blamed.
-        {"near beyond the default far", "camera:\n  near: 200\n" + objects, "camera", "near", 0,
-         "near"},
+        {"near beyond the default far", "camera:\n  near: 200\n" + objects, "camera.near", "200", 0,
+         "must be greater than near (200)"},
         {"position equals target",
          "camera:\n  position: [1, 1, 1]\n  target: [1, 1, 1]\n" + objects, "camera", "position", 0,
          "same point"},

@@ -45,26 +45,26 @@ objects:
 TEST_CASE("overrides replace values from the scene file", "[scene][override]") {
     TempDir dir("override");
     std::string path = write_text(dir.file("s.yaml"), kOverrideScene);
-    REQUIRE(load(path).camera.fov == 45);
+    REQUIRE(load(path).cameras[0].fov.value == 45);
 
     SECTION("a number") {
-        CHECK(load(path, with_overrides({define("camera.fov", "30")})).camera.fov == 30);
+        CHECK(load(path, with_overrides({define("camera.fov", "30")})).cameras[0].fov.value == 30);
     }
     SECTION("a list item's nested value, given as a YAML list") {
         auto scene = load(path, with_overrides({define("objects.0.material.color", "[1,0,0]")}));
         REQUIRE(scene.objects[0].material.color.has_value());
-        CHECK(*scene.objects[0].material.color == glm::vec3(1, 0, 0));
+        CHECK(scene.objects[0].material.color->value == glm::vec3(1, 0, 0));
         CHECK_FALSE(scene.objects[1].material.color.has_value());
     }
     SECTION("a nested key that did not exist is created") {
         auto scene = load(path, with_overrides({define("objects.1.material.color", "[0,1,0]"),
                                                 define("camera.orbit.radius", "7")}));
         REQUIRE(scene.objects[1].material.color.has_value());
-        CHECK(*scene.objects[1].material.color == glm::vec3(0, 1, 0));
-        REQUIRE(scene.camera.orbit.has_value());
-        CHECK(scene.camera.orbit->radius == 7);
-        CHECK(scene.camera.orbit->elevation == 20);  // the rest keeps its defaults
-        CHECK(scene.camera.fov == 45);               // siblings are untouched
+        CHECK(scene.objects[1].material.color->value == glm::vec3(0, 1, 0));
+        REQUIRE(scene.cameras[0].orbit.has_value());
+        CHECK(scene.cameras[0].orbit->radius.value == 7);
+        CHECK(scene.cameras[0].orbit->elevation.value == 20);  // the rest keeps its defaults
+        CHECK(scene.cameras[0].fov.value == 45);               // siblings are untouched
     }
     SECTION("a whole section that the file does not have") {
         auto scene = load(path, with_overrides({define("output.size", "[40, 30]")}));
@@ -82,7 +82,7 @@ TEST_CASE("overrides replace values from the scene file", "[scene][override]") {
     SECTION("later overrides win over earlier ones") {
         auto scene =
             load(path, with_overrides({define("camera.fov", "30"), define("camera.fov", "60")}));
-        CHECK(scene.camera.fov == 60);
+        CHECK(scene.cameras[0].fov.value == 60);
     }
     SECTION("a style preset by name") {
         auto scene = load(path, with_overrides({define("style", "gouraud")}));
@@ -96,7 +96,7 @@ TEST_CASE("overrides replace values from the scene file", "[scene][override]") {
         CHECK(close_to(scene.output.background.b, 0));
         scene = load(path, with_overrides({define("objects.0.material.color", "#808080")}));
         REQUIRE(scene.objects[0].material.color.has_value());
-        CHECK(close_to(scene.objects[0].material.color->g, 0.2158605f));
+        CHECK(close_to(scene.objects[0].material.color->value.g, 0.2158605f));
     }
 }
 

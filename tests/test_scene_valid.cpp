@@ -42,15 +42,15 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     CHECK(scene.output.write_png);
     CHECK_FALSE(scene.output.write_exr);
     CHECK(scene.style.name == "default");
-    CHECK(scene.camera.fov == 45);
-    CHECK_FALSE(scene.camera.orbit.has_value());
+    CHECK(scene.cameras[0].fov.value == 45);
+    CHECK_FALSE(scene.cameras[0].orbit.has_value());
     CHECK(scene.lights.empty());
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0].name == "object0");
     REQUIRE(scene.objects[0].primitive.has_value());
     CHECK(scene.objects[0].primitive->type == "cube");
     CHECK(scene.objects[0].mesh.empty());
-    CHECK(scene.objects[0].scale == glm::vec3(1));
+    CHECK(scene.objects[0].scale.value == glm::vec3(1));
     CHECK(scene.objects[0].visible);
     CHECK_FALSE(scene.objects[0].spin.has_value());
 }
@@ -147,44 +147,44 @@ objects:
     CHECK(scene.style.shading == facet::ShadingModel::phong);
     CHECK(scene.style.description == "test look");
 
-    const auto& cam = scene.camera;
-    CHECK(cam.position == glm::vec3(1, 2, 3));
-    CHECK(cam.target == glm::vec3(0, 0.5f, 0));
-    CHECK(cam.up == glm::vec3(0, 0, 1));
-    CHECK(cam.fov == 60);
-    CHECK(cam.near == 0.5f);
-    CHECK(cam.far == 50);
+    const auto& cam = scene.cameras[0];
+    CHECK(cam.position.value == glm::vec3(1, 2, 3));
+    CHECK(cam.target.value == glm::vec3(0, 0.5f, 0));
+    CHECK(cam.up.value == glm::vec3(0, 0, 1));
+    CHECK(cam.fov.value == 60);
+    CHECK(cam.near->value == 0.5f);
+    CHECK(cam.far->value == 50);
     REQUIRE(cam.orbit.has_value());
-    CHECK(cam.orbit->center == glm::vec3(1, 0, -1));
-    CHECK(cam.orbit->radius == 7.5f);
-    CHECK(cam.orbit->elevation == 30);
-    CHECK(cam.orbit->start_angle == 90);
+    CHECK(cam.orbit->center.value == glm::vec3(1, 0, -1));
+    CHECK(cam.orbit->radius.value == 7.5f);
+    CHECK(cam.orbit->elevation.value == 30);
+    CHECK(cam.orbit->start_angle.value == 90);
     CHECK(cam.orbit->turns == -2);
 
     REQUIRE(scene.lights.size() == 2);
     CHECK(scene.lights[0].type == facet::LightType::directional);
-    CHECK(scene.lights[0].direction == glm::vec3(0, -1, -1));
-    CHECK(scene.lights[0].color == glm::vec3(1, 0.5f, 0.25f));
-    CHECK(scene.lights[0].intensity == 2);
+    CHECK(scene.lights[0].direction.value == glm::vec3(0, -1, -1));
+    CHECK(scene.lights[0].color.value == glm::vec3(1, 0.5f, 0.25f));
+    CHECK(scene.lights[0].intensity.value == 2);
     CHECK(scene.lights[1].type == facet::LightType::point);
-    CHECK(scene.lights[1].position == glm::vec3(3, 4, 5));
-    CHECK(scene.lights[1].intensity == 1);
-    CHECK(scene.lights[1].color == glm::vec3(1, 1, 1));
+    CHECK(scene.lights[1].position.value == glm::vec3(3, 4, 5));
+    CHECK(scene.lights[1].intensity.value == 1);
+    CHECK(scene.lights[1].color.value == glm::vec3(1, 1, 1));
 
     REQUIRE(scene.objects.size() == 3);
     const auto& box = scene.objects[0];
     CHECK(box.name == "box");
     REQUIRE(box.primitive.has_value());
     CHECK(box.primitive->type == "cube");
-    CHECK(box.translate == glm::vec3(1, 2, 3));
-    CHECK(box.rotate == glm::vec3(10, 20, 30));
-    CHECK(box.scale == glm::vec3(2, 2, 2));  // a number scales every axis
+    CHECK(box.translate.value == glm::vec3(1, 2, 3));
+    CHECK(box.rotate.value == glm::vec3(10, 20, 30));
+    CHECK(box.scale.value == glm::vec3(2, 2, 2));  // a number scales every axis
     REQUIRE(box.material.color.has_value());
-    CHECK(*box.material.color == glm::vec3(0.8f, 0.1f, 0.1f));
-    CHECK(box.material.ambient == 0.2f);
-    CHECK(box.material.diffuse == 0.7f);
-    CHECK(box.material.specular == 0.5f);
-    CHECK(box.material.shininess == 64.0f);
+    CHECK(box.material.color->value == glm::vec3(0.8f, 0.1f, 0.1f));
+    CHECK(box.material.ambient->value == 0.2f);
+    CHECK(box.material.diffuse->value == 0.7f);
+    CHECK(box.material.specular->value == 0.5f);
+    CHECK(box.material.shininess->value == 64.0f);
     REQUIRE(box.material.texture.has_value());
     CHECK(std::filesystem::equivalent(*box.material.texture, dir.file("textures/wood.png")));
     CHECK(box.material.wrap == facet::TextureWrap::clamp);
@@ -200,7 +200,7 @@ objects:
     CHECK(ball.primitive->radius == 0.75f);
     CHECK(ball.primitive->segments == 24);
     CHECK(ball.primitive->rings == 12);
-    CHECK(ball.scale == glm::vec3(1, 2, 3));  // a list scales per axis
+    CHECK(ball.scale.value == glm::vec3(1, 2, 3));  // a list scales per axis
     CHECK_FALSE(ball.visible);
     CHECK_FALSE(ball.material.color.has_value());  // unset values stay unset
     CHECK_FALSE(ball.spin.has_value());
@@ -258,7 +258,7 @@ TEST_CASE("colours: lists are linear and hex strings are sRGB converted to linea
                        "objects:\n  - primitive: cube\n    material:\n      color: '#ff0000'\n");
         auto color = load(path).objects[0].material.color;
         REQUIRE(color.has_value());
-        CHECK(*color == glm::vec3(1, 0, 0));
+        CHECK(color->value == glm::vec3(1, 0, 0));
     }
 }
 

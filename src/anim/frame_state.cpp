@@ -1,24 +1,181 @@
 #include "anim/frame_state.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
 #include <glm/trigonometric.hpp>
 
-namespace facet {
+#include "anim/camera_path.hpp"
+#include "anim/track.hpp"
 
-glm::mat4 object_matrix(const glm::vec3& translate, const glm::vec3& rotate_degrees,
-                        const glm::vec3& scale) {
-    glm::mat4 m = glm::translate(glm::mat4(1.0f), translate);
-    // "X then Y then Z" applied to the object: the matrix is Rz * Ry * Rx.
-    m = glm::rotate(m, glm::radians(rotate_degrees.z), glm::vec3(0, 0, 1));
-    m = glm::rotate(m, glm::radians(rotate_degrees.y), glm::vec3(0, 1, 0));
-    m = glm::rotate(m, glm::radians(rotate_degrees.x), glm::vec3(1, 0, 0));
-    return glm::scale(m, scale);
+namespace facet {
+namespace {
+
+// Framing fits near/far around the scene; near never goes below this
+// fraction of far (reversed-Z float depth keeps precision well past it).
+constexpr double kMinNearOverFar = 1e-4;
+
+size_t object_index(const SceneDesc& scene, const std::string& name) {
+    for (size_t i = 0; i < scene.objects.size(); ++i)
+        if (scene.objects[i].name == name) return i;
+    return 0;  // names were checked when the scene was read
 }
 
-FrameState evaluate_frame(const SceneDesc& scene, int frame) {
+MaterialState evaluate_material(const MaterialDesc& m, const FrameTime& at) {
+    MaterialState s;
+    if (m.color && m.color->animated()) s.color = evaluate(*m.color, at);
+    auto number = [&](const std::optional<Animated<float>>& v, std::optional<float>& out) {
+        if (v && v->animated()) out = evaluate(*v, at);
+    };
+    number(m.ambient, s.ambient);
+    number(m.diffuse, s.diffuse);
+    number(m.specular, s.specular);
+    number(m.shininess, s.shininess);
+    return s;
+}
+
+glm::mat4 evaluate_transform(const ObjectDesc& obj, const FrameTime& at, double progress) {
+    const glm::vec3 translate = evaluate(obj.translate, at);
+    const glm::dquat rotation = evaluate_rotation(obj.rotate, at);
+    const glm::vec3 scale = evaluate(obj.scale, at);
+    if (!obj.spin) return object_matrix(translate, rotation, scale);
+    // Spin about the object's own origin, after its own rotation.
+    const double degrees = 360.0 * obj.spin->turns * progress;
+    const glm::dquat spin =
+        glm::angleAxis(glm::radians(degrees), glm::normalize(glm::dvec3(obj.spin->axis)));
+    return object_matrix(translate, spin * rotation, scale);
+}
+
+double animation_time(const AnimationChoiceDesc& choice, const FrameTime& at) {
+    return choice.offset + choice.speed * at.seconds;
+}
+
+// The objects a framing camera fits, as spheres (steady as objects turn) or
+// world-space box corners (tight).
+struct FramedBounds {
+    Sphere sphere;
+    std::vector<glm::dvec3> corners;
+};
+
+FramedBounds framed_bounds(const SceneDesc& scene, std::span<const Bounds> bounds,
+                           const std::vector<ObjectState>& objects,
+                           const std::vector<std::string>& names) {
+    std::vector<Sphere> spheres;
+    FramedBounds out;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const bool chosen = names.empty() ? scene.objects[i].visible
+                                          : std::find(names.begin(), names.end(),
+                                                      scene.objects[i].name) != names.end();
+        if (!chosen || i >= bounds.size() || bounds[i].empty()) continue;
+        spheres.push_back(transformed_box_sphere(bounds[i], objects[i].transform));
+        const glm::dmat4 m(objects[i].transform);
+        for (int c = 0; c < 8; ++c) {
+            glm::dvec3 p((c & 1) ? bounds[i].max.x : bounds[i].min.x,
+                         (c & 2) ? bounds[i].max.y : bounds[i].min.y,
+                         (c & 4) ? bounds[i].max.z : bounds[i].min.z);
+            out.corners.emplace_back(m * glm::dvec4(p, 1.0));
+        }
+    }
+    out.sphere = enclosing_sphere(spheres);
+    return out;
+}
+
+// Near and far planes that contain every visible object, for framing cameras.
+glm::vec2 fitted_clip_range(const SceneDesc& scene, std::span<const Bounds> bounds,
+                            const std::vector<ObjectState>& objects, const glm::dvec3& eye,
+                            const glm::dvec3& forward) {
+    const Sphere all = framed_bounds(scene, bounds, objects, {}).sphere;
+    const double ahead = glm::dot(all.center - eye, forward);
+    // A little slack, so surfaces exactly on the sphere are not clipped.
+    const double far = std::max(ahead + all.radius * 1.01, 1e-3);
+    const double near = std::max(ahead - all.radius * 1.01, far * kMinNearOverFar);
+    return {static_cast<float>(near), static_cast<float>(far)};
+}
+
+CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
+                            std::span<const Bounds> bounds, const std::vector<ObjectState>& objects,
+                            const FrameTime& at, double progress, double path_fraction) {
+    CameraState state;
+    state.position = evaluate(cam.position, at);
+    state.target = evaluate(cam.target, at);
+    state.up = evaluate(cam.up, at);
+    state.fov_degrees = evaluate(cam.fov, at);
+    state.near = cam.near ? evaluate(*cam.near, at) : kDefaultCameraNear;
+    state.far = cam.far ? evaluate(*cam.far, at) : kDefaultCameraFar;
+    if (!cam.target_object.empty()) {
+        const size_t i = object_index(scene, cam.target_object);
+        const Bounds& b = bounds[i];
+        const glm::vec3 centre = b.empty() ? glm::vec3(0) : (b.min + b.max) * 0.5f;
+        state.target = glm::vec3(objects[i].transform * glm::vec4(centre, 1.0f));
+    }
+    if (cam.path) {
+        SplinePath path(cam.path->points, cam.path->closed);
+        const double fraction = cam.path->at ? evaluate(*cam.path->at, at) : path_fraction;
+        state.position = glm::vec3(path.at_fraction(fraction));
+    }
+
+    // Where the camera sits as seen from its target: an orbit's direction, or
+    // the direction from the target to the given position.
+    glm::dvec3 centre(state.target);
+    glm::dvec3 toward_camera = glm::dvec3(state.position) - centre;
+    double distance = glm::length(toward_camera);
+    if (cam.orbit) {
+        const OrbitDesc& o = *cam.orbit;
+        const double sign = o.clockwise ? -1.0 : 1.0;
+        const double angle =
+            glm::radians(evaluate(o.start_angle, at) + sign * 360.0 * o.turns * progress);
+        const double elevation = glm::radians(static_cast<double>(evaluate(o.elevation, at)));
+        toward_camera = {std::cos(elevation) * std::sin(angle), std::sin(elevation),
+                         std::cos(elevation) * std::cos(angle)};
+        centre = glm::dvec3(evaluate(o.center, at));
+        distance = evaluate(o.radius, at);
+    }
+    if (cam.frame) {
+        const FramedBounds framed = framed_bounds(scene, bounds, objects, cam.frame->objects);
+        const double grow = 1.0 + cam.frame->margin;
+        const ViewAngles view = view_angles(
+            state.fov_degrees, static_cast<double>(scene.output.width) / scene.output.height);
+        centre = framed.sphere.center;
+        if (glm::length(toward_camera) < 1e-12) toward_camera = {0, 0, 1};
+        if (cam.frame->fit_box) {
+            std::vector<glm::dvec3> grown;
+            for (const glm::dvec3& c : framed.corners)
+                grown.push_back(centre + (c - centre) * grow);
+            distance =
+                corners_fit_distance(grown, centre, toward_camera, glm::dvec3(state.up), view);
+        } else {
+            distance = sphere_fit_distance({centre, framed.sphere.radius * grow}, view);
+        }
+    }
+    if (cam.orbit || cam.frame) {
+        const glm::dvec3 eye = centre + glm::normalize(toward_camera) * distance;
+        state.position = glm::vec3(eye);
+        state.target = glm::vec3(centre);
+        if (cam.frame && !cam.near && !cam.far) {
+            const glm::vec2 range =
+                fitted_clip_range(scene, bounds, objects, eye, -glm::normalize(toward_camera));
+            state.near = range.x;
+            state.far = range.y;
+        }
+    }
+    state.far = std::max(state.far, state.near * 1.001f);
+    return state;
+}
+
+}  // namespace
+
+glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
+                        const glm::vec3& scale) {
+    glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(translate));
+    m = m * glm::mat4_cast(rotation);
+    return glm::mat4(glm::scale(m, glm::dvec3(scale)));
+}
+
+FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
+                          size_t camera) {
     FrameState state;
     state.frame = frame;
     const auto& frames = scene.output.frames;
@@ -28,33 +185,28 @@ FrameState evaluate_frame(const SceneDesc& scene, int frame) {
     // equal frame first again: turntables loop without a repeated frame.
     state.progress = static_cast<double>(frame - first) / static_cast<double>(last - first + 1);
     state.time = static_cast<double>(frame - first) / scene.output.fps;
+    const FrameTime at{static_cast<double>(frame), state.time};
 
-    const CameraDesc& cam = scene.camera;
-    state.camera = {cam.position, cam.target, cam.up, cam.fov, cam.near, cam.far};
-    if (cam.orbit) {
-        const OrbitDesc& o = *cam.orbit;
-        double angle = glm::radians(o.start_angle + 360.0 * o.turns * state.progress);
-        double elevation = glm::radians(static_cast<double>(o.elevation));
-        glm::dvec3 offset(std::cos(elevation) * std::sin(angle), std::sin(elevation),
-                          std::cos(elevation) * std::cos(angle));
-        state.camera.position = o.center + glm::vec3(offset * static_cast<double>(o.radius));
-        state.camera.target = o.center;
-    }
-
-    state.object_transforms.reserve(scene.objects.size());
+    state.objects.reserve(scene.objects.size());
     for (const ObjectDesc& obj : scene.objects) {
-        glm::mat4 m = object_matrix(obj.translate, obj.rotate, obj.scale);
-        if (obj.spin) {
-            // Spin about the object's own origin, after its static rotation.
-            double degrees = 360.0 * obj.spin->turns * state.progress;
-            glm::mat4 spin = glm::rotate(glm::mat4(1.0f), static_cast<float>(glm::radians(degrees)),
-                                         glm::normalize(obj.spin->axis));
-            m = glm::translate(glm::mat4(1.0f), obj.translate) * spin *
-                object_matrix(glm::vec3(0), obj.rotate, obj.scale);
-        }
-        state.object_transforms.push_back(m);
+        ObjectState o;
+        o.transform = evaluate_transform(obj, at, state.progress);
+        o.material = evaluate_material(obj.material, at);
+        if (obj.animation) o.animation_seconds = animation_time(*obj.animation, at);
+        state.objects.push_back(o);
     }
-    state.lights = scene.lights;
+    for (const LightDesc& l : scene.lights)
+        state.lights.push_back({l.type, evaluate(l.direction, at), evaluate(l.position, at),
+                                evaluate(l.color, at), evaluate(l.intensity, at)});
+
+    // An open path runs from its first point at the first frame to its last
+    // point at the last frame; a closed one loops like an orbit.
+    const CameraDesc& cam = scene.cameras.at(camera);
+    const double open_fraction =
+        last > first ? static_cast<double>(frame - first) / (last - first) : 0.0;
+    const double path_fraction = cam.path && cam.path->closed ? state.progress : open_fraction;
+    state.camera = evaluate_camera(scene, cam, object_bounds, state.objects, at, state.progress,
+                                   path_fraction);
     return state;
 }
 

@@ -1,11 +1,16 @@
 #pragma once
-// The scene evaluated at one frame: a pure function of the scene records and
-// the frame number, so any subset of frames renders the same as a full run.
+// The scene evaluated at one frame: a pure function of the scene records, the
+// objects' model-space bounds and the frame number, so any subset of frames
+// renders the same as a full run.
+#include <optional>
+#include <span>
 #include <vector>
 
+#include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "assets/mesh.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
@@ -19,19 +24,43 @@ struct CameraState {
     float far;
 };
 
+// Material values the scene animates; unset ones keep the built material.
+struct MaterialState {
+    std::optional<glm::vec3> color;
+    std::optional<float> ambient, diffuse, specular, shininess;
+    bool any() const { return color || ambient || diffuse || specular || shininess; }
+};
+
+struct ObjectState {
+    glm::mat4 transform{1.0f};  // model -> world
+    MaterialState material;
+    double animation_seconds = 0;  // time in the object's glTF animation, if it plays one
+};
+
+struct LightState {
+    LightType type = LightType::directional;
+    glm::vec3 direction{0, -1, 0};
+    glm::vec3 position{0};
+    glm::vec3 color{1};
+    float intensity = 1;
+};
+
 struct FrameState {
     int frame = 0;
     double time = 0;      // seconds since the first frame of the scene's range
     double progress = 0;  // 0 at the first frame; 1 one frame past the last (loops close)
     CameraState camera;
-    std::vector<glm::mat4> object_transforms;  // model -> world, one per scene object
-    std::vector<LightDesc> lights;
+    std::vector<ObjectState> objects;  // one per scene object
+    std::vector<LightState> lights;
 };
 
-FrameState evaluate_frame(const SceneDesc& scene, int frame);
+// `object_bounds` are model-space bounds per scene object (for framing and
+// following objects); `camera` indexes scene.cameras.
+FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
+                          size_t camera = 0);
 
-// Model matrix from translate, Euler rotate (X then Y then Z, degrees) and scale.
-glm::mat4 object_matrix(const glm::vec3& translate, const glm::vec3& rotate_degrees,
+// Model matrix from translate, a rotation and scale.
+glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
                         const glm::vec3& scale);
 
 }  // namespace facet

@@ -1,6 +1,8 @@
 // glTF 2.0 (.gltf and .glb) through tinygltf. The node hierarchy of the
 // default scene is flattened: every mesh instance becomes parts with its
 // world transform baked in. Follows the glTF 2.0 specification §3.6-3.9.
+// A file with animations, skins or morph targets also keeps what poses it
+// (Mesh::rig, read by gltf_rig_loader.cpp); the baked parts stay the rest pose.
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -17,173 +19,23 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "assets/gltf_accessors.hpp"
+#include "assets/gltf_rig_loader.hpp"
 #include "assets/mesh.hpp"
 #include "core/error.hpp"
 
 namespace facet {
 namespace {
 
+using gltf_detail::bad;
+using gltf_detail::read_floats;
+using gltf_detail::read_indices;
+
 // Deep hierarchies beyond this are almost certainly cycles or hostile files.
 constexpr int kMaxNodeDepth = 256;
 
 constexpr int kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 constexpr int kWrapClamp = 33071;
-
-[[noreturn]] void bad(const std::string& path, const std::string& what) {
-    throw Error(ExitCode::invalid_input, path + ": " + what);
-}
-
-double read_component(const uint8_t* p, int type, bool normalized) {
-    switch (type) {
-        case TINYGLTF_COMPONENT_TYPE_FLOAT: {
-            float f;
-            std::memcpy(&f, p, 4);
-            return f;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: {
-            uint8_t v = *p;
-            return normalized ? v / 255.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_BYTE: {
-            int8_t v;
-            std::memcpy(&v, p, 1);
-            return normalized ? std::max(v / 127.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
-            uint16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? v / 65535.0 : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_SHORT: {
-            int16_t v;
-            std::memcpy(&v, p, 2);
-            return normalized ? std::max(v / 32767.0, -1.0) : v;
-        }
-        case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
-            uint32_t v;
-            std::memcpy(&v, p, 4);
-            return v;
-        }
-        default:
-            return 0;
-    }
-}
-
-// The bytes of a buffer view region, bounds-checked.
-const uint8_t* view_bytes(const tinygltf::Model& model, int view_index, size_t offset,
-                          size_t stride, size_t count, size_t element_size, const std::string& path,
-                          const std::string& what) {
-    if (view_index < 0 || static_cast<size_t>(view_index) >= model.bufferViews.size())
-        bad(path, what + " refers to missing bufferView " + std::to_string(view_index));
-    const auto& view = model.bufferViews[view_index];
-    if (view.buffer < 0 || static_cast<size_t>(view.buffer) >= model.buffers.size())
-        bad(path, what + ": bufferView refers to missing buffer " + std::to_string(view.buffer));
-    const auto& buffer = model.buffers[view.buffer];
-    // Each comparison is arranged so that no sum or product can wrap around:
-    // the counts and offsets come straight from the file.
-    if (view.byteOffset > buffer.data.size() ||
-        view.byteLength > buffer.data.size() - view.byteOffset)
-        bad(path,
-            what + ": bufferView runs past the end of its buffer (is the .bin missing or short?)");
-    if (count > 0 &&
-        (offset > view.byteLength || element_size > view.byteLength - offset ||
-         count - 1 > (view.byteLength - offset - element_size) / std::max<size_t>(stride, 1)))
-        bad(path, what + ": data runs past the end of its bufferView");
-    return buffer.data.data() + view.byteOffset + offset;
-}
-
-// An accessor without a bufferView is zeros (plus sparse values); nothing in
-// the file bounds its count, so a hostile count would allocate without limit.
-constexpr size_t kMaxDatalessCount = size_t(1) << 24;
-
-// The accessor's data, checked against its bufferView before anything is
-// allocated from its count; nullptr when it has no bufferView.
-const uint8_t* accessor_bytes(const tinygltf::Model& model, const tinygltf::Accessor& acc,
-                              size_t element, size_t& stride, const std::string& path,
-                              const std::string& what) {
-    stride = element;
-    if (acc.bufferView < 0) {
-        if (acc.count > kMaxDatalessCount)
-            bad(path,
-                what + ": accessor without data claims " + std::to_string(acc.count) + " elements");
-        return nullptr;
-    }
-    if (static_cast<size_t>(acc.bufferView) >= model.bufferViews.size())
-        bad(path, what + " refers to missing bufferView " + std::to_string(acc.bufferView));
-    const auto& view = model.bufferViews[acc.bufferView];
-    if (view.byteStride) stride = view.byteStride;
-    return view_bytes(model, acc.bufferView, acc.byteOffset, stride, acc.count, element, path,
-                      what);
-}
-
-// Reads an accessor as floats, `components` per element, applying sparse substitution.
-std::vector<float> read_floats(const tinygltf::Model& model, int index, int components,
-                               const std::string& path, const std::string& what) {
-    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
-        bad(path, what + " refers to missing accessor " + std::to_string(index));
-    const auto& acc = model.accessors[index];
-    int have = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(acc.type));
-    if (have != components)
-        bad(path, what + " has " + std::to_string(have) + " components per element, expected " +
-                      std::to_string(components));
-    int comp_size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
-    if (comp_size <= 0) bad(path, what + " has an unknown component type");
-    size_t element = static_cast<size_t>(comp_size) * components;
-    size_t stride = element;
-    const uint8_t* base = accessor_bytes(model, acc, element, stride, path, what);
-    std::vector<float> out(acc.count * components, 0.0f);
-    if (base) {
-        for (size_t i = 0; i < acc.count; ++i)
-            for (int c = 0; c < components; ++c)
-                out[i * components + c] = static_cast<float>(read_component(
-                    base + i * stride + c * comp_size, acc.componentType, acc.normalized));
-    }
-    if (acc.sparse.isSparse) {
-        const auto& sp = acc.sparse;
-        int index_size =
-            tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(sp.indices.componentType));
-        if (index_size <= 0) bad(path, what + ": sparse indices have an unknown type");
-        const uint8_t* idx =
-            view_bytes(model, sp.indices.bufferView, sp.indices.byteOffset, index_size, sp.count,
-                       index_size, path, what + " (sparse indices)");
-        const uint8_t* val = view_bytes(model, sp.values.bufferView, sp.values.byteOffset, element,
-                                        sp.count, element, path, what + " (sparse values)");
-        for (int i = 0; i < sp.count; ++i) {
-            auto target = static_cast<size_t>(
-                read_component(idx + i * index_size, sp.indices.componentType, false));
-            if (target >= acc.count) bad(path, what + ": sparse index out of range");
-            for (int c = 0; c < components; ++c)
-                out[target * components + c] = static_cast<float>(read_component(
-                    val + i * element + c * comp_size, acc.componentType, acc.normalized));
-        }
-    }
-    for (float f : out)
-        if (!std::isfinite(f)) bad(path, what + " contains a value that is not finite");
-    return out;
-}
-
-std::vector<uint32_t> read_indices(const tinygltf::Model& model, int index,
-                                   const std::string& path) {
-    if (index < 0 || static_cast<size_t>(index) >= model.accessors.size())
-        bad(path, "primitive indices refer to missing accessor " + std::to_string(index));
-    const auto& acc = model.accessors[index];
-    if (acc.type != TINYGLTF_TYPE_SCALAR) bad(path, "index accessor is not SCALAR");
-    int size = tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
-    if (acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE &&
-        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT &&
-        acc.componentType != TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT)
-        bad(path, "index accessor must be unsigned byte, short or int");
-    const size_t element = static_cast<size_t>(size);
-    size_t stride = element;
-    const uint8_t* base = accessor_bytes(model, acc, element, stride, path, "indices");
-    std::vector<uint32_t> out(acc.count, 0);
-    if (base) {
-        for (size_t i = 0; i < acc.count; ++i)
-            out[i] =
-                static_cast<uint32_t>(read_component(base + i * stride, acc.componentType, false));
-    }
-    return out;
-}
 
 glm::mat4 node_matrix(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) {
@@ -255,9 +107,13 @@ Mesh load_gltf(const std::string& path) {
     Mesh mesh;
     mesh.source = path;
     if (!warn.empty()) mesh.warnings.push_back(trim(warn));
-    for (size_t i = 0; i < model.animations.size(); ++i)
-        mesh.animations.push_back(model.animations[i].name.empty() ? "animation" + std::to_string(i)
-                                                                   : model.animations[i].name);
+    // The rest pose below is baked as always; a file that can move also
+    // keeps what moves it (gltf_rig_loader.cpp).
+    std::shared_ptr<MeshRig> rig;
+    if (gltf_detail::has_rig_data(model)) {
+        rig = std::make_shared<MeshRig>();
+        gltf_detail::read_rig_nodes_and_animations(model, path, *rig, mesh.warnings);
+    }
 
     // Materials, with textures decoded once each.
     std::map<int, std::shared_ptr<const Texture>> textures;
@@ -310,7 +166,7 @@ Mesh load_gltf(const std::string& path) {
     fallback.color = glm::vec3(1);
     mesh.materials.push_back(fallback);
 
-    auto add_mesh = [&](int mesh_index, const glm::mat4& world) {
+    auto add_mesh = [&](int mesh_index, const glm::mat4& world, int node_index) {
         if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= model.meshes.size())
             bad(path, "node refers to missing mesh " + std::to_string(mesh_index));
         glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(world));
@@ -335,6 +191,14 @@ Mesh load_gltf(const std::string& path) {
             for (size_t i = 0; i < count; ++i)
                 part.positions.push_back(
                     glm::vec3(world * glm::vec4(pos[3 * i], pos[3 * i + 1], pos[3 * i + 2], 1)));
+            RigPart rig_part;  // the same vertices before the node transform
+            if (rig) {
+                rig_part.node = node_index;
+                rig_part.skin = model.nodes[node_index].skin;
+                rig_part.rest_mirrored = mirrored;
+                for (size_t i = 0; i < count; ++i)
+                    rig_part.positions.push_back({pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]});
+            }
             bool has_normals = false;
             std::vector<uint32_t> unusable_normals;  // zero length, or a singular node matrix
             if (auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end()) {
@@ -342,15 +206,25 @@ Mesh load_gltf(const std::string& path) {
                 if (nrm.size() / 3 != count)
                     bad(path, what + ": NORMAL count differs from POSITION count");
                 for (size_t i = 0; i < count; ++i) {
-                    glm::vec3 n =
-                        normal_matrix * glm::vec3(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                    const glm::vec3 file_normal(nrm[3 * i], nrm[3 * i + 1], nrm[3 * i + 2]);
+                    glm::vec3 n = normal_matrix * file_normal;
                     float len = glm::length(n);
                     bool usable = len > 0 && std::isfinite(len);
                     part.normals.push_back(usable ? n / len : glm::vec3(0));
                     if (!usable) unusable_normals.push_back(static_cast<uint32_t>(i));
+                    if (rig) {
+                        // Posing derives a zero normal from the faces, as
+                        // the bake below does.
+                        float file_len = glm::length(file_normal);
+                        rig_part.normals.push_back(file_len > 0 ? file_normal / file_len
+                                                                : glm::vec3(0));
+                        if (file_len == 0)
+                            rig_part.normals_from_faces.push_back(static_cast<uint32_t>(i));
+                    }
                 }
                 has_normals = true;
             }
+            if (rig) gltf_detail::read_part_skin_and_morph(model, prim, *rig, path, what, rig_part);
             part.material = default_material;
             int uv_set = 0;
             if (prim.material >= 0) {
@@ -385,7 +259,19 @@ Mesh load_gltf(const std::string& path) {
                     std::swap(part.indices[t + 1], part.indices[t + 2]);
             if (part.indices.empty()) continue;
             // glTF §3.7.2.1: without normals, flat normals are used.
-            if (!has_normals) compute_normals(part, 0.0f);
+            if (!has_normals) {
+                std::vector<uint32_t> source_vertex;
+                compute_normals(part, 0.0f, &source_vertex);
+                if (rig) {
+                    // The split vertices get their skin and morph data from
+                    // the vertex they were copied from; posing recomputes
+                    // their normals from the posed faces.
+                    gltf_detail::reorder_part_vertices(rig_part, source_vertex);
+                    rig_part.normals.assign(source_vertex.size(), glm::vec3(0));
+                    for (size_t i = 0; i < source_vertex.size(); ++i)
+                        rig_part.normals_from_faces.push_back(static_cast<uint32_t>(i));
+                }
+            }
             if (!unusable_normals.empty()) {
                 // Zero normals (BoxBadNormals) would shade as if facing an
                 // arbitrary way; the faces around the vertex know better.
@@ -407,6 +293,7 @@ Mesh load_gltf(const std::string& path) {
             }
             validate_part(part, path);
             mesh.parts.push_back(std::move(part));
+            if (rig) rig->parts.push_back(std::move(rig_part));
         }
     };
 
@@ -422,7 +309,7 @@ Mesh load_gltf(const std::string& path) {
             on_path.insert(node_index);
             const auto& node = model.nodes[node_index];
             glm::mat4 world = parent * node_matrix(node);
-            if (node.mesh >= 0) add_mesh(node.mesh, world);
+            if (node.mesh >= 0) add_mesh(node.mesh, world, node_index);
             for (int child : node.children) visit(child, world, depth + 1, on_path);
             on_path.erase(node_index);
         };
@@ -454,6 +341,7 @@ Mesh load_gltf(const std::string& path) {
     std::set<int> on_path;
     for (int root : roots) visit(root, glm::mat4(1.0f), 0, on_path);
     if (mesh.triangle_count() == 0) bad(path, "the glTF file has no triangles to render");
+    mesh.rig = std::move(rig);
     return mesh;
 }
 

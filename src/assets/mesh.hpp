@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "assets/mesh_rig.hpp"
 #include "assets/texture.hpp"
 
 namespace facet {
@@ -47,8 +48,11 @@ struct Mesh {
     std::string source;  // file it came from, or the primitive's description
     std::vector<MeshPart> parts;
     std::vector<Material> materials;
-    std::vector<std::string> animations;  // names of animations stored in the file
-    std::vector<std::string> warnings;    // non-fatal problems found while loading
+    std::vector<std::string> warnings;  // non-fatal problems found while loading
+    // glTF nodes, skins, morph targets and animations, for posing the parts
+    // (anim/gltf_pose.hpp); null when the file has none of them. The parts
+    // above are always the static rest pose.
+    std::shared_ptr<const MeshRig> rig;
 
     size_t triangle_count() const;
     size_t vertex_count() const;
@@ -63,8 +67,11 @@ Mesh load_gltf(const std::string& path);
 
 // Normals for a part from its triangles: per-vertex, area weighted, only
 // across faces within `crease_degrees` of each other (so cubes stay sharp).
-// Vertices are split where faces meeting at one position disagree.
-void compute_normals(MeshPart& part, float crease_degrees);
+// Vertices are split where faces meeting at one position disagree. When
+// `source_vertex` is given, it receives for each new vertex the index of the
+// old vertex it was copied from.
+void compute_normals(MeshPart& part, float crease_degrees,
+                     std::vector<uint32_t>* source_vertex = nullptr);
 
 // Checks indices against vertex counts and drops degenerate index triples;
 // throws if an index is out of range.

@@ -70,7 +70,7 @@ struct CornerHash {
 
 }  // namespace
 
-void compute_normals(MeshPart& part, float crease_degrees) {
+void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>* source_vertex) {
     const size_t triangles = part.indices.size() / 3;
     // Weld by exact position so faces that share a corner in space, but not
     // an index (because their UVs differ), still smooth across each other.
@@ -103,6 +103,7 @@ void compute_normals(MeshPart& part, float crease_degrees) {
     out.material = part.material;
     std::unordered_map<CornerKey, uint32_t, CornerHash> corners;
     out.indices.reserve(part.indices.size());
+    if (source_vertex) source_vertex->clear();
     for (size_t t = 0; t < triangles; ++t) {
         for (int k = 0; k < 3; ++k) {
             uint32_t v = part.indices[3 * t + k];
@@ -122,6 +123,7 @@ void compute_normals(MeshPart& part, float crease_degrees) {
                 out.positions.push_back(part.positions[v]);
                 out.normals.push_back(n);
                 if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
+                if (source_vertex) source_vertex->push_back(v);
             }
             out.indices.push_back(it->second);
         }

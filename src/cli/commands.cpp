@@ -41,6 +41,7 @@ struct RenderArgs {
     std::string out = "out";
     unsigned threads = 0;
     std::string style;
+    std::string cameras;  // comma-separated names, or "all"
     std::vector<std::string> defines;
     bool quiet = false;
 };
@@ -80,6 +81,18 @@ SceneOptions scene_options(const RenderArgs& args) {
     return options;
 }
 
+std::vector<std::string> split_list(const std::string& text) {
+    std::vector<std::string> items;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t comma = text.find(',', start);
+        if (comma == std::string::npos) comma = text.size();
+        if (comma > start) items.push_back(text.substr(start, comma - start));
+        start = comma + 1;
+    }
+    return items;
+}
+
 std::vector<int> selected_frames(const RenderArgs& args) {
     if (args.frames.empty()) return {};
     try {
@@ -89,7 +102,8 @@ std::vector<int> selected_frames(const RenderArgs& args) {
     }
 }
 
-void print_warnings(const World& world) {
+void print_warnings(const SceneDesc& scene, const World& world) {
+    for (const auto& w : scene.warnings) std::fprintf(stderr, "facet: warning: %s\n", w.c_str());
     for (const auto& w : world.warnings) std::fprintf(stderr, "facet: warning: %s\n", w.c_str());
 }
 
@@ -104,10 +118,12 @@ int render_command(const RenderArgs& args) {
     sigaction(SIGTERM, &action, nullptr);
     SceneDesc scene = load_scene(args.scene, scene_options(args));
     std::vector<int> frames = selected_frames(args);
-    World world = build_world(scene);
-    if (!args.quiet) print_warnings(world);
     RenderOptions options;
     options.frames = frames;
+    options.cameras = split_list(args.cameras);
+    check_outputs(scene, options);  // before the slow part: loading meshes
+    World world = build_world(scene);
+    if (!args.quiet) print_warnings(scene, world);
     options.threads = args.threads;
     options.out_dir = args.out;
     options.cancel = &g_interrupted;
@@ -123,10 +139,13 @@ int render_command(const RenderArgs& args) {
 
 int validate_command(const RenderArgs& args) {
     SceneDesc scene = load_scene(args.scene, scene_options(args));
-    selected_frames(args);
+    RenderOptions options;
+    options.frames = selected_frames(args);
+    options.cameras = split_list(args.cameras);
+    check_outputs(scene, options);
     World world = build_world(scene);
     if (!args.quiet) {
-        print_warnings(world);
+        print_warnings(scene, world);
         std::printf(
             "%s: ok: %zu objects, %zu triangles, %zu lights, style '%s' (%s), %dx%d, frames %s "
             "(%zu)\n",
@@ -156,8 +175,22 @@ int info_command(const std::string& path) {
         std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n",
                     m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
                     m.texture ? ", textured" : "", m.double_sided ? ", double-sided" : "");
-    std::printf("animations: %zu\n", mesh.animations.size());
-    for (const auto& a : mesh.animations) std::printf("  - %s\n", a.c_str());
+    const MeshRig* rig = mesh.rig.get();
+    std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
+    if (rig)
+        for (const auto& a : rig->animations)
+            std::printf("  - %s: %g s, %zu channels\n", a.name.c_str(), a.duration,
+                        a.channels.size());
+    size_t morphed_parts = 0, most_targets = 0;
+    if (rig)
+        for (const auto& part : rig->parts)
+            if (!part.morph_targets.empty()) {
+                ++morphed_parts;
+                most_targets = std::max(most_targets, part.morph_targets.size());
+            }
+    std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
+    std::printf("morphs:     %zu parts with morph targets (up to %zu each)\n", morphed_parts,
+                most_targets);
     for (const auto& w : mesh.warnings) std::printf("warning: %s\n", w.c_str());
     return 0;
 }
@@ -175,6 +208,8 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
         ->take_all()
         ->allow_extra_args(false);
     cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
+    cmd->add_option("--camera", args.cameras,
+                    "Camera(s) to render by name, comma-separated, or 'all'");
     cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
 }
 

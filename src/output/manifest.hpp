@@ -8,12 +8,14 @@ namespace facet {
 
 struct ManifestFrame {
     int frame;
+    std::string camera;
     double render_ms;
     double encode_ms;
 };
 
 struct ManifestFile {
     int frame;
+    std::string camera;
     std::string pass;    // color, depth
     std::string format;  // png, exr
     std::string path;    // relative to the manifest
@@ -30,7 +32,7 @@ struct Manifest {
 };
 
 // Writes the manifest atomically. Entries of an existing manifest for the
-// same scene and size, for frames this run did not render, are kept, so a
+// same scene and size, for (camera, frame) pairs this run did not render, are kept, so a
 // sequence rendered in pieces (e.g. on several machines in turn) ends with
 // one complete manifest.
 void write_manifest(const std::string& path, Manifest manifest);

@@ -10,9 +10,9 @@
 
 namespace facet {
 
-std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights) {
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights) {
     std::vector<ShadeLight> out;
-    for (const LightDesc& l : lights) {
+    for (const LightState& l : lights) {
         ShadeLight s;
         s.is_point = l.type == LightType::point;
         s.direction = s.is_point ? glm::vec3(0) : -glm::normalize(l.direction);
@@ -30,7 +30,7 @@ glm::vec2 FrameRenderer::depth_view_range(const FrameState& state,
     Bounds all;
     for (const Draw& d : world_.draws) {
         const Bounds& b = world_.object_bounds[d.object];
-        const glm::mat4& m = state.object_transforms[d.object];
+        const glm::mat4& m = state.objects[d.object].transform;
         for (int corner = 0; corner < 8; ++corner) {
             glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
                         (corner & 4) ? b.max.z : b.min.z);
@@ -53,8 +53,29 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       side_(scene.output.samples_per_side()),
       rasterizer_(scene.output.width * side_, scene.output.height * side_) {}
 
-void FrameRenderer::render(int frame, FrameImages& out) {
-    const FrameState state = evaluate_frame(scene_, frame);
+// The world's materials with this frame's animated values applied; the
+// world's own list when nothing is animated.
+void FrameRenderer::update_materials(const FrameState& state) {
+    materials_ = &world_.materials;
+    bool animated = false;
+    for (const ObjectState& o : state.objects) animated = animated || o.material.any();
+    if (!animated) return;
+    frame_materials_ = world_.materials;
+    for (size_t m = 0; m < frame_materials_.size(); ++m) {
+        const MaterialState& s = state.objects[world_.material_object[m]].material;
+        Material& mat = frame_materials_[m];
+        if (s.color) mat.color = *s.color;
+        if (s.ambient) mat.ambient = *s.ambient;
+        if (s.diffuse) mat.diffuse = *s.diffuse;
+        if (s.specular) mat.specular = *s.specular;
+        if (s.shininess) mat.shininess = *s.shininess;
+    }
+    materials_ = &frame_materials_;
+}
+
+void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
+    const FrameState state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index);
+    update_materials(state);
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);

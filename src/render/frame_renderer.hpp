@@ -37,12 +37,14 @@ class FrameRenderer {
 
     // Renders into `out`, reusing its buffers when they have the right size
     // (fresh pages cost more to fault in and clear than the shading itself).
-    void render(int frame, FrameImages& out);
+    void render(int frame, size_t camera_index, FrameImages& out);
 
     // The depth range that fits the visible scene's bounding sphere.
     glm::vec2 depth_view_range(const FrameState& state, const CameraMatrices& camera) const;
 
   private:
+    void update_materials(const FrameState& state);
+    const std::vector<Material>& materials() const { return *materials_; }
     void vertex_stage(const FrameState& state, const CameraMatrices& camera,
                       std::span<const ShadeLight> lights);
     void light_vertices(size_t first, size_t last, const glm::vec3& eye,
@@ -57,9 +59,11 @@ class FrameRenderer {
     int side_;  // samples per pixel side: output.samples = side_ * side_
     Rasterizer rasterizer_;
     TransformedVertices vertices_;
-    FrameImages supersampled_;  // shading target when side_ > 1
+    FrameImages supersampled_;                // shading target when side_ > 1
+    std::vector<Material> frame_materials_;   // with animated values, when there are any
+    const std::vector<Material>* materials_;  // this frame's: world_.materials or frame_materials_
 };
 
-std::vector<ShadeLight> make_shade_lights(const std::vector<LightDesc>& lights);
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights);
 
 }  // namespace facet

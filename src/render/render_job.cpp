@@ -1,5 +1,6 @@
 #include "render/render_job.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <condition_variable>
 #include <deque>
@@ -14,6 +15,7 @@
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
+#include "output/output_path.hpp"
 #include "render/frame_renderer.hpp"
 
 namespace facet {
@@ -29,14 +31,17 @@ double ms_since(Clock::time_point start) {
 // encoder is then the bottleneck anyway.
 constexpr size_t kMaxQueuedFrames = 2;
 
-std::string frame_file_name(const std::string& pass, int frame, const std::string& ext) {
-    char number[32];
-    std::snprintf(number, sizeof number, "%04d", frame);
-    return pass + "." + number + "." + ext;
-}
+// Where a run's files go: the output folder, the name template, and the
+// folder (relative to the output folder) that holds manifest.json.
+struct OutputLayout {
+    std::string root;
+    OutputTemplate names;
+    std::string manifest_dir;
+};
 
 struct EncodeJob {
     int frame;
+    std::string camera;
     double render_ms;
     FrameImages images;
 };
@@ -48,8 +53,8 @@ struct EncodeJob {
 // write_manifest sorts.
 class Encoder {
   public:
-    Encoder(const SceneDesc& scene, std::string dir, unsigned workers)
-        : scene_(scene), dir_(std::move(dir)) {
+    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers)
+        : scene_(scene), layout_(layout) {
         for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { run(); });
     }
     ~Encoder() { stop(); }
@@ -126,9 +131,14 @@ class Encoder {
         Manifest written;
         auto write = [&](const std::string& pass, const std::string& format,
                          const std::vector<uint8_t>& bytes) {
-            std::string name = frame_file_name(pass, job.frame, format);
-            write_file_atomically((std::filesystem::path(dir_) / name).string(), bytes);
-            written.files.push_back({job.frame, pass, format, name, sha256_hex(bytes)});
+            const std::string name =
+                expand(layout_.names, {scene_.name, job.camera, pass, job.frame, format});
+            const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
+            make_directories(file.parent_path().string());
+            write_file_atomically(file.string(), bytes);
+            written.files.push_back({job.frame, job.camera, pass, format,
+                                     path_relative_to_manifest(name, layout_.manifest_dir),
+                                     sha256_hex(bytes)});
         };
         if (out.write_color && out.write_png)
             write("color", "png", encode_png_color(job.images.color, out.png_compression));
@@ -140,12 +150,12 @@ class Encoder {
         }
         if (out.write_depth && out.write_exr)
             write("depth", "exr", encode_exr_depth(job.images.depth));
-        written.frames.push_back({job.frame, job.render_ms, ms_since(start)});
+        written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start)});
         return written;
     }
 
     const SceneDesc& scene_;
-    std::string dir_;
+    const OutputLayout& layout_;
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable ready_, space_;
@@ -158,28 +168,96 @@ class Encoder {
 
 }  // namespace
 
+std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std::string>& names) {
+    const bool template_names_cameras =
+        scene.output.path && scene.output.path->find("{camera}") != std::string::npos;
+    std::vector<size_t> selected;
+    const bool all = std::find(names.begin(), names.end(), "all") != names.end();
+    if (all || (names.empty() && template_names_cameras)) {
+        for (size_t i = 0; i < scene.cameras.size(); ++i) selected.push_back(i);
+        return selected;
+    }
+    if (names.empty()) return {0};
+    for (const std::string& name : names) {
+        auto it = std::find_if(scene.cameras.begin(), scene.cameras.end(),
+                               [&](const CameraDesc& c) { return c.name == name; });
+        if (it == scene.cameras.end()) {
+            std::string list;
+            for (const auto& c : scene.cameras) list += (list.empty() ? "" : ", ") + c.name;
+            throw Error(ExitCode::invalid_input, "--camera " + name + ": " + scene.path +
+                                                     " has no camera named '" + name +
+                                                     "' (cameras: " + list + ", or all)");
+        }
+        const size_t index = static_cast<size_t>(it - scene.cameras.begin());
+        if (std::find(selected.begin(), selected.end(), index) == selected.end())
+            selected.push_back(index);
+    }
+    return selected;
+}
+
+namespace {
+
+OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cameras,
+                          const std::vector<int>& frames, const std::string& root) {
+    const OutputDesc& out = scene.output;
+    std::string text =
+        out.path.value_or(cameras.size() > 1 ? kMultiCameraOutputTemplate : kDefaultOutputTemplate);
+    OutputLayout layout;
+    layout.root = root;
+    std::vector<std::string> camera_names, passes, exts;
+    for (size_t c : cameras) camera_names.push_back(scene.cameras[c].name);
+    if (out.write_color) passes.push_back("color");
+    if (out.write_depth) passes.push_back("depth");
+    if (out.write_png) exts.push_back("png");
+    if (out.write_exr) exts.push_back("exr");
+    try {
+        layout.names = parse_output_template(text);
+        check_unique_outputs(layout.names, scene.name, camera_names, passes, exts, frames);
+        layout.manifest_dir = manifest_directory(
+            layout.names, {scene.name, camera_names.front(), "", 0, ""}, cameras.size() == 1);
+    } catch (const std::invalid_argument& e) {
+        if (out.path) fail_input(out.path_at, "output.path", e.what());
+        throw Error(ExitCode::invalid_input, e.what());
+    }
+    return layout;
+}
+
+}  // namespace
+
+void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
+    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    plan_outputs(scene, select_cameras(scene, options.cameras), frames, options.out_dir);
+}
+
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame) {
     const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
+    const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
     RenderResult result;
-    result.output_dir = (std::filesystem::path(options.out_dir) / scene.name).string();
+    result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
     make_directories(result.output_dir);
 
     ThreadPool pool(options.threads);
     FrameRenderer renderer(scene, world, pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
-    Encoder encoder(scene, result.output_dir, pool.size() > 1 ? 2 : 1);
+    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1);
+    const size_t total = frames.size() * cameras.size();
     size_t rendered = 0;
-    for (size_t i = 0; i < frames.size(); ++i) {
-        if (options.cancel && options.cancel->load()) break;
-        const auto start = Clock::now();
-        FrameImages images = encoder.take_spare();
-        renderer.render(frames[i], images);
-        const double render_ms = ms_since(start);
-        encoder.push({frames[i], render_ms, std::move(images)});
-        if (on_frame) on_frame({frames[i], i + 1, frames.size(), render_ms});
-        rendered = i + 1;
+    auto cancelled = [&] { return options.cancel && options.cancel->load(); };
+    for (size_t i = 0; i < frames.size() && !cancelled(); ++i) {
+        for (size_t camera : cameras) {
+            if (cancelled()) break;
+            const auto start = Clock::now();
+            FrameImages images = encoder.take_spare();
+            renderer.render(frames[i], camera, images);
+            const double render_ms = ms_since(start);
+            const std::string& name = scene.cameras[camera].name;
+            encoder.push({frames[i], name, render_ms, std::move(images)});
+            ++rendered;
+            if (on_frame) on_frame({frames[i], rendered, total, render_ms});
+        }
     }
     Manifest manifest = encoder.finish();
     manifest.scene = scene.path;
@@ -190,11 +268,10 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     result.files_written = manifest.files.size();
     result.manifest_path = (std::filesystem::path(result.output_dir) / "manifest.json").string();
     write_manifest(result.manifest_path, manifest);
-    if (rendered < frames.size())
-        throw Error(ExitCode::runtime_failure, "interrupted: " + std::to_string(rendered) + " of " +
-                                                   std::to_string(frames.size()) +
-                                                   " frames were written, and are listed in " +
-                                                   result.manifest_path);
+    if (rendered < total)
+        throw Error(ExitCode::runtime_failure,
+                    "interrupted: " + std::to_string(rendered) + " of " + std::to_string(total) +
+                        " images were written, and are listed in " + result.manifest_path);
     return result;
 }
 

@@ -16,6 +16,9 @@ struct RenderOptions {
     std::vector<int> frames;  // frames to render; empty means the scene's output.frames
     unsigned threads = 0;     // 0: one per core
     std::string out_dir = "out";
+    // Cameras to render, by name; "all" for every one. Empty: the first
+    // camera, or all of them when output.path names {camera}.
+    std::vector<std::string> cameras;
     // When set (e.g. by Ctrl-C), no new frame starts; frames already rendered
     // are still written, with the manifest, and render_scene then throws.
     const std::atomic<bool>* cancel = nullptr;
@@ -33,6 +36,14 @@ struct RenderResult {
     std::string manifest_path;
     size_t files_written = 0;
 };
+
+// The indices into scene.cameras that a run renders (see RenderOptions::cameras).
+// Throws facet::Error (invalid_input) for an unknown name.
+std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std::string>& names);
+
+// Checks the camera choice and the output names (template syntax, two
+// images to one file) without rendering; render_scene does the same first.
+void check_outputs(const SceneDesc& scene, const RenderOptions& options);
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame);

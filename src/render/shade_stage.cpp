@@ -74,7 +74,7 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             const uint32_t i0 = world_.indices[3 * tri], i1 = world_.indices[3 * tri + 1],
                            i2 = world_.indices[3 * tri + 2];
             const Draw& draw = world_.draws[world_.triangle_draw[tri]];
-            const Material& mat = world_.materials[draw.material];
+            const Material& mat = materials()[draw.material];
             const auto& wp = vertices_.world_position;
 
             glm::vec3 albedo = mat.color;

@@ -24,7 +24,7 @@ void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& e
             const size_t v = start + i;
             const glm::vec3& p = vertices_.world_position[v];
             const glm::vec3& n = vertices_.world_normal[v];
-            const Material& m = world_.materials[world_.draws[world_.vertex_draw[v]].material];
+            const Material& m = materials()[world_.draws[world_.vertex_draw[v]].material];
             s.px[i] = p.x, s.py[i] = p.y, s.pz[i] = p.z;
             s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
             s.ambient[i] = m.ambient, s.diffuse[i] = m.diffuse;
@@ -52,7 +52,7 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     };
     std::vector<DrawTransform> transforms;
     for (const Draw& d : world_.draws) {
-        const glm::mat4& m = state.object_transforms[d.object];
+        const glm::mat4& m = state.objects[d.object].transform;
         transforms.push_back({m, glm::transpose(glm::inverse(glm::mat3(m)))});
     }
 

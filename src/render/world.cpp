@@ -11,11 +11,12 @@ namespace {
 Material resolve_material(const Material& base, const MaterialDesc& desc,
                           std::map<std::string, std::shared_ptr<const Texture>>& textures) {
     Material m = base;
-    if (desc.color) m.color = *desc.color;
-    if (desc.ambient) m.ambient = *desc.ambient;
-    if (desc.diffuse) m.diffuse = *desc.diffuse;
-    if (desc.specular) m.specular = *desc.specular;
-    if (desc.shininess) m.shininess = *desc.shininess;
+    // Animated values start at their first key; frames update them.
+    if (desc.color) m.color = desc.color->value;
+    if (desc.ambient) m.ambient = desc.ambient->value;
+    if (desc.diffuse) m.diffuse = desc.diffuse->value;
+    if (desc.specular) m.specular = desc.specular->value;
+    if (desc.shininess) m.shininess = desc.shininess->value;
     if (desc.double_sided) m.double_sided = *desc.double_sided;
     if (desc.uv_scale) m.uv_scale = *desc.uv_scale;
     if (desc.texture) {
@@ -81,8 +82,10 @@ World build_world(const SceneDesc& scene) {
         if (!obj.visible) continue;
 
         const uint32_t material_base = static_cast<uint32_t>(world.materials.size());
-        for (const Material& m : mesh->materials)
+        for (const Material& m : mesh->materials) {
             world.materials.push_back(resolve_material(m, obj.material, textures));
+            world.material_object.push_back(o);
+        }
 
         for (const MeshPart& part : mesh->parts) {
             Draw d;

@@ -23,6 +23,7 @@ struct Draw {
 
 struct World {
     std::vector<Material> materials;
+    std::vector<uint32_t> material_object;  // per material: the scene object it belongs to
     std::vector<Draw> draws;
     std::vector<Bounds> object_bounds;  // model space, per scene object
     std::vector<std::string> warnings;  // from mesh loading, for the user

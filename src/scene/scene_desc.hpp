@@ -11,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/error.hpp"
+#include "scene/animated.hpp"
 
 namespace facet {
 
@@ -47,6 +48,11 @@ struct OutputDesc {
         return k;
     }
     int png_compression = 1;  // zlib level 0..9; 1 is fast, 9 small
+    // File names relative to the output folder (docs/output-naming.md);
+    // unset: {scene}/{pass}.{frame}.{ext}, with {camera}/ after {scene} when
+    // a run renders several cameras. Checked before rendering starts.
+    std::optional<std::string> path;
+    SourceLocation path_at;
     // Range of linear depth mapped to white..black in the 16-bit depth PNG;
     // unset means "fit the scene's bounds" (docs/scene-format.md).
     std::optional<glm::vec2> depth_range;
@@ -54,32 +60,64 @@ struct OutputDesc {
 };
 
 struct OrbitDesc {
-    glm::vec3 center = {0, 0, 0};
-    float radius = 5;
-    float elevation = 20;   // degrees above the centre's horizontal plane
-    float start_angle = 0;  // degrees around +Y; 0 puts the camera on +Z
-    float turns = 1;        // full circles over the frame range; negative turns clockwise
+    Animated<glm::vec3> center = glm::vec3(0, 0, 0);
+    Animated<float> radius = 5.0f;       // unused when the camera frames objects
+    Animated<float> elevation = 20.0f;   // degrees above the centre's horizontal plane
+    Animated<float> start_angle = 0.0f;  // degrees around +Y; 0 puts the camera on +Z
+    float turns = 1;                     // circles over the frame range, may be fractional
+    bool clockwise = false;              // seen from above; counterclockwise by default
 };
 
-struct CameraDesc {
-    glm::vec3 position = {0, 1, 5};
-    glm::vec3 target = {0, 0, 0};
-    glm::vec3 up = {0, 1, 0};
-    float fov = 45;  // vertical, degrees
-    float near = 0.1f;
-    float far = 100;
-    std::optional<OrbitDesc> orbit;
+// A spline path through control points, travelled at constant speed.
+struct PathDesc {
+    std::vector<glm::vec3> points;
+    bool closed = false;
+    // Fraction of the path's length travelled at each frame, 0..1. Unset: 0 at
+    // the first frame, 1 at the last (a closed path loops like an orbit).
+    std::optional<Animated<float>> at;
     SourceLocation where;
+};
+
+// `frame:` places the camera so that these objects' bounds fill the view.
+struct FramingDesc {
+    std::vector<std::string> objects;  // empty: all visible objects
+    std::vector<SourceLocation> object_at;
+    float margin = 0.1f;  // fraction of the view left free around the bounds
+    // sphere: the bounding sphere (the distance stays constant however the
+    // objects turn); box: the bounding box corners, tighter for stills.
+    bool fit_box = false;
+    SourceLocation where;
+};
+
+// Clip planes of a camera that sets neither them nor `frame:`.
+inline constexpr float kDefaultCameraNear = 0.1f;
+inline constexpr float kDefaultCameraFar = 100;
+
+struct CameraDesc {
+    std::string name = "main";
+    Animated<glm::vec3> position = glm::vec3(0, 1, 5);
+    Animated<glm::vec3> target = glm::vec3(0, 0, 0);
+    std::string target_object;  // follow this object's bounds centre instead of `target`
+    SourceLocation target_object_at;
+    Animated<glm::vec3> up = glm::vec3(0, 1, 0);
+    Animated<float> fov = 45.0f;  // vertical, degrees
+    // Unset: 0.1 and 100, or fitted around the framed bounds with `frame:`.
+    std::optional<Animated<float>> near, far;
+    std::optional<OrbitDesc> orbit;
+    std::optional<PathDesc> path;
+    std::optional<FramingDesc> frame;
+    SourceLocation where;
+    std::string key;  // "camera" or "cameras.N", for messages
 };
 
 enum class LightType { directional, point };
 
 struct LightDesc {
     LightType type = LightType::directional;
-    glm::vec3 direction = {0, -1, 0};  // the way the light travels (directional)
-    glm::vec3 position = {0, 0, 0};    // point lights
-    glm::vec3 color = {1, 1, 1};
-    float intensity = 1;
+    Animated<glm::vec3> direction = glm::vec3(0, -1, 0);  // the way the light travels
+    Animated<glm::vec3> position = glm::vec3(0, 0, 0);    // point lights
+    Animated<glm::vec3> color = glm::vec3(1, 1, 1);
+    Animated<float> intensity = 1.0f;
     SourceLocation where;
 };
 
@@ -88,8 +126,8 @@ enum class TextureWrap { repeat, clamp };
 // Values the scene sets on an object's material; unset ones keep what the
 // mesh file says (or the defaults for primitives).
 struct MaterialDesc {
-    std::optional<glm::vec3> color;
-    std::optional<float> ambient, diffuse, specular, shininess;
+    std::optional<Animated<glm::vec3>> color;
+    std::optional<Animated<float>> ambient, diffuse, specular, shininess;
     std::optional<std::string> texture;  // resolved against the scene file
     SourceLocation texture_at;
     std::optional<TextureWrap> wrap;
@@ -119,16 +157,26 @@ struct SpinDesc {
     float turns = 1;  // over the frame range
 };
 
+// Which animation stored in a glTF file plays, and how.
+struct AnimationChoiceDesc {
+    std::string name;   // the animation's name, or its index as text
+    double speed = 1;   // playback rate; negative plays backwards
+    double offset = 0;  // seconds into the animation at the scene's first frame
+    bool loop = true;   // repeat; otherwise hold the last pose
+    SourceLocation where;
+};
+
 struct ObjectDesc {
     std::string name;
     std::string mesh;  // resolved path, empty for primitives
     SourceLocation mesh_at;
     std::optional<PrimitiveDesc> primitive;
-    glm::vec3 translate = {0, 0, 0};
-    glm::vec3 rotate = {0, 0, 0};  // Euler degrees, applied X then Y then Z
-    glm::vec3 scale = {1, 1, 1};
+    Animated<glm::vec3> translate = glm::vec3(0, 0, 0);
+    Animated<glm::vec3> rotate = glm::vec3(0, 0, 0);  // Euler degrees, applied X then Y then Z
+    Animated<glm::vec3> scale = glm::vec3(1, 1, 1);
     MaterialDesc material;
     std::optional<SpinDesc> spin;
+    std::optional<AnimationChoiceDesc> animation;  // glTF files only
     bool visible = true;
     SourceLocation where;
 };
@@ -139,9 +187,11 @@ struct SceneDesc {
     std::string directory;  // where relative paths resolve
     OutputDesc output;
     StyleDesc style;
-    CameraDesc camera;
+    std::vector<CameraDesc> cameras;  // at least one; names unique
     std::vector<LightDesc> lights;
     std::vector<ObjectDesc> objects;
+    // Values read but without effect, with where they are (printed by the CLI).
+    std::vector<std::string> warnings;
 };
 
 // One `-D key.path=value` (or a command-line option turned into one).

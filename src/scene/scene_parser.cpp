@@ -18,6 +18,12 @@ namespace {
 constexpr int kMaxImageSide = 16384;
 constexpr float kMaxCoordinate = 1e7f;
 
+std::string format_number(double value) {
+    std::ostringstream s;
+    s << value;
+    return s.str();
+}
+
 std::string resolve_path(const std::string& base_dir, const std::string& relative) {
     fs::path p(relative);
     if (p.is_absolute()) return p.lexically_normal().string();
@@ -41,7 +47,11 @@ OutputDesc parse_output(const Field& f) {
     OutputDesc out;
     out.where = f.where();
     f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
-                  "png_compression", "depth_range"});
+                  "png_compression", "depth_range", "path"});
+    if (f.has("path")) {
+        out.path = f["path"].text();
+        out.path_at = f["path"].where();
+    }
     if (f.has("size")) {
         Field size = f["size"];
         if (!size.is_sequence() || size.size() != 2) size.fail("must be [width, height]");
@@ -85,35 +95,132 @@ OutputDesc parse_output(const Field& f) {
     return out;
 }
 
-CameraDesc parse_camera(const Field& f) {
+// `target:` is a point, a keyed point, or the name of an object to follow.
+void parse_target(const Field& f, CameraDesc& cam) {
+    if (f.is_scalar() && !f.is_null()) {
+        cam.target_object = f.text();
+        cam.target_object_at = f.where();
+    } else {
+        cam.target = f.animated_vec3();
+    }
+}
+
+OrbitDesc parse_orbit(const Field& o) {
+    o.check_keys({"center", "radius", "elevation", "start_angle", "turns", "direction"});
+    OrbitDesc orbit;
+    if (o.has("center")) orbit.center = o["center"].animated_vec3();
+    if (o.has("radius")) orbit.radius = o["radius"].animated_number(1e-6, kMaxCoordinate);
+    if (o.has("elevation")) orbit.elevation = o["elevation"].animated_number(-89.9, 89.9);
+    if (o.has("start_angle")) orbit.start_angle = o["start_angle"].animated_number(-36000, 36000);
+    if (o.has("turns")) orbit.turns = static_cast<float>(o["turns"].number(-1000, 1000));
+    if (o.has("direction"))
+        orbit.clockwise = o["direction"].choice({"counterclockwise", "clockwise"}) == "clockwise";
+    return orbit;
+}
+
+PathDesc parse_path(const Field& p) {
+    p.check_keys({"points", "closed", "at"});
+    PathDesc path;
+    path.where = p.where();
+    Field points = p.require("points");
+    for (size_t i = 0; i < points.size(); ++i) path.points.push_back(points[i].vec3());
+    if (p.has("closed")) path.closed = p["closed"].boolean();
+    const size_t needed = path.closed ? 3 : 2;
+    if (path.points.size() < needed)
+        points.fail("a" + std::string(path.closed ? " closed" : "n open") +
+                    " path needs at least " + std::to_string(needed) + " points, got " +
+                    std::to_string(path.points.size()));
+    for (size_t i = 0; i < path.points.size(); ++i) {
+        const size_t next = (i + 1) % path.points.size();
+        if ((next != 0 || path.closed) && path.points[i] == path.points[next])
+            points[next].fail("repeats the point before it; a path needs distinct neighbours");
+    }
+    if (p.has("at")) path.at = p["at"].animated_number(0, 1);
+    return path;
+}
+
+FramingDesc parse_framing(const Field& f) {
+    FramingDesc framing;
+    framing.where = f.where();
+    auto add_names = [&](const Field& names) {
+        if (names.is_scalar()) {
+            if (names.text() != "all") {
+                framing.objects.push_back(names.text());
+                framing.object_at.push_back(names.where());
+            }
+            return;
+        }
+        if (names.size() == 0) names.fail("name at least one object, or write `all`");
+        for (size_t i = 0; i < names.size(); ++i) {
+            framing.objects.push_back(names[i].text());
+            framing.object_at.push_back(names[i].where());
+        }
+    };
+    if (!f.is_map()) {
+        add_names(f);
+        return framing;
+    }
+    f.check_keys({"objects", "margin", "fit"});
+    if (f.has("objects")) add_names(f["objects"]);
+    if (f.has("margin")) framing.margin = static_cast<float>(f["margin"].number(0, 10));
+    if (f.has("fit")) framing.fit_box = f["fit"].choice({"sphere", "box"}) == "box";
+    return framing;
+}
+
+CameraDesc parse_camera(const Field& f, bool named, std::vector<std::string>& warnings) {
     CameraDesc cam;
     cam.where = f.where();
-    f.check_keys({"position", "target", "up", "fov", "near", "far", "orbit"});
-    if (f.has("position")) cam.position = f["position"].vec3();
-    if (f.has("target")) cam.target = f["target"].vec3();
-    if (f.has("up")) cam.up = nonzero_direction(f["up"]);
-    if (f.has("fov")) cam.fov = static_cast<float>(f["fov"].number(1, 179));
-    if (f.has("near")) cam.near = static_cast<float>(f["near"].number(1e-6, kMaxCoordinate));
-    if (f.has("far")) cam.far = static_cast<float>(f["far"].number(1e-6, kMaxCoordinate));
-    if (cam.far <= cam.near)
-        (f.has("far") ? f["far"] : f)
-            .fail("far (" + std::to_string(cam.far) + ") must be greater than near (" +
-                  std::to_string(cam.near) + ")");
-    if (f.has("orbit")) {
-        Field o = f["orbit"];
-        o.check_keys({"center", "radius", "elevation", "start_angle", "turns"});
-        OrbitDesc orbit;
-        if (o.has("center")) orbit.center = o["center"].vec3();
-        if (o.has("radius"))
-            orbit.radius = static_cast<float>(o["radius"].number(1e-6, kMaxCoordinate));
-        if (o.has("elevation"))
-            orbit.elevation = static_cast<float>(o["elevation"].number(-89.9, 89.9));
-        if (o.has("start_angle"))
-            orbit.start_angle = static_cast<float>(o["start_angle"].number(-36000, 36000));
-        if (o.has("turns")) orbit.turns = static_cast<float>(o["turns"].number(-1000, 1000));
-        cam.orbit = orbit;
-    } else if (glm::vec3 d = cam.target - cam.position; d.x == 0 && d.y == 0 && d.z == 0) {
-        f.fail("camera position and target are the same point");
+    cam.key = f.path();
+    f.check_keys(
+        {"position", "target", "up", "fov", "near", "far", "orbit", "path", "frame", "name"});
+    if (named)
+        cam.name = f.require("name").text();
+    else if (f.has("name"))
+        cam.name = f["name"].text();
+    if (cam.name.empty() || cam.name.find_first_of("/\\") != std::string::npos)
+        f["name"].fail("a camera name must be non-empty and contain no slashes");
+    if (f.has("position")) cam.position = f["position"].animated_vec3();
+    if (f.has("target")) parse_target(f["target"], cam);
+    if (f.has("up")) cam.up = f["up"].animated_direction();
+    if (f.has("fov")) cam.fov = f["fov"].animated_number(1, 179);
+    if (f.has("near")) cam.near = f["near"].animated_number(1e-6, kMaxCoordinate);
+    if (f.has("far")) cam.far = f["far"].animated_number(1e-6, kMaxCoordinate);
+    // Unset planes are the defaults, unless `frame:` fits them (checked below).
+    const float near = cam.near ? cam.near->value : kDefaultCameraNear;
+    const float far = cam.far ? cam.far->value : kDefaultCameraFar;
+    const bool fitted = f.has("frame") && !(cam.near && cam.far);
+    if (!fitted && !(cam.near && cam.near->animated()) && !(cam.far && cam.far->animated()) &&
+        far <= near)
+        (cam.far ? f["far"] : f["near"])
+            .fail("far (" + format_number(far) + ") must be greater than near (" +
+                  format_number(near) + ")");
+    if (f.has("orbit")) cam.orbit = parse_orbit(f["orbit"]);
+    if (f.has("path")) cam.path = parse_path(f["path"]);
+    if (f.has("frame")) cam.frame = parse_framing(f["frame"]);
+
+    // Each of these decides where the camera is. Contradictions that cannot
+    // be meant are errors; a value made redundant (say an orbit added with
+    // -D to a scene with a fixed position) is reported and ignored.
+    auto ignored = [&](const char* key, const std::string& why) {
+        warnings.push_back(f[key].where().describe() + ": '" + f[key].path() +
+                           "' is ignored: " + why);
+    };
+    if (cam.orbit && cam.path) f["path"].fail("a camera has either an orbit or a path, not both");
+    if (cam.frame && cam.path)
+        f["frame"].fail(
+            "`frame:` moves the camera to fit the objects, which a path fixes; use one");
+    if (cam.frame && cam.orbit && f["orbit"].has("radius"))
+        f["orbit"]["radius"].fail("with `frame:` the orbit radius comes from the objects' bounds");
+    if (cam.frame && cam.orbit && f["orbit"].has("center"))
+        f["orbit"]["center"].fail("with `frame:` the orbit centre is the objects' bounds centre");
+    if (cam.orbit && f.has("position")) ignored("position", "the orbit places the camera");
+    if (cam.path && f.has("position")) ignored("position", "the path places the camera");
+    if (cam.orbit && f.has("target")) ignored("target", "an orbit looks at its centre");
+    if (cam.frame && f.has("target")) ignored("target", "`frame:` aims at the framed objects");
+    if (!cam.orbit && !cam.path && !cam.frame && cam.target_object.empty() &&
+        !cam.position.animated() && !cam.target.animated()) {
+        if (glm::vec3 d = cam.target.value - cam.position.value; d.x == 0 && d.y == 0 && d.z == 0)
+            f.fail("camera position and target are the same point");
     }
     return cam;
 }
@@ -125,15 +232,15 @@ LightDesc parse_light(const Field& f) {
     std::string type = f.require("type").choice({"directional", "point"});
     light.type = type == "point" ? LightType::point : LightType::directional;
     if (light.type == LightType::directional) {
-        light.direction = nonzero_direction(f.require("direction"));
+        light.direction = f.require("direction").animated_direction();
         if (f.has("position"))
             f["position"].fail("a directional light has no position; use direction");
     } else {
-        light.position = f.require("position").vec3();
+        light.position = f.require("position").animated_vec3();
         if (f.has("direction")) f["direction"].fail("a point light has no direction; use position");
     }
-    if (f.has("color")) light.color = f["color"].color3();
-    if (f.has("intensity")) light.intensity = static_cast<float>(f["intensity"].number(0, 1e9));
+    if (f.has("color")) light.color = f["color"].animated_color3();
+    if (f.has("intensity")) light.intensity = f["intensity"].animated_number(0, 1e9);
     return light;
 }
 
@@ -141,11 +248,11 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
     f.check_keys({"color", "ambient", "diffuse", "specular", "shininess", "texture", "wrap",
                   "uv_scale", "double_sided"});
-    if (f.has("color")) m.color = f["color"].color3();
-    if (f.has("ambient")) m.ambient = static_cast<float>(f["ambient"].number(0, 1000));
-    if (f.has("diffuse")) m.diffuse = static_cast<float>(f["diffuse"].number(0, 1000));
-    if (f.has("specular")) m.specular = static_cast<float>(f["specular"].number(0, 1000));
-    if (f.has("shininess")) m.shininess = static_cast<float>(f["shininess"].number(0, 100000));
+    if (f.has("color")) m.color = f["color"].animated_color3();
+    if (f.has("ambient")) m.ambient = f["ambient"].animated_number(0, 1000);
+    if (f.has("diffuse")) m.diffuse = f["diffuse"].animated_number(0, 1000);
+    if (f.has("specular")) m.specular = f["specular"].animated_number(0, 1000);
+    if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
     if (f.has("texture")) {
         m.texture = existing_file(f["texture"], base_dir);
         m.texture_at = f["texture"].where();
@@ -262,11 +369,27 @@ glm::vec3 parse_axis(const Field& f) {
     return nonzero_direction(f);
 }
 
+// `animation: walk`, `animation: 0`, or a mapping with speed, offset and loop.
+AnimationChoiceDesc parse_animation_choice(const Field& f) {
+    AnimationChoiceDesc choice;
+    choice.where = f.where();
+    if (!f.is_map()) {
+        choice.name = f.text();
+        return choice;
+    }
+    f.check_keys({"name", "speed", "offset", "loop"});
+    choice.name = f.has("name") ? f["name"].text() : "0";
+    if (f.has("speed")) choice.speed = f["speed"].number(-1000, 1000);
+    if (f.has("offset")) choice.offset = f["offset"].number(-1e7, 1e7);
+    if (f.has("loop")) choice.loop = f["loop"].boolean();
+    return choice;
+}
+
 ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_dir) {
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",
-                  "visible"});
+                  "visible", "animation"});
     obj.name = f.has("name") ? f["name"].text() : "object" + std::to_string(index);
     if (f.has("mesh") == f.has("primitive"))
         f.fail("an object needs exactly one of 'mesh' (a file) or 'primitive'");
@@ -280,16 +403,9 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     } else {
         obj.primitive = parse_primitive(f["primitive"]);
     }
-    if (f.has("translate")) obj.translate = f["translate"].vec3();
-    if (f.has("rotate")) obj.rotate = f["rotate"].vec3();
-    if (f.has("scale")) {
-        Field s = f["scale"];
-        obj.scale = s.is_scalar()
-                        ? glm::vec3(static_cast<float>(s.number(-kMaxCoordinate, kMaxCoordinate)))
-                        : s.vec3();
-        if (obj.scale.x == 0 || obj.scale.y == 0 || obj.scale.z == 0)
-            s.fail("scale must not be zero on any axis");
-    }
+    if (f.has("translate")) obj.translate = f["translate"].animated_vec3();
+    if (f.has("rotate")) obj.rotate = f["rotate"].animated_rotation();
+    if (f.has("scale")) obj.scale = f["scale"].animated_scale();
     if (f.has("material")) obj.material = parse_material(f["material"], base_dir);
     if (f.has("spin")) {
         Field s = f["spin"];
@@ -300,7 +416,29 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
         obj.spin = spin;
     }
     if (f.has("visible")) obj.visible = f["visible"].boolean();
+    if (f.has("animation")) {
+        if (obj.primitive) f["animation"].fail("only glTF meshes carry animations");
+        obj.animation = parse_animation_choice(f["animation"]);
+    }
     return obj;
+}
+
+// Cameras name objects to follow or frame; the names must exist.
+void check_object_references(const SceneDesc& scene) {
+    auto check = [&](const std::string& name, const SourceLocation& at, const std::string& key) {
+        for (const ObjectDesc& obj : scene.objects)
+            if (obj.name == name) return;
+        std::string names;
+        for (const ObjectDesc& obj : scene.objects) names += (names.empty() ? "" : ", ") + obj.name;
+        fail_input(at, key, "no object named '" + name + "' (objects: " + names + ")");
+    };
+    for (const CameraDesc& cam : scene.cameras) {
+        if (!cam.target_object.empty())
+            check(cam.target_object, cam.target_object_at, cam.key + ".target");
+        if (cam.frame)
+            for (size_t i = 0; i < cam.frame->objects.size(); ++i)
+                check(cam.frame->objects[i], cam.frame->object_at[i], cam.key + ".frame");
+    }
 }
 
 }  // namespace
@@ -317,7 +455,7 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     scene.directory = fs::path(path).parent_path().string();
     if (scene.directory.empty()) scene.directory = ".";
 
-    root.check_keys({"output", "style", "camera", "lights", "objects"});
+    root.check_keys({"output", "style", "camera", "cameras", "lights", "objects"});
     if (root.has("output")) scene.output = parse_output(root["output"]);
     std::vector<std::string> style_dirs = options.style_dirs;
     style_dirs.push_back((fs::path(scene.directory) / "styles").string());
@@ -325,7 +463,23 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         scene.style = parse_style_field(root["style"], scene.directory, style_dirs);
     else
         scene.style.name = "default";
-    if (root.has("camera")) scene.camera = parse_camera(root["camera"]);
+    if (root.has("camera") && root.has("cameras"))
+        root["cameras"].fail("give either `camera` (one) or `cameras` (a named list), not both");
+    if (root.has("cameras")) {
+        Field cameras = root["cameras"];
+        if (cameras.size() == 0) cameras.fail("the list of cameras is empty");
+        for (size_t i = 0; i < cameras.size(); ++i) {
+            scene.cameras.push_back(parse_camera(cameras[i], true, scene.warnings));
+            for (size_t j = 0; j < i; ++j)
+                if (scene.cameras[j].name == scene.cameras[i].name)
+                    cameras[i]["name"].fail("another camera is already named '" +
+                                            scene.cameras[i].name + "'");
+        }
+    } else {
+        scene.cameras.push_back(root.has("camera")
+                                    ? parse_camera(root["camera"], false, scene.warnings)
+                                    : CameraDesc{});
+    }
     if (root.has("lights")) {
         Field lights = root["lights"];
         for (size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(parse_light(lights[i]));
@@ -342,6 +496,7 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
             at.fail("another object is already named '" + scene.objects[i].name + "'");
         }
     }
+    check_object_references(scene);
     return scene;
 }
 

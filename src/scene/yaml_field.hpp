@@ -14,6 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/error.hpp"
+#include "scene/animated.hpp"
 
 namespace facet {
 
@@ -69,6 +70,19 @@ class Field {
     std::string choice(std::initializer_list<const char*> words) const;
     // A list of words from the given set.
     std::vector<std::string> choices(std::initializer_list<const char*> words) const;
+
+    // A constant or a keyframe track (`{keys: {frame: value, ...}, ...}`,
+    // track_parser.cpp); every key's value is checked like the constant.
+    Animated<float> animated_number(double min, double max) const;
+    Animated<glm::vec3> animated_vec3() const;
+    Animated<glm::vec3> animated_color3() const;
+    Animated<glm::vec3> animated_direction() const;  // never [0, 0, 0]
+    // A number for all three axes or [x, y, z]; never zero on an axis.
+    Animated<glm::vec3> animated_scale() const;
+    // Euler degrees; a track may choose `rotation: shortest | angles`.
+    Animated<glm::vec3> animated_rotation() const;
+    // True when the value is written as a keyframe track.
+    bool is_track() const { return node_.IsMap() && node_["keys"]; }
 
   private:
     std::vector<double> numbers(size_t min_count, size_t max_count) const;

@@ -1,0 +1,50 @@
+#pragma once
+// glTF animation, skinning and morph targets applied to a loaded Mesh: a pure
+// function of the mesh, the animation and the time (glTF 2.0 §3.7.2.2,
+// §3.7.3, §3.11 and Appendix C). Looping and the choice of time are the
+// caller's.
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "assets/mesh.hpp"
+
+namespace facet {
+
+// One part of the mesh, posed: same model space, vertex order and count as
+// Mesh::parts[i], whose indices and UVs still apply.
+struct PosedPart {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;  // unit length
+    // The pose mirrors the part where its rest pose did not, or the other
+    // way round (a negative scale was animated), so the part's triangles now
+    // wind clockwise seen from their front: swap two corners of each.
+    bool winding_flipped = false;
+};
+
+// The animations a mesh holds (0 when it has no rig).
+int animation_count(const Mesh& mesh);
+
+// Seconds from 0 to the animation's last keyframe.
+double animation_duration(const Mesh& mesh, int animation);
+
+// The animation named `name_or_index`, or failing that the animation with
+// that decimal index. Throws facet::Error (invalid_input) naming the mesh
+// and listing its animations when there is none.
+int find_animation(const Mesh& mesh, const std::string& name_or_index);
+
+// Poses every part of `mesh` at `seconds` into `animation`, clamped to
+// [0, duration]: before the first and after the last keyframe the pose
+// holds. animation -1 poses without animation: the nodes' rest transforms,
+// skins and default morph weights. `out` gets one entry per part; its
+// vectors are reused from call to call.
+//
+// A part that nothing moves (its node and the node's ancestors are not
+// animated, it has no skin and all its morph weights are 0) comes out
+// bit-identical to Mesh::parts. Otherwise the pose is computed in double:
+// a rigid part's node transform, or for a skinned part only its joints
+// (the node's own transform is ignored, §3.7.3.3), after the morph targets.
+void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<PosedPart>& out);
+
+}  // namespace facet
