@@ -136,3 +136,19 @@ TEST_CASE("glTF real AnimatedMorphCube morphs its top face", "[gltf][anim][morph
     CHECK(bounds_of(posed(mesh, 0, 1.6)).max.z == Approx(1 - 100 * thin_lift).margin(1e-3));
     CHECK(mesh.bounds().max.z == Approx(1).margin(1e-5));
 }
+
+TEST_CASE("facet info lists animations, skins and morph targets", "[gltf][anim][real][cli]") {
+    if (!have_file(kSimpleSkin) || !have_file(kMorphCube)) return;
+    auto skin = run_facet("info '" + kSimpleSkin + "'");
+    INFO(skin.output);
+    REQUIRE(skin.exit_code == 0);
+    CHECK_THAT(skin.output, Catch::Contains("animations: 1\n  - animation0: 5.5 s, 1 channel\n"));
+    CHECK_THAT(skin.output, Catch::Contains("skins:      1\n"));
+    CHECK_THAT(skin.output, Catch::Contains("morphed:    0 of 1 parts"));
+    auto cube = run_facet("info '" + kMorphCube + "'");
+    INFO(cube.output);
+    REQUIRE(cube.exit_code == 0);
+    CHECK_THAT(cube.output, Catch::Contains("  - Square: 4.2 s, 1 channel\n"));
+    CHECK_THAT(cube.output, Catch::Contains("skins:      0\n"));
+    CHECK_THAT(cube.output, Catch::Contains("morphed:    1 of 1 parts, up to 2 targets\n"));
+}

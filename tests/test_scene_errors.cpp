@@ -63,12 +63,12 @@ TEST_CASE("an unknown style preset name lists the available presets", "[scene][s
 
 TEST_CASE("errors inside a style file name that file", "[scene][style]") {
     TempDir dir("scene");
-    const std::string style_text = "description: broken\nshading: toon\n";
+    const std::string style_text = "description: broken\nshading: cartoon\n";
     std::string style_path = write_text(dir.file("looks/bad.yaml"), style_text);
     std::string path = write_text(dir.file("s.yaml"), "style: looks/bad.yaml\n" + kMinimalObjects);
     std::string message = load_error(path);
-    check_error_at(message, style_path, line_col(style_text, "toon\n"), "shading");
-    CHECK_THAT(message, Contains("toon"));
+    check_error_at(message, style_path, line_col(style_text, "cartoon\n"), "shading");
+    CHECK_THAT(message, Contains("cartoon"));
 }
 
 // ---------------------------------------------------------------------------
@@ -143,8 +143,8 @@ TEST_CASE("values of the wrong type are rejected", "[scene][errors]") {
          "png, exr"},
         {"unknown primitive", "objects:\n  - primitive: teapot\n", "objects.0.primitive", "teapot",
          0, "cube"},
-        {"unknown light type", "lights:\n  - type: spot\n    direction: [0, -1, 0]\n" + objects,
-         "lights.0.type", "spot", 0, "directional, point"},
+        {"unknown light type", "lights:\n  - type: area\n    direction: [0, -1, 0]\n" + objects,
+         "lights.0.type", "area", 0, "directional, point, spot, ambient"},
         {"unknown wrap", "objects:\n  - primitive: cube\n    material:\n      wrap: mirror\n",
          "objects.0.material.wrap", "mirror", 0, "repeat, clamp"},
         {"spin axis a word", "objects:\n  - primitive: cube\n    spin:\n      axis: w\n",
@@ -153,7 +153,7 @@ TEST_CASE("values of the wrong type are rejected", "[scene][errors]") {
          "objects.0.name", "[a, b]", 0, "text"},
         {"frames a list", "output:\n  frames: [1, 2]\n" + objects, "output.frames", "[1, 2]", 0,
          "text"},
-        {"shading unknown", "style:\n  shading: toon\n" + objects, "style.shading", "toon", 0,
+        {"shading unknown", "style:\n  shading: cartoon\n" + objects, "style.shading", "cartoon", 0,
          "phong"},
         {"scale a word", "objects:\n  - primitive: cube\n    scale: big\n", "objects.0.scale",
          "big", 0, "number"},

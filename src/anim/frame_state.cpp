@@ -10,6 +10,7 @@
 
 #include "anim/camera_path.hpp"
 #include "anim/track.hpp"
+#include "core/color_temperature.hpp"
 
 namespace facet {
 namespace {
@@ -47,6 +48,30 @@ glm::mat4 evaluate_transform(const ObjectDesc& obj, const FrameTime& at, double 
     const glm::dquat spin =
         glm::angleAxis(glm::radians(degrees), glm::normalize(glm::dvec3(obj.spin->axis)));
     return object_matrix(translate, spin * rotation, scale);
+}
+
+LightState evaluate_light(const LightDesc& l, const FrameTime& at) {
+    LightState s;
+    s.type = l.type;
+    s.direction = evaluate(l.direction, at);
+    s.position = evaluate(l.position, at);
+    if (l.kelvin) {
+        const LinearRgb c = kelvin_to_linear_srgb(evaluate(*l.kelvin, at));
+        s.color = glm::vec3(static_cast<float>(c.r), static_cast<float>(c.g),
+                            static_cast<float>(c.b));
+    } else {
+        s.color = evaluate(l.color, at);
+    }
+    s.intensity = evaluate(l.intensity, at);
+    s.range = l.range ? evaluate(*l.range, at) : 0.0f;
+    s.outer_angle = evaluate(l.outer_angle, at);
+    // Keyed cone angles may cross; the inner cone never exceeds the outer one.
+    s.inner_angle = std::min(evaluate(l.inner_angle, at), s.outer_angle);
+    s.shadows = l.shadows;
+    s.shadow_resolution = l.shadow_resolution;
+    s.shadow_softness = evaluate(l.shadow_softness, at);
+    s.shadow_bias = evaluate(l.shadow_bias, at);
+    return s;
 }
 
 double animation_time(const AnimationChoiceDesc& choice, const FrameTime& at) {
@@ -195,9 +220,7 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
         if (obj.animation) o.animation_seconds = animation_time(*obj.animation, at);
         state.objects.push_back(o);
     }
-    for (const LightDesc& l : scene.lights)
-        state.lights.push_back({l.type, evaluate(l.direction, at), evaluate(l.position, at),
-                                evaluate(l.color, at), evaluate(l.intensity, at)});
+    for (const LightDesc& l : scene.lights) state.lights.push_back(evaluate_light(l, at));
 
     // An open path runs from its first point at the first frame to its last
     // point at the last frame; a closed one loops like an orbit.

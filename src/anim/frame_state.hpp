@@ -39,10 +39,16 @@ struct ObjectState {
 
 struct LightState {
     LightType type = LightType::directional;
-    glm::vec3 direction{0, -1, 0};
-    glm::vec3 position{0};
-    glm::vec3 color{1};
+    glm::vec3 direction{0, -1, 0};  // the way the light travels (directional, spot)
+    glm::vec3 position{0};          // point, spot
+    glm::vec3 color{1};             // linear RGB (from a colour temperature when one is given)
     float intensity = 1;
+    float range = 0;  // point, spot: distance where the light reaches zero; 0 for no limit
+    float inner_angle = 0, outer_angle = 45;  // spot cone half-angles, degrees, inner <= outer
+    bool shadows = false;
+    int shadow_resolution = 0;
+    float shadow_softness = 1;  // filter radius in texels
+    float shadow_bias = 1;
 };
 
 struct FrameState {

@@ -179,8 +179,8 @@ int info_command(const std::string& path) {
     std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
     if (rig)
         for (const auto& a : rig->animations)
-            std::printf("  - %s: %g s, %zu channels\n", a.name.c_str(), a.duration,
-                        a.channels.size());
+            std::printf("  - %s: %g s, %zu %s\n", a.name.c_str(), a.duration, a.channels.size(),
+                        a.channels.size() == 1 ? "channel" : "channels");
     size_t morphed_parts = 0, most_targets = 0;
     if (rig)
         for (const auto& part : rig->parts)
@@ -189,8 +189,8 @@ int info_command(const std::string& path) {
                 most_targets = std::max(most_targets, part.morph_targets.size());
             }
     std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
-    std::printf("morphs:     %zu parts with morph targets (up to %zu each)\n", morphed_parts,
-                most_targets);
+    std::printf("morphed:    %zu of %zu parts, up to %zu targets\n", morphed_parts,
+                mesh.parts.size(), most_targets);
     for (const auto& w : mesh.warnings) std::printf("warning: %s\n", w.c_str());
     return 0;
 }

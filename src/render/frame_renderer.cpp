@@ -10,16 +10,27 @@
 
 namespace facet {
 
-std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights) {
-    std::vector<ShadeLight> out;
-    for (const LightState& l : lights) {
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights,
+                                          std::span<const ShadowMap* const> shadow_maps) {
+    std::vector<ShadeLight> out, ambient;
+    for (size_t i = 0; i < lights.size(); ++i) {
+        const LightState& l = lights[i];
         ShadeLight s;
-        s.is_point = l.type == LightType::point;
-        s.direction = s.is_point ? glm::vec3(0) : -glm::normalize(l.direction);
-        s.position = l.position;
         s.radiance = l.color * l.intensity;
+        if (l.type == LightType::ambient) {
+            s.is_ambient = true;
+            ambient.push_back(s);
+            continue;
+        }
+        s.is_point = l.type == LightType::point || l.type == LightType::spot;
+        s.direction = l.type == LightType::point ? glm::vec3(0) : -glm::normalize(l.direction);
+        s.position = l.position;
+        if (l.type == LightType::spot) set_spot_cone(s, l.inner_angle, l.outer_angle);
+        if (s.is_point && l.range > 0) s.inv_range = 1.0f / l.range;
+        if (i < shadow_maps.size()) s.shadow = shadow_maps[i];
         out.push_back(s);
     }
+    out.insert(out.end(), ambient.begin(), ambient.end());
     return out;
 }
 
@@ -51,7 +62,24 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       world_(world),
       pool_(pool),
       side_(scene.output.samples_per_side()),
-      rasterizer_(scene.output.width * side_, scene.output.height * side_) {}
+      rasterizer_(scene.output.width * side_, scene.output.height * side_),
+      shadows_(scene, world) {
+    style_descs_.push_back(&scene.style);
+    for (const ObjectDesc& obj : scene.objects) {
+        object_style_.push_back(obj.style ? static_cast<uint32_t>(style_descs_.size()) : 0);
+        if (obj.style) style_descs_.push_back(&*obj.style);
+    }
+    for (const StyleDesc* style : style_descs_)
+        any_gouraud_ = any_gouraud_ || style->shading == ShadingModel::gouraud;
+    outlines_on_ = any_outlines(scene.style.outlines);
+}
+
+void FrameRenderer::update_styles(const FrameState& state) {
+    const FrameTime at{static_cast<double>(state.frame), state.time};
+    styles_.clear();
+    for (const StyleDesc* style : style_descs_)
+        styles_.push_back(evaluate_style(*style, at, tams_));
+}
 
 // The world's materials with this frame's animated values applied; the
 // world's own list when nothing is animated.
@@ -76,10 +104,12 @@ void FrameRenderer::update_materials(const FrameState& state) {
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const FrameState state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index);
     update_materials(state);
+    update_styles(state);
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);
-    const std::vector<ShadeLight> lights = make_shade_lights(state.lights);
+    shadows_.render(state, pool_);
+    const std::vector<ShadeLight> lights = make_shade_lights(state.lights, shadows_.maps());
 
     vertex_stage(state, camera, lights);
     RasterInput input;
@@ -104,9 +134,21 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     // With supersampling, shade at side x side the size, then resolve (post/).
     FrameImages& target = side_ == 1 ? out : supersampled_;
     if (side_ > 1) fit(supersampled_, rasterizer_.width(), rasterizer_.height());
+    if (outlines_on_ && (outline_buffers_.width != rasterizer_.width() ||
+                         outline_buffers_.height != rasterizer_.height()))
+        outline_buffers_.reset(rasterizer_.width(), rasterizer_.height());
     rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
         shade_tile(tile, camera, lights, style_range, target);
     });
+    // Outlines at the sample resolution, widths scaled to match, so the
+    // resolve anti-aliases them like the surfaces.
+    if (outlines_on_) {
+        const FrameTime at{static_cast<double>(frame), state.time};
+        const OutlineStyle lines =
+            evaluate_outlines(scene_.style.outlines, at, static_cast<float>(side_));
+        draw_outlines(outline_buffers_, lines, outline_lines_, pool_, outline_scratch_);
+        composite_lines(outline_lines_, target.color, pool_);
+    }
     if (side_ > 1)
         resolve_supersampled(supersampled_.color, supersampled_.depth, side_, out.color, out.depth,
                              pool_);

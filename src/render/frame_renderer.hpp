@@ -10,8 +10,11 @@
 #include "anim/frame_state.hpp"
 #include "core/image.hpp"
 #include "core/thread_pool.hpp"
+#include "post/outlines.hpp"
 #include "raster/rasterizer.hpp"
 #include "render/camera.hpp"
+#include "render/shadow_stage.hpp"
+#include "render/style_state.hpp"
 #include "render/world.hpp"
 #include "shade/lighting.hpp"
 
@@ -50,20 +53,36 @@ class FrameRenderer {
     void light_vertices(size_t first, size_t last, const glm::vec3& eye,
                         std::span<const ShadeLight> lights);
     void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
-                    std::span<const ShadeLight> lights, glm::vec2 depth_range,
-                    FrameImages& out) const;
+                    std::span<const ShadeLight> lights, glm::vec2 depth_range, FrameImages& out);
+    void update_styles(const FrameState& state);
 
     const SceneDesc& scene_;
     const World& world_;
     ThreadPool& pool_;
     int side_;  // samples per pixel side: output.samples = side_ * side_
     Rasterizer rasterizer_;
+    ShadowStage shadows_;  // shadow maps of the lights that cast shadows
     TransformedVertices vertices_;
     FrameImages supersampled_;                // shading target when side_ > 1
     std::vector<Material> frame_materials_;   // with animated values, when there are any
     const std::vector<Material>* materials_;  // this frame's: world_.materials or frame_materials_
+
+    // Styles: [0] the scene's, then one per object with a `style:` of its own.
+    std::vector<const StyleDesc*> style_descs_;
+    std::vector<uint32_t> object_style_;  // per scene object, index into styles_
+    std::vector<StyleState> styles_;      // this frame's values
+    bool any_gouraud_ = false;            // some style lights vertices
+    TamCache tams_;
+    bool outlines_on_ = false;  // the scene's style draws outlines
+    OutlineBuffers outline_buffers_;
+    OutlineScratch outline_scratch_;
+    ColorImage outline_lines_;
 };
 
-std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights);
+// The frame's lights for shading: directional, point and spot lights in
+// scene order (lights[0] is the key light of the stylised models), then the
+// ambient ones. `shadow_maps`, when given, holds each scene light's map or null.
+std::vector<ShadeLight> make_shade_lights(const std::vector<LightState>& lights,
+                                          std::span<const ShadowMap* const> shadow_maps = {});
 
 }  // namespace facet

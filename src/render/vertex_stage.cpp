@@ -24,11 +24,13 @@ void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& e
             const size_t v = start + i;
             const glm::vec3& p = vertices_.world_position[v];
             const glm::vec3& n = vertices_.world_normal[v];
-            const Material& m = materials()[world_.draws[world_.vertex_draw[v]].material];
+            const Draw& draw = world_.draws[world_.vertex_draw[v]];
+            const Material& m = materials()[draw.material];
             s.px[i] = p.x, s.py[i] = p.y, s.pz[i] = p.z;
             s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
             s.ambient[i] = m.ambient, s.diffuse[i] = m.diffuse;
             s.specular[i] = m.specular, s.shininess[i] = m.shininess;
+            s.receives_shadow[i] = world_.receives_shadows[draw.object];
         }
         pad_batch(s, count);
         const LightingBatch l = light_surface_batch(s, eye, lights, Highlight::blinn);
@@ -43,7 +45,7 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     vertices_.clip.resize(count);
     vertices_.world_position.resize(count);
     vertices_.world_normal.resize(count);
-    const bool gouraud = scene_.style.shading == ShadingModel::gouraud;
+    const bool gouraud = any_gouraud_;
     vertices_.lit.resize(gouraud ? count : 0);
 
     struct DrawTransform {

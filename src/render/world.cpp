@@ -1,6 +1,9 @@
 #include "render/world.hpp"
 
+#include <array>
 #include <map>
+
+#include <glm/geometric.hpp>
 
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
@@ -38,10 +41,56 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     return m;
 }
 
+// Faces whose normals differ by less than this are one flat polygon.
+constexpr float kCoplanarCosine = 0.9998f;  // about 1 degree
+
+// Feature-edge bits for a part's triangles (see World::edge_mask). Edges are
+// matched by their end positions, so split vertices (seams) still pair up.
+void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
+    using Point = std::array<float, 3>;
+    using EdgeKey = std::pair<Point, Point>;
+    auto point = [&](uint32_t i) {
+        const glm::vec3& p = part.positions[i];
+        return Point{p.x, p.y, p.z};
+    };
+    auto key = [&](uint32_t a, uint32_t b) {
+        Point pa = point(a), pb = point(b);
+        return pa < pb ? EdgeKey{pa, pb} : EdgeKey{pb, pa};
+    };
+    const size_t triangles = part.triangle_count();
+    std::vector<glm::vec3> face_normal(triangles);
+    std::map<EdgeKey, std::vector<uint32_t>> edge_faces;
+    for (uint32_t t = 0; t < triangles; ++t) {
+        const uint32_t* v = &part.indices[3 * t];
+        const glm::vec3 n = glm::cross(part.positions[v[1]] - part.positions[v[0]],
+                                       part.positions[v[2]] - part.positions[v[0]]);
+        const float len = glm::length(n);
+        face_normal[t] = len > 0 ? n / len : glm::vec3(0);
+        for (int e = 0; e < 3; ++e) edge_faces[key(v[(e + 1) % 3], v[(e + 2) % 3])].push_back(t);
+    }
+    for (uint32_t t = 0; t < triangles; ++t) {
+        const uint32_t* v = &part.indices[3 * t];
+        uint8_t mask = 0;
+        for (int e = 0; e < 3; ++e) {
+            const auto& faces = edge_faces[key(v[(e + 1) % 3], v[(e + 2) % 3])];
+            bool feature = faces.size() != 2;
+            for (uint32_t other : faces)
+                if (other != t && glm::dot(face_normal[t], face_normal[other]) < kCoplanarCosine)
+                    feature = true;
+            if (feature) mask |= static_cast<uint8_t>(1u << e);
+        }
+        masks.push_back(mask);
+    }
+}
+
 }  // namespace
 
 World build_world(const SceneDesc& scene) {
     World world;
+    // Feature edges cost a pass over every edge; only wireframes need them.
+    bool wireframes = scene.style.wireframe.enabled;
+    for (const ObjectDesc& obj : scene.objects)
+        wireframes = wireframes || (obj.style && obj.style->wireframe.enabled);
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
@@ -79,6 +128,8 @@ World build_world(const SceneDesc& scene) {
             }
         }
         world.object_bounds.push_back(mesh->bounds());
+        world.casts_shadows.push_back(obj.cast_shadows ? 1 : 0);
+        world.receives_shadows.push_back(obj.receive_shadows ? 1.0f : 0.0f);
         if (!obj.visible) continue;
 
         const uint32_t material_base = static_cast<uint32_t>(world.materials.size());
@@ -95,6 +146,7 @@ World build_world(const SceneDesc& scene) {
             d.first_triangle = static_cast<uint32_t>(world.triangle_draw.size());
             d.triangle_count = static_cast<uint32_t>(part.triangle_count());
             d.material = material_base + part.material;
+            d.has_uvs = !part.uvs.empty();
             const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
             world.positions.insert(world.positions.end(), part.positions.begin(),
                                    part.positions.end());
@@ -108,6 +160,7 @@ World build_world(const SceneDesc& scene) {
             world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);
             world.cull_back.resize(world.cull_back.size() + d.triangle_count,
                                    world.materials[d.material].double_sided ? 0 : 1);
+            if (wireframes) append_edge_masks(part, world.edge_mask);
             world.draws.push_back(d);
         }
     }

@@ -19,6 +19,7 @@ struct Draw {
     uint32_t first_vertex, vertex_count;
     uint32_t first_triangle, triangle_count;
     uint32_t material;  // index into World::materials
+    bool has_uvs;       // the mesh part had texture coordinates
 };
 
 struct World {
@@ -26,6 +27,10 @@ struct World {
     std::vector<uint32_t> material_object;  // per material: the scene object it belongs to
     std::vector<Draw> draws;
     std::vector<Bounds> object_bounds;  // model space, per scene object
+    // Per scene object: `cast_shadows` (drawn into shadow maps), and
+    // `receive_shadows` as 1 or 0, the value shading puts in its lanes.
+    std::vector<uint8_t> casts_shadows;
+    std::vector<float> receives_shadows;
     std::vector<std::string> warnings;  // from mesh loading, for the user
 
     // Model-space vertex data of all draws, concatenated.
@@ -37,6 +42,11 @@ struct World {
     std::vector<uint32_t> indices;        // global vertex indices, three per triangle
     std::vector<uint32_t> triangle_draw;  // per triangle
     std::vector<uint8_t> cull_back;       // per triangle
+    // Per triangle, bit i set when the edge opposite vertex i is a feature
+    // edge (a mesh boundary, or a fold between faces that are not coplanar);
+    // wireframes draw those and skip the diagonals that split flat polygons.
+    // Filled only when some style draws wireframes, else empty.
+    std::vector<uint8_t> edge_mask;
 
     size_t triangle_count() const { return triangle_draw.size(); }
 };

@@ -12,20 +12,9 @@
 
 #include "core/error.hpp"
 #include "scene/animated.hpp"
+#include "scene/style_desc.hpp"
 
 namespace facet {
-
-// The shading models a style can select (docs/styles.md).
-enum class ShadingModel { flat, gouraud, phong, blinn_phong, unlit, depth, normal };
-
-struct StyleDesc {
-    std::string name;         // preset name, file stem, or "inline"
-    std::string description;  // one line, shown by `facet styles`
-    ShadingModel shading = ShadingModel::blinn_phong;
-    // Depth view range in scene units; unset means "fit the scene's bounds".
-    std::optional<glm::vec2> depth_range;
-    SourceLocation where;
-};
 
 struct OutputDesc {
     int width = 1280;
@@ -110,14 +99,24 @@ struct CameraDesc {
     std::string key;  // "camera" or "cameras.N", for messages
 };
 
-enum class LightType { directional, point };
+enum class LightType { directional, point, spot, ambient };
 
+// Lights and their shadows: docs/scene-format.md, "Lights" and "Shadows".
 struct LightDesc {
     LightType type = LightType::directional;
-    Animated<glm::vec3> direction = glm::vec3(0, -1, 0);  // the way the light travels
-    Animated<glm::vec3> position = glm::vec3(0, 0, 0);    // point lights
+    Animated<glm::vec3> direction = glm::vec3(0, -1, 0);  // directional, spot: the way light travels
+    Animated<glm::vec3> position = glm::vec3(0, 0, 0);    // point, spot
     Animated<glm::vec3> color = glm::vec3(1, 1, 1);
+    std::optional<Animated<float>> kelvin;  // colour temperature; replaces `color` when set
     Animated<float> intensity = 1.0f;
+    std::optional<Animated<float>> range;  // point, spot: the light fades to nothing here
+    // Spot cone half-angles from the axis, degrees (KHR_lights_punctual's defaults).
+    Animated<float> inner_angle = 0.0f;
+    Animated<float> outer_angle = 45.0f;
+    bool shadows = false;
+    int shadow_resolution = 0;  // texels per side (per cube face); 0 picks the type's default
+    Animated<float> shadow_softness = 1.0f;  // percentage-closer filter radius, in texels
+    Animated<float> shadow_bias = 1.0f;      // scales the automatic depth bias and normal offset
     SourceLocation where;
 };
 
@@ -175,9 +174,14 @@ struct ObjectDesc {
     Animated<glm::vec3> rotate = glm::vec3(0, 0, 0);  // Euler degrees, applied X then Y then Z
     Animated<glm::vec3> scale = glm::vec3(1, 1, 1);
     MaterialDesc material;
+    // The scene's style with this object's `style:` values applied; unset
+    // means the scene's style as it is.
+    std::optional<StyleDesc> style;
     std::optional<SpinDesc> spin;
     std::optional<AnimationChoiceDesc> animation;  // glTF files only
     bool visible = true;
+    bool cast_shadows = true;     // appears in the lights' shadow maps
+    bool receive_shadows = true;  // shadows darken it
     SourceLocation where;
 };
 
@@ -212,12 +216,11 @@ struct SceneOptions {
 SceneDesc load_scene(const std::string& path, const SceneOptions& options);
 
 // Reads a style preset file.
-StyleDesc load_style_file(const std::string& path);
+StyleDesc load_style_file(const std::string& path, const std::vector<std::string>& style_dirs);
 
 // The preset files found in the given folders: name -> path, first folder wins.
 std::vector<std::pair<std::string, std::string>> list_style_presets(
     const std::vector<std::string>& style_dirs);
 
-const char* shading_model_name(ShadingModel model);
 
 }  // namespace facet

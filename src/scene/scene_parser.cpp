@@ -5,13 +5,13 @@
 
 #include "core/frame_range.hpp"
 #include "scene/scene_desc.hpp"
+#include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
 
 namespace facet {
 namespace fs = std::filesystem;
 
-StyleDesc parse_style_field(const Field& field, const std::string& base_dir,
-                            const std::vector<std::string>& style_dirs);
+LightDesc parse_light(const Field& f);  // light_parser.cpp
 
 namespace {
 
@@ -225,33 +225,23 @@ CameraDesc parse_camera(const Field& f, bool named, std::vector<std::string>& wa
     return cam;
 }
 
-LightDesc parse_light(const Field& f) {
-    LightDesc light;
-    light.where = f.where();
-    f.check_keys({"type", "direction", "position", "color", "intensity"});
-    std::string type = f.require("type").choice({"directional", "point"});
-    light.type = type == "point" ? LightType::point : LightType::directional;
-    if (light.type == LightType::directional) {
-        light.direction = f.require("direction").animated_direction();
-        if (f.has("position"))
-            f["position"].fail("a directional light has no position; use direction");
-    } else {
-        light.position = f.require("position").animated_vec3();
-        if (f.has("direction")) f["direction"].fail("a point light has no direction; use position");
-    }
-    if (f.has("color")) light.color = f["color"].animated_color3();
-    if (f.has("intensity")) light.intensity = f["intensity"].animated_number(0, 1e9);
-    return light;
-}
-
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
-    f.check_keys({"color", "ambient", "diffuse", "specular", "shininess", "texture", "wrap",
-                  "uv_scale", "double_sided"});
+    f.check_keys({"color", "ambient", "diffuse", "specular", "ka", "kd", "ks", "shininess",
+                  "texture", "wrap", "uv_scale", "double_sided"});
     if (f.has("color")) m.color = f["color"].animated_color3();
-    if (f.has("ambient")) m.ambient = f["ambient"].animated_number(0, 1000);
-    if (f.has("diffuse")) m.diffuse = f["diffuse"].animated_number(0, 1000);
-    if (f.has("specular")) m.specular = f["specular"].animated_number(0, 1000);
+    // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
+    auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
+        if (f.has(name) && f.has(alias))
+            f[alias].fail("'" + std::string(alias) + "' and '" + name +
+                          "' are the same value; give only one of them");
+        if (f.has(name)) return f[name];
+        if (f.has(alias)) return f[alias];
+        return std::nullopt;
+    };
+    if (auto v = coefficient("ambient", "ka")) m.ambient = v->animated_number(0, 1000);
+    if (auto v = coefficient("diffuse", "kd")) m.diffuse = v->animated_number(0, 1000);
+    if (auto v = coefficient("specular", "ks")) m.specular = v->animated_number(0, 1000);
     if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
     if (f.has("texture")) {
         m.texture = existing_file(f["texture"], base_dir);
@@ -385,11 +375,23 @@ AnimationChoiceDesc parse_animation_choice(const Field& f) {
     return choice;
 }
 
-ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_dir) {
+// An object's `style:` is a preset (name or path) of its own, or values that
+// change the scene's style for this object only.
+StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
+                             const StyleContext& context) {
+    if (!f.is_map()) return parse_style_field(f, context);
+    StyleDesc style = scene_style;
+    std::vector<std::string> visiting;
+    apply_style_layer(f, style, context, visiting);
+    return style;
+}
+
+ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_dir,
+                        const StyleDesc& scene_style, const StyleContext& style_context) {
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",
-                  "visible", "animation"});
+                  "visible", "animation", "style", "cast_shadows", "receive_shadows"});
     obj.name = f.has("name") ? f["name"].text() : "object" + std::to_string(index);
     if (f.has("mesh") == f.has("primitive"))
         f.fail("an object needs exactly one of 'mesh' (a file) or 'primitive'");
@@ -407,6 +409,7 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("rotate")) obj.rotate = f["rotate"].animated_rotation();
     if (f.has("scale")) obj.scale = f["scale"].animated_scale();
     if (f.has("material")) obj.material = parse_material(f["material"], base_dir);
+    if (f.has("style")) obj.style = parse_object_style(f["style"], scene_style, style_context);
     if (f.has("spin")) {
         Field s = f["spin"];
         s.check_keys({"axis", "turns"});
@@ -416,6 +419,8 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
         obj.spin = spin;
     }
     if (f.has("visible")) obj.visible = f["visible"].boolean();
+    if (f.has("cast_shadows")) obj.cast_shadows = f["cast_shadows"].boolean();
+    if (f.has("receive_shadows")) obj.receive_shadows = f["receive_shadows"].boolean();
     if (f.has("animation")) {
         if (obj.primitive) f["animation"].fail("only glTF meshes carry animations");
         obj.animation = parse_animation_choice(f["animation"]);
@@ -445,7 +450,13 @@ void check_object_references(const SceneDesc& scene) {
 
 SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     auto doc = read_yaml_file(path);
-    apply_overrides(*doc, options.overrides);
+    // -D style.KEY=VALUE changes the style whatever the scene's `style:` is
+    // (a preset name is a plain value with no keys to set), so these
+    // overrides form a layer of their own, applied after the scene's style.
+    std::vector<Override> scene_overrides, style_overrides;
+    for (const Override& ov : options.overrides)
+        (ov.path.rfind("style.", 0) == 0 ? style_overrides : scene_overrides).push_back(ov);
+    apply_overrides(*doc, scene_overrides);
     Field root = root_field(doc);
     if (root.is_null()) root.fail("the scene file is empty");
 
@@ -457,12 +468,18 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
 
     root.check_keys({"output", "style", "camera", "cameras", "lights", "objects"});
     if (root.has("output")) scene.output = parse_output(root["output"]);
-    std::vector<std::string> style_dirs = options.style_dirs;
-    style_dirs.push_back((fs::path(scene.directory) / "styles").string());
+    StyleContext style_context{options.style_dirs, scene.directory};
+    style_context.style_dirs.push_back((fs::path(scene.directory) / "styles").string());
     if (root.has("style"))
-        scene.style = parse_style_field(root["style"], scene.directory, style_dirs);
+        scene.style = parse_style_field(root["style"], style_context);
     else
         scene.style.name = "default";
+    if (!style_overrides.empty()) {
+        auto layer = read_yaml_text("style: {}", "command line");
+        apply_overrides(*layer, style_overrides);
+        std::vector<std::string> visiting;
+        apply_style_layer(root_field(layer)["style"], scene.style, style_context, visiting);
+    }
     if (root.has("camera") && root.has("cameras"))
         root["cameras"].fail("give either `camera` (one) or `cameras` (a named list), not both");
     if (root.has("cameras")) {
@@ -487,7 +504,8 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     Field objects = root.require("objects");
     if (objects.size() == 0) objects.fail("the scene has no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
-        scene.objects.push_back(parse_object(objects[i], i, scene.directory));
+        scene.objects.push_back(
+            parse_object(objects[i], i, scene.directory, scene.style, style_context));
         for (size_t j = 0; j < i; ++j) {
             if (scene.objects[j].name != scene.objects[i].name) continue;
             // An unnamed object got its name from its index; it has no `name`

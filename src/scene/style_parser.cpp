@@ -1,8 +1,12 @@
-// Style presets: YAML -> StyleDesc (docs/styles.md).
+// Style presets: YAML -> StyleDesc (docs/styles.md). A style is built in
+// layers: the preset it `extends:` (recursively), then its own keys, then
+// -D style.* overrides and an object's own `style:` values. Each layer sets
+// only the keys it names, so every value keeps the file and line it came from.
 #include <algorithm>
 #include <filesystem>
 
 #include "scene/scene_desc.hpp"
+#include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
 
 namespace facet {
@@ -10,33 +14,160 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// A chain of presets longer than this is a mistake, not a design.
+constexpr size_t kMaxExtendsDepth = 16;
+
 ShadingModel parse_shading(const Field& f) {
-    std::string name = f.choice(
-        {"flat", "gouraud", "phong", "blinn_phong", "blinn-phong", "unlit", "depth", "normal"});
+    std::string name = f.choice({"flat", "gouraud", "phong", "blinn_phong", "blinn-phong", "unlit",
+                                 "depth", "normal", "palette", "gooch", "toon"});
     if (name == "flat") return ShadingModel::flat;
     if (name == "gouraud") return ShadingModel::gouraud;
     if (name == "phong") return ShadingModel::phong;
     if (name == "unlit") return ShadingModel::unlit;
     if (name == "depth") return ShadingModel::depth;
     if (name == "normal") return ShadingModel::normal;
+    if (name == "palette") return ShadingModel::palette;
+    if (name == "gooch") return ShadingModel::gooch;
+    if (name == "toon") return ShadingModel::toon;
     return ShadingModel::blinn_phong;
 }
 
-StyleDesc parse_style_mapping(const Field& f, const std::string& name) {
-    StyleDesc style;
-    style.name = name;
-    style.where = f.where();
-    f.check_keys({"name", "description", "shading", "depth_range"});
-    if (f.has("name")) style.name = f["name"].text();
-    if (f.has("description")) style.description = f["description"].text();
-    if (f.has("shading")) style.shading = parse_shading(f["shading"]);
-    if (f.has("depth_range")) style.depth_range = f["depth_range"].distance_range();
-    return style;
+float unit_number(const Field& f) {
+    return static_cast<float>(f.number(0, 1));
+}
+
+void apply_toon(const Field& f, ToonDesc& toon) {
+    f.check_keys({"bands", "ramp", "softness", "specular", "rim"});
+    if (f.has("bands")) {
+        Field bands = f["bands"];
+        toon.bands.clear();
+        if (bands.size() == 0) bands.fail("give at least one band: [threshold, level or colour]");
+        for (size_t i = 0; i < bands.size(); ++i) {
+            Field band = bands[i];
+            if (!band.is_sequence() || band.size() != 2)
+                band.fail("a band is [threshold, level] or [threshold, [r, g, b]]");
+            ToonBandDesc b;
+            b.threshold = static_cast<float>(band[0].number(-1, 1));
+            b.value = band[1].is_scalar() ? glm::vec3(static_cast<float>(band[1].number(0, 100)))
+                                          : band[1].color3();
+            if (!toon.bands.empty() && b.threshold <= toon.bands.back().threshold)
+                band[0].fail("band thresholds must increase");
+            toon.bands.push_back(b);
+        }
+    }
+    if (f.has("ramp")) toon.ramp = f["ramp"].boolean();
+    if (f.has("softness")) toon.softness = f["softness"].animated_number(0, 2);
+    if (f.has("specular")) {
+        Field s = f["specular"];
+        s.check_keys({"color", "threshold", "shininess"});
+        if (s.has("color")) toon.specular_color = s["color"].animated_color3();
+        if (s.has("threshold")) toon.specular_threshold = s["threshold"].animated_number(0, 1);
+        if (s.has("shininess"))
+            toon.shininess = static_cast<float>(s["shininess"].number(1, 10000));
+    }
+    if (f.has("rim")) {
+        Field r = f["rim"];
+        r.check_keys({"color", "power", "threshold"});
+        if (r.has("color")) toon.rim_color = r["color"].animated_color3();
+        if (r.has("power")) toon.rim_power = static_cast<float>(r["power"].number(0.1, 64));
+        if (r.has("threshold")) toon.rim_threshold = r["threshold"].animated_number(0, 1);
+    }
+}
+
+void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
+    if (f.is_scalar()) {
+        if (!f.boolean())
+            hatching.reset();
+        else if (!hatching)
+            hatching = HatchingDesc{};
+        return;
+    }
+    f.check_keys({"levels", "scale", "tile_pixels", "space", "angle", "stroke_width", "ink",
+                  "strength", "pencil", "seed"});
+    if (!hatching) hatching = HatchingDesc{};
+    HatchingDesc& h = *hatching;
+    if (f.has("levels")) h.levels = f["levels"].integer(2, 12);
+    if (f.has("scale")) h.scale = static_cast<float>(f["scale"].number(0.01, 1000));
+    if (f.has("tile_pixels")) h.tile_pixels = static_cast<float>(f["tile_pixels"].number(4, 4096));
+    if (f.has("space")) h.screen_space = f["space"].choice({"uv", "screen"}) == "screen";
+    if (f.has("angle")) h.angle = static_cast<float>(f["angle"].number(-360, 360));
+    if (f.has("stroke_width"))
+        h.stroke_width = static_cast<float>(f["stroke_width"].number(0.25, 16));
+    if (f.has("ink")) h.ink = f["ink"].animated_color3();
+    if (f.has("strength")) h.strength = f["strength"].animated_number(0, 1);
+    if (f.has("pencil")) h.pencil = f["pencil"].boolean();
+    if (f.has("seed")) h.seed = f["seed"].integer(0, 1000000);
+}
+
+void apply_line(const Field& f, LineDesc& line) {
+    if (f.is_scalar()) {
+        line.enabled = f.boolean();
+        return;
+    }
+    f.check_keys({"enabled", "width", "color"});
+    line.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
+    if (f.has("width")) line.width = f["width"].animated_number(0.25, 64);
+    if (f.has("color")) line.color = f["color"].animated_color3();
+}
+
+void apply_outlines(const Field& f, OutlinesDesc& o) {
+    f.check_keys({"silhouette", "crease", "boundary", "intersection", "width", "color",
+                  "crease_angle", "depth_threshold"});
+    // `width` and `color` set every kind at once; a kind's own values win.
+    for (LineDesc* line : {&o.silhouette, &o.crease, &o.boundary, &o.intersection}) {
+        if (f.has("width")) line->width = f["width"].animated_number(0.25, 64);
+        if (f.has("color")) line->color = f["color"].animated_color3();
+    }
+    if (f.has("silhouette")) apply_line(f["silhouette"], o.silhouette);
+    if (f.has("crease")) apply_line(f["crease"], o.crease);
+    if (f.has("boundary")) apply_line(f["boundary"], o.boundary);
+    if (f.has("intersection")) apply_line(f["intersection"], o.intersection);
+    if (f.has("crease_angle"))
+        o.crease_angle = static_cast<float>(f["crease_angle"].number(1, 179));
+    if (f.has("depth_threshold"))
+        o.depth_threshold = static_cast<float>(f["depth_threshold"].number(0.0001, 10));
+}
+
+void apply_wireframe(const Field& f, WireframeDesc& w) {
+    if (f.is_scalar()) {
+        w.enabled = f.boolean();
+        return;
+    }
+    f.check_keys({"enabled", "width", "color", "hidden", "hidden_color", "fill", "fill_color"});
+    w.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
+    if (f.has("width")) w.width = f["width"].animated_number(0.25, 64);
+    if (f.has("color")) w.color = f["color"].animated_color3();
+    if (f.has("hidden")) w.hidden = f["hidden"].boolean();
+    if (f.has("hidden_color")) w.hidden_color = f["hidden_color"].animated_color3();
+    if (f.has("fill")) w.fill_shading = f["fill"].choice({"shading", "color"}) == "shading";
+    if (f.has("fill_color")) w.fill_color = f["fill_color"].animated_color3();
 }
 
 bool looks_like_path(const std::string& text) {
     return text.find('/') != std::string::npos || text.ends_with(".yaml") || text.ends_with(".yml");
 }
+
+// The preset file a name or path refers to, or a failure at `field`.
+std::string find_style(const Field& field, const std::string& base_dir,
+                       const std::vector<std::string>& style_dirs) {
+    std::string text = field.text();
+    if (looks_like_path(text)) {
+        fs::path p = fs::path(text).is_absolute() ? fs::path(text) : fs::path(base_dir) / text;
+        std::error_code ec;
+        if (!fs::is_regular_file(p, ec)) field.fail("style file not found: " + p.string());
+        return p.lexically_normal().string();
+    }
+    auto presets = list_style_presets(style_dirs);
+    for (const auto& [name, path] : presets)
+        if (name == text) return path;
+    std::string names;
+    for (const auto& preset : presets) names += (names.empty() ? "" : ", ") + preset.first;
+    field.fail("no style preset named '" + text +
+               "' (available: " + (names.empty() ? "none found" : names) + ")");
+}
+
+StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
+                           std::vector<std::string>& visiting);
 
 }  // namespace
 
@@ -56,15 +187,90 @@ const char* shading_model_name(ShadingModel model) {
             return "depth";
         case ShadingModel::normal:
             return "normal";
+        case ShadingModel::palette:
+            return "palette";
+        case ShadingModel::gooch:
+            return "gooch";
+        case ShadingModel::toon:
+            return "toon";
     }
     return "?";
 }
 
-StyleDesc load_style_file(const std::string& path) {
+void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,
+                       std::vector<std::string>& visiting) {
+    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range",
+                  "base_color", "background",  "palette",  "cool",     "warm",
+                  "alpha",      "beta",        "ambient",  "cels",     "specular",
+                  "shininess",  "toon",        "hatching", "outlines", "wireframe"});
+    if (f.has("extends")) {
+        const std::string path = find_style(f["extends"], context.base_dir, context.style_dirs);
+        if (std::find(visiting.begin(), visiting.end(), path) != visiting.end())
+            f["extends"].fail("extends itself through " + path);
+        if (visiting.size() >= kMaxExtendsDepth)
+            f["extends"].fail("more than " + std::to_string(kMaxExtendsDepth) +
+                              " presets extend one another");
+        const std::string name = style.name;
+        style = load_style_chain(path, context, visiting);
+        style.chain.push_back(style.name);
+        style.name = name;
+        style.description.clear();  // a description speaks for its own file only
+    }
+    if (f.has("name")) style.name = f["name"].text();
+    if (f.has("description")) style.description = f["description"].text();
+    if (f.has("shading")) style.shading = parse_shading(f["shading"]);
+    if (f.has("depth_range")) style.depth_range = f["depth_range"].distance_range();
+    if (f.has("base_color")) {
+        Field c = f["base_color"];
+        if (c.is_scalar() && c.text() == "material")
+            style.base_color.reset();
+        else
+            style.base_color = c.animated_color3();
+    }
+    if (f.has("background")) style.background = f["background"].color4();
+    if (f.has("palette")) {
+        Field p = f["palette"];
+        if (!p.is_sequence() || p.size() != 2) p.fail("must be [shadow colour, lit colour]");
+        style.cool = p[0].animated_color3();
+        style.warm = p[1].animated_color3();
+    }
+    if (f.has("cool")) style.cool = f["cool"].animated_color3();
+    if (f.has("warm")) style.warm = f["warm"].animated_color3();
+    if (f.has("alpha")) style.alpha = f["alpha"].animated_number(0, 10);
+    if (f.has("beta")) style.beta = f["beta"].animated_number(0, 10);
+    if (f.has("ambient")) style.ambient = f["ambient"].animated_number(0, 10);
+    if (f.has("cels")) style.cels = f["cels"].animated_number(0, 64);
+    if (f.has("specular")) style.specular = f["specular"].animated_number(0, 100);
+    if (f.has("shininess")) style.shininess = f["shininess"].animated_number(1, 100000);
+    if (f.has("toon")) apply_toon(f["toon"], style.toon);
+    if (f.has("hatching")) apply_hatching(f["hatching"], style.hatching);
+    if (f.has("outlines")) apply_outlines(f["outlines"], style.outlines);
+    if (f.has("wireframe")) apply_wireframe(f["wireframe"], style.wireframe);
+}
+
+namespace {
+
+StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
+                           std::vector<std::string>& visiting) {
     auto doc = read_yaml_file(path);
     Field root = root_field(doc);
     if (root.is_null()) root.fail("the style file is empty");
-    return parse_style_mapping(root, fs::path(path).stem().string());
+    StyleDesc style;
+    style.name = fs::path(path).stem().string();
+    style.where = root.where();
+    visiting.push_back(path);
+    StyleContext own = context;
+    own.base_dir = fs::path(path).parent_path().string();
+    apply_style_layer(root, style, own, visiting);
+    visiting.pop_back();
+    return style;
+}
+
+}  // namespace
+
+StyleDesc load_style_file(const std::string& path, const std::vector<std::string>& style_dirs) {
+    std::vector<std::string> visiting;
+    return load_style_chain(path, {style_dirs, fs::path(path).parent_path().string()}, visiting);
 }
 
 std::vector<std::pair<std::string, std::string>> list_style_presets(
@@ -86,24 +292,17 @@ std::vector<std::pair<std::string, std::string>> list_style_presets(
     return found;
 }
 
-// `style:` in a scene: a preset name, a path to a preset file, or a mapping.
-StyleDesc parse_style_field(const Field& field, const std::string& base_dir,
-                            const std::vector<std::string>& style_dirs) {
-    if (field.is_map()) return parse_style_mapping(field, "inline");
-    std::string text = field.text();
-    if (looks_like_path(text)) {
-        fs::path p = fs::path(text).is_absolute() ? fs::path(text) : fs::path(base_dir) / text;
-        std::error_code ec;
-        if (!fs::is_regular_file(p, ec)) field.fail("style file not found: " + p.string());
-        return load_style_file(p.lexically_normal().string());
+StyleDesc parse_style_field(const Field& field, const StyleContext& context) {
+    std::vector<std::string> visiting;
+    if (field.is_map()) {
+        StyleDesc style;
+        style.name = "inline";
+        style.where = field.where();
+        apply_style_layer(field, style, context, visiting);
+        return style;
     }
-    auto presets = list_style_presets(style_dirs);
-    for (const auto& [name, path] : presets)
-        if (name == text) return load_style_file(path);
-    std::string names;
-    for (const auto& preset : presets) names += (names.empty() ? "" : ", ") + preset.first;
-    field.fail("no style preset named '" + text +
-               "' (available: " + (names.empty() ? "none found" : names) + ")");
+    return load_style_chain(find_style(field, context.base_dir, context.style_dirs), context,
+                            visiting);
 }
 
 }  // namespace facet

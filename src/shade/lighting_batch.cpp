@@ -1,15 +1,29 @@
 #include "shade/lighting_batch.hpp"
 
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+#include "shade/shadow_map.hpp"
+
 namespace facet {
 
 using simd::splat;
 using simd::vf;
 using simd::vi;
 
+void set_spot_cone(ShadeLight& light, float inner_degrees, float outer_degrees) {
+    const float cos_outer = std::cos(glm::radians(outer_degrees));
+    const float cos_inner = std::cos(glm::radians(std::min(inner_degrees, outer_degrees)));
+    light.is_spot = true;
+    light.spot_scale = 1.0f / std::max(0.001f, cos_inner - cos_outer);
+    light.spot_offset = -cos_outer * light.spot_scale;
+}
+
 void pad_batch(SurfaceBatch& s, int count) {
     for (int i = count; i < simd::kLanes; ++i)
         for (vf* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.ambient, &s.diffuse, &s.specular,
-                      &s.shininess})
+                      &s.shininess, &s.receives_shadow})
             (*v)[i] = (*v)[0];
 }
 
@@ -41,10 +55,14 @@ __attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_ba
     normalise(eye.x - surface.px, eye.y - surface.py, eye.z - surface.pz, s, true);
     const SurfaceBatch& p = surface;
     LightingBatch out;
-    out.dr = out.dg = out.db = p.ambient;
+    const glm::vec3 ambient = ambient_light(lights);
+    out.dr = p.ambient * ambient.x;
+    out.dg = p.ambient * ambient.y;
+    out.db = p.ambient * ambient.z;
     out.sr = out.sg = out.sb = splat(0.0f);
     const vf zero = splat(0.0f);
     for (const ShadeLight& light : lights) {
+        if (light.is_ambient) continue;
         vf lx, ly, lz, rr, rg, rb;
         vi usable = simd::splat_i(-1);
         if (light.is_point) {
@@ -58,6 +76,12 @@ __attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_ba
             ly = dy * inv_len;
             lz = dz * inv_len;
             vf falloff = 1.0f / safe;  // inverse-square
+            if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
+            if (light.is_spot)
+                falloff *= spot_cone(lx * light.direction.x + ly * light.direction.y +
+                                         lz * light.direction.z,
+                                     light);
+            usable &= falloff > zero;
             rr = light.radiance.x * falloff;
             rg = light.radiance.y * falloff;
             rb = light.radiance.z * falloff;
@@ -71,6 +95,18 @@ __attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_ba
         }
         vf n_dot_l = s.nx * lx + s.ny * ly + s.nz * lz;
         vi lit = usable & (n_dot_l > zero);
+        if (light.shadow) {
+            // Shadow-map lookups one lane at a time, only where the light
+            // arrives and the surface receives shadows.
+            vf visible = splat(1.0f);
+            for (int i = 0; i < simd::kLanes; ++i)
+                if (lit[i] && p.receives_shadow[i] > 0.0f)
+                    visible[i] = shadow_visibility(*light.shadow, {p.px[i], p.py[i], p.pz[i]},
+                                                   {s.nx[i], s.ny[i], s.nz[i]});
+            rr *= visible;
+            rg *= visible;
+            rb *= visible;
+        }
         vf d = lit ? p.diffuse * n_dot_l : zero;
         out.dr += d * rr;
         out.dg += d * rg;

@@ -13,6 +13,8 @@ struct SurfaceBatch {
     simd::vf px, py, pz;  // position
     simd::vf nx, ny, nz;  // normal on the viewer's side, any length (normalised here)
     simd::vf ambient, diffuse, specular, shininess;
+    // 1 where shadows darken the point, 0 where its object does not receive them.
+    simd::vf receives_shadow = simd::splat(1.0f);
 };
 
 struct LightingBatch {
@@ -24,6 +26,9 @@ struct LightingBatch {
 // computes harmless values in its unused lanes.
 void pad_batch(SurfaceBatch& s, int count);
 
+// Ambient lights add ambient * their radiance (white 1 without any, see
+// ambient_light); every other light adds its diffuse and highlight, each
+// times the light's shadow visibility at that lane (shade/shadow_map.hpp).
 LightingBatch light_surface_batch(const SurfaceBatch& s, const glm::vec3& eye,
                                   std::span<const ShadeLight> lights, Highlight highlight);
 

@@ -1,0 +1,159 @@
+// Shadow stage: the depth maps of the shadow-casting lights for one frame,
+// rendered through the raster core with the frame's object transforms.
+#include "render/shadow_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace facet {
+namespace {
+
+constexpr size_t kVerticesPerChunk = 16384;
+// Spots wider than this (half-angle, degrees) get a cube map: one
+// perspective map would spread its texels too thin near the edge.
+constexpr float kMaxPerspectiveSpotAngle = 60.0f;
+// Texels round a spot map's cone, and round each cube face past 90 degrees
+// (plus the filter radius), so filters near an edge read real texels.
+constexpr int kEdgeTexels = 2;
+// The sun's map size in scene units moves in steps of 2^(1/8) (about 9%),
+// so a caster moving a little does not change the texel size every frame.
+constexpr double kRadiusStepsPerOctave = 8;
+// Near plane of perspective maps at least this fraction of the far one.
+constexpr float kMinNearOverFar = 1e-4f;
+
+}  // namespace
+
+ShadowStage::ShadowStage(const SceneDesc& scene, const World& world) : world_(world) {
+    for (const Draw& d : world.draws) {
+        if (!world.casts_shadows[d.object]) continue;
+        const uint32_t* first = world.indices.data() + 3 * static_cast<size_t>(d.first_triangle);
+        caster_indices_.insert(caster_indices_.end(), first, first + 3 * d.triangle_count);
+    }
+    light_maps_.assign(scene.lights.size(), nullptr);
+    size_t shadowed = 0;
+    for (const LightDesc& l : scene.lights) shadowed += l.shadows && l.type != LightType::ambient;
+    light_data_.reserve(shadowed);  // no reallocation later: light_maps_ points into it
+    for (size_t i = 0; i < scene.lights.size(); ++i) {
+        const LightDesc& l = scene.lights[i];
+        if (!l.shadows || l.type == LightType::ambient) continue;
+        light_data_.push_back(
+            LightMap{i, ShadowMap{}, Rasterizer(l.shadow_resolution, l.shadow_resolution)});
+    }
+}
+
+void ShadowStage::fit(LightMap& lm, const LightState& light, const Sphere& casters) const {
+    ShadowMap& map = lm.map;
+    const int size = lm.raster.width();
+    map.softness = light.shadow_softness;
+    map.bias = light.shadow_bias;
+    const glm::vec3 centre(casters.center);
+    const float radius = static_cast<float>(casters.radius);
+
+    if (light.type == LightType::directional) {
+        // An orthographic map round the casters' bounding sphere: the sphere
+        // keeps its size as objects turn, its radius moves in steps, and the
+        // map moves by whole texels, so static shadows stay still from frame
+        // to frame (Valient 2008, "Stable rendering of cascaded shadow maps").
+        // Receivers outside the map have no caster between them and the sun.
+        const double steps = std::ceil(std::log2(std::max(casters.radius, 1e-6)) *
+                                       kRadiusStepsPerOctave);
+        const float half = static_cast<float>(std::exp2(steps / kRadiusStepsPerOctave)) *
+                           (1.0f + 2.0f / static_cast<float>(size));
+        const float texel = 2.0f * half / static_cast<float>(size);
+        const ShadowBasis basis = shadow_basis(glm::normalize(light.direction));
+        const float x = std::round(glm::dot(centre, basis.right) / texel) * texel;
+        const float y = std::round(glm::dot(centre, basis.up) / texel) * texel;
+        const float z = glm::dot(centre, basis.forward) - half;
+        const glm::vec3 eye = basis.right * x + basis.up * y + basis.forward * z;
+        set_orthographic(map, size, shadow_view(basis, eye), half, 0.0f, 2.0f * half);
+        return;
+    }
+
+    // Perspective and cube maps reach from just before the nearest caster to
+    // just past the farthest one.
+    const float distance = glm::length(centre - light.position);
+    const float far = std::max((distance + radius) * 1.01f, 1e-3f);
+    const float near = std::max((distance - radius) * 0.99f, far * kMinNearOverFar);
+    const int reach = std::min(size / 4, kEdgeTexels + static_cast<int>(std::ceil(map.softness)));
+    const float widen = static_cast<float>(size) / static_cast<float>(size - 2 * reach);
+    if (light.type == LightType::spot && light.outer_angle <= kMaxPerspectiveSpotAngle) {
+        const float tan_half = std::tan(glm::radians(light.outer_angle)) * widen;
+        set_perspective(map, size, light.position, glm::normalize(light.direction), tan_half,
+                        near, far);
+    } else {
+        set_cube(map, size, light.position, widen, near, far);
+    }
+}
+
+void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state, ThreadPool& pool) {
+    ShadowMap& map = lm.map;
+    std::vector<glm::mat4> draw_clip(world_.draws.size());
+    for (size_t d = 0; d < world_.draws.size(); ++d)
+        draw_clip[d] = map.clip[face] * state.objects[world_.draws[d].object].transform;
+
+    const size_t count = world_.positions.size();
+    clip_.resize(count);
+    const size_t chunks = (count + kVerticesPerChunk - 1) / kVerticesPerChunk;
+    pool.parallel_for(chunks, [&](size_t chunk) {
+        const size_t first = chunk * kVerticesPerChunk;
+        const size_t last = std::min(first + kVerticesPerChunk, count);
+        for (size_t v = first; v < last; ++v) {
+            const uint32_t draw = world_.vertex_draw[v];
+            if (!world_.casts_shadows[world_.draws[draw].object]) continue;
+            clip_[v] = draw_clip[draw] * glm::vec4(world_.positions[v], 1.0f);
+        }
+    });
+
+    RasterInput input;
+    input.clip = clip_.data();
+    input.vertex_count = count;
+    input.indices = caster_indices_.data();
+    input.triangle_count = caster_indices_.size() / 3;
+    input.cull_back = nullptr;  // both sides cast: open meshes and planes too
+    lm.raster.set_geometry(input, pool);
+
+    const int size = map.size;
+    float* texels = map.depth.data() + static_cast<size_t>(face) * size * size;
+    const float infinity = std::numeric_limits<float>::infinity();
+    lm.raster.draw_tiles(pool, [&](const TileVisibility& tile) {
+        for (int ty = 0; ty < tile.height; ++ty) {
+            float* row = texels + static_cast<size_t>(tile.y0 + ty) * size + tile.x0;
+            for (int tx = 0; tx < tile.width; ++tx) {
+                const int at = ty * kTileSize + tx;
+                row[tx] = tile.id[at] == kNoTriangle
+                              ? infinity
+                              : shadow_depth_from_raster(map, tile.depth[at]);
+            }
+        }
+    });
+}
+
+void ShadowStage::render(const FrameState& state, ThreadPool& pool) {
+    if (light_data_.empty()) return;
+    // The casters' bounding sphere: what the maps must hold.
+    std::vector<Sphere> spheres;
+    std::vector<uint8_t> seen(world_.object_bounds.size(), 0);
+    for (const Draw& d : world_.draws) {
+        if (!world_.casts_shadows[d.object] || seen[d.object] ||
+            world_.object_bounds[d.object].empty())
+            continue;
+        seen[d.object] = 1;
+        spheres.push_back(
+            transformed_box_sphere(world_.object_bounds[d.object], state.objects[d.object].transform));
+    }
+    const bool casters = !spheres.empty() && !caster_indices_.empty();
+    const Sphere bounds = enclosing_sphere(spheres);
+    for (LightMap& lm : light_data_) {
+        light_maps_[lm.light] = nullptr;
+        if (!casters) continue;
+        fit(lm, state.lights[lm.light], bounds);
+        for (int face = 0; face < lm.map.faces; ++face) draw_face(lm, face, state, pool);
+        light_maps_[lm.light] = &lm.map;
+    }
+}
+
+}  // namespace facet

@@ -1,0 +1,49 @@
+#pragma once
+// Shadow stage: each frame, the shadow maps of the lights that cast
+// shadows, rendered depth-only through the same raster core as the image
+// (docs/scene-format.md, "Shadows"; the maps and their lookup are in
+// shade/shadow_map.hpp).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec4.hpp>
+
+#include "anim/camera_path.hpp"
+#include "anim/frame_state.hpp"
+#include "core/thread_pool.hpp"
+#include "raster/rasterizer.hpp"
+#include "render/world.hpp"
+#include "shade/shadow_map.hpp"
+
+namespace facet {
+
+class ShadowStage {
+  public:
+    ShadowStage(const SceneDesc& scene, const World& world);
+
+    // Renders this frame's maps. The result depends on the frame alone, not
+    // on the thread count: the raster core's tiles each write their own texels.
+    void render(const FrameState& state, ThreadPool& pool);
+
+    // Per scene light: its map for the last rendered frame, or null when it
+    // casts no shadows (off, an ambient light, or nothing in the scene casts).
+    std::span<const ShadowMap* const> maps() const { return light_maps_; }
+
+  private:
+    struct LightMap {
+        size_t light;  // index into SceneDesc::lights
+        ShadowMap map;
+        Rasterizer raster;  // size x size, reused by every face and frame
+    };
+    void fit(LightMap& lm, const LightState& light, const Sphere& casters) const;
+    void draw_face(LightMap& lm, int face, const FrameState& state, ThreadPool& pool);
+
+    const World& world_;
+    std::vector<uint32_t> caster_indices_;  // triangles of the objects that cast shadows
+    std::vector<glm::vec4> clip_;           // per world vertex; only casters' are written
+    std::vector<LightMap> light_data_;      // never resized after construction: lights point in
+    std::vector<const ShadowMap*> light_maps_;
+};
+
+}  // namespace facet

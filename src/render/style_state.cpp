@@ -1,0 +1,106 @@
+#include "render/style_state.hpp"
+
+#include <cmath>
+
+namespace facet {
+
+const TonalArtMap& TamCache::get(const TamParams& p) {
+    const std::vector<float> key = {static_cast<float>(p.levels),
+                                    static_cast<float>(p.size),
+                                    static_cast<float>(p.seed),
+                                    p.max_darkness,
+                                    p.stroke_width,
+                                    p.hatch_angle,
+                                    p.grain,
+                                    p.paper_shading,
+                                    p.pressure_min,
+                                    p.pressure_max};
+    auto& slot = maps_[key];
+    if (!slot) slot = std::make_unique<TonalArtMap>(generate_tonal_art_map(p));
+    return *slot;
+}
+
+TamParams tam_params(const HatchingDesc& h) {
+    TamParams p = h.pencil ? TamParams::pencil() : TamParams{};
+    p.levels = h.levels;
+    p.seed = static_cast<uint32_t>(h.seed);
+    p.hatch_angle = h.angle;
+    p.stroke_width = h.stroke_width;
+    p.cross_from_level = std::min(p.cross_from_level, h.levels - 1);
+    return p;
+}
+
+StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tams) {
+    StyleState s;
+    s.model = d.shading;
+    if (d.base_color) s.base_color = evaluate(*d.base_color, at);
+
+    PaletteStyle& p = s.palette;
+    p.shadow_color = evaluate(d.cool, at);
+    p.lit_color = evaluate(d.warm, at);
+    p.alpha = evaluate(d.alpha, at);
+    p.beta = evaluate(d.beta, at);
+    p.ambient = evaluate(d.ambient, at);
+    // Keyed cel counts move through whole numbers (a fade from 2 to 6 cels
+    // steps 2, 3, 4, 5, 6).
+    p.cels = static_cast<int>(std::lround(evaluate(d.cels, at)));
+    p.specular = evaluate(d.specular, at);
+    p.shininess = evaluate(d.shininess, at);
+
+    s.gooch.alpha = p.alpha;
+    s.gooch.beta = p.beta;
+    s.gooch.shininess = p.shininess;
+    s.gooch.highlight_color = glm::vec3(p.specular);
+
+    ToonStyle& t = s.toon;
+    t.bands.clear();
+    for (const ToonBandDesc& b : d.toon.bands) t.bands.push_back({b.threshold, b.value});
+    t.mode = d.toon.ramp ? ToonMode::ramp : ToonMode::bands;
+    t.band_softness = evaluate(d.toon.softness, at);
+    t.specular_color = evaluate(d.toon.specular_color, at);
+    t.specular_threshold = evaluate(d.toon.specular_threshold, at);
+    t.shininess = d.toon.shininess;
+    t.rim_color = evaluate(d.toon.rim_color, at);
+    t.rim_power = d.toon.rim_power;
+    t.rim_threshold = evaluate(d.toon.rim_threshold, at);
+
+    if (d.hatching) {
+        HatchingState h;
+        h.tam = &tams.get(tam_params(*d.hatching));
+        h.strength = evaluate(d.hatching->strength, at);
+        if (d.hatching->ink) h.ink = evaluate(*d.hatching->ink, at);
+        h.screen_space = d.hatching->screen_space;
+        h.scale = d.hatching->scale;
+        h.tile_pixels = d.hatching->tile_pixels;
+        h.pencil = d.hatching->pencil;
+        s.hatching = h;
+    }
+    if (d.wireframe.enabled) {
+        s.wireframe = true;
+        s.wire.width = evaluate(d.wireframe.width, at);
+        s.wire.color = evaluate(d.wireframe.color, at);
+        s.wire_fill_shading = d.wireframe.fill_shading;
+        s.wire_fill = evaluate(d.wireframe.fill_color, at);
+    }
+    return s;
+}
+
+bool any_outlines(const OutlinesDesc& o) {
+    return o.silhouette.enabled || o.crease.enabled || o.boundary.enabled || o.intersection.enabled;
+}
+
+OutlineStyle evaluate_outlines(const OutlinesDesc& o, const FrameTime& at, float pixel_scale) {
+    auto line = [&](const LineDesc& d) {
+        return LineStyle{d.enabled, evaluate(d.width, at) * pixel_scale, evaluate(d.color, at)};
+    };
+    OutlineStyle s;
+    s.silhouette = line(o.silhouette);
+    s.crease = line(o.crease);
+    s.boundary = line(o.boundary);
+    s.intersection = line(o.intersection);
+    s.crease_angle = o.crease_angle;
+    s.depth_threshold = o.depth_threshold;
+    return s;
+}
+
+}  // namespace facet

@@ -1,0 +1,118 @@
+#pragma once
+// A style as plain records (docs/styles.md): the shading model and the
+// parameters of each look. Numbers and colours may be keyframed.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/error.hpp"
+#include "scene/animated.hpp"
+
+namespace facet {
+
+// The shading models a style can select (docs/styles.md).
+enum class ShadingModel {
+    flat,
+    gouraud,
+    phong,
+    blinn_phong,
+    unlit,
+    depth,
+    normal,
+    palette,  // the seed-000 method: two-colour diffuse, cels, hatching
+    gooch,    // Gooch et al. 1998 warm/cool
+    toon,     // bands, toon highlight, rim light
+};
+
+struct ToonBandDesc {
+    float threshold;  // in n.l, -1..1: the band starts here
+    glm::vec3 value;  // light level (grey) or colour
+};
+
+struct ToonDesc {
+    std::vector<ToonBandDesc> bands = {
+        {-1.0f, glm::vec3(0.35f)}, {0.0f, glm::vec3(0.7f)}, {0.5f, glm::vec3(1.0f)}};
+    bool ramp = false;                // blend between bands instead of stepping
+    Animated<float> softness = 0.0f;  // width of a softened band edge in n.l
+    Animated<glm::vec3> specular_color = glm::vec3(1);
+    Animated<float> specular_threshold = 0.5f;  // hard highlight where (n.h)^s passes this
+    float shininess = 32;
+    Animated<glm::vec3> rim_color = glm::vec3(0);  // black: no rim light
+    float rim_power = 2;
+    Animated<float> rim_threshold = 0.5f;
+};
+
+// Strokes laid over the shading where it is dark (tonal art maps, Praun et
+// al. 2001), in the object's UV space or in screen space.
+struct HatchingDesc {
+    int levels = 6;
+    float scale = 8;                         // uv space: tiles per UV unit
+    float tile_pixels = 128;                 // screen space: output pixels per tile
+    bool screen_space = false;               // also used for objects without UVs
+    float angle = 45;                        // degrees, the first stroke direction
+    float stroke_width = 1.5f;               // pixels at the tile's size
+    std::optional<Animated<glm::vec3>> ink;  // unset: the object's colour, darkened
+    Animated<float> strength = 1.0f;         // 0 no strokes .. 1 full
+    bool pencil = false;                     // pencil strokes over paper grain
+    int seed = 1;
+};
+
+struct LineDesc {
+    bool enabled = false;
+    Animated<float> width = 1.0f;  // pixels of the output image
+    Animated<glm::vec3> color = glm::vec3(0);
+};
+
+struct OutlinesDesc {
+    LineDesc silhouette, crease, boundary, intersection;
+    float crease_angle = 30;        // degrees between face normals
+    float depth_threshold = 0.02f;  // relative jump in depth that makes a silhouette
+};
+
+struct WireframeDesc {
+    bool enabled = false;
+    Animated<float> width = 1.0f;
+    Animated<glm::vec3> color = glm::vec3(0);
+    bool hidden = false;  // also draw edges behind surfaces
+    Animated<glm::vec3> hidden_color = glm::vec3(0.6f);
+    // What the faces show: their shading, or one flat colour (wireframe "alone").
+    bool fill_shading = true;
+    Animated<glm::vec3> fill_color = glm::vec3(1);
+};
+
+struct StyleDesc {
+    std::string name;         // preset name, file stem, or "inline"
+    std::string description;  // one line, shown by `facet styles`
+    ShadingModel shading = ShadingModel::blinn_phong;
+    // Depth view range in scene units; unset means "fit the scene's bounds".
+    std::optional<glm::vec2> depth_range;
+    // Replaces every object's colour (e.g. clay); unset keeps materials.
+    std::optional<Animated<glm::vec3>> base_color;
+    // Replaces the scene's background colour.
+    std::optional<glm::vec4> background;
+
+    // The seed-000 palette method (design.md §5) and Gooch 1998.
+    Animated<glm::vec3> cool = glm::vec3(0, 0, 0.4f);     // c_shadow; Gooch's blue
+    Animated<glm::vec3> warm = glm::vec3(0.4f, 0.4f, 0);  // c_lit; Gooch's yellow
+    Animated<float> alpha = 0.2f, beta = 0.6f;
+    Animated<float> ambient = 0.2f;  // a in ambient = a.k (palette)
+    Animated<float> cels = 4.0f;     // 0: no quantisation; rounded to a whole number
+    Animated<float> specular = 1.0f;
+    Animated<float> shininess = 32.0f;
+
+    ToonDesc toon;
+    std::optional<HatchingDesc> hatching;
+    OutlinesDesc outlines;
+    WireframeDesc wireframe;
+
+    std::vector<std::string> chain;  // the presets it extends, nearest last
+    SourceLocation where;
+};
+
+const char* shading_model_name(ShadingModel model);
+
+}  // namespace facet
