@@ -233,6 +233,18 @@ TEST_CASE("glTF a mirroring scale flips the posed winding", "[gltf][anim]") {
         require_vec3(parts[0].positions[vertex_at(mesh.parts[0], {1, 0, 0})], {-1, 0, 0});
         for (const auto& n : parts[0].normals) require_vec3(n, {0, 0, 1});
     }
+    SECTION("with normals from the file") {
+        Gltf g;
+        g.one_node_scene({{"attributes",
+                           {{"POSITION", g.floats(kTriangle, "VEC3")},
+                            {"NORMAL", g.floats({0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")}}}});
+        add_channel(g, add_animation(g, "mirror"), 0, "scale", {0, 1}, {1, 1, 1, -1, 1, 1}, "STEP");
+        Mesh mesh = facet::load_gltf(g.write(dir.file("mirror_normals.gltf")));
+        auto parts = posed(mesh, 0, 1.5);
+        CHECK(parts[0].winding_flipped);
+        // The inverse transpose of diag(-1, 1, 1) keeps +Z.
+        for (const auto& n : parts[0].normals) require_vec3(n, {0, 0, 1});
+    }
     SECTION("mirrored at rest, animated to 1") {
         Mesh mesh = triangle_with_channel(dir, "unmirror.gltf", "scale", {0, 1},
                                           {-1, 1, 1, 1, 1, 1}, "STEP", {{"scale", {-1, 1, 1}}});

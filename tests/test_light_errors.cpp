@@ -71,7 +71,7 @@ TEST_CASE("light values out of range name the key and the range", "[scene][error
          "lights.0.shadow_softness", "9\n", "between 0 and 8"},
         {"shadow bias", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
                         "    shadow_bias: -1\n" + objects,
-         "lights.0.shadow_bias", "-1", "between 0 and 100"},
+         "lights.0.shadow_bias", "-1\n", "between 0 and 100"},
         {"shadows not a boolean", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
                                   "    shadows: soft\n" + objects,
          "lights.0.shadows", "soft", "true or false"},

@@ -60,6 +60,9 @@ glm::dquat rotation_at(const Animated<glm::vec3>& a, double frame) {
     return facet::evaluate_rotation(a, FrameTime{frame, 0});
 }
 
+// Rotations this close (in degrees) are equal: acos near 1 loses about 1e-6.
+constexpr double kTiny = 1e-4;
+
 // The angle in degrees of the rotation taking a to b (q and -q are one rotation).
 double angle_between(const glm::dquat& a, const glm::dquat& b) {
     const double d = std::min(1.0, std::abs(glm::dot(a, b)));
@@ -328,7 +331,7 @@ objects:
 TEST_CASE("rotation keys interpolate as rotations", "[anim]") {
     SECTION("0 -> 90 about Y is 45 at the middle") {
         auto r = rotation_track({1, 3}, {{0, 0, 0}, {0, 90, 0}});
-        CHECK(angle_between(rotation_at(r, 2), about_y(45)) < 1e-6);
+        CHECK(angle_between(rotation_at(r, 2), about_y(45)) < kTiny);
         // The rotated +X axis points at (cos 45, 0, -sin 45).
         glm::dvec3 x = rotation_at(r, 2) * glm::dvec3(1, 0, 0);
         CHECK(x.x == Approx(std::sqrt(0.5)));
@@ -336,52 +339,52 @@ TEST_CASE("rotation keys interpolate as rotations", "[anim]") {
     }
     SECTION("170 -> -170 takes the 20 degree arc through 180") {
         auto r = rotation_track({1, 5}, {{0, 170, 0}, {0, -170, 0}});
-        CHECK(angle_between(rotation_at(r, 3), about_y(180)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 2), about_y(175)) < 1e-6);
+        CHECK(angle_between(rotation_at(r, 3), about_y(180)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 2), about_y(175)) < kTiny);
         CHECK(angle_between(rotation_at(r, 1), rotation_at(r, 5)) == Approx(20));
         // `angles` follows the numbers instead: through 0, the long way.
         auto a = rotation_track({1, 5}, {{0, 170, 0}, {0, -170, 0}}, TrackInterpolation::linear,
                                 facet::RotationPath::angles);
-        CHECK(angle_between(rotation_at(a, 3), about_y(0)) < 1e-6);
+        CHECK(angle_between(rotation_at(a, 3), about_y(0)) < kTiny);
     }
     SECTION("0 -> 360 with automatic makes a full turn") {
         auto r = rotation_track({1, 9}, {{0, 0, 0}, {0, 360, 0}});
-        CHECK(angle_between(rotation_at(r, 5), about_y(180)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 3), about_y(90)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 7), about_y(270)) < 1e-6);
+        CHECK(angle_between(rotation_at(r, 5), about_y(180)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 3), about_y(90)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 7), about_y(270)) < kTiny);
     }
     SECTION("rotation: shortest makes 0 -> 360 no motion at all") {
         auto r = rotation_track({1, 9}, {{0, 0, 0}, {0, 360, 0}}, TrackInterpolation::linear,
                                 facet::RotationPath::shortest);
-        for (int f = 1; f <= 9; ++f) CHECK(angle_between(rotation_at(r, f), about_y(0)) < 1e-6);
+        for (int f = 1; f <= 9; ++f) CHECK(angle_between(rotation_at(r, f), about_y(0)) < kTiny);
     }
     SECTION("rotation: angles makes 0 -> 720 two turns") {
         auto r = rotation_track({1, 9}, {{0, 0, 0}, {0, 720, 0}}, TrackInterpolation::linear,
                                 facet::RotationPath::angles);
-        CHECK(angle_between(rotation_at(r, 2), about_y(90)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 3), about_y(180)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 4), about_y(270)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 5), about_y(0)) < 1e-6);
-        CHECK(angle_between(rotation_at(r, 6), about_y(90)) < 1e-6);
+        CHECK(angle_between(rotation_at(r, 2), about_y(90)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 3), about_y(180)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 4), about_y(270)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 5), about_y(0)) < kTiny);
+        CHECK(angle_between(rotation_at(r, 6), about_y(90)) < kTiny);
     }
     SECTION("keys 120 apart turn steadily through a full circle") {
         // Each key is flipped into the previous key's hemisphere, so 240 -> 360
         // continues forward instead of jumping back.
         auto r = rotation_track({0, 10, 20, 30}, {{0, 0, 0}, {0, 120, 0}, {0, 240, 0}, {0, 360, 0}});
         for (int i = 0; i <= 30; ++i)
-            CHECK(angle_between(rotation_at(r, i), about_y(12.0 * i)) < 1e-6);
+            CHECK(angle_between(rotation_at(r, i), about_y(12.0 * i)) < kTiny);
     }
     SECTION("linear extrapolation continues turning") {
         auto r = rotation_track({1, 3}, {{0, 0, 0}, {0, 90, 0}});
         std::const_pointer_cast<Track>(r.track)->after = TrackExtrapolation::linear;
-        CHECK(angle_between(rotation_at(r, 5), about_y(180)) < 1e-6);
+        CHECK(angle_between(rotation_at(r, 5), about_y(180)) < kTiny);
     }
     SECTION("rotation: from YAML") {
         auto scene = load_text(
             "objects:\n  - primitive: cube\n    rotate: { keys: { 1: [0, 0, 0], 9: [0, 720, 0] }, "
             "rotation: angles }\n");
         CHECK(scene.objects[0].rotate.track->rotation == facet::RotationPath::angles);
-        CHECK(angle_between(rotation_at(scene.objects[0].rotate, 3), about_y(180)) < 1e-6);
+        CHECK(angle_between(rotation_at(scene.objects[0].rotate, 3), about_y(180)) < kTiny);
     }
 }
 
@@ -396,7 +399,7 @@ TEST_CASE("a multi-key rotation track never flips between frames", "[anim]") {
         auto r = rotation_track({0, 10, 20, 30, 40, 50}, keys, mode);
         // Through the keys.
         for (size_t k = 0; k < keys.size(); ++k)
-            CHECK(angle_between(rotation_at(r, 10.0 * k), facet::euler_to_quat(keys[k])) < 1e-6);
+            CHECK(angle_between(rotation_at(r, 10.0 * k), facet::euler_to_quat(keys[k])) < kTiny);
         // Each key-to-key arc is under 180 degrees, so 0.05-frame steps (1/200 of
         // a segment) move a few degrees at most; a flip jumps by far more.
         double largest = 0;

@@ -13,7 +13,10 @@
 #include "cli/progress.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "output/atomic_file.hpp"
+#include "output/encoders.hpp"
 #include "raster/raster_limits.hpp"
+#include "render/contact_sheet.hpp"
 #include "render/render_job.hpp"
 #include "render/world.hpp"
 
@@ -195,6 +198,95 @@ int info_command(const std::string& path) {
     return 0;
 }
 
+int styles_command() {
+    const auto presets = list_style_presets(default_style_dirs());
+    size_t widest = 0;
+    for (const auto& [name, path] : presets) widest = std::max(widest, name.size());
+    for (const auto& [name, path] : presets) {
+        std::string description;
+        try {
+            StyleDesc style = load_style_file(path, default_style_dirs());
+            description = style.description;
+            if (!style.chain.empty()) description += " (extends " + style.chain.back() + ")";
+        } catch (const Error& e) {
+            description = std::string("error: ") + e.what();
+        }
+        std::printf("%-*s  %s\n", static_cast<int>(widest), name.c_str(), description.c_str());
+    }
+    return 0;
+}
+
+struct SheetArgs {
+    std::string scene;
+    std::string styles;  // comma-separated, or "all"
+    std::string vary;    // key=v1,v2,...
+    int frame = 0;
+    std::string cell = "320x240";
+    int columns = 0;
+    std::string output;
+    unsigned threads = 0;
+    std::vector<std::string> defines;
+};
+
+int sheet_command(const SheetArgs& args) {
+    SheetRequest request;
+    request.scene = args.scene;
+    request.options.style_dirs = default_style_dirs();
+    for (const auto& d : args.defines) request.options.overrides.push_back(parse_define(d));
+    std::tie(request.cell_width, request.cell_height) = parse_size(args.cell);
+    request.frame = args.frame;
+    request.columns = args.columns;
+    request.threads = args.threads;
+
+    std::vector<std::string> styles = split_list(args.styles);
+    if (args.styles == "all") {
+        styles.clear();
+        for (const auto& preset : list_style_presets(default_style_dirs()))
+            styles.push_back(preset.first);
+    }
+    std::string vary_key;
+    std::vector<std::string> values;
+    if (!args.vary.empty()) {
+        const size_t eq = args.vary.find('=');
+        if (eq == std::string::npos || eq == 0 || eq + 1 == args.vary.size())
+            fail_input(command_line("--vary " + args.vary), "",
+                       "expected key.path=v1,v2,..., e.g. style.cels=2,3,4");
+        vary_key = args.vary.substr(0, eq);
+        values = split_list(args.vary.substr(eq + 1));
+    }
+    if (styles.empty() && values.empty())
+        fail_input(command_line("sheet"), "",
+                   "give --styles a,b,... (or all) and/or --vary key=v1,v2");
+    if (styles.empty()) styles.push_back("");
+    if (values.empty()) values.push_back("");
+    for (const std::string& style : styles)
+        for (const std::string& value : values) {
+            SheetCell cell;
+            if (!style.empty()) {
+                cell.overrides.push_back({"style", style, "--styles " + style});
+                cell.label = style;
+            }
+            if (!value.empty()) {
+                cell.overrides.push_back({vary_key, value, "--vary " + vary_key + "=" + value});
+                const std::string leaf = vary_key.substr(vary_key.rfind('.') + 1);
+                cell.label += (cell.label.empty() ? "" : ", ") + leaf + "=" + value;
+            }
+            request.cells.push_back(cell);
+        }
+
+    const ColorImage sheet = render_contact_sheet(request);
+    std::string output = args.output;
+    if (output.empty())
+        output = (std::filesystem::path("out") /
+                  (std::filesystem::path(args.scene).stem().string() + "-sheet.png"))
+                     .string();
+    const auto parent = std::filesystem::path(output).parent_path();
+    if (!parent.empty()) make_directories(parent.string());
+    write_file_atomically(output, encode_png_color(sheet, 6));
+    std::printf("wrote %s (%zu cells)\n", output.c_str(), request.cells.size());
+    return 0;
+}
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
@@ -268,6 +360,27 @@ int run_command_line(int argc, char** argv) {
         app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
     add_scene_options(validate, validate_args);
 
+    CLI::App* styles = app.add_subcommand("styles", "List the style presets with a description");
+
+    SheetArgs sheet_args;
+    CLI::App* sheet = app.add_subcommand(
+        "sheet", "Render one frame with each style or parameter value into a labelled grid PNG");
+    sheet->add_option("scene", sheet_args.scene, "Scene file (YAML)")->required();
+    sheet->add_option("--styles", sheet_args.styles, "Presets, comma-separated, or 'all'");
+    sheet->add_option("--vary", sheet_args.vary,
+                      "One value per cell: key.path=v1,v2,... (e.g. style.cels=2,3,4,6)");
+    sheet->add_option("--frame", sheet_args.frame, "Frame to render (default: the scene's first)");
+    sheet->add_option("--cell", sheet_args.cell, "Cell size WIDTHxHEIGHT (default 320x240)");
+    sheet->add_option("--columns", sheet_args.columns, "Cells per row (default: about square)")
+        ->check(CLI::Range(0, 64));
+    sheet->add_option("-o,--output", sheet_args.output,
+                      "PNG to write (default out/SCENE-sheet.png)");
+    sheet->add_option("--threads", sheet_args.threads, "Worker threads (0: one per core)")
+        ->check(CLI::Range(0u, 256u));
+    sheet->add_option("-D,--define", sheet_args.defines, "Override a scene value (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+
     std::string mesh_path;
     CLI::App* info = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
@@ -283,6 +396,8 @@ int run_command_line(int argc, char** argv) {
         if (render->parsed()) return render_command(render_args);
         if (validate->parsed()) return validate_command(validate_args);
         if (info->parsed()) return info_command(mesh_path);
+        if (styles->parsed()) return styles_command();
+        if (sheet->parsed()) return sheet_command(sheet_args);
     } catch (const Error& e) {
         std::fprintf(stderr, "facet: error: %s\n", e.what());
         return static_cast<int>(e.code());

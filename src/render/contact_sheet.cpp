@@ -1,0 +1,57 @@
+#include "render/contact_sheet.hpp"
+
+#include <cmath>
+
+#include "core/thread_pool.hpp"
+#include "post/labels.hpp"
+#include "render/frame_renderer.hpp"
+
+namespace facet {
+namespace {
+
+constexpr int kLabelScale = 2;  // font pixels per unit: legible at 320 px cells
+constexpr int kPadding = 6;     // pixels around each label
+const glm::vec4 kSheetBackground(0.9f, 0.9f, 0.9f, 1.0f);
+const glm::vec3 kLabelColor(0.02f, 0.02f, 0.02f);
+
+}  // namespace
+
+ColorImage render_contact_sheet(const SheetRequest& request) {
+    const int count = static_cast<int>(request.cells.size());
+    const int columns = request.columns > 0
+                            ? request.columns
+                            : static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+    const int rows = (count + columns - 1) / columns;
+    const int label_band = label_height(kLabelScale) + 2 * kPadding;
+    const int pitch_x = request.cell_width, pitch_y = request.cell_height + label_band;
+    ColorImage sheet(columns * pitch_x, rows * pitch_y, kSheetBackground);
+
+    ThreadPool pool(request.threads);
+    for (int c = 0; c < count; ++c) {
+        const SheetCell& cell = request.cells[static_cast<size_t>(c)];
+        SceneOptions options = request.options;
+        options.overrides.insert(options.overrides.end(), cell.overrides.begin(),
+                                 cell.overrides.end());
+        options.overrides.push_back({"output.size",
+                                     "[" + std::to_string(request.cell_width) + ", " +
+                                         std::to_string(request.cell_height) + "]",
+                                     "sheet cell size"});
+        const SceneDesc scene = load_scene(request.scene, options);
+        const World world = build_world(scene);
+        FrameRenderer renderer(scene, world, pool);
+        FrameImages images;
+        const int frame = request.frame != 0 ? request.frame : scene.output.frames.front();
+        renderer.render(frame, 0, images);
+
+        const int x0 = (c % columns) * pitch_x, y0 = (c / columns) * pitch_y;
+        for (int y = 0; y < request.cell_height; ++y)
+            for (int x = 0; x < request.cell_width; ++x)
+                sheet.at(x0 + x, y0 + y) = images.color.at(x, y);
+        const int text_width = label_width(cell.label, kLabelScale);
+        draw_label(sheet, x0 + std::max(kPadding, (request.cell_width - text_width) / 2),
+                   y0 + request.cell_height + kPadding, cell.label, kLabelColor, kLabelScale);
+    }
+    return sheet;
+}
+
+}  // namespace facet
