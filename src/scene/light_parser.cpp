@@ -94,7 +94,7 @@ LightDesc parse_light(const Field& f) {
             hint = "; a directional light shines from infinitely far along its direction";
         if (key == "direction" && light.type == LightType::point)
             hint = "; a point light shines every way from its position (a spot has a direction)";
-        f.key(key).fail("'" + key + "' does not apply to a" +
+        f[key].fail("'" + key + "' does not apply to a" +
                         (light.type == LightType::ambient ? "n " : " ") + type.type +
                         " light (its keys are: " + list + ")" + hint);
     }
