@@ -41,12 +41,12 @@ bool near_point(const glm::dvec3& a, const glm::dvec3& b, double eps = 1e-4) {
     return glm::length(a - b) <= eps;
 }
 
-#define CHECK_POINT(a, b)                                                        \
-    do {                                                                         \
-        const glm::dvec3 pa(a), pb(b);                                           \
-        INFO("got (" << pa.x << ", " << pa.y << ", " << pa.z << "), expected (" \
-                     << pb.x << ", " << pb.y << ", " << pb.z << ")");            \
-        CHECK(near_point(pa, pb));                                               \
+#define CHECK_POINT(a, b)                                                                       \
+    do {                                                                                        \
+        const glm::dvec3 pa(a), pb(b);                                                          \
+        INFO("got (" << pa.x << ", " << pa.y << ", " << pa.z << "), expected (" << pb.x << ", " \
+                     << pb.y << ", " << pb.z << ")");                                           \
+        CHECK(near_point(pa, pb));                                                              \
     } while (0)
 
 }  // namespace
@@ -73,7 +73,8 @@ TEST_CASE("a spline path passes through its points at constant speed", "[camera]
         for (int i = 0; i <= n; ++i) samples.push_back(path.at_fraction(double(i) / n));
         for (const glm::vec3& p : points) {
             double nearest = 1e30;
-            for (const auto& s : samples) nearest = std::min(nearest, glm::length(s - glm::dvec3(p)));
+            for (const auto& s : samples)
+                nearest = std::min(nearest, glm::length(s - glm::dvec3(p)));
             CHECK(nearest <= path.length() / n);
         }
 
@@ -180,14 +181,15 @@ TEST_CASE("orbit: start angle, direction, elevation, turns and keyed values", "[
                 glm::dvec3(1, 2 + 2, 3 + 4 * std::cos(glm::radians(30.0))));
     // Keyed radius 2 -> 6 and elevation 0 -> 60 over frames 1-3: 4 and 30 at frame 2,
     // a quarter turn (of 1-4) round: +X.
-    CHECK_POINT(position("{ radius: { keys: { 1: 2, 3: 6 } }, elevation: { keys: { 1: 0, 3: 60 } } }",
-                         2),
-                glm::dvec3(4 * std::cos(glm::radians(30.0)), 2, 0));
+    CHECK_POINT(
+        position("{ radius: { keys: { 1: 2, 3: 6 } }, elevation: { keys: { 1: 0, 3: 60 } } }", 2),
+        glm::dvec3(4 * std::cos(glm::radians(30.0)), 2, 0));
     // Keyed start angle and centre with no turning.
-    CHECK_POINT(position("{ radius: 2, elevation: 0, turns: 0, start_angle: { keys: { 1: 0, 4: 90 } },"
-                         " center: { keys: { 1: [0, 0, 0], 4: [3, 0, 0] } } }",
-                         4),
-                glm::dvec3(5, 0, 0));
+    CHECK_POINT(
+        position("{ radius: 2, elevation: 0, turns: 0, start_angle: { keys: { 1: 0, 4: 90 } },"
+                 " center: { keys: { 1: [0, 0, 0], 4: [3, 0, 0] } } }",
+                 4),
+        glm::dvec3(5, 0, 0));
     // The orbit looks at its centre.
     auto scene = load_text("output: { frames: 1-4 }\ncamera: { orbit: { center: [1, 2, 3] } }\n" +
                            test::kMinimalObjects);
@@ -285,9 +287,9 @@ FitResult check_frame(const SceneDesc& scene, const World& world, int frame, boo
         }
         // The sphere around the object's transformed box, worked out here.
         const glm::dmat4 dm(model);
-        const double stretch = std::max({glm::length(glm::dvec3(dm[0])),
-                                         glm::length(glm::dvec3(dm[1])),
-                                         glm::length(glm::dvec3(dm[2]))});
+        const double stretch =
+            std::max({glm::length(glm::dvec3(dm[0])), glm::length(glm::dvec3(dm[1])),
+                      glm::length(glm::dvec3(dm[2]))});
         spheres.push_back(
             {glm::dvec3(dm * glm::dvec4((glm::dvec3(b.min) + glm::dvec3(b.max)) * 0.5, 1.0)),
              glm::length(glm::dvec3(b.max) - glm::dvec3(b.min)) * 0.5 * stretch});
@@ -300,7 +302,8 @@ FitResult check_frame(const SceneDesc& scene, const World& world, int frame, boo
     // The camera aims at the sphere's centre, so its silhouette is a circle of
     // angular radius asin(r / d): tan of that, in NDC, on the narrower side.
     CHECK(near_point(glm::dvec3(state.camera.target), all.center, 1e-3));
-    const double tan_silhouette = all.radius / std::sqrt(distance * distance - all.radius * all.radius);
+    const double tan_silhouette =
+        all.radius / std::sqrt(distance * distance - all.radius * all.radius);
     const double fill = tan_silhouette * std::max(m.projection[0][0], m.projection[1][1]);
     return {fill, distance};
 }
@@ -367,8 +370,7 @@ TEST_CASE("framing with an orbit circles the objects at the fitted distance", "[
     }
 }
 
-TEST_CASE("framing one object ignores the others but near and far keep all in range",
-          "[camera]") {
+TEST_CASE("framing one object ignores the others but near and far keep all in range", "[camera]") {
     SceneDesc scene = load_text(framing_scene(30, 100, 100, "{ objects: ball, margin: 0 }"));
     World world = build_world(scene);
     const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
@@ -383,7 +385,8 @@ TEST_CASE("framing one object ignores the others but near and far keep all in ra
     CHECK(largest > 1);
     // The fitted planes still hold every object's corners.
     for (size_t i = 0; i < scene.objects.size(); ++i)
-        for (const glm::dvec3& c : world_corners(world.object_bounds[i], state.objects[i].transform)) {
+        for (const glm::dvec3& c :
+             world_corners(world.object_bounds[i], state.objects[i].transform)) {
             const Projected p = project(m, c);
             CHECK(p.depth >= state.camera.near);
             CHECK(p.depth <= state.camera.far);
@@ -408,7 +411,8 @@ TEST_CASE("a framing camera fits the clip plane it is not given", "[camera]") {
         World world = build_world(scene);
         const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
         const CameraMatrices m = make_camera(state.camera, 1280.0f / 720.0f);
-        for (const glm::dvec3& c : world_corners(world.object_bounds[0], state.objects[0].transform)) {
+        for (const glm::dvec3& c :
+             world_corners(world.object_bounds[0], state.objects[0].transform)) {
             const Projected p = project(m, c);
             CHECK(p.depth >= state.camera.near);
             CHECK(p.depth <= state.camera.far);

@@ -87,7 +87,7 @@ std::string sha_of(const std::string& path) {
 
 }  // namespace
 
-TEST_CASE("--camera all renders each camera into its own folder", "[cli][camera]") {
+TEST_CASE("render --camera all puts each camera in its own folder", "[cli][camera]") {
     TempDir dir("cli-cams");
     const std::string scene = write_text(dir.file("pair.yaml"), two_camera_scene());
     Run r = render(dir, scene, "--camera all");
@@ -189,9 +189,9 @@ TEST_CASE("an output.path with {camera} renders every camera by default", "[cli]
     Run one = render(dir, scene, "--camera side", "out-side");
     INFO(one.result.output);
     REQUIRE(one.result.exit_code == 0);
-    CHECK(files_under(one.out) ==
-          std::vector<std::string>{"shots/side/f0001.png", "shots/side/f0002.png",
-                                   "shots/side/manifest.json"});
+    CHECK(files_under(one.out) == std::vector<std::string>{"shots/side/f0001.png",
+                                                           "shots/side/f0002.png",
+                                                           "shots/side/manifest.json"});
 }
 
 TEST_CASE("output templates that cannot work stop the run before anything is written",
@@ -212,9 +212,9 @@ TEST_CASE("output templates that cannot work stop the run before anything is wri
         Run single = render(dir, scene, "--frames 2", "out-single");
         INFO(single.result.output);
         CHECK(single.result.exit_code == 0);
-        CHECK(files_under(single.out) ==
-              std::vector<std::string>{"noframe/front.png", "noframe/manifest.json",
-                                       "noframe/side.png"});
+        CHECK(files_under(single.out) == std::vector<std::string>{"noframe/front.png",
+                                                                  "noframe/manifest.json",
+                                                                  "noframe/side.png"});
     }
     SECTION("no {camera} with two cameras") {
         const std::string text = two_camera_scene("  path: \"{scene}/{frame}.{ext}\"\n");

@@ -20,4 +20,7 @@ TEST_CASE("render: glTF box textured",    "[render]") { check_render({"tests/sce
 TEST_CASE("render: double-sided tubes",   "[render]") { check_render({"tests/scenes/double_sided.yaml", 1, "double-sided.png"}); }
 TEST_CASE("render: shapes 4 samples",     "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-aa4.png", {}, {"output.samples=4"}}); }
 TEST_CASE("render: polyhedra",            "[render]") { check_render({"tests/scenes/polyhedra.yaml", 1, "polyhedra.png"}); }
+TEST_CASE("render: glTF skin animation",  "[render]") { check_render({"scenes/tentacles.yaml", 30, "tentacles-0030.png", {}, {"output.size=[320, 180]", "output.samples=1"}}); }
+TEST_CASE("render: eased product spin",   "[render]") { check_render({"scenes/product-spin.yaml", 30, "product-spin-0030.png", {}, {"output.size=[240, 180]", "output.samples=1"}}); }
+TEST_CASE("render: spline fly-around",    "[render]") { check_render({"scenes/flyaround.yaml", 50, "flyaround-0050.png", {}, {"output.size=[320, 180]", "output.samples=1"}}); }
 // clang-format on

@@ -95,9 +95,9 @@ TEST_CASE("step holds each key until the next one", "[anim]") {
 
 TEST_CASE("linear interpolates each segment in a straight line", "[anim]") {
     Track t = scalar_track({1, 5, 9}, {0, 10, -2});
-    CHECK(at(t, 3) == Approx(5));       // 0 + 10 * 2/4
-    CHECK(at(t, 7) == Approx(4));       // 10 - 12 * 2/4
-    CHECK(at(t, 8) == Approx(1));       // 10 - 12 * 3/4
+    CHECK(at(t, 3) == Approx(5));  // 0 + 10 * 2/4
+    CHECK(at(t, 7) == Approx(4));  // 10 - 12 * 2/4
+    CHECK(at(t, 8) == Approx(1));  // 10 - 12 * 3/4
     CHECK(at(t, 5) == Approx(10));
 }
 
@@ -185,8 +185,7 @@ TEST_CASE("eased modes follow the CSS cubic-bezier timing curves", "[anim]") {
 
 TEST_CASE("bezier (0, 0, 1, 1) is linear, and eased tracks ease each segment", "[anim]") {
     for (double s = 0; s <= 1.0; s += 0.05)
-        CHECK(facet::ease(TrackInterpolation::bezier, {0, 0, 1, 1}, s) ==
-              Approx(s).margin(1e-9));
+        CHECK(facet::ease(TrackInterpolation::bezier, {0, 0, 1, 1}, s) == Approx(s).margin(1e-9));
     Track t = scalar_track({1, 11, 21}, {0, 10, 30}, TrackInterpolation::ease_in_out);
     CHECK(at(t, 6) == Approx(5));    // s = 0.5 -> 0.5
     CHECK(at(t, 16) == Approx(20));  // second segment, also its middle
@@ -225,9 +224,9 @@ TEST_CASE("extrapolation before and after the keys: hold, cycle, linear", "[anim
     }
     SECTION("linear continues the end segments") {
         t.before = t.after = TrackExtrapolation::linear;
-        CHECK(at(t, 5) == Approx(-5));    // slope +1 before 10
+        CHECK(at(t, 5) == Approx(-5));  // slope +1 before 10
         CHECK(at(t, 0) == Approx(-10));
-        CHECK(at(t, 35) == Approx(-5));   // slope -1 after 30
+        CHECK(at(t, 35) == Approx(-5));  // slope -1 after 30
         CHECK(at(t, 50) == Approx(-20));
     }
     SECTION("before and after chosen separately from YAML") {
@@ -271,10 +270,10 @@ TEST_CASE("time: true keys by seconds since the first frame at output.fps", "[an
     };
     const std::string seconds = "{ keys: { 0: 1, 2: 3 }, time: true }";
     const std::string frames24 = "{ frames: 1-49, fps: 24 }";
-    CHECK(intensity_at(frames24, seconds, 1) == Approx(1));   // 0 s
+    CHECK(intensity_at(frames24, seconds, 1) == Approx(1));     // 0 s
     CHECK(intensity_at(frames24, seconds, 13) == Approx(1.5));  // 12/24 = 0.5 s
-    CHECK(intensity_at(frames24, seconds, 25) == Approx(2));  // 1 s
-    CHECK(intensity_at(frames24, seconds, 49) == Approx(3));  // 2 s
+    CHECK(intensity_at(frames24, seconds, 25) == Approx(2));    // 1 s
+    CHECK(intensity_at(frames24, seconds, 49) == Approx(3));    // 2 s
     // The first frame of the range is time 0, whatever its number; fps 10.
     const std::string frames10 = "{ frames: 10-40, fps: 10 }";
     CHECK(intensity_at(frames10, seconds, 10) == Approx(1));
@@ -284,8 +283,7 @@ TEST_CASE("time: true keys by seconds since the first frame at output.fps", "[an
     CHECK(intensity_at(frames24, "{ keys: { 0: 1, 2: 3 } }", 25) == Approx(3));
     CHECK(intensity_at(frames24, "{ keys: { 0: 1, 2: 3 } }", 1) == Approx(2));
     // Fractional seconds as keys.
-    CHECK(intensity_at(frames24, "{ keys: { 0.25: 0, 0.75: 1 }, time: true }", 13) ==
-          Approx(0.5));
+    CHECK(intensity_at(frames24, "{ keys: { 0.25: 0, 0.75: 1 }, time: true }", 13) == Approx(0.5));
 }
 
 TEST_CASE("evaluated values stay inside the field's range", "[anim]") {
@@ -370,7 +368,8 @@ TEST_CASE("rotation keys interpolate as rotations", "[anim]") {
     SECTION("keys 120 apart turn steadily through a full circle") {
         // Each key is flipped into the previous key's hemisphere, so 240 -> 360
         // continues forward instead of jumping back.
-        auto r = rotation_track({0, 10, 20, 30}, {{0, 0, 0}, {0, 120, 0}, {0, 240, 0}, {0, 360, 0}});
+        auto r =
+            rotation_track({0, 10, 20, 30}, {{0, 0, 0}, {0, 120, 0}, {0, 240, 0}, {0, 360, 0}});
         for (int i = 0; i <= 30; ++i)
             CHECK(angle_between(rotation_at(r, i), about_y(12.0 * i)) < kTiny);
     }
@@ -391,8 +390,8 @@ TEST_CASE("rotation keys interpolate as rotations", "[anim]") {
 TEST_CASE("a multi-key rotation track never flips between frames", "[anim]") {
     // Keys on all three axes, with neighbours more than 180 apart on some axes
     // (but under 360, so the shorter arc is used).
-    const std::vector<glm::dvec3> keys = {
-        {0, 0, 0}, {90, 45, 0}, {170, 100, -60}, {-170, 200, 30}, {10, -30, 170}, {-100, 80, -170}};
+    const std::vector<glm::dvec3> keys = {{0, 0, 0},       {90, 45, 0},    {170, 100, -60},
+                                          {-170, 200, 30}, {10, -30, 170}, {-100, 80, -170}};
     for (auto mode : {TrackInterpolation::linear, TrackInterpolation::smooth,
                       TrackInterpolation::ease_in_out}) {
         INFO("interpolation " << static_cast<int>(mode));
@@ -437,8 +436,8 @@ TEST_CASE("malformed tracks are rejected where they are written", "[anim]") {
         {"misspelt track key", "translate: { keys: { 1: [0, 0, 0] }, interpolaton: step }",
          tr + ".interpolaton", "interpolaton", "did you mean 'interpolation'"},
         {"bezier handles without interpolation: bezier",
-         "translate: { keys: { 1: [0, 0, 0] }, bezier: [0.1, 0, 0.9, 1] }", tr + ".bezier",
-         "[0.1", "interpolation: bezier"},
+         "translate: { keys: { 1: [0, 0, 0] }, bezier: [0.1, 0, 0.9, 1] }", tr + ".bezier", "[0.1",
+         "interpolation: bezier"},
         {"interpolation: bezier without handles",
          "translate: { keys: { 1: [0, 0, 0] }, interpolation: bezier }", tr + ".interpolation",
          "bezier", "bezier: [x1, y1, x2, y2]"},
@@ -458,17 +457,19 @@ TEST_CASE("malformed tracks are rejected where they are written", "[anim]") {
         {"key value outside the field's range",
          "material: { specular: { keys: { 1: 0.5, 5: 2000 } } }",
          "objects.0.material.specular.keys.5", "2000", "between 0 and 1000"},
-        {"a negative colour as a key", "material: { color: { keys: { 1: [1, 1, 1], 2: [1, -1, 0] } } }",
+        {"a negative colour as a key",
+         "material: { color: { keys: { 1: [1, 1, 1], 2: [1, -1, 0] } } }",
          "objects.0.material.color.keys.2.1", "-1, 0]", ">= 0"},
         {"unknown extrapolation", "translate: { keys: { 1: [0, 0, 0] }, extrapolation: bounce }",
          tr + ".extrapolation", "bounce", "hold, cycle, linear"},
         {"unknown extrapolation side",
          "translate: { keys: { 1: [0, 0, 0] }, extrapolation: { after: hold, during: cycle } }",
          tr + ".extrapolation.during", "during", "unknown key"},
-        {"rotation path on a non-rotation", "translate: { keys: { 1: [0, 0, 0] }, rotation: angles }",
-         tr + ".rotation", "rotation:", "unknown key"},
-        {"time not a boolean", "translate: { keys: { 1: [0, 0, 0] }, time: seconds }",
-         tr + ".time", "seconds", ""},
+        {"rotation path on a non-rotation",
+         "translate: { keys: { 1: [0, 0, 0] }, rotation: angles }", tr + ".rotation",
+         "rotation:", "unknown key"},
+        {"time not a boolean", "translate: { keys: { 1: [0, 0, 0] }, time: seconds }", tr + ".time",
+         "seconds", ""},
     };
     for (const Case& c : cases) {
         DYNAMIC_SECTION(c.name) {

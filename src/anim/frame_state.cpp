@@ -57,8 +57,8 @@ LightState evaluate_light(const LightDesc& l, const FrameTime& at) {
     s.position = evaluate(l.position, at);
     if (l.kelvin) {
         const LinearRgb c = kelvin_to_linear_srgb(evaluate(*l.kelvin, at));
-        s.color = glm::vec3(static_cast<float>(c.r), static_cast<float>(c.g),
-                            static_cast<float>(c.b));
+        s.color =
+            glm::vec3(static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b));
     } else {
         s.color = evaluate(l.color, at);
     }
@@ -160,30 +160,29 @@ CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
     }
     if (cam.frame) {
         const FramedBounds framed = framed_bounds(scene, bounds, objects, cam.frame->objects);
+        // The margin is a fraction of the view left free: the view angles
+        // shrink by 1 + margin, so the bounds reach 1 / (1 + margin) of the
+        // half-view for any fov and aspect.
         const double grow = 1.0 + cam.frame->margin;
-        const ViewAngles view = view_angles(
+        ViewAngles view = view_angles(
             state.fov_degrees, static_cast<double>(scene.output.width) / scene.output.height);
+        view.tan_half_vertical /= grow;
+        view.tan_half_horizontal /= grow;
         centre = framed.sphere.center;
         if (glm::length(toward_camera) < 1e-12) toward_camera = {0, 0, 1};
-        if (cam.frame->fit_box) {
-            std::vector<glm::dvec3> grown;
-            for (const glm::dvec3& c : framed.corners)
-                grown.push_back(centre + (c - centre) * grow);
-            distance =
-                corners_fit_distance(grown, centre, toward_camera, glm::dvec3(state.up), view);
-        } else {
-            distance = sphere_fit_distance({centre, framed.sphere.radius * grow}, view);
-        }
+        distance = cam.frame->fit_box ? corners_fit_distance(framed.corners, centre, toward_camera,
+                                                             glm::dvec3(state.up), view)
+                                      : sphere_fit_distance(framed.sphere, view);
     }
     if (cam.orbit || cam.frame) {
         const glm::dvec3 eye = centre + glm::normalize(toward_camera) * distance;
         state.position = glm::vec3(eye);
         state.target = glm::vec3(centre);
-        if (cam.frame && !cam.near && !cam.far) {
+        if (cam.frame && !(cam.near && cam.far)) {
             const glm::vec2 range =
                 fitted_clip_range(scene, bounds, objects, eye, -glm::normalize(toward_camera));
-            state.near = range.x;
-            state.far = range.y;
+            if (!cam.near) state.near = range.x;
+            if (!cam.far) state.far = range.y;
         }
     }
     state.far = std::max(state.far, state.near * 1.001f);
@@ -206,9 +205,12 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
     const auto& frames = scene.output.frames;
     const int first = frames.empty() ? 1 : frames.front();
     const int last = frames.empty() ? 1 : frames.back();
-    // One full cycle spans last - first + 1 frames, so frame last + 1 would
-    // equal frame first again: turntables loop without a repeated frame.
-    state.progress = static_cast<double>(frame - first) / static_cast<double>(last - first + 1);
+    // One full cycle spans last - first + step frames (step: the gap before
+    // the last frame, 1 for a plain range), so frame last + step would equal
+    // frame first again: turntables loop without a repeated frame, and
+    // `1-72:2` turns exactly as the same frames of `1-72`.
+    const int step = frames.size() > 1 ? frames.back() - frames[frames.size() - 2] : 1;
+    state.progress = static_cast<double>(frame - first) / static_cast<double>(last - first + step);
     state.time = static_cast<double>(frame - first) / scene.output.fps;
     const FrameTime at{static_cast<double>(frame), state.time};
 

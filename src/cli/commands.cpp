@@ -59,7 +59,7 @@ SceneOptions scene_options(const RenderArgs& args) {
     SceneOptions options;
     options.style_dirs = default_style_dirs();
     if (!args.size.empty()) {
-        auto [w, h] = parse_size(args.size);
+        auto [w, h] = parse_size(args.size, "--size");
         options.overrides.push_back({"output.size",
                                      "[" + std::to_string(w) + ", " + std::to_string(h) + "]",
                                      "command line --size " + args.size});
@@ -233,7 +233,7 @@ int sheet_command(const SheetArgs& args) {
     request.scene = args.scene;
     request.options.style_dirs = default_style_dirs();
     for (const auto& d : args.defines) request.options.overrides.push_back(parse_define(d));
-    std::tie(request.cell_width, request.cell_height) = parse_size(args.cell);
+    std::tie(request.cell_width, request.cell_height) = parse_size(args.cell, "--cell");
     request.frame = args.frame;
     request.columns = args.columns;
     request.threads = args.threads;
@@ -325,13 +325,13 @@ std::vector<std::string> default_style_dirs() {
     return dirs;
 }
 
-std::pair<int, int> parse_size(const std::string& text) {
+std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
     int w = 0, h = 0;
     char x = 0, extra = 0;
     if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
         w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
         fail_input(
-            command_line("--size " + text), "",
+            command_line(option + " " + text), "",
             "expected WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide));
     return {w, h};
 }

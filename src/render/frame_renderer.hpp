@@ -8,6 +8,7 @@
 #include <glm/vec4.hpp>
 
 #include "anim/frame_state.hpp"
+#include "anim/gltf_pose.hpp"
 #include "core/image.hpp"
 #include "core/thread_pool.hpp"
 #include "post/outlines.hpp"
@@ -55,6 +56,7 @@ class FrameRenderer {
     void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
                     std::span<const ShadeLight> lights, glm::vec2 depth_range, FrameImages& out);
     void update_styles(const FrameState& state);
+    void pose_animated_meshes(const FrameState& state);
 
     const SceneDesc& scene_;
     const World& world_;
@@ -66,6 +68,11 @@ class FrameRenderer {
     FrameImages supersampled_;                // shading target when side_ > 1
     std::vector<Material> frame_materials_;   // with animated values, when there are any
     const std::vector<Material>* materials_;  // this frame's: world_.materials or frame_materials_
+
+    // Model-space vertices of this frame when glTF animations play (a copy
+    // of the world's with the animated parts posed), else empty.
+    std::vector<glm::vec3> posed_positions_, posed_normals_;
+    std::vector<PosedPart> pose_scratch_;
 
     // Styles: [0] the scene's, then one per object with a `style:` of its own.
     std::vector<const StyleDesc*> style_descs_;

@@ -59,8 +59,8 @@ void ShadowStage::fit(LightMap& lm, const LightState& light, const Sphere& caste
         // map moves by whole texels, so static shadows stay still from frame
         // to frame (Valient 2008, "Stable rendering of cascaded shadow maps").
         // Receivers outside the map have no caster between them and the sun.
-        const double steps = std::ceil(std::log2(std::max(casters.radius, 1e-6)) *
-                                       kRadiusStepsPerOctave);
+        const double steps =
+            std::ceil(std::log2(std::max(casters.radius, 1e-6)) * kRadiusStepsPerOctave);
         const float half = static_cast<float>(std::exp2(steps / kRadiusStepsPerOctave)) *
                            (1.0f + 2.0f / static_cast<float>(size));
         const float texel = 2.0f * half / static_cast<float>(size);
@@ -82,8 +82,8 @@ void ShadowStage::fit(LightMap& lm, const LightState& light, const Sphere& caste
     const float widen = static_cast<float>(size) / static_cast<float>(size - 2 * reach);
     if (light.type == LightType::spot && light.outer_angle <= kMaxPerspectiveSpotAngle) {
         const float tan_half = std::tan(glm::radians(light.outer_angle)) * widen;
-        set_perspective(map, size, light.position, glm::normalize(light.direction), tan_half,
-                        near, far);
+        set_perspective(map, size, light.position, glm::normalize(light.direction), tan_half, near,
+                        far);
     } else {
         set_cube(map, size, light.position, widen, near, far);
     }
@@ -142,8 +142,8 @@ void ShadowStage::render(const FrameState& state, ThreadPool& pool) {
             world_.object_bounds[d.object].empty())
             continue;
         seen[d.object] = 1;
-        spheres.push_back(
-            transformed_box_sphere(world_.object_bounds[d.object], state.objects[d.object].transform));
+        spheres.push_back(transformed_box_sphere(world_.object_bounds[d.object],
+                                                 state.objects[d.object].transform));
     }
     const bool casters = !spheres.empty() && !caster_indices_.empty();
     const Sphere bounds = enclosing_sphere(spheres);

@@ -1,6 +1,7 @@
 // Vertex stage: model -> world -> clip space for every vertex of the frame,
 // in parallel over fixed chunks (each vertex's result depends only on itself).
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
@@ -39,6 +40,28 @@ void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& e
     }
 }
 
+void FrameRenderer::pose_animated_meshes(const FrameState& state) {
+    if (posed_positions_.empty()) {
+        posed_positions_ = world_.positions;
+        posed_normals_ = world_.normals;
+    }
+    for (const AnimatedMesh& a : world_.animated_meshes) {
+        double seconds = state.objects[a.object].animation_seconds;
+        if (a.loop && a.duration > 0) {
+            seconds = std::fmod(seconds, a.duration);
+            if (seconds < 0) seconds += a.duration;
+        }
+        pose_mesh(*a.mesh, a.animation, seconds, pose_scratch_);
+        for (size_t part = 0; part < pose_scratch_.size(); ++part) {
+            const Draw& d = world_.draws[a.first_draw + part];
+            std::copy(pose_scratch_[part].positions.begin(), pose_scratch_[part].positions.end(),
+                      posed_positions_.begin() + d.first_vertex);
+            std::copy(pose_scratch_[part].normals.begin(), pose_scratch_[part].normals.end(),
+                      posed_normals_.begin() + d.first_vertex);
+        }
+    }
+}
+
 void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& camera,
                                  std::span<const ShadeLight> lights) {
     const size_t count = world_.positions.size();
@@ -47,6 +70,10 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     vertices_.world_normal.resize(count);
     const bool gouraud = any_gouraud_;
     vertices_.lit.resize(gouraud ? count : 0);
+    const bool posed = !world_.animated_meshes.empty();
+    if (posed) pose_animated_meshes(state);
+    const std::vector<glm::vec3>& positions = posed ? posed_positions_ : world_.positions;
+    const std::vector<glm::vec3>& normals = posed ? posed_normals_ : world_.normals;
 
     struct DrawTransform {
         glm::mat4 model;
@@ -65,10 +92,10 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
         for (size_t v = first; v < last; ++v) {
             const uint32_t draw = world_.vertex_draw[v];
             const DrawTransform& t = transforms[draw];
-            glm::vec4 world = t.model * glm::vec4(world_.positions[v], 1.0f);
+            glm::vec4 world = t.model * glm::vec4(positions[v], 1.0f);
             vertices_.world_position[v] = glm::vec3(world);
             vertices_.clip[v] = camera.view_projection * world;
-            glm::vec3 n = t.normal * world_.normals[v];
+            glm::vec3 n = t.normal * normals[v];
             float len = glm::length(n);
             vertices_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
         }

@@ -5,6 +5,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "anim/gltf_pose.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
 
@@ -138,6 +139,17 @@ World build_world(const SceneDesc& scene) {
             world.material_object.push_back(o);
         }
 
+        if (obj.animation) {
+            const std::string key = "objects." + std::to_string(o) + ".animation";
+            try {
+                const int animation = find_animation(*mesh, obj.animation->name);
+                world.animated_meshes.push_back(
+                    {o, mesh, animation, animation_duration(*mesh, animation), obj.animation->loop,
+                     static_cast<uint32_t>(world.draws.size())});
+            } catch (const Error& e) {
+                fail_input(obj.animation->where, key, e.what());
+            }
+        }
         for (const MeshPart& part : mesh->parts) {
             Draw d;
             d.object = o;

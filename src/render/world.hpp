@@ -22,10 +22,22 @@ struct Draw {
     bool has_uvs;       // the mesh part had texture coordinates
 };
 
+// An object playing an animation stored in its glTF file: its mesh parts
+// are posed every frame (anim/gltf_pose.hpp) instead of using the rest pose.
+struct AnimatedMesh {
+    uint32_t object;
+    std::shared_ptr<const Mesh> mesh;
+    int animation;
+    double duration;  // seconds
+    bool loop;
+    uint32_t first_draw;  // the mesh's parts are draws first_draw, first_draw + 1, ...
+};
+
 struct World {
     std::vector<Material> materials;
     std::vector<uint32_t> material_object;  // per material: the scene object it belongs to
     std::vector<Draw> draws;
+    std::vector<AnimatedMesh> animated_meshes;
     std::vector<Bounds> object_bounds;  // model space, per scene object
     // Per scene object: `cast_shadows` (drawn into shadow maps), and
     // `receive_shadows` as 1 or 0, the value shading puts in its lanes.

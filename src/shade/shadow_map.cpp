@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <glm/geometric.hpp>
 
@@ -130,7 +131,12 @@ float shadow_depth_from_raster(const ShadowMap& m, float z) {
     return b / (z + a);
 }
 
-float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
+// Built for AVX2 and for baseline x86-64, like the lighting batch; both do
+// the same IEEE operations in the same order.
+__attribute__((target_clones("avx2", "default"))) float shadow_visibility(
+    const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
+    using simd::vf;
+    using simd::vi;
     if (m.size == 0) return 1.0f;
     const bool ortho = m.projection == ShadowProjection::orthographic;
     const int face = m.projection == ShadowProjection::cube ? cube_face(position - m.light_position)
@@ -141,28 +147,26 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     const glm::vec3 n = normal_length > 0.0f
                             ? glm::mat3(view) * (normal * (1.0f / normal_length))
                             : glm::vec3(0.0f);
-    float depth = -p.z;
-    if (!ortho && !(depth > 0.5f * m.near)) return 1.0f;  // behind the light or at it
+    if (!ortho && !(-p.z > 0.5f * m.near)) return 1.0f;  // behind the light or at it
 
     // Scene units per texel at the point: constant for parallel light,
     // growing with the distance from a point light.
-    const float texels_per_unit = 0.5f * static_cast<float>(m.size) * m.scale;
-    float texel = (ortho ? 1.0f : depth) / texels_per_unit;
+    const float units_per_texel = 2.0f / (static_cast<float>(m.size) * m.scale);
+    const float texel_at_point = ortho ? units_per_texel : -p.z * units_per_texel;
 
     // Normal offset, by sin(angle between normal and light).
     const glm::vec3 to_light = ortho ? glm::vec3(0, 0, 1) : glm::normalize(-p);
     const float cos_light = glm::dot(n, to_light);
     const float sin_light = std::sqrt(std::max(0.0f, 1.0f - cos_light * cos_light));
-    p += n * (kNormalOffsetTexels * m.bias * texel * sin_light);
-    depth = -p.z;
-    if (!ortho) {
-        if (!(depth > 0.5f * m.near)) return 1.0f;
-        texel = depth / texels_per_unit;
-    }
+    p += n * (kNormalOffsetTexels * m.bias * texel_at_point * sin_light);
+    const float depth = -p.z;
+    if (!ortho && !(depth > 0.5f * m.near)) return 1.0f;
+    const float texel = ortho ? units_per_texel : depth * units_per_texel;
 
     // Continuous texel coordinates; texel i spans [i, i + 1], as the raster
     // core samples pixel centres.
-    const float xs = ortho ? p.x : p.x / depth, ys = ortho ? p.y : p.y / depth;
+    const float inv_depth = ortho ? 1.0f : 1.0f / depth;
+    const float xs = p.x * inv_depth, ys = p.y * inv_depth;
     const float size = static_cast<float>(m.size);
     const float u = (xs * m.scale + 1.0f) * 0.5f * size;
     const float v = (1.0f - ys * m.scale) * 0.5f * size;
@@ -171,24 +175,17 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     if (m.projection != ShadowProjection::cube && !(u >= 0 && v >= 0 && u <= size && v <= size))
         return 1.0f;
 
-    // Receiver plane: depth change of the surface per texel step in u and v.
-    float gu = 0.0f, gv = 0.0f;
-    if (ortho) {
-        const float nz = std::max(n.z, 1e-6f);
-        gu = n.x / nz * texel;
-        gv = -n.y / nz * texel;
-    } else {
-        // Along the ray (xs, ys, -1) the plane n·(q - p) = 0 is at depth
-        // depth * D / (D + n.x dx + n.y dy), D = n·(xs, ys, -1); its
-        // derivative at the point gives the slope.
-        const float d = std::min(n.x * xs + n.y * ys - n.z, -1e-6f);
-        gu = -n.x / d * texel;
-        gv = n.y / d * texel;
-    }
-    const float limit = kMaxReceiverSlope * texel;
-    gu = std::clamp(gu, -limit, limit);
-    gv = std::clamp(gv, -limit, limit);
-    const float slope = std::max(std::abs(gu), std::abs(gv)) / texel;
+    // Receiver plane: depth change of the surface per texel step in u and
+    // v, in texels. Orthographic: the plane's slope n.x / n.z (v runs down).
+    // Perspective: along the ray (xs, ys, -1) the plane n·(q - p) = 0 lies
+    // at depth * D / (D + n.x dxs + n.y dys), D = n·(xs, ys, -1); its
+    // derivative at the point gives the slope.
+    const float facing = ortho ? -std::max(n.z, 1e-6f) : std::min(n.x * xs + n.y * ys - n.z, -1e-6f);
+    const float inv_facing = -1.0f / facing;
+    const float slope_u = std::clamp(n.x * inv_facing, -kMaxReceiverSlope, kMaxReceiverSlope);
+    const float slope_v = std::clamp(-n.y * inv_facing, -kMaxReceiverSlope, kMaxReceiverSlope);
+    const float gu = slope_u * texel, gv = slope_v * texel;
+    const float slope = std::max(std::abs(slope_u), std::abs(slope_v));
     const float bias = m.bias * texel * (kConstantBiasTexels + kSlopeBiasTexels * slope);
 
     const float half = m.softness + 0.5f;
@@ -196,24 +193,51 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     int first_u, first_v;
     const int count_u = filter_weights(u, half, wu, first_u);
     const int count_v = filter_weights(v, half, wv, first_v);
-    const float* texels = m.depth.data() + static_cast<size_t>(face) * m.size * m.size;
+
+    // Eight columns at a time: per column its weight and the receiver
+    // plane's depth change; unused lanes weigh 0.
+    constexpr int kChunks = (kMaxTaps + simd::kLanes - 1) / simd::kLanes;
+    const int chunks = (count_u + simd::kLanes - 1) / simd::kLanes;
+    vf weight[kChunks], step[kChunks];
+    for (int c = 0; c < chunks; ++c)
+        for (int lane = 0; lane < simd::kLanes; ++lane) {
+            const int a = c * simd::kLanes + lane;
+            weight[c][lane] = a < count_u ? wu[a] : 0.0f;
+            step[c][lane] =
+                a < count_u ? gu * (static_cast<float>(first_u + a) + 0.5f - u) : 0.0f;
+        }
+    // Rows are read directly where all the lanes' columns lie inside the
+    // map, else texel by texel, clamped to its edge.
+    const bool inside = first_u >= 0 && first_u + chunks * simd::kLanes <= m.size;
     const int last = m.size - 1;
-    float lit = 0.0f, total = 0.0f;
+    const float* texels = m.depth.data() + static_cast<size_t>(face) * m.size * m.size;
+    vf lit = simd::splat(0.0f), total = simd::splat(0.0f);
     for (int b = 0; b < count_v; ++b) {
         const int j = first_v + b;
         const float* row = texels + static_cast<size_t>(std::clamp(j, 0, last)) * m.size;
-        const float row_depth = depth - bias + gv * (static_cast<float>(j) + 0.5f - v);
-        float row_lit = 0.0f, row_total = 0.0f;
-        for (int a = 0; a < count_u; ++a) {
-            const int i = first_u + a;
-            const float receiver = row_depth + gu * (static_cast<float>(i) + 0.5f - u);
-            if (receiver <= row[std::clamp(i, 0, last)]) row_lit += wu[a];
-            row_total += wu[a];
+        const vf row_depth = simd::splat(depth - bias + gv * (static_cast<float>(j) + 0.5f - v));
+        const vf row_weight = simd::splat(wv[b]);
+        for (int c = 0; c < chunks; ++c) {
+            vf stored;
+            if (inside) {
+                std::memcpy(&stored, row + first_u + c * simd::kLanes, sizeof stored);
+            } else {
+                for (int lane = 0; lane < simd::kLanes; ++lane)
+                    stored[lane] = row[std::clamp(first_u + c * simd::kLanes + lane, 0, last)];
+            }
+            const vf w = row_weight * weight[c];
+            const vi on = row_depth + step[c] <= stored;
+            lit += on ? w : simd::splat(0.0f);
+            // The total sums the same way, so a fully lit point gets exactly 1.
+            total += w;
         }
-        lit += wv[b] * row_lit;
-        total += wv[b] * row_total;
     }
-    return total > 0.0f ? lit / total : 1.0f;
+    float lit_sum = 0.0f, total_sum = 0.0f;
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+        lit_sum += lit[lane];
+        total_sum += total[lane];
+    }
+    return total_sum > 0.0f ? lit_sum / total_sum : 1.0f;
 }
 
 }  // namespace facet

@@ -1,0 +1,124 @@
+// One reviewed reference render per shipped style preset: the shapes scene
+// at 200x150 (tests/scenes/style_shapes.yaml), frame 1, with --style NAME.
+// Thresholds as in test_render.cpp (render_check.hpp). New baselines:
+// FACET_UPDATE_BASELINES=1, then look at every image before keeping it.
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <set>
+#include <string>
+
+#include "core/thread_pool.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/world.hpp"
+#include "render_check.hpp"
+#include "scene/scene_desc.hpp"
+#include "support.hpp"
+
+using facet::test::check_render;
+
+namespace {
+constexpr const char* kScene = "tests/scenes/style_shapes.yaml";
+// The presets that have a case below; kept in step with styles/ by the last test.
+const std::set<std::string> kCovered = {
+    "blinn-phong",
+    "blueprint",
+    "clay",
+    "depth",
+    "flat",
+    "gooch",
+    "gouraud",
+    "hatching",
+    "ink",
+    "intersections",
+    "normals",
+    "palette",
+    "pencil",
+    "phong",
+    "toon",
+    "toon-outline",
+    "unlit",
+    "wireframe",
+    "wireframe-shaded",
+};
+}  // namespace
+
+// clang-format off
+TEST_CASE("render style: blinn-phong",       "[render][style]") { check_render({kScene, 1, "style_blinn-phong.png", {}, {}, "blinn-phong"}); }
+TEST_CASE("render style: blueprint",         "[render][style]") { check_render({kScene, 1, "style_blueprint.png", {}, {}, "blueprint"}); }
+TEST_CASE("render style: clay",              "[render][style]") { check_render({kScene, 1, "style_clay.png", {}, {}, "clay"}); }
+TEST_CASE("render style: depth",             "[render][style]") { check_render({kScene, 1, "style_depth.png", {}, {}, "depth"}); }
+TEST_CASE("render style: flat",              "[render][style]") { check_render({kScene, 1, "style_flat.png", {}, {}, "flat"}); }
+TEST_CASE("render style: gooch",             "[render][style]") { check_render({kScene, 1, "style_gooch.png", {}, {}, "gooch"}); }
+TEST_CASE("render style: gouraud",           "[render][style]") { check_render({kScene, 1, "style_gouraud.png", {}, {}, "gouraud"}); }
+TEST_CASE("render style: hatching",          "[render][style]") { check_render({kScene, 1, "style_hatching.png", {}, {}, "hatching"}); }
+TEST_CASE("render style: ink",               "[render][style]") { check_render({kScene, 1, "style_ink.png", {}, {}, "ink"}); }
+TEST_CASE("render style: intersections",     "[render][style]") { check_render({kScene, 1, "style_intersections.png", {}, {}, "intersections"}); }
+TEST_CASE("render style: normals",           "[render][style]") { check_render({kScene, 1, "style_normals.png", {}, {}, "normals"}); }
+TEST_CASE("render style: palette",           "[render][style]") { check_render({kScene, 1, "style_palette.png", {}, {}, "palette"}); }
+TEST_CASE("render style: pencil",            "[render][style]") { check_render({kScene, 1, "style_pencil.png", {}, {}, "pencil"}); }
+TEST_CASE("render style: phong",             "[render][style]") { check_render({kScene, 1, "style_phong.png", {}, {}, "phong"}); }
+TEST_CASE("render style: toon",              "[render][style]") { check_render({kScene, 1, "style_toon.png", {}, {}, "toon"}); }
+TEST_CASE("render style: toon-outline",      "[render][style]") { check_render({kScene, 1, "style_toon-outline.png", {}, {}, "toon-outline"}); }
+TEST_CASE("render style: unlit",             "[render][style]") { check_render({kScene, 1, "style_unlit.png", {}, {}, "unlit"}); }
+TEST_CASE("render style: wireframe",         "[render][style]") { check_render({kScene, 1, "style_wireframe.png", {}, {}, "wireframe"}); }
+TEST_CASE("render style: wireframe-shaded",  "[render][style]") { check_render({kScene, 1, "style_wireframe-shaded.png", {}, {}, "wireframe-shaded"}); }
+// clang-format on
+
+TEST_CASE("every shipped preset has a reference render above", "[render][style]") {
+    std::set<std::string> shipped;
+    for (const auto& entry : std::filesystem::directory_iterator(FACET_STYLES_DIR))
+        if (entry.path().extension() == ".yaml") shipped.insert(entry.path().stem().string());
+    CHECK(shipped == kCovered);
+    for (const std::string& name : kCovered)
+        CHECK(std::filesystem::exists(std::string(FACET_BASELINES) + "/style_" + name + ".png"));
+}
+
+namespace {
+
+// A cube seen from above one corner, unlit white faces and black 2-pixel
+// feature edges; `hidden` is the wireframe's `hidden:` value, the hidden
+// edges in red. Returns the number of red pixels.
+int red_pixels_of_cube_wireframe(bool hidden) {
+    facet::test::TempDir dir("wire-hidden");
+    const std::string path = facet::test::write_text(
+        dir.file("s.yaml"),
+        std::string(R"(output: { size: [120, 90], background: [1, 1, 1, 1] }
+camera: { position: [2.2, 2.0, 2.6], target: [0, 0, 0], fov: 40 }
+objects:
+  - primitive: cube
+style:
+  shading: unlit
+  wireframe:
+    width: 2
+    color: [0, 0, 0]
+    fill: color
+    fill_color: [1, 1, 1]
+    hidden_color: [1, 0, 0]
+    hidden: )") + (hidden ? "true" : "false") + "\n");
+    facet::SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const facet::SceneDesc scene = facet::load_scene(path, options);
+    const facet::World world = facet::build_world(scene);
+    facet::ThreadPool pool(1);
+    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameImages images;
+    renderer.render(1, 0, images);
+    int red = 0, black = 0;
+    for (const glm::vec4& c : images.color.pixels) {
+        red += c.r > 0.5f && c.g < 0.3f && c.b < 0.3f;
+        black += c.r < 0.2f && c.g < 0.2f && c.b < 0.2f;
+    }
+    CHECK(black > 100);  // the visible edges are there either way
+    return red;
+}
+
+}  // namespace
+
+// docs/styles.md and the issue: "Wireframe: visible edges only (hidden
+// lines removed) and all edges". `hidden: true` must add the three edges
+// behind the cube, in `hidden_color`.
+TEST_CASE("wireframe hidden: true also draws the edges behind the surfaces", "[render][style]") {
+    CHECK(red_pixels_of_cube_wireframe(false) == 0);
+    CHECK(red_pixels_of_cube_wireframe(true) > 60);
+}
