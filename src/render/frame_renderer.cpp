@@ -69,8 +69,11 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
         object_style_.push_back(obj.style ? static_cast<uint32_t>(style_descs_.size()) : 0);
         if (obj.style) style_descs_.push_back(&*obj.style);
     }
-    for (const StyleDesc* style : style_descs_)
+    for (const StyleDesc* style : style_descs_) {
         any_gouraud_ = any_gouraud_ || style->shading == ShadingModel::gouraud;
+        hidden_edges_on_ =
+            hidden_edges_on_ || (style->wireframe.enabled && style->wireframe.hidden);
+    }
     outlines_on_ = any_outlines(scene.style.outlines);
 }
 
@@ -140,6 +143,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
         shade_tile(tile, camera, lights, style_range, target);
     });
+    if (hidden_edges_on_ && !world_.edge_mask.empty()) draw_hidden_edges(target);
     // Outlines at the sample resolution, widths scaled to match, so the
     // resolve anti-aliases them like the surfaces.
     if (outlines_on_) {

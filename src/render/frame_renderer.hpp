@@ -57,6 +57,7 @@ class FrameRenderer {
                     std::span<const ShadeLight> lights, glm::vec2 depth_range, FrameImages& out);
     void update_styles(const FrameState& state);
     void pose_animated_meshes(const FrameState& state);
+    void draw_hidden_edges(FrameImages& target);
 
     const SceneDesc& scene_;
     const World& world_;
@@ -84,6 +85,9 @@ class FrameRenderer {
     OutlineBuffers outline_buffers_;
     OutlineScratch outline_scratch_;
     ColorImage outline_lines_;
+    bool hidden_edges_on_ = false;  // some style draws hidden wireframe edges
+    std::vector<float> hidden_coverage_;
+    std::vector<glm::vec3> hidden_color_;
 };
 
 // The frame's lights for shading: directional, point and spot lights in

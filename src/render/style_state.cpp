@@ -80,6 +80,8 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         s.wire.width = evaluate(d.wireframe.width, at);
         s.wire.color = evaluate(d.wireframe.color, at);
         s.wire_fill_shading = d.wireframe.fill_shading;
+        s.wire_hidden = d.wireframe.hidden;
+        s.wire_hidden_color = evaluate(d.wireframe.hidden_color, at);
         s.wire_fill = evaluate(d.wireframe.fill_color, at);
     }
     return s;

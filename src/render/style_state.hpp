@@ -39,6 +39,8 @@ struct StyleState {
     bool wireframe = false;
     WireframeStyle wire;
     bool wire_fill_shading = true;
+    bool wire_hidden = false;  // also draw edges behind surfaces
+    glm::vec3 wire_hidden_color{0.6f};
     glm::vec3 wire_fill{1};
 };
 
