@@ -64,7 +64,8 @@ int label_band() {
 }
 
 // A small scene: the palette look on a sphere and a box over a floor.
-const char* kSheetScene = R"(output: { size: [64, 48], frames: 1-2, background: [0.2, 0.2, 0.25, 1] }
+const char* kSheetScene =
+    R"(output: { size: [64, 48], frames: 1-2, background: [0.2, 0.2, 0.25, 1] }
 style: palette
 camera: { position: [0, 2, 5], target: [0, 0.4, 0], fov: 45 }
 lights:
@@ -118,7 +119,8 @@ TEST_CASE("facet styles lists every preset with its description", "[cli][style]"
         REQUIRE_FALSE(style.description.empty());
         CHECK_THAT(line, Contains(style.description));
         CHECK_THAT(line, !Contains("error"));
-        if (!style.chain.empty()) CHECK_THAT(line, Contains("(extends " + style.chain.back() + ")"));
+        if (!style.chain.empty())
+            CHECK_THAT(line, Contains("(extends " + style.chain.back() + ")"));
     }
     CHECK(presets >= 19);
     CHECK(static_cast<int>(lines.size()) == presets);  // one line each, nothing else
@@ -173,9 +175,9 @@ TEST_CASE("facet sheet --vary renders one cell per value", "[cli][style]") {
     const std::string scene = write_text(dir.file("s.yaml"), kSheetScene);
     const std::string row = dir.file("row.png"), grid = dir.file("grid.png");
 
-    RunResult r = facet_shipped("sheet " + quoted(scene) +
-                                " --vary style.cels=2,4,6 --cell 64x48 --columns 3 -o " +
-                                quoted(row));
+    RunResult r =
+        facet_shipped("sheet " + quoted(scene) +
+                      " --vary style.cels=2,4,6 --cell 64x48 --columns 3 -o " + quoted(row));
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.output, Contains("3 cells"));
@@ -215,12 +217,11 @@ TEST_CASE("facet sheet errors exit with code 2 and write nothing", "[cli][style]
         std::string says;
     };
     const std::vector<Case> cases = {
-        {"--vary without '='", "--vary style.cels", "--vary style.cels"},
-        {"--vary without a key", "--vary =2,3", "expected key.path=v1,v2"},
-        {"--vary without values", "--vary style.cels=", "expected key.path=v1,v2"},
-        {"--vary with a bad value after a good one", "--vary style.cels=2,x",
-         "--vary style.cels=x"},
-        {"--vary with an unknown key", "--vary style.cells=2,3", "did you mean 'cels'"},
+        {"vary without '='", "--vary style.cels", "--vary style.cels"},
+        {"vary without a key", "--vary =2,3", "expected key.path=v1,v2"},
+        {"vary without values", "--vary style.cels=", "expected key.path=v1,v2"},
+        {"vary with a bad value after a good one", "--vary style.cels=2,x", "--vary style.cels=x"},
+        {"vary with an unknown key", "--vary style.cells=2,3", "did you mean 'cels'"},
         {"an unknown style", "--styles flat,nosuch", "no style preset named 'nosuch'"},
         {"neither --styles nor --vary", "", "--styles"},
         // The message must name the option the user gave (--cell), not --size.

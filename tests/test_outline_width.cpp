@@ -206,8 +206,8 @@ TEST_CASE("intersection lines lie on the projected line where two boxes cross", 
             worst = std::max(worst, d);
             far_off += d > 2.0f;
         }
-    INFO("segment (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << "), "
-                     << red.size() << " red pixels, farthest " << worst << " px");
+    INFO("segment (" << a.x << ", " << a.y << ") - (" << b.x << ", " << b.y << "), " << red.size()
+                     << " red pixels, farthest " << worst << " px");
     CHECK(far_off == 0);
     // A 2-pixel line along the whole segment.
     CHECK(red.size() >= static_cast<size_t>(1.5f * length));
@@ -230,4 +230,27 @@ TEST_CASE("no intersection lines where the boxes only stand apart", "[render][st
     for (int y = 0; y < r.color.height; ++y)
         for (int x = 0; x < r.color.width; ++x) red += is_red(r.color.at(x, y));
     CHECK(red == 0);
+}
+
+// An object's own `style:` may name outlines (docs/styles.md, "Layers and
+// precedence", step 4). They must either be drawn around that object or be
+// refused when the scene is read — not accepted and silently dropped.
+TEST_CASE("outlines in an object's own style are drawn or refused", "[render][style]") {
+    const std::string own =
+        "    style: { outlines: { silhouette: { width: 3, color: [1, 0, 0] } } }\n";
+    // The scene's style without outlines, and with black 1-pixel silhouettes.
+    for (const std::string& scene_style :
+         {std::string("{ shading: unlit, base_color: [1, 1, 1] }"), silhouettes_only(1.0f)}) {
+        INFO("scene style " << scene_style);
+        require_checked_or_input_error(
+            [&] { return render_text(square_scene(scene_style, 1) + own); }, "outlines",
+            [](const Rendered& r) {
+                REQUIRE(r.scene.objects[0].style.has_value());
+                int red = 0;
+                for (const glm::vec4& c : r.color.pixels)
+                    red += c.r > 0.5f && c.g < 0.3f && c.b < 0.3f;
+                // About 4 x 76 pixels of square border, 3 pixels wide.
+                CHECK(red > 4 * 60 * 2);
+            });
+    }
 }

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
@@ -21,24 +22,9 @@ namespace {
 constexpr const char* kScene = "tests/scenes/style_shapes.yaml";
 // The presets that have a case below; kept in step with styles/ by the last test.
 const std::set<std::string> kCovered = {
-    "blinn-phong",
-    "blueprint",
-    "clay",
-    "depth",
-    "flat",
-    "gooch",
-    "gouraud",
-    "hatching",
-    "ink",
-    "intersections",
-    "normals",
-    "palette",
-    "pencil",
-    "phong",
-    "toon",
-    "toon-outline",
-    "unlit",
-    "wireframe",
+    "blinn-phong",      "blueprint", "clay", "depth",         "flat",    "gooch",
+    "gouraud",          "hatching",  "ink",  "intersections", "normals", "palette",
+    "pencil",           "phong",     "toon", "toon-outline",  "unlit",   "wireframe",
     "wireframe-shaded",
 };
 }  // namespace
@@ -79,11 +65,7 @@ namespace {
 // A cube seen from above one corner, unlit white faces and black 2-pixel
 // feature edges; `hidden` is the wireframe's `hidden:` value, the hidden
 // edges in red. Returns the number of red pixels.
-int red_pixels_of_cube_wireframe(bool hidden) {
-    facet::test::TempDir dir("wire-hidden");
-    const std::string path = facet::test::write_text(
-        dir.file("s.yaml"),
-        std::string(R"(output: { size: [120, 90], background: [1, 1, 1, 1] }
+const char* kWireCube = R"(output: { size: [120, 90], background: [1, 1, 1, 1] }
 camera: { position: [2.2, 2.0, 2.6], target: [0, 0, 0], fov: 40 }
 objects:
   - primitive: cube
@@ -95,7 +77,13 @@ style:
     fill: color
     fill_color: [1, 1, 1]
     hidden_color: [1, 0, 0]
-    hidden: )") + (hidden ? "true" : "false") + "\n");
+)";
+
+int red_pixels_of_cube_wireframe(bool hidden) {
+    facet::test::TempDir dir("wire-hidden");
+    const std::string text =
+        std::string(kWireCube) + "    hidden: " + (hidden ? "true" : "false") + "\n";
+    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
     facet::SceneOptions options;
     options.style_dirs = {FACET_STYLES_DIR};
     const facet::SceneDesc scene = facet::load_scene(path, options);
@@ -121,4 +109,66 @@ style:
 TEST_CASE("wireframe hidden: true also draws the edges behind the surfaces", "[render][style]") {
     CHECK(red_pixels_of_cube_wireframe(false) == 0);
     CHECK(red_pixels_of_cube_wireframe(true) > 60);
+}
+
+namespace {
+
+// Runs of line coverage along one row of a render with white faces and
+// background: total coverage of each run, left to right. `ink` is the line
+// colour's grey level (linear), so coverage = (1 - value) / (1 - ink).
+std::vector<double> line_runs(const facet::ColorImage& image, int y, float ink) {
+    std::vector<double> runs;
+    bool inside = false;
+    for (int x = 0; x < image.width; ++x) {
+        const glm::vec4 c = image.at(x, y);
+        const double a = (1.0 - (c.r + c.g + c.b) / 3.0) / (1.0 - ink);
+        if (a > 0.02) {
+            if (!inside) runs.push_back(0);
+            runs.back() += a;
+        }
+        inside = a > 0.02;
+    }
+    return runs;
+}
+
+}  // namespace
+
+// The wireframe preset's lines should be one width: the cube's contour (a
+// silhouette, where the wireframe draws only the half inside the surface)
+// as wide as the edge between two visible faces.
+TEST_CASE("the wireframe preset draws contour and inner edges equally wide", "[render][style]") {
+    facet::test::TempDir dir("wire-width");
+    const std::string path = facet::test::write_text(
+        dir.file("s.yaml"), R"(output: { size: [120, 90], background: [1, 1, 1, 1], samples: 4 }
+style: wireframe
+camera: { position: [2.2, 2.0, 2.6], target: [0, 0, 0], fov: 40 }
+objects:
+  - primitive: cube
+)");
+    facet::SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const facet::SceneDesc scene = facet::load_scene(path, options);
+    REQUIRE(scene.style.wireframe.enabled);
+    const float width = scene.style.wireframe.width.value;
+    const float ink = scene.style.wireframe.color.value.x;
+    const facet::World world = facet::build_world(scene);
+    facet::ThreadPool pool(1);
+    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameImages images;
+    renderer.render(1, 0, images);
+    // Rows across the cube's lower half: left contour, the near vertical
+    // edge, right contour. The contours are anti-aliased against the
+    // background, so they are compared on average over the rows.
+    double contour = 0;
+    int rows = 0;
+    for (int y = 46; y <= 60; y += 2, ++rows) {
+        const std::vector<double> runs = line_runs(images.color, y, ink);
+        INFO("row " << y);
+        REQUIRE(runs.size() == 3);
+        CHECK(runs[1] == Approx(width).margin(0.15));  // the inner edge is right
+        contour += (runs[0] + runs[2]) / 2;
+    }
+    contour /= rows;
+    INFO("inner edges " << width << " px, contour on average " << contour << " px");
+    CHECK(contour == Approx(width).margin(0.35 * width));
 }

@@ -148,12 +148,12 @@ objects:
     const std::string path = d.scene(text);
 
     const SceneDesc scene = load(path, d.options());
-    CHECK(scene.style.cels.value == 6);                   // beats the preset's 3
-    CHECK(close_to(scene.style.alpha.value, 0.3f));       // from the preset
+    CHECK(scene.style.cels.value == 6);              // beats the preset's 3
+    CHECK(close_to(scene.style.alpha.value, 0.3f));  // from the preset
     CHECK(scene.style.chain == std::vector<std::string>{"base"});
-    CHECK_FALSE(scene.objects[0].style.has_value());      // the scene style as it is
+    CHECK_FALSE(scene.objects[0].style.has_value());  // the scene style as it is
     REQUIRE(scene.objects[1].style.has_value());
-    CHECK(scene.objects[1].style->cels.value == 2);       // beats the scene's 6
+    CHECK(scene.objects[1].style->cels.value == 2);  // beats the scene's 6
     CHECK(close_to(scene.objects[1].style->alpha.value, 0.3f));
 
     const SceneDesc defined =
@@ -162,8 +162,8 @@ objects:
     CHECK(close_to(defined.style.beta.value, 0.25f));
     CHECK(close_to(defined.style.alpha.value, 0.3f));
     REQUIRE(defined.objects[1].style.has_value());
-    CHECK(defined.objects[1].style->cels.value == 2);                // the object beats -D
-    CHECK(close_to(defined.objects[1].style->beta.value, 0.25f));    // ...and keeps the rest of -D
+    CHECK(defined.objects[1].style->cels.value == 2);              // the object beats -D
+    CHECK(close_to(defined.objects[1].style->beta.value, 0.25f));  // ...and keeps the rest of -D
     CHECK(object_style(defined, 0).cels.value == 8);
 
     SECTION("-D style.* also changes a style given by name") {
@@ -217,9 +217,10 @@ TEST_CASE("an object's style reaches the rendered pixels of that object only", "
     TempDir dir("style-object-render");
     // Unlit, camera straight down -z: left box in its material's blue, the
     // right box restyled to red by its own `style:`.
-    const std::string path = write_text(dir.file("s.yaml"), R"(output: { size: [64, 32], background: [0, 0, 0, 1] }
+    const std::string path =
+        write_text(dir.file("s.yaml"), R"(output: { size: [64, 32], background: [0, 0, 0, 1] }
 style: unlit
-camera: { position: [0, 0, 6], target: [0, 0, 0], fov: 40 }
+camera: { position: [0, 0, 6], target: [0, 0, 0], fov: 20 }
 objects:
   - name: left
     primitive: cube
@@ -237,7 +238,8 @@ objects:
     facet::FrameRenderer renderer(scene, world, pool);
     facet::FrameImages images;
     renderer.render(1, 0, images);
-    const glm::vec4 left = images.color.at(16, 16), right = images.color.at(48, 16);
+    // The cube centres land 15 pixels either side of the middle.
+    const glm::vec4 left = images.color.at(17, 16), right = images.color.at(47, 16);
     CHECK(same(glm::vec3(left), {0, 0, 1}));
     CHECK(same(glm::vec3(right), {1, 0, 0}));
 }
@@ -296,15 +298,15 @@ TEST_CASE("every shipped preset loads and describes itself", "[style]") {
         CHECK_FALSE(s.description.empty());
         CHECK(s.description.find('\n') == std::string::npos);  // one line
         // ...and by name from a scene, as users pick it.
-        const std::string scene = write_text(dir.file("s.yaml"), "style: " + name + "\n" +
-                                                                     kMinimalObjects);
+        const std::string scene =
+            write_text(dir.file("s.yaml"), "style: " + name + "\n" + kMinimalObjects);
         CHECK(load(scene).style.shading == s.shading);
     }
 }
 
 TEST_CASE("the palette preset carries the seed-000 defaults", "[style]") {
-    const StyleDesc s = facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette.yaml",
-                                               {FACET_STYLES_DIR});
+    const StyleDesc s =
+        facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette.yaml", {FACET_STYLES_DIR});
     CHECK(s.shading == ShadingModel::palette);
     CHECK(same(s.cool.value, {0, 0, 0.4f}));
     CHECK(same(s.warm.value, {0.4f, 0.4f, 0}));
@@ -322,14 +324,14 @@ TEST_CASE("an unknown style key names file, line, key and the likely one", "[sty
     SECTION("in a preset file") {
         const std::string text = "description: typo\nshadng: toon\n";
         const std::string style = write_text(d.dir.file("styles/typo.yaml"), text);
-        const std::string message = load_error(d.scene("style: typo\n" + kMinimalObjects),
-                                               d.options());
+        const std::string message =
+            load_error(d.scene("style: typo\n" + kMinimalObjects), d.options());
         check_error_at(message, style, line_col(text, "shadng"), "shadng");
         CHECK_THAT(message, Contains("did you mean 'shading'"));
     }
     SECTION("inline in the scene, nested") {
-        const std::string text = "style:\n  shading: toon\n  toon:\n    rim: { colour: [1, 1, 1] }\n" +
-                                 kMinimalObjects;
+        const std::string text =
+            "style:\n  shading: toon\n  toon:\n    rim: { colour: [1, 1, 1] }\n" + kMinimalObjects;
         const std::string path = d.scene(text);
         const std::string message = load_error(path, d.options());
         check_error_at(message, path, line_col(text, "colour"), "style.toon.rim.colour");
@@ -361,11 +363,12 @@ TEST_CASE("bad style values name file, line and key", "[style]") {
         CHECK_THAT(message, Contains("between 0 and 64"));
     }
     SECTION("toon bands out of order") {
-        const std::string text = "description: x\nshading: toon\ntoon:\n"
-                                 "  bands: [[0.5, 1.0], [0.2, 0.5]]\n";
+        const std::string text =
+            "description: x\nshading: toon\ntoon:\n"
+            "  bands: [[0.5, 1.0], [0.2, 0.5]]\n";
         const std::string style = write_text(d.dir.file("styles/bands.yaml"), text);
-        const std::string message = load_error(d.scene("style: bands\n" + kMinimalObjects),
-                                               d.options());
+        const std::string message =
+            load_error(d.scene("style: bands\n" + kMinimalObjects), d.options());
         check_error_at(message, style, line_col(text, "0.2"), "toon.bands.1.0");
         CHECK_THAT(message, Contains("increase"));
     }

@@ -377,17 +377,42 @@ AnimationChoiceDesc parse_animation_choice(const Field& f) {
 
 // An object's `style:` is a preset (name or path) of its own, or values that
 // change the scene's style for this object only.
+bool any_outline(const OutlinesDesc& o) {
+    return o.silhouette.enabled || o.crease.enabled || o.boundary.enabled || o.intersection.enabled;
+}
+
+// Outlines, background and the depth view range belong to the whole image,
+// so an object's style cannot change them: its own keys are errors, and a
+// preset's are left as the scene has them, with a warning.
 StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
-                             const StyleContext& context) {
-    if (!f.is_map()) return parse_style_field(f, context);
-    StyleDesc style = scene_style;
-    std::vector<std::string> visiting;
-    apply_style_layer(f, style, context, visiting);
+                             const StyleContext& context, std::vector<std::string>& warnings) {
+    if (f.is_map())
+        for (const char* key : {"outlines", "background", "depth_range"})
+            if (f.has(key))
+                f.key(key).fail(std::string("'") + key +
+                                "' applies to the whole image; set it in the scene's style");
+    StyleDesc style;
+    if (f.is_map()) {
+        style = scene_style;
+        std::vector<std::string> visiting;
+        apply_style_layer(f, style, context, visiting);
+    } else {
+        style = parse_style_field(f, context);
+        const bool own_outlines = any_outline(style.outlines);
+        if (own_outlines || style.background)
+            warnings.push_back(f.where().describe() + ": '" + f.path() + "': the outlines and " +
+                               "background of preset '" + style.name +
+                               "' apply to whole images only; the scene's style sets them");
+    }
+    style.outlines = scene_style.outlines;
+    style.background = scene_style.background;
+    style.depth_range = scene_style.depth_range;
     return style;
 }
 
 ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_dir,
-                        const StyleDesc& scene_style, const StyleContext& style_context) {
+                        const StyleDesc& scene_style, const StyleContext& style_context,
+                        std::vector<std::string>& warnings) {
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",
@@ -409,7 +434,8 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("rotate")) obj.rotate = f["rotate"].animated_rotation();
     if (f.has("scale")) obj.scale = f["scale"].animated_scale();
     if (f.has("material")) obj.material = parse_material(f["material"], base_dir);
-    if (f.has("style")) obj.style = parse_object_style(f["style"], scene_style, style_context);
+    if (f.has("style"))
+        obj.style = parse_object_style(f["style"], scene_style, style_context, warnings);
     if (f.has("spin")) {
         Field s = f["spin"];
         s.check_keys({"axis", "turns"});
@@ -504,8 +530,8 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     Field objects = root.require("objects");
     if (objects.size() == 0) objects.fail("the scene has no objects");
     for (size_t i = 0; i < objects.size(); ++i) {
-        scene.objects.push_back(
-            parse_object(objects[i], i, scene.directory, scene.style, style_context));
+        scene.objects.push_back(parse_object(objects[i], i, scene.directory, scene.style,
+                                             style_context, scene.warnings));
         for (size_t j = 0; j < i; ++j) {
             if (scene.objects[j].name != scene.objects[i].name) continue;
             // An unnamed object got its name from its index; it has no `name`

@@ -111,6 +111,14 @@ void apply_line(const Field& f, LineDesc& line) {
 }
 
 void apply_outlines(const Field& f, OutlinesDesc& o) {
+    if (f.is_scalar()) {
+        // `outlines: false` turns off every kind (e.g. in a preset that
+        // extends one with outlines); `true` turns on silhouettes and creases.
+        const bool on = f.boolean();
+        o.silhouette.enabled = o.crease.enabled = on;
+        if (!on) o.boundary.enabled = o.intersection.enabled = false;
+        return;
+    }
     f.check_keys({"silhouette", "crease", "boundary", "intersection", "width", "color",
                   "crease_angle", "depth_threshold"});
     // `width` and `color` set every kind at once; a kind's own values win.
