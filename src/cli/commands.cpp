@@ -18,6 +18,7 @@
 #include "raster/raster_limits.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_job.hpp"
+#include "render/thread_study.hpp"
 #include "render/world.hpp"
 
 #ifndef FACET_STYLES_DIR
@@ -287,6 +288,44 @@ int sheet_command(const SheetArgs& args) {
     return 0;
 }
 
+struct BenchArgs {
+    RenderArgs scene;
+    std::string threads = "1,2";
+    std::string output = "out/bench";
+};
+
+int bench_command(const BenchArgs& args) {
+    SceneDesc scene = load_scene(args.scene.scene, scene_options(args.scene));
+    std::vector<int> frames = selected_frames(args.scene);
+    if (frames.empty()) frames = scene.output.frames;
+    std::vector<unsigned> threads;
+    for (const std::string& item : split_list(args.threads)) {
+        char* end = nullptr;
+        const long n = std::strtol(item.c_str(), &end, 10);
+        if (end != item.c_str() + item.size() || n < 1 || n > 256)
+            fail_input(command_line("--threads " + args.threads), "",
+                       "expected thread counts from 1 to 256, e.g. 1,2,4");
+        threads.push_back(static_cast<unsigned>(n));
+    }
+    if (threads.empty())
+        fail_input(command_line("--threads " + args.threads), "", "give at least one thread count");
+    World world = build_world(scene);
+    const bool quiet = args.scene.quiet;
+    const ThreadStudy study =
+        run_thread_study(scene, world, threads, frames, [&](const std::string& line) {
+            if (!quiet) std::fprintf(stderr, "facet: %s\n", line.c_str());
+        });
+    const std::string markdown = thread_study_markdown(study);
+    make_directories(args.output);
+    const std::string base =
+        (std::filesystem::path(args.output) / (scene.name + "-threads")).string();
+    write_file_atomically(base + ".md", markdown);
+    write_file_atomically(base + ".png", encode_png_color(thread_study_plot(study), 6));
+    if (!quiet)
+        std::printf("%s\nwrote %s.md and %s.png\n", markdown.c_str(), base.c_str(), base.c_str());
+    return 0;
+}
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
@@ -381,6 +420,14 @@ int run_command_line(int argc, char** argv) {
         ->take_all()
         ->allow_extra_args(false);
 
+    BenchArgs bench_args;
+    CLI::App* bench = app.add_subcommand(
+        "bench", "Thread study: render a scene's frames at several thread counts; table and plot");
+    add_scene_options(bench, bench_args.scene);
+    bench->add_option("--threads", bench_args.threads, "Thread counts, e.g. 1,2,4 (default 1,2)");
+    bench->add_option("-o,--output", bench_args.output,
+                      "Folder for SCENE-threads.md and .png (default out/bench)");
+
     std::string mesh_path;
     CLI::App* info = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
@@ -397,6 +444,7 @@ int run_command_line(int argc, char** argv) {
         if (validate->parsed()) return validate_command(validate_args);
         if (info->parsed()) return info_command(mesh_path);
         if (styles->parsed()) return styles_command();
+        if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
     } catch (const Error& e) {
         std::fprintf(stderr, "facet: error: %s\n", e.what());
