@@ -40,9 +40,11 @@ const std::string kSpot = "lights:\n  - type: spot\n    position: [0, 3, 0]\n";
 TEST_CASE("light values out of range name the key and the range", "[scene][errors][lights]") {
     const std::string objects = kMinimalObjects;
     run_error_cases({
-        {"outer angle too wide", kSpot + "    direction: [0, -1, 0]\n    outer_angle: 95\n" + objects,
+        {"outer angle too wide",
+         kSpot + "    direction: [0, -1, 0]\n    outer_angle: 95\n" + objects,
          "lights.0.outer_angle", "95", "between 0.01 and 90"},
-        {"inner angle negative", kSpot + "    direction: [0, -1, 0]\n    inner_angle: -5\n" + objects,
+        {"inner angle negative",
+         kSpot + "    direction: [0, -1, 0]\n    inner_angle: -5\n" + objects,
          "lights.0.inner_angle", "-5", "between 0 and 90"},
         {"inner wider than outer",
          kSpot + "    direction: [0, -1, 0]\n    inner_angle: 40\n    outer_angle: 30\n" + objects,
@@ -50,30 +52,42 @@ TEST_CASE("light values out of range name the key and the range", "[scene][error
         {"inner wider than the default outer",
          kSpot + "    direction: [0, -1, 0]\n    inner_angle: 50\n" + objects,
          "lights.0.inner_angle", "50", "outer_angle (45)"},
-        {"range zero", "lights:\n  - type: point\n    position: [0, 1, 0]\n    range: 0\n" + objects,
+        {"range zero",
+         "lights:\n  - type: point\n    position: [0, 1, 0]\n    range: 0\n" + objects,
          "lights.0.range", "0\n", "between"},
         {"kelvin too cold",
-         "lights:\n  - type: point\n    position: [0, 1, 0]\n    color: { kelvin: 500 }\n" + objects,
+         "lights:\n  - type: point\n    position: [0, 1, 0]\n    color: { kelvin: 500 }\n" +
+             objects,
          "lights.0.color.kelvin", "500", "between 1667 and 25000"},
         {"kelvin key too hot",
          "lights:\n  - type: point\n    position: [0, 1, 0]\n"
          "    color: { kelvin: { keys: { 1: 3000, 5: 90000 } } }\n" +
              objects,
          "lights.0.color.kelvin.keys.5", "90000", "between 1667 and 25000"},
-        {"shadow resolution", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
-                              "    shadow_resolution: 8\n" + objects,
+        {"shadow resolution",
+         "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
+         "    shadow_resolution: 8\n" +
+             objects,
          "lights.0.shadow_resolution", "8\n", "between 16 and 8192"},
-        {"shadow resolution fractional", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
-                                         "    shadow_resolution: 100.5\n" + objects,
+        {"shadow resolution fractional",
+         "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
+         "    shadow_resolution: 100.5\n" +
+             objects,
          "lights.0.shadow_resolution", "100.5", "whole number"},
-        {"shadow softness", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
-                            "    shadow_softness: 9\n" + objects,
+        {"shadow softness",
+         "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
+         "    shadow_softness: 9\n" +
+             objects,
          "lights.0.shadow_softness", "9\n", "between 0 and 8"},
-        {"shadow bias", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
-                        "    shadow_bias: -1\n" + objects,
+        {"shadow bias",
+         "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
+         "    shadow_bias: -1\n" +
+             objects,
          "lights.0.shadow_bias", "-1\n", "between 0 and 100"},
-        {"shadows not a boolean", "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
-                                  "    shadows: soft\n" + objects,
+        {"shadows not a boolean",
+         "lights:\n  - type: directional\n    direction: [0, -1, 0]\n"
+         "    shadows: soft\n" +
+             objects,
          "lights.0.shadows", "soft", "true or false"},
         {"spot direction zero", kSpot + "    direction: [0, 0, 0]\n" + objects,
          "lights.0.direction", "[0, 0, 0]", "[0, 0, 0]"},
@@ -85,8 +99,8 @@ TEST_CASE("light keys that do not apply to the type are named with the type's ke
     const std::string objects = kMinimalObjects;
     run_error_cases({
         {"ambient with a direction",
-         "lights:\n  - type: ambient\n    direction: [0, -1, 0]\n" + objects,
-         "lights.0.direction", "[0, -1, 0]", "does not apply to an ambient light (its keys are: type, color, intensity)"},
+         "lights:\n  - type: ambient\n    direction: [0, -1, 0]\n" + objects, "lights.0.direction",
+         "[0, -1, 0]", "does not apply to an ambient light (its keys are: type, color, intensity)"},
         {"ambient with shadows", "lights:\n  - type: ambient\n    shadows: true\n" + objects,
          "lights.0.shadows", "true", "does not apply to an ambient light"},
         {"point with a cone",
@@ -98,7 +112,8 @@ TEST_CASE("light keys that do not apply to the type are named with the type's ke
         {"unknown light key", "lights:\n  - type: spot\n    cone: 30\n" + objects, "lights.0.cone",
          "cone", "unknown key"},
         {"unknown colour key",
-         "lights:\n  - type: point\n    position: [0, 1, 0]\n    color: { kelvn: 3000 }\n" + objects,
+         "lights:\n  - type: point\n    position: [0, 1, 0]\n    color: { kelvn: 3000 }\n" +
+             objects,
          "lights.0.color.kelvn", "kelvn", "unknown key"},
         {"unknown light type", "lights:\n  - type: area\n" + objects, "lights.0.type", "area",
          "directional, point, spot, ambient"},
@@ -119,9 +134,8 @@ TEST_CASE("object shadow flags and material aliases are checked", "[scene][error
     run_error_cases({
         {"cast_shadows not a boolean", "objects:\n  - primitive: cube\n    cast_shadows: maybe\n",
          "objects.0.cast_shadows", "maybe", "true or false"},
-        {"receive_shadows not a boolean",
-         "objects:\n  - primitive: cube\n    receive_shadows: 2\n", "objects.0.receive_shadows",
-         "2\n", "true or false"},
+        {"receive_shadows not a boolean", "objects:\n  - primitive: cube\n    receive_shadows: 2\n",
+         "objects.0.receive_shadows", "2\n", "true or false"},
         {"ka and ambient both",
          "objects:\n  - primitive: cube\n    material: { ambient: 0.1, ka: 0.2 }\n",
          "objects.0.material.ka", "0.2", "'ka' and 'ambient'"},

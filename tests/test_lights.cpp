@@ -61,7 +61,8 @@ TEST_CASE("a spot light: full inside the inner cone, none outside the outer", "[
     const std::vector<double> degrees = {0, 10, 25, 29, 31, 60, 20, 30};
     std::vector<float> xs;
     for (double a : degrees) xs.push_back(static_cast<float>(3 * std::tan(a * M_PI / 180)));
-    const LightingBatch l = light_surface_batch(floor_lanes(xs), {0, 5, 0}, lights, Highlight::blinn);
+    const LightingBatch l =
+        light_surface_batch(floor_lanes(xs), {0, 5, 0}, lights, Highlight::blinn);
     for (size_t i = 0; i < degrees.size(); ++i) {
         const double a = degrees[i] * M_PI / 180;
         const double d2 = 9 / (std::cos(a) * std::cos(a));  // distance^2 to the light
@@ -89,8 +90,8 @@ TEST_CASE("a spot with equal cone angles has a hard edge", "[shade][lights]") {
     const std::vector<ShadeLight> lights = make_shade_lights({s});
     const float in = static_cast<float>(3 * std::tan(29.8 * M_PI / 180));
     const float out = static_cast<float>(3 * std::tan(30.2 * M_PI / 180));
-    const LightingBatch l = light_surface_batch(floor_lanes({in, out}), {0, 5, 0}, lights,
-                                                Highlight::blinn);
+    const LightingBatch l =
+        light_surface_batch(floor_lanes({in, out}), {0, 5, 0}, lights, Highlight::blinn);
     CHECK(l.dr[0] > 0.5f);
     CHECK(l.dr[1] == 0.0f);
 }
@@ -116,8 +117,8 @@ TEST_CASE("ambient lights: colour times intensity times ka, white 1 without any"
     CHECK(lights[2].is_ambient);
     CHECK(sample_light(lights[1], {0, 0, 0}).radiance == glm::vec3(0.0f));
 
-    const LightingBatch l = light_surface_batch(floor_lanes({0}, 0.2f), {0, 5, 0}, lights,
-                                                Highlight::blinn);
+    const LightingBatch l =
+        light_surface_batch(floor_lanes({0}, 0.2f), {0, 5, 0}, lights, Highlight::blinn);
     // ka * (a + b) + kd * n.l * sun = 0.2 * (1.1, 0.6, 2.1) + 0.5
     CHECK(l.dr[0] == Approx(0.2 * 1.1 + 0.5));
     CHECK(l.dg[0] == Approx(0.2 * 0.6 + 0.5));
@@ -126,8 +127,8 @@ TEST_CASE("ambient lights: colour times intensity times ka, white 1 without any"
 
     // No ambient light: the material's ka alone (white ambient of 1).
     const std::vector<ShadeLight> none = make_shade_lights({sun});
-    const LightingBatch m = light_surface_batch(floor_lanes({0}, 0.2f), {0, 5, 0}, none,
-                                                Highlight::blinn);
+    const LightingBatch m =
+        light_surface_batch(floor_lanes({0}, 0.2f), {0, 5, 0}, none, Highlight::blinn);
     CHECK(m.dr[0] == Approx(0.7));
     // An ambient light of intensity 0 turns ambient off.
     LightState dark = a;
@@ -148,8 +149,8 @@ TEST_CASE("a point light's range fades it smoothly to zero", "[shade][lights]") 
     // Window (1 - (d/4)^4)^2 on top of 1/d^2; lanes at d = 1, 2, 3, 4, 5.
     std::vector<float> xs = {0, std::sqrt(3.0f), std::sqrt(8.0f), std::sqrt(15.0f),
                              std::sqrt(24.0f)};
-    const LightingBatch l = light_surface_batch(floor_lanes(xs), {0, 5, 0}, lights,
-                                                Highlight::blinn);
+    const LightingBatch l =
+        light_surface_batch(floor_lanes(xs), {0, 5, 0}, lights, Highlight::blinn);
     // d = 2: (1 - 1/16)^2 = 0.87890625, / 4, times n.l = 1/2.
     CHECK(l.dr[1] == Approx(0.87890625 / 4 * 0.5).epsilon(1e-5));
     for (int i = 0; i < 4; ++i) {
@@ -158,14 +159,14 @@ TEST_CASE("a point light's range fades it smoothly to zero", "[shade][lights]") 
         INFO("d = " << d);
         CHECK(l.dr[i] == Approx(window / (d * d) * (1 / d)).margin(1e-7).epsilon(1e-5));
     }
-    CHECK(l.dr[3] == 0.0f);  // at the range
-    CHECK(l.dr[4] == 0.0f);  // beyond it
+    CHECK(l.dr[3] == 0.0f);                             // at the range
+    CHECK(l.dr[4] == 0.0f);                             // beyond it
     CHECK(range_window(3.99f * 3.99f, 0.25f) < 1e-4f);  // reaches zero without a step
 
     // Without a range, plain inverse square.
     p.range = 0;
-    const LightingBatch n = light_surface_batch(floor_lanes(xs), {0, 5, 0}, make_shade_lights({p}),
-                                                Highlight::blinn);
+    const LightingBatch n =
+        light_surface_batch(floor_lanes(xs), {0, 5, 0}, make_shade_lights({p}), Highlight::blinn);
     CHECK(n.dr[1] == Approx(0.25 * 0.5));
 }
 

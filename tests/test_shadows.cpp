@@ -152,8 +152,9 @@ objects:
   - { name: floor, primitive: { type: plane, size: 24 }, material: )" +
                        kFloorMaterial + " }\n";
     if (side_box)
-        yaml += std::string("  - { name: side, primitive: { type: cube, size: 0.6 }, translate: "
-                            "[2.5, 3.2, 0], material: ") +
+        yaml += std::string(
+                    "  - { name: side, primitive: { type: cube, size: 0.6 }, translate: "
+                    "[2.5, 3.2, 0], material: ") +
                 kRedMaterial + " }\n";
     return yaml;
 }
@@ -195,7 +196,7 @@ TEST_CASE("points inside a shadow are dark and outside lit: spot light", "[shado
             outer + ", intensity: 25, shadows: true }"));
         check_dark(r, {0, 0, 0});
         check_dark(r, {0.7f, 0, -0.7f});
-        check_lit(r, {2, 0, -1}, 0.6f);   // 24 degrees off the axis, inside the inner cone
+        check_lit(r, {2, 0, -1}, 0.6f);  // 24 degrees off the axis, inside the inner cone
         check_lit(r, {-1.6f, 0, 0}, 0.6f);
     }
 }
@@ -232,7 +233,8 @@ std::string open_floor(const std::string& light, bool shadows) {
 output: { size: [200, 200], background: [0, 0, 0, 1] }
 style: blinn-phong
 camera: { position: [0, 6, 8], target: [0, 0, 0], fov: 60 }
-lights: [ )") + light + ", shadows: " + (shadows ? "true" : "false") + R"( } ]
+lights: [ )") +
+           light + ", shadows: " + (shadows ? "true" : "false") + R"( } ]
 objects:
   - { name: floor, primitive: { type: plane, size: 16 }, material: )" +
            kFloorMaterial + " }\n";
@@ -241,12 +243,13 @@ objects:
 }  // namespace
 
 TEST_CASE("no acne: a lit floor has no shadowed pixel", "[shadow][render]") {
-    for (const char* light :
-         {"{ type: directional, direction: [0, -1, 0]", "{ type: directional, direction: [3, -1, 1]",
-          "{ type: directional, direction: [1, -3, -2]",
-          "{ type: spot, position: [1, 3, 0], direction: [-1, -2, 0], outer_angle: 55, intensity: 9",
-          "{ type: point, position: [0, 2, 0], intensity: 4",
-          "{ type: point, position: [3, 0.5, -1], intensity: 4"}) {
+    for (const char* light : {"{ type: directional, direction: [0, -1, 0]",
+                              "{ type: directional, direction: [3, -1, 1]",
+                              "{ type: directional, direction: [1, -3, -2]",
+                              "{ type: spot, position: [1, 3, 0], direction: [-1, -2, 0], "
+                              "outer_angle: 55, intensity: 9",
+                              "{ type: point, position: [0, 2, 0], intensity: 4",
+                              "{ type: point, position: [3, 0.5, -1], intensity: 4"}) {
         INFO(light);
         const Rendered on = render_yaml(open_floor(light, true));
         const Rendered off = render_yaml(open_floor(light, false));
@@ -303,7 +306,8 @@ objects:
 
 TEST_CASE("contact: the floor right next to a box's base is shadowed", "[shadow][render]") {
     // Light travelling +x shadows the floor on the box's +x side; the camera
-    // looks at that side. With a 512-texel map a texel is about 0.012 units.
+    // looks at that side. With a 512-texel map a texel is about 0.0125
+    // units: the shadow reaches to within 1.2 texels of the base.
     const Rendered r = render_yaml(std::string(R"(
 output: { size: [300, 300], background: [0, 0, 0, 1] }
 style: blinn-phong
@@ -314,7 +318,7 @@ objects:
                                    kRedMaterial + R"( }
   - { name: floor, primitive: { type: plane, size: 4 }, material: )" +
                                    kFloorMaterial + " }\n");
-    for (float gap : {0.03f, 0.06f, 0.2f, 0.4f})
+    for (float gap : {0.015f, 0.03f, 0.06f, 0.2f, 0.4f})
         for (float z : {-0.4f, 0.0f, 0.4f}) check_dark(r, {0.5f + gap, 0, z});
     // Past the shadow's end (x = 1) the floor is lit again.
     check_lit(r, {1.15f, 0, 0}, threshold(2.0f / std::sqrt(5.0f)));

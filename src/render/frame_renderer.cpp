@@ -111,7 +111,11 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);
-    shadows_.render(state, pool_);
+    // Animated meshes take this frame's pose first: the shadow maps and the
+    // image are both drawn from it.
+    const bool posed = !world_.animated_meshes.empty();
+    if (posed) pose_animated_meshes(state);
+    shadows_.render(state, posed ? posed_positions_ : world_.positions, pool_);
     const std::vector<ShadeLight> lights = make_shade_lights(state.lights, shadows_.maps());
 
     vertex_stage(state, camera, lights);

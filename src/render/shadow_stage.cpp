@@ -89,13 +89,14 @@ void ShadowStage::fit(LightMap& lm, const LightState& light, const Sphere& caste
     }
 }
 
-void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state, ThreadPool& pool) {
+void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
+                            std::span<const glm::vec3> positions, ThreadPool& pool) {
     ShadowMap& map = lm.map;
-    std::vector<glm::mat4> draw_clip(world_.draws.size());
+    draw_clip_.resize(world_.draws.size());
     for (size_t d = 0; d < world_.draws.size(); ++d)
-        draw_clip[d] = map.clip[face] * state.objects[world_.draws[d].object].transform;
+        draw_clip_[d] = map.clip[face] * state.objects[world_.draws[d].object].transform;
 
-    const size_t count = world_.positions.size();
+    const size_t count = positions.size();
     clip_.resize(count);
     const size_t chunks = (count + kVerticesPerChunk - 1) / kVerticesPerChunk;
     pool.parallel_for(chunks, [&](size_t chunk) {
@@ -104,7 +105,7 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state, Thr
         for (size_t v = first; v < last; ++v) {
             const uint32_t draw = world_.vertex_draw[v];
             if (!world_.casts_shadows[world_.draws[draw].object]) continue;
-            clip_[v] = draw_clip[draw] * glm::vec4(world_.positions[v], 1.0f);
+            clip_[v] = draw_clip_[draw] * glm::vec4(positions[v], 1.0f);
         }
     });
 
@@ -132,18 +133,30 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state, Thr
     });
 }
 
-void ShadowStage::render(const FrameState& state, ThreadPool& pool) {
+void ShadowStage::render(const FrameState& state, std::span<const glm::vec3> positions,
+                         ThreadPool& pool) {
     if (light_data_.empty()) return;
-    // The casters' bounding sphere: what the maps must hold.
+    // The casters' bounding sphere: what the maps must hold. Animated
+    // meshes are measured in this frame's pose, which can leave their rest
+    // bounds.
+    bounds_ = world_.object_bounds;
+    for (const AnimatedMesh& a : world_.animated_meshes) {
+        Bounds posed;
+        for (size_t part = 0; part < a.mesh->parts.size(); ++part) {
+            const Draw& d = world_.draws[a.first_draw + part];
+            for (uint32_t v = d.first_vertex; v < d.first_vertex + d.vertex_count; ++v)
+                posed.add(positions[v]);
+        }
+        bounds_[a.object] = posed;
+    }
     std::vector<Sphere> spheres;
-    std::vector<uint8_t> seen(world_.object_bounds.size(), 0);
+    std::vector<uint8_t> seen(bounds_.size(), 0);
     for (const Draw& d : world_.draws) {
-        if (!world_.casts_shadows[d.object] || seen[d.object] ||
-            world_.object_bounds[d.object].empty())
+        if (!world_.casts_shadows[d.object] || seen[d.object] || bounds_[d.object].empty())
             continue;
         seen[d.object] = 1;
-        spheres.push_back(transformed_box_sphere(world_.object_bounds[d.object],
-                                                 state.objects[d.object].transform));
+        spheres.push_back(
+            transformed_box_sphere(bounds_[d.object], state.objects[d.object].transform));
     }
     const bool casters = !spheres.empty() && !caster_indices_.empty();
     const Sphere bounds = enclosing_sphere(spheres);
@@ -151,7 +164,7 @@ void ShadowStage::render(const FrameState& state, ThreadPool& pool) {
         light_maps_[lm.light] = nullptr;
         if (!casters) continue;
         fit(lm, state.lights[lm.light], bounds);
-        for (int face = 0; face < lm.map.faces; ++face) draw_face(lm, face, state, pool);
+        for (int face = 0; face < lm.map.faces; ++face) draw_face(lm, face, state, positions, pool);
         light_maps_[lm.light] = &lm.map;
     }
 }

@@ -22,9 +22,11 @@ class ShadowStage {
   public:
     ShadowStage(const SceneDesc& scene, const World& world);
 
-    // Renders this frame's maps. The result depends on the frame alone, not
-    // on the thread count: the raster core's tiles each write their own texels.
-    void render(const FrameState& state, ThreadPool& pool);
+    // Renders this frame's maps from the model-space positions of all world
+    // vertices (World::positions, or this frame's pose of animated meshes).
+    // The result depends on the frame alone, not on the thread count: the
+    // raster core's tiles each write their own texels.
+    void render(const FrameState& state, std::span<const glm::vec3> positions, ThreadPool& pool);
 
     // Per scene light: its map for the last rendered frame, or null when it
     // casts no shadows (off, an ambient light, or nothing in the scene casts).
@@ -37,11 +39,14 @@ class ShadowStage {
         Rasterizer raster;  // size x size, reused by every face and frame
     };
     void fit(LightMap& lm, const LightState& light, const Sphere& casters) const;
-    void draw_face(LightMap& lm, int face, const FrameState& state, ThreadPool& pool);
+    void draw_face(LightMap& lm, int face, const FrameState& state,
+                   std::span<const glm::vec3> positions, ThreadPool& pool);
 
     const World& world_;
     std::vector<uint32_t> caster_indices_;  // triangles of the objects that cast shadows
     std::vector<glm::vec4> clip_;           // per world vertex; only casters' are written
+    std::vector<glm::mat4> draw_clip_;      // per draw: model -> the face's clip space
+    std::vector<Bounds> bounds_;            // per scene object, model space, this frame
     std::vector<LightMap> light_data_;      // never resized after construction: lights point in
     std::vector<const ShadowMap*> light_maps_;
 };

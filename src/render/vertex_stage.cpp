@@ -70,8 +70,7 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     vertices_.world_normal.resize(count);
     const bool gouraud = any_gouraud_;
     vertices_.lit.resize(gouraud ? count : 0);
-    const bool posed = !world_.animated_meshes.empty();
-    if (posed) pose_animated_meshes(state);
+    const bool posed = !world_.animated_meshes.empty();  // posed by render() already
     const std::vector<glm::vec3>& positions = posed ? posed_positions_ : world_.positions;
     const std::vector<glm::vec3>& normals = posed ? posed_normals_ : world_.normals;
 

@@ -38,12 +38,11 @@ std::vector<std::string> with_shadow_keys(std::vector<std::string> keys) {
 }
 
 const std::vector<LightKeys> kLightKeys = {
-    {"directional", LightType::directional,
-     with_shadow_keys({"direction", "color", "intensity"})},
+    {"directional", LightType::directional, with_shadow_keys({"direction", "color", "intensity"})},
     {"point", LightType::point, with_shadow_keys({"position", "range", "color", "intensity"})},
     {"spot", LightType::spot,
-     with_shadow_keys({"position", "direction", "inner_angle", "outer_angle", "range", "color",
-                       "intensity"})},
+     with_shadow_keys(
+         {"position", "direction", "inner_angle", "outer_angle", "range", "color", "intensity"})},
     {"ambient", LightType::ambient, {"color", "intensity"}},
 };
 
@@ -80,8 +79,7 @@ LightDesc parse_light(const Field& f) {
     LightDesc light;
     light.where = f.where();
     f.check_keys({"type", "direction", "position", "color", "intensity", "range", "inner_angle",
-                  "outer_angle", "shadows", "shadow_resolution", "shadow_softness",
-                  "shadow_bias"});
+                  "outer_angle", "shadows", "shadow_resolution", "shadow_softness", "shadow_bias"});
     const LightKeys& type = light_type(f.require("type"));
     light.type = type.value;
     for (const std::string& key : f.keys()) {
@@ -95,8 +93,8 @@ LightDesc parse_light(const Field& f) {
         if (key == "direction" && light.type == LightType::point)
             hint = "; a point light shines every way from its position (a spot has a direction)";
         f[key].fail("'" + key + "' does not apply to a" +
-                        (light.type == LightType::ambient ? "n " : " ") + type.type +
-                        " light (its keys are: " + list + ")" + hint);
+                    (light.type == LightType::ambient ? "n " : " ") + type.type +
+                    " light (its keys are: " + list + ")" + hint);
     }
 
     if (light.type == LightType::directional || light.type == LightType::spot)

@@ -104,7 +104,7 @@ enum class LightType { directional, point, spot, ambient };
 // Lights and their shadows: docs/scene-format.md, "Lights" and "Shadows".
 struct LightDesc {
     LightType type = LightType::directional;
-    Animated<glm::vec3> direction = glm::vec3(0, -1, 0);  // directional, spot: the way light travels
+    Animated<glm::vec3> direction = glm::vec3(0, -1, 0);  // directional, spot: travel direction
     Animated<glm::vec3> position = glm::vec3(0, 0, 0);    // point, spot
     Animated<glm::vec3> color = glm::vec3(1, 1, 1);
     std::optional<Animated<float>> kelvin;  // colour temperature; replaces `color` when set

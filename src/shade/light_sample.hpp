@@ -31,9 +31,8 @@ inline LightSample sample_light(const ShadeLight& light, const glm::vec3& positi
     float falloff = 1.0f / dist2;  // inverse-square
     if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
     if (light.is_spot)
-        falloff *= spot_cone(l.x * light.direction.x + l.y * light.direction.y +
-                                 l.z * light.direction.z,
-                             light);
+        falloff *= spot_cone(
+            l.x * light.direction.x + l.y * light.direction.y + l.z * light.direction.z, light);
     return {l, light.radiance * falloff};
 }
 

@@ -18,7 +18,7 @@ struct ShadowMap;  // shade/shadow_map.hpp
 // The first four members keep their order, so `{is_point, direction,
 // position, radiance}` still makes a directional or point light.
 struct ShadeLight {
-    bool is_point = false;  // has a position and falls off with distance: point and spot lights
+    bool is_point = false;      // has a position and falls off with distance: point and spot lights
     glm::vec3 direction{0.0f};  // unit, towards the light: directional; spot: its axis reversed
     glm::vec3 position{0.0f};   // point, spot
     glm::vec3 radiance{0.0f};   // colour * intensity
@@ -27,7 +27,7 @@ struct ShadeLight {
     // Spot cone: the smoothstep of (cos angle * spot_scale + spot_offset),
     // which is 0 at the outer half-angle and 1 at the inner one.
     float spot_scale = 0.0f, spot_offset = 1.0f;
-    float inv_range = 0.0f;            // point, spot: 1 / range; 0 for no range
+    float inv_range = 0.0f;             // point, spot: 1 / range; 0 for no range
     const ShadowMap* shadow = nullptr;  // the light's shadow map this frame, if it casts shadows
 };
 
@@ -41,11 +41,12 @@ struct LightingResult {
 enum class Highlight { phong, blinn };
 
 // The falloff formulas, written once for one value (float) and for eight
-// (simd::vf), so per-pixel, per-vertex and stylised shading agree.
+// (simd::vf), so per-pixel, per-vertex and stylised shading agree. Always
+// inlined, like simd_math.hpp's helpers, for the AVX2 clones that call them.
 inline float clamp01(float x) {
     return std::min(std::max(x, 0.0f), 1.0f);
 }
-inline simd::vf clamp01(simd::vf x) {
+[[gnu::always_inline]] inline simd::vf clamp01(simd::vf x) {
     return simd::vmin(simd::vmax(x, simd::splat(0.0f)), simd::splat(1.0f));
 }
 
@@ -54,7 +55,7 @@ inline simd::vf clamp01(simd::vf x) {
 // multiplies the inverse-square falloff and reaches zero, smoothly, at the
 // range. `dist2` is d^2.
 template <typename T>
-T range_window(T dist2, float inv_range) {
+[[gnu::always_inline]] inline T range_window(T dist2, float inv_range) {
     const T x = dist2 * (inv_range * inv_range);  // (d / range)^2
     const T w = clamp01(1.0f - x * x);
     return w * w;
@@ -63,7 +64,7 @@ T range_window(T dist2, float inv_range) {
 // The spot cone's smooth edge: smoothstep in the cosine of the angle from
 // the axis, 0 outside the outer cone and 1 inside the inner one.
 template <typename T>
-T spot_cone(T cos_angle, const ShadeLight& light) {
+[[gnu::always_inline]] inline T spot_cone(T cos_angle, const ShadeLight& light) {
     const T t = clamp01(cos_angle * light.spot_scale + light.spot_offset);
     return t * t * (3.0f - 2.0f * t);
 }

@@ -78,9 +78,9 @@ __attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_ba
             vf falloff = 1.0f / safe;  // inverse-square
             if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
             if (light.is_spot)
-                falloff *= spot_cone(lx * light.direction.x + ly * light.direction.y +
-                                         lz * light.direction.z,
-                                     light);
+                falloff *= spot_cone(
+                    lx * light.direction.x + ly * light.direction.y + lz * light.direction.z,
+                    light);
             usable &= falloff > zero;
             rr = light.radiance.x * falloff;
             rg = light.radiance.y * falloff;

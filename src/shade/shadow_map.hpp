@@ -38,8 +38,8 @@ struct ShadowMap {
     // Each is the distance along the face's viewing axis to the nearest
     // caster at the texel's centre; +infinity where nothing casts.
     std::vector<float> depth;
-    glm::mat4 view[6];  // world -> face view space (right-handed, looking down -z)
-    glm::mat4 clip[6];  // world -> the raster core's clip space (reversed-Z)
+    glm::mat4 view[6];               // world -> face view space (right-handed, looking down -z)
+    glm::mat4 clip[6];               // world -> the raster core's clip space (reversed-Z)
     glm::vec3 light_position{0.0f};  // perspective and cube maps: the eye
     // orthographic: NDC units per scene unit (1 / half the map's width);
     // perspective and cube: 1 / tan(half the field of view).
@@ -75,8 +75,8 @@ glm::mat4 shadow_view(const ShadowBasis& basis, const glm::vec3& eye);
 
 // Projections. Each sets view, clip, scale, near and far of every face,
 // and sizes `depth` for `size` texels a side.
-void set_orthographic(ShadowMap& map, int size, const glm::mat4& view, float half_width,
-                      float near, float far);
+void set_orthographic(ShadowMap& map, int size, const glm::mat4& view, float half_width, float near,
+                      float far);
 void set_perspective(ShadowMap& map, int size, const glm::vec3& position, const glm::vec3& forward,
                      float tan_half_fov, float near, float far);
 // Each face looks along one axis; tan_half_fov >= 1 widens the faces past

@@ -7,8 +7,9 @@
 #include <cstdint>
 
 // The vectors are 32 bytes; on baseline x86-64 GCC warns that passing them
-// by value differs from AVX code. These helpers are inlined, never called
-// across that boundary.
+// by value differs from AVX code. These helpers are always inlined, so they
+// are never called across that boundary: without optimisation an AVX2 clone
+// (target_clones) would otherwise call a baseline copy with the other ABI.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace facet::simd {
@@ -17,30 +18,30 @@ constexpr int kLanes = 8;
 typedef float vf __attribute__((vector_size(32)));
 typedef int32_t vi __attribute__((vector_size(32)));
 
-inline vf splat(float v) {
+[[gnu::always_inline]] inline vf splat(float v) {
     return vf{v, v, v, v, v, v, v, v};
 }
-inline vi splat_i(int32_t v) {
+[[gnu::always_inline]] inline vi splat_i(int32_t v) {
     return vi{v, v, v, v, v, v, v, v};
 }
 
-inline vf vsqrt(vf x) {
+[[gnu::always_inline]] inline vf vsqrt(vf x) {
     vf r;
     for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(x[i]);
     return r;
 }
 
-inline vf vmax(vf a, vf b) {
+[[gnu::always_inline]] inline vf vmax(vf a, vf b) {
     return a > b ? a : b;
 }
-inline vf vmin(vf a, vf b) {
+[[gnu::always_inline]] inline vf vmin(vf a, vf b) {
     return a < b ? a : b;
 }
 
 // log2 for positive, normal x. The mantissa is centred on 1 (in
 // [sqrt(1/2), sqrt(2))) and log(m) summed as 2 atanh((m-1)/(m+1)), whose
 // odd series converges fast there: five terms give about 1e-7 relative.
-inline vf vlog2(vf x) {
+[[gnu::always_inline]] inline vf vlog2(vf x) {
     vi bits = (vi)x;
     vi exponent = ((bits >> 23) & 0xff) - 127;
     vi mantissa_bits = (bits & 0x7fffff) | 0x3f800000;
@@ -55,7 +56,7 @@ inline vf vlog2(vf x) {
 }
 
 // 2^y for y in [-126, 0]; smaller y gives about 1e-38.
-inline vf vexp2(vf y) {
+[[gnu::always_inline]] inline vf vexp2(vf y) {
     y = vmax(y, splat(-126.0f));
     vi whole = __builtin_convertvector(y, vi);          // truncates towards zero
     whole += (__builtin_convertvector(whole, vf) > y);  // -1 where truncation rounded up: floor
@@ -74,7 +75,7 @@ inline vf vexp2(vf y) {
 }
 
 // x^s for x in (0, 1] and s >= 0, as a highlight needs.
-inline vf vpow_unit(vf x, vf s) {
+[[gnu::always_inline]] inline vf vpow_unit(vf x, vf s) {
     x = vmax(x, splat(1e-30f));
     return vexp2(s * vlog2(x));
 }
