@@ -22,10 +22,10 @@ namespace {
 constexpr const char* kScene = "tests/scenes/style_shapes.yaml";
 // The presets that have a case below; kept in step with styles/ by the last test.
 const std::set<std::string> kCovered = {
-    "blinn-phong",      "blueprint", "clay", "depth",         "flat",    "gooch",
-    "gouraud",          "hatching",  "ink",  "intersections", "normals", "palette",
-    "pencil",           "phong",     "toon", "toon-outline",  "unlit",   "wireframe",
-    "wireframe-shaded",
+    "blinn-phong",      "blueprint", "clay",        "depth",         "flat",    "gooch",
+    "gouraud",          "hatching",  "ink",         "intersections", "normals", "palette",
+    "pencil",           "phong",     "toon",        "toon-outline",  "unlit",   "wireframe",
+    "wireframe-shaded", "lit",       "lit-shadows",
 };
 }  // namespace
 
@@ -49,6 +49,8 @@ TEST_CASE("render style: toon-outline",      "[render][style]") { check_render({
 TEST_CASE("render style: unlit",             "[render][style]") { check_render({kScene, 1, "style_unlit.png", {}, {}, "unlit"}); }
 TEST_CASE("render style: wireframe",         "[render][style]") { check_render({kScene, 1, "style_wireframe.png", {}, {}, "wireframe"}); }
 TEST_CASE("render style: wireframe-shaded",  "[render][style]") { check_render({kScene, 1, "style_wireframe-shaded.png", {}, {}, "wireframe-shaded"}); }
+TEST_CASE("render style: lit",               "[render][style]") { check_render({kScene, 1, "style_lit.png", {}, {}, "lit"}); }
+TEST_CASE("render style: lit-shadows",       "[render][style]") { check_render({kScene, 1, "style_lit-shadows.png", {}, {}, "lit-shadows"}); }
 // clang-format on
 
 TEST_CASE("every shipped preset has a reference render above", "[render][style]") {

@@ -387,7 +387,7 @@ bool any_outline(const OutlinesDesc& o) {
 StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
                              const StyleContext& context, std::vector<std::string>& warnings) {
     if (f.is_map())
-        for (const char* key : {"outlines", "background", "depth_range"})
+        for (const char* key : {"outlines", "background", "depth_range", "shadows"})
             if (f.has(key))
                 f.key(key).fail(std::string("'") + key +
                                 "' applies to the whole image; set it in the scene's style");
@@ -407,6 +407,7 @@ StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
     style.outlines = scene_style.outlines;
     style.background = scene_style.background;
     style.depth_range = scene_style.depth_range;
+    style.shadows = scene_style.shadows;
     return style;
 }
 
@@ -527,6 +528,9 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         Field lights = root["lights"];
         for (size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(parse_light(lights[i]));
     }
+    if (scene.style.shadows)
+        for (LightDesc& light : scene.lights)
+            if (light.type != LightType::ambient) light.shadows = *scene.style.shadows;
     Field objects = root.require("objects");
     if (objects.size() == 0) objects.fail("the scene has no objects");
     for (size_t i = 0; i < objects.size(); ++i) {

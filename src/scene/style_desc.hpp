@@ -94,6 +94,10 @@ struct StyleDesc {
     std::optional<Animated<glm::vec3>> base_color;
     // Replaces the scene's background colour.
     std::optional<glm::vec4> background;
+    // Shadows of every light on (true) or off (false) whatever the lights
+    // say; unset leaves each light's `shadows`. The seed-001 "lit" and
+    // "lit with shadows" display modes differ only in this.
+    std::optional<bool> shadows;
 
     // The seed-000 palette method (design.md §5) and Gooch 1998.
     Animated<glm::vec3> cool = glm::vec3(0, 0, 0.4f);     // c_shadow; Gooch's blue

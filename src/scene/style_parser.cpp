@@ -207,10 +207,10 @@ const char* shading_model_name(ShadingModel model) {
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,
                        std::vector<std::string>& visiting) {
-    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range",
-                  "base_color", "background",  "palette",  "cool",     "warm",
-                  "alpha",      "beta",        "ambient",  "cels",     "specular",
-                  "shininess",  "toon",        "hatching", "outlines", "wireframe"});
+    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range", "base_color",
+                  "background", "shadows",     "palette",  "cool",     "warm",        "alpha",
+                  "beta",       "ambient",     "cels",     "specular", "shininess",   "toon",
+                  "hatching",   "outlines",    "wireframe"});
     if (f.has("extends")) {
         const std::string path = find_style(f["extends"], context.base_dir, context.style_dirs);
         if (std::find(visiting.begin(), visiting.end(), path) != visiting.end())
@@ -236,6 +236,13 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
             style.base_color = c.animated_color3();
     }
     if (f.has("background")) style.background = f["background"].color4();
+    if (f.has("shadows")) {
+        Field sh = f["shadows"];
+        if (sh.is_scalar() && sh.text() == "lights")
+            style.shadows.reset();
+        else
+            style.shadows = sh.boolean();
+    }
     if (f.has("palette")) {
         Field p = f["palette"];
         if (!p.is_sequence() || p.size() != 2) p.fail("must be [shadow colour, lit colour]");
