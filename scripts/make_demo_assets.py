@@ -240,6 +240,12 @@ def main():
         return (v, v, v - 8)
     write_png(OUT / "checker.png", 256, 256, checker)
     write_tentacle_glb(OUT / "tentacle.glb")
+    # The flag: blue and yellow halves with a white stripe, 192x128 (2:3).
+    def flag(x, y):
+        if 58 <= y < 70:
+            return (240, 240, 236)
+        return (20, 80, 180) if y < 64 else (250, 200, 20)
+    write_png(OUT / "flag.png", 192, 128, flag)
     print("wrote", OUT / "knot.glb", OUT / "tentacle.glb", "and", OUT / "checker.png", f"({len(indices) // 3} triangles)")
 
 

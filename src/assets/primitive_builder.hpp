@@ -43,6 +43,15 @@ void add_pyramid(Builder& b, int sides, float radius, float height);
 // `subdivisions` times, corners pushed onto the sphere; smooth normals.
 void add_icosphere(Builder& b, float radius, int subdivisions);
 
+// The flag scene's solids (flag_primitives.cpp). The flagpole: a cylinder
+// with a hemispherical tip of its radius, `height` in all, centred on the
+// origin, closed at the foot, smooth. The platform: a size x thickness x
+// size slab with a round hole of `hole_radius` through its centre, its rim
+// the same polygon as a pole of that radius and segments; flat faces, a
+// smooth hole wall.
+void add_flagpole(Builder& b, float radius, float height, int segments, int rings);
+void add_platform(Builder& b, float size, float thickness, float hole_radius, int segments);
+
 // Gives every triangle its own three corners with its flat normal.
 void make_faceted(MeshPart& part);
 

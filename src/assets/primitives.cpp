@@ -176,7 +176,7 @@ void require_size(const PrimitiveSpec& spec, const char* name, float value) {
 
 bool is_round(const std::string& type) {
     return type == "sphere" || type == "icosphere" || type == "torus" || type == "cylinder" ||
-           type == "cone";
+           type == "cone" || type == "flagpole" || type == "platform";
 }
 
 void validate(const PrimitiveSpec& spec) {
@@ -184,6 +184,8 @@ void validate(const PrimitiveSpec& spec) {
     require_size(spec, "radius", spec.radius);
     require_size(spec, "height", spec.height);
     require_size(spec, "tube", spec.tube);
+    require_size(spec, "thickness", spec.thickness);
+    require_size(spec, "hole_radius", spec.hole_radius);
     for (int k = 0; k < 3; ++k) require_size(spec, "box size", spec.box_size[k]);
     // A scene file can ask for any tessellation; beyond this the vertex count
     // would overflow the index arithmetic or exhaust memory instead of failing cleanly.
@@ -202,8 +204,22 @@ void validate(const PrimitiveSpec& spec) {
         s << "tube (" << spec.tube << ") must be less than radius (" << spec.radius << ")";
         reject(spec, s.str());
     }
+    if (spec.type == "flagpole" && !(spec.height > spec.radius)) {
+        std::ostringstream s;
+        s << "height (" << spec.height << ") must be greater than radius (" << spec.radius
+          << "): the height includes the hemispherical tip";
+        reject(spec, s.str());
+    }
+    if (spec.type == "platform" && !(spec.hole_radius < spec.size / 2)) {
+        std::ostringstream s;
+        s << "hole_radius (" << spec.hole_radius << ") must be less than size / 2 ("
+          << spec.size / 2 << ")";
+        reject(spec, s.str());
+    }
     if (spec.smooth.value_or(false) && !is_round(spec.type))
-        reject(spec, "smooth applies only to sphere, icosphere, torus, cylinder and cone");
+        reject(spec,
+               "smooth applies only to sphere, icosphere, torus, cylinder, cone, flagpole "
+               "and platform");
 }
 
 }  // namespace
@@ -241,6 +257,10 @@ Mesh make_primitive(const PrimitiveSpec& spec) {
         detail::add_antiprism(b, spec.sides, spec.radius, spec.height);
     else if (t == "pyramid")
         detail::add_pyramid(b, spec.sides, spec.radius, spec.height);
+    else if (t == "flagpole")
+        detail::add_flagpole(b, spec.radius, spec.height, spec.segments, spec.rings);
+    else if (t == "platform")
+        detail::add_platform(b, spec.size, spec.thickness, spec.hole_radius, spec.segments);
     else
         detail::add_platonic(b, t, spec.radius);
     if (is_round(t) && !spec.smooth.value_or(true)) detail::make_faceted(b.part);

@@ -12,7 +12,10 @@ namespace facet {
 
 struct PrimitiveSpec {
     // plane, cube, box, sphere, cylinder, cone, tetrahedron, octahedron,
-    // icosahedron, dodecahedron, prism, antiprism, pyramid, icosphere, torus
+    // icosahedron, dodecahedron, prism, antiprism, pyramid, icosphere, torus,
+    // flagpole (radius, height: the whole pole, its hemispherical tip
+    // included; height > radius), platform (size, thickness, hole_radius <
+    // size / 2, segments)
     std::string type;
     float size = 1;  // plane and cube edge length
     // Circumradius (sphere, Platonic solids, icosphere; the base polygon of a
@@ -26,8 +29,11 @@ struct PrimitiveSpec {
     int sides = 6;                   // prism, antiprism and pyramid base polygon
     float tube = 0.25f;              // torus minor radius, less than `radius`
     int subdivisions = 2;            // icosphere: 0 is the icosahedron
-    // Round primitives (sphere, icosphere, torus, cylinder, cone) are smooth
-    // unless this is false; the faceted ones accept only false (or unset).
+    float thickness = 0.1f;          // platform: the slab's height
+    float hole_radius = 0.1f;        // platform: the pole's hole, less than size / 2
+    // Round primitives (sphere, icosphere, torus, cylinder, cone, flagpole,
+    // and the platform's hole) are smooth unless this is false; the faceted
+    // ones accept only false (or unset).
     std::optional<bool> smooth;
 };
 

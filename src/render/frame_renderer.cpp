@@ -75,6 +75,7 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
             hidden_edges_on_ || (style->wireframe.enabled && style->wireframe.hidden);
     }
     outlines_on_ = any_outlines(scene.style.outlines);
+    make_cloth_simulations();
 }
 
 void FrameRenderer::update_styles(const FrameState& state) {
@@ -111,10 +112,10 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     const CameraMatrices camera = make_camera(state.camera, aspect);
-    // Animated meshes take this frame's pose first: the shadow maps and the
-    // image are both drawn from it.
-    const bool posed = !world_.animated_meshes.empty();
-    if (posed) pose_animated_meshes(state);
+    // Animated meshes and cloth take this frame's pose first: the shadow
+    // maps and the image are both drawn from it.
+    const bool posed = world_.deforms();
+    if (posed) deform_meshes(state);
     shadows_.render(state, posed ? posed_positions_ : world_.positions, pool_);
     const std::vector<ShadeLight> lights = make_shade_lights(state.lights, shadows_.maps());
 

@@ -7,6 +7,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "anim/cloth.hpp"
 #include "anim/frame_state.hpp"
 #include "anim/gltf_pose.hpp"
 #include "core/image.hpp"
@@ -56,7 +57,8 @@ class FrameRenderer {
     void shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
                     std::span<const ShadeLight> lights, glm::vec2 depth_range, FrameImages& out);
     void update_styles(const FrameState& state);
-    void pose_animated_meshes(const FrameState& state);
+    void make_cloth_simulations();
+    void deform_meshes(const FrameState& state);
     void draw_hidden_edges(FrameImages& target);
 
     const SceneDesc& scene_;
@@ -74,6 +76,7 @@ class FrameRenderer {
     // of the world's with the animated parts posed), else empty.
     std::vector<glm::vec3> posed_positions_, posed_normals_;
     std::vector<PosedPart> pose_scratch_;
+    std::vector<std::unique_ptr<ClothSimulation>> cloth_sims_;  // per World::cloths
 
     // Styles: [0] the scene's, then one per object with a `style:` of its own.
     std::vector<const StyleDesc*> style_descs_;

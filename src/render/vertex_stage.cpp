@@ -40,28 +40,6 @@ void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& e
     }
 }
 
-void FrameRenderer::pose_animated_meshes(const FrameState& state) {
-    if (posed_positions_.empty()) {
-        posed_positions_ = world_.positions;
-        posed_normals_ = world_.normals;
-    }
-    for (const AnimatedMesh& a : world_.animated_meshes) {
-        double seconds = state.objects[a.object].animation_seconds;
-        if (a.loop && a.duration > 0) {
-            seconds = std::fmod(seconds, a.duration);
-            if (seconds < 0) seconds += a.duration;
-        }
-        pose_mesh(*a.mesh, a.animation, seconds, pose_scratch_);
-        for (size_t part = 0; part < pose_scratch_.size(); ++part) {
-            const Draw& d = world_.draws[a.first_draw + part];
-            std::copy(pose_scratch_[part].positions.begin(), pose_scratch_[part].positions.end(),
-                      posed_positions_.begin() + d.first_vertex);
-            std::copy(pose_scratch_[part].normals.begin(), pose_scratch_[part].normals.end(),
-                      posed_normals_.begin() + d.first_vertex);
-        }
-    }
-}
-
 void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& camera,
                                  std::span<const ShadeLight> lights) {
     const size_t count = world_.positions.size();
@@ -70,7 +48,7 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     vertices_.world_normal.resize(count);
     const bool gouraud = any_gouraud_;
     vertices_.lit.resize(gouraud ? count : 0);
-    const bool posed = !world_.animated_meshes.empty();  // posed by render() already
+    const bool posed = world_.deforms();  // posed by render() already
     const std::vector<glm::vec3>& positions = posed ? posed_positions_ : world_.positions;
     const std::vector<glm::vec3>& normals = posed ? posed_normals_ : world_.normals;
 

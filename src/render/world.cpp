@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "anim/gltf_pose.hpp"
+#include "anim/track.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
 
@@ -86,6 +87,39 @@ void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
 
 }  // namespace
 
+ClothParams cloth_params(const ClothDesc& c, const ObjectDesc& object, double fps,
+                         int first_frame) {
+    ClothParams p;
+    p.columns = c.grid.x;
+    p.rows = c.grid.y;
+    p.width = c.size.x;
+    p.height = c.size.y;
+    p.mass = c.mass;
+    p.stiffness = c.stiffness;
+    p.shear_stiffness = c.shear;
+    p.bend_stiffness = c.bend;
+    p.max_stretch = c.max_stretch;
+    p.friction = c.friction;
+    p.damping = c.damping;
+    p.wind_drag = c.wind_drag;
+    p.wind_tangential_drag = c.wind_tangential_drag;
+    const glm::dquat to_local =
+        glm::inverse(evaluate_rotation(object.rotate, {static_cast<double>(first_frame), 0.0}));
+    p.gravity = glm::vec3(to_local * glm::dvec3(c.gravity));
+    p.substeps = c.substeps;
+    p.frame_seconds = 1.0 / fps;
+    p.preroll_seconds = c.preroll;
+    return p;
+}
+
+ClothPins cloth_pins(const ClothDesc& c) {
+    ClothPins pins;
+    pins.left_edge = c.pin_left;
+    pins.top_edge = c.pin_top;
+    pins.vertices = c.pin_vertices;
+    return pins;
+}
+
 World build_world(const SceneDesc& scene) {
     World world;
     // Feature edges cost a pass over every edge; only wireframes need them.
@@ -108,6 +142,24 @@ World build_world(const SceneDesc& scene) {
                 for (const auto& w : slot->warnings) world.warnings.push_back(obj.mesh + ": " + w);
             }
             mesh = slot;
+        } else if (obj.cloth) {
+            try {
+                const ClothModel model = build_cloth_model(
+                    cloth_params(*obj.cloth, obj, scene.output.fps, scene.output.frames.front()),
+                    cloth_pins(*obj.cloth));
+                Mesh cloth_mesh;
+                cloth_mesh.source = "cloth";
+                cloth_mesh.parts.push_back(model.rest_part);
+                cloth_mesh.materials.push_back(Material{});
+                cloth_mesh.materials.back().name = "cloth";
+                cloth_mesh.materials.back().double_sided = true;  // both faces show
+                if (obj.visible)
+                    world.cloths.push_back({o, static_cast<uint32_t>(world.draws.size()),
+                                            model.params, cloth_pins(*obj.cloth)});
+                mesh = std::make_shared<Mesh>(std::move(cloth_mesh));
+            } catch (const Error& e) {
+                fail_input(obj.cloth->where, "objects." + std::to_string(o) + ".cloth", e.what());
+            }
         } else {
             const PrimitiveDesc& p = *obj.primitive;
             PrimitiveSpec spec;
@@ -121,6 +173,8 @@ World build_world(const SceneDesc& scene) {
             spec.sides = p.sides;
             spec.tube = p.tube;
             spec.subdivisions = p.subdivisions;
+            spec.thickness = p.thickness;
+            spec.hole_radius = p.hole_radius;
             spec.smooth = p.smooth;
             try {
                 mesh = std::make_shared<Mesh>(make_primitive(spec));

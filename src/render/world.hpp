@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "anim/cloth.hpp"
 #include "assets/mesh.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -33,11 +34,30 @@ struct AnimatedMesh {
     uint32_t first_draw;  // the mesh's parts are draws first_draw, first_draw + 1, ...
 };
 
+// An object that is a simulated cloth (anim/cloth.hpp): its one draw is
+// re-posed every frame from the simulation.
+struct ClothObject {
+    uint32_t object;
+    uint32_t draw;
+    ClothParams params;
+    ClothPins pins;
+};
+
+// The simulation parameters of a scene's cloth, in the object's local space
+// (gravity turned by the inverse of the object's rotation at `first_frame`).
+ClothParams cloth_params(const ClothDesc& cloth, const ObjectDesc& object, double fps,
+                         int first_frame);
+ClothPins cloth_pins(const ClothDesc& cloth);
+
 struct World {
     std::vector<Material> materials;
     std::vector<uint32_t> material_object;  // per material: the scene object it belongs to
     std::vector<Draw> draws;
     std::vector<AnimatedMesh> animated_meshes;
+    std::vector<ClothObject> cloths;
+    // Some vertices move by themselves (glTF animation, cloth): the frame
+    // renderer poses a copy of the vertex arrays every frame.
+    bool deforms() const { return !animated_meshes.empty() || !cloths.empty(); }
     std::vector<Bounds> object_bounds;  // model space, per scene object
     // Per scene object: `cast_shadows` (drawn into shadow maps), and
     // `receive_shadows` as 1 or 0, the value shading puts in its lanes.

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/ext/vector_int2.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -147,6 +148,8 @@ struct PrimitiveDesc {
     int sides = 6;               // prism, antiprism, pyramid
     float tube = 0.25f;          // torus minor radius; half of `radius` unless given
     int subdivisions = 2;        // icosphere
+    float thickness = 0.1f;      // platform slab
+    float hole_radius = 0.1f;    // platform: the hole for the pole
     std::optional<bool> smooth;  // round types only; unset keeps the type's default
     SourceLocation where;
 };
@@ -154,6 +157,31 @@ struct PrimitiveDesc {
 struct SpinDesc {
     glm::vec3 axis = {0, 1, 0};
     float turns = 1;  // over the frame range
+};
+
+// A cloth grid simulated as a mass-spring sheet (docs/cloth.md): its keys as
+// written; anim/cloth.hpp checks the physics (build_world reports it).
+struct ClothDesc {
+    glm::vec2 size = {1.5f, 1.0f};  // width along local +X, height along -Y
+    glm::ivec2 grid = {48, 32};     // vertices along the width and the height
+    bool pin_left = true, pin_top = false;
+    std::vector<int> pin_vertices;    // row * columns + column
+    float mass = 0.3f;                // kg, whole cloth
+    float stiffness = 100;            // N/m
+    float shear = 0.2f, bend = 0.5f;  // fractions of stiffness
+    float max_stretch = 0.1f;
+    float friction = 0.1f;  // air friction, 1/s
+    float damping = 0.05f;  // fraction of critical
+    float wind_drag = 1.0f, wind_tangential_drag = 0.5f;
+    glm::vec3 gravity = {0, -9.81f, 0};  // world space
+    int substeps = 0;                    // 0: the fewest stable
+    float preroll = 2;                   // seconds simulated before the first frame
+    // The wind, in world space; keyable: the key frames of seed 004.
+    Animated<glm::vec3> wind_direction = glm::vec3(1, 0, 0);
+    Animated<float> wind_strength = 5.0f;  // m/s
+    Animated<float> gust = 0.3f;           // 0..1
+    int seed = 1;
+    SourceLocation where;
 };
 
 // Which animation stored in a glTF file plays, and how.
@@ -179,6 +207,7 @@ struct ObjectDesc {
     std::optional<StyleDesc> style;
     std::optional<SpinDesc> spin;
     std::optional<AnimationChoiceDesc> animation;  // glTF files only
+    std::optional<ClothDesc> cloth;                // the object is a simulated cloth grid
     bool visible = true;
     bool cast_shadows = true;     // appears in the lights' shadow maps
     bool receive_shadows = true;  // shadows darken it
@@ -221,6 +250,5 @@ StyleDesc load_style_file(const std::string& path, const std::vector<std::string
 // The preset files found in the given folders: name -> path, first folder wins.
 std::vector<std::pair<std::string, std::string>> list_style_presets(
     const std::vector<std::string>& style_dirs);
-
 
 }  // namespace facet

@@ -280,6 +280,8 @@ const std::vector<PrimitiveKeys> kPrimitiveKeys = {
     {"pyramid", {"sides", "radius", "height"}},
     {"icosphere", {"radius", "subdivisions", "smooth"}},
     {"torus", {"radius", "tube", "segments", "rings", "smooth"}},
+    {"flagpole", {"radius", "height", "segments", "rings", "smooth"}},
+    {"platform", {"size", "thickness", "hole_radius", "segments", "smooth"}},
 };
 
 constexpr int kMaxDivisions = 4096;
@@ -307,7 +309,7 @@ PrimitiveDesc parse_primitive(const Field& f) {
         return p;
     }
     f.check_keys({"type", "size", "radius", "height", "segments", "rings", "sides", "tube",
-                  "subdivisions", "smooth"});
+                  "subdivisions", "smooth", "thickness", "hole_radius"});
     const PrimitiveKeys& type = primitive_type(f.require("type"));
     p.type = type.type;
     for (const std::string& key : f.keys()) {
@@ -335,6 +337,8 @@ PrimitiveDesc parse_primitive(const Field& f) {
     if (f.has("rings")) p.rings = f["rings"].integer(p.type == "torus" ? 3 : 2, kMaxDivisions);
     if (f.has("sides")) p.sides = f["sides"].integer(3, kMaxDivisions);
     if (f.has("subdivisions")) p.subdivisions = f["subdivisions"].integer(0, kMaxSubdivisions);
+    if (f.has("thickness")) p.thickness = length_value(f["thickness"]);
+    if (f.has("hole_radius")) p.hole_radius = length_value(f["hole_radius"]);
     if (f.has("smooth")) p.smooth = f["smooth"].boolean();
     p.tube = p.radius / 2;
     if (f.has("tube")) {
@@ -357,6 +361,62 @@ glm::vec3 parse_axis(const Field& f) {
                              : glm::vec3(0, 0, 1);
     }
     return nonzero_direction(f);
+}
+
+ClothDesc parse_cloth(const Field& f) {
+    ClothDesc c;
+    c.where = f.where();
+    f.check_keys({"size", "grid", "pin", "mass", "stiffness", "shear", "bend", "max_stretch",
+                  "friction", "damping", "wind_drag", "wind_tangential_drag", "gravity", "substeps",
+                  "preroll", "wind"});
+    if (f.has("size")) {
+        Field size = f["size"];
+        if (!size.is_sequence() || size.size() != 2) size.fail("must be [width, height]");
+        c.size = {length_value(size[0]), length_value(size[1])};
+    }
+    if (f.has("grid")) {
+        Field grid = f["grid"];
+        if (!grid.is_sequence() || grid.size() != 2) grid.fail("must be [columns, rows]");
+        c.grid = {grid[0].integer(2, 256), grid[1].integer(2, 256)};
+    }
+    if (f.has("pin")) {
+        Field pin = f["pin"];
+        c.pin_left = false;
+        if (pin.is_scalar()) {
+            const std::string where = pin.choice({"left_edge", "top_edge", "left_and_top"});
+            c.pin_left = where != "top_edge";
+            c.pin_top = where != "left_edge";
+        } else {
+            if (pin.size() == 0) pin.fail("pin at least one vertex");
+            const int count = c.grid.x * c.grid.y;
+            for (size_t i = 0; i < pin.size(); ++i)
+                c.pin_vertices.push_back(pin[i].integer(0, count - 1));
+        }
+    }
+    auto number = [&](const char* key, float& out, double lo, double hi) {
+        if (f.has(key)) out = static_cast<float>(f[key].number(lo, hi));
+    };
+    number("mass", c.mass, 1e-6, 1e6);
+    number("stiffness", c.stiffness, 1e-6, 1e9);
+    number("shear", c.shear, 0, 1);
+    number("bend", c.bend, 0, 1);
+    number("max_stretch", c.max_stretch, 0.01, 1);
+    number("friction", c.friction, 0, 100);
+    number("damping", c.damping, 0, 1);
+    number("wind_drag", c.wind_drag, 0, 100);
+    number("wind_tangential_drag", c.wind_tangential_drag, 0, 100);
+    number("preroll", c.preroll, 0, 60);
+    if (f.has("gravity")) c.gravity = f["gravity"].vec3();
+    if (f.has("substeps")) c.substeps = f["substeps"].integer(0, 1000);
+    if (f.has("wind")) {
+        Field w = f["wind"];
+        w.check_keys({"direction", "strength", "gust", "seed"});
+        if (w.has("direction")) c.wind_direction = w["direction"].animated_direction();
+        if (w.has("strength")) c.wind_strength = w["strength"].animated_number(0, 100);
+        if (w.has("gust")) c.gust = w["gust"].animated_number(0, 1);
+        if (w.has("seed")) c.seed = w["seed"].integer(0, 1000000000);
+    }
+    return c;
 }
 
 // `animation: walk`, `animation: 0`, or a mapping with speed, offset and loop.
@@ -417,10 +477,10 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",
-                  "visible", "animation", "style", "cast_shadows", "receive_shadows"});
+                  "visible", "animation", "style", "cast_shadows", "receive_shadows", "cloth"});
     obj.name = f.has("name") ? f["name"].text() : "object" + std::to_string(index);
-    if (f.has("mesh") == f.has("primitive"))
-        f.fail("an object needs exactly one of 'mesh' (a file) or 'primitive'");
+    if (int(f.has("mesh")) + int(f.has("primitive")) + int(f.has("cloth")) != 1)
+        f.fail("an object needs exactly one of 'mesh' (a file), 'primitive' or 'cloth'");
     if (f.has("mesh")) {
         obj.mesh = existing_file(f["mesh"], base_dir);
         obj.mesh_at = f["mesh"].where();
@@ -428,8 +488,10 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
         for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
         if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
             f["mesh"].fail("unsupported mesh format '" + ext + "' (use .obj, .gltf or .glb)");
-    } else {
+    } else if (f.has("primitive")) {
         obj.primitive = parse_primitive(f["primitive"]);
+    } else {
+        obj.cloth = parse_cloth(f["cloth"]);
     }
     if (f.has("translate")) obj.translate = f["translate"].animated_vec3();
     if (f.has("rotate")) obj.rotate = f["rotate"].animated_rotation();
@@ -449,7 +511,7 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("cast_shadows")) obj.cast_shadows = f["cast_shadows"].boolean();
     if (f.has("receive_shadows")) obj.receive_shadows = f["receive_shadows"].boolean();
     if (f.has("animation")) {
-        if (obj.primitive) f["animation"].fail("only glTF meshes carry animations");
+        if (obj.mesh.empty()) f["animation"].fail("only glTF meshes carry animations");
         obj.animation = parse_animation_choice(f["animation"]);
     }
     return obj;

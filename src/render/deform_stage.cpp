@@ -1,0 +1,65 @@
+// Deform stage: the vertices that move by themselves this frame, glTF
+// animations (skins, morph targets, node channels) and cloth simulations,
+// written into a copy of the world's model-space vertex arrays.
+#include <algorithm>
+#include <cmath>
+
+#include "anim/track.hpp"
+#include "render/frame_renderer.hpp"
+
+namespace facet {
+
+void FrameRenderer::make_cloth_simulations() {
+    const int first = scene_.output.frames.front();
+    const double fps = scene_.output.fps;
+    for (const ClothObject& c : world_.cloths) {
+        const ObjectDesc& obj = scene_.objects[c.object];
+        const ClothDesc& desc = *obj.cloth;
+        // The wind of simulation frame i is the keyed wind at scene frame
+        // first + i, turned into the cloth's local space.
+        auto wind_at = [&obj, &desc, first, fps](int frame) {
+            const FrameTime at{static_cast<double>(first + frame), frame / fps};
+            const glm::dquat to_local = glm::inverse(evaluate_rotation(obj.rotate, at));
+            WindState wind;
+            wind.direction = glm::vec3(to_local * glm::dvec3(evaluate(desc.wind_direction, at)));
+            wind.strength = evaluate(desc.wind_strength, at);
+            wind.gust = evaluate(desc.gust, at);
+            wind.seed = static_cast<uint32_t>(desc.seed);
+            return wind;
+        };
+        cloth_sims_.push_back(std::make_unique<ClothSimulation>(c.params, c.pins, wind_at));
+    }
+}
+
+void FrameRenderer::deform_meshes(const FrameState& state) {
+    if (posed_positions_.empty()) {
+        posed_positions_ = world_.positions;
+        posed_normals_ = world_.normals;
+    }
+    auto write_part = [&](uint32_t draw, const std::vector<glm::vec3>& positions,
+                          const std::vector<glm::vec3>& normals) {
+        const Draw& d = world_.draws[draw];
+        std::copy(positions.begin(), positions.end(), posed_positions_.begin() + d.first_vertex);
+        std::copy(normals.begin(), normals.end(), posed_normals_.begin() + d.first_vertex);
+    };
+    for (const AnimatedMesh& a : world_.animated_meshes) {
+        double seconds = state.objects[a.object].animation_seconds;
+        if (a.loop && a.duration > 0) {
+            seconds = std::fmod(seconds, a.duration);
+            if (seconds < 0) seconds += a.duration;
+        }
+        pose_mesh(*a.mesh, a.animation, seconds, pose_scratch_);
+        for (size_t part = 0; part < pose_scratch_.size(); ++part)
+            write_part(a.first_draw + static_cast<uint32_t>(part), pose_scratch_[part].positions,
+                       pose_scratch_[part].normals);
+    }
+    // Cloth frames count from the scene's first frame; the simulation runs
+    // from there in fixed steps whatever frames are rendered.
+    const int frame = std::max(0, state.frame - scene_.output.frames.front());
+    for (size_t i = 0; i < world_.cloths.size(); ++i) {
+        const ClothFrame cloth = cloth_sims_[i]->state_at(frame);
+        write_part(world_.cloths[i].draw, cloth.positions, cloth.normals);
+    }
+}
+
+}  // namespace facet
