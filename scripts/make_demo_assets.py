@@ -64,15 +64,30 @@ def check_winding(positions, normals, indices):
             indices[t + 1], indices[t + 2] = indices[t + 2], indices[t + 1]
 
 
+def pack_blobs(blobs):
+    """One binary buffer holding the blobs, each 4-byte aligned (glTF 2.0
+    section 3.6.2.4); returns each blob's offset and the buffer."""
+    offsets, data = [], b""
+    for blob in blobs:
+        offsets.append(len(data))
+        data += blob + b"\0" * (-len(blob) % 4)
+    return offsets, data
+
+
+def write_glb_container(path, gltf, data):
+    """The binary glTF container: header, JSON chunk, BIN chunk (section 4.4)."""
+    js = json.dumps(gltf, separators=(",", ":")).encode()
+    js += b" " * (-len(js) % 4)
+    body = struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(data), 0x004E4942) + data
+    path.write_bytes(struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body)
+
+
 def write_glb(path, positions, normals, uvs, indices):
     blobs = [b"".join(struct.pack("<3f", *v) for v in positions),
              b"".join(struct.pack("<3f", *v) for v in normals),
              b"".join(struct.pack("<2f", *v) for v in uvs),
              b"".join(struct.pack("<I", i) for i in indices)]
-    offsets, data = [], b""
-    for blob in blobs:
-        offsets.append(len(data))
-        data += blob + b"\0" * (-len(blob) % 4)
+    offsets, data = pack_blobs(blobs)
     lo = [min(v[k] for v in positions) for k in range(3)]
     hi = [max(v[k] for v in positions) for k in range(3)]
     gltf = {
@@ -95,10 +110,7 @@ def write_glb(path, positions, normals, uvs, indices):
             {"bufferView": 2, "componentType": 5126, "count": len(uvs), "type": "VEC2"},
             {"bufferView": 3, "componentType": 5125, "count": len(indices), "type": "SCALAR"}],
     }
-    js = json.dumps(gltf, separators=(",", ":")).encode()
-    js += b" " * (-len(js) % 4)
-    body = struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(data), 0x004E4942) + data
-    path.write_bytes(struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body)
+    write_glb_container(path, gltf, data)
 
 
 def tentacle_mesh(rings=48, sides=24, height=1.6, radius=0.16):
@@ -171,10 +183,7 @@ def write_tentacle_glb(path):
              b"".join(struct.pack("<f", t) for t in times),
              b"".join(struct.pack("<4f", *q) for q in sway_mid),
              b"".join(struct.pack("<4f", *q) for q in sway_top)]
-    offsets, data = [], b""
-    for blob in blobs:
-        offsets.append(len(data))
-        data += blob + b"\0" * (-len(blob) % 4)
+    offsets, data = pack_blobs(blobs)
     lo = [min(v[k] for v in positions) for k in range(3)]
     hi = [max(v[k] for v in positions) for k in range(3)]
     views = [{"buffer": 0, "byteOffset": offsets[i], "byteLength": len(blobs[i])} for i in range(len(blobs))]
@@ -212,10 +221,7 @@ def write_tentacle_glb(path):
             {"bufferView": 7, "componentType": 5126, "count": len(times), "type": "VEC4"},
             {"bufferView": 8, "componentType": 5126, "count": len(times), "type": "VEC4"}],
     }
-    js = json.dumps(gltf, separators=(",", ":")).encode()
-    js += b" " * (-len(js) % 4)
-    body = struct.pack("<II", len(js), 0x4E4F534A) + js + struct.pack("<II", len(data), 0x004E4942) + data
-    path.write_bytes(struct.pack("<III", 0x46546C67, 2, 12 + len(body)) + body)
+    write_glb_container(path, gltf, data)
 
 
 def write_png(path, width, height, pixel):
