@@ -357,6 +357,10 @@ TEST_CASE("Invalid cloth settings are rejected naming the safe range", "[cloth]"
          "stiffness 100 N/m is unstable with 2 substeps per frame on a 48x32 grid of 0.3 kg"},
         {"far too stiff", [](ClothParams& p, ClothPins&) { p.stiffness = 1e7f; },
          "is unstable with at most 1000 substeps per frame"},
+        {"too heavy", [](ClothParams& p, ClothPins&) { p.mass = 100; },
+         "mass 100 kg is too heavy for stiffness 100 N/m: its weight alone would stretch the "
+         "cloth by about 981 %, more than max_stretch (10 %); the safe range for mass is (0, "
+         "1.01937] kg, or raise stiffness to at least 9810 N/m"},
     };
     for (const Case& c : cases) {
         INFO(c.what);
@@ -381,6 +385,23 @@ TEST_CASE("Invalid cloth settings are rejected naming the safe range", "[cloth]"
         w.direction = {0, 0, 0};
         CHECK_THAT(facet::validate_wind(w),
                    Catch::Contains("wind direction must be a finite, non-zero"));
+        // Wind too strong for a cloth's settings names the strongest it takes.
+        ClothParams heavy_drag;
+        heavy_drag.wind_drag = 100;
+        REQUIRE(facet::validate_cloth_params(heavy_drag).empty());
+        w = WindState{};
+        w.strength = 100;
+        w.gust = 1;
+        CHECK(facet::validate_wind(w).empty());
+        CHECK_THAT(facet::validate_wind(w, heavy_drag),
+                   Catch::Contains("wind strength 100 m/s with gust 1 is too strong for this "
+                                   "cloth (wind_drag 100, 48x32 grid of 0.3 kg") &&
+                       Catch::Contains("strength x (1 + gust) must be at most "));
+        const double most = facet::max_wind_speed(heavy_drag);
+        w.strength = static_cast<float>(most / 2 * 0.99);
+        CHECK(facet::validate_wind(w, heavy_drag).empty());
+        CHECK(facet::validate_wind(w, ClothParams{}).empty());
+        CHECK(facet::max_wind_speed(ClothParams{}) > 2 * facet::kMaxWindStrength);
         // A bad key frame fails when the simulation reaches it.
         ClothParams p = small_cloth();
         ClothSimulation sim(p, ClothPins{}, [](int f) {
@@ -394,7 +415,7 @@ TEST_CASE("Invalid cloth settings are rejected naming the safe range", "[cloth]"
 
 TEST_CASE("The stated safe stiffness is stable and just above it is rejected", "[cloth]") {
     ClothParams p = small_cloth();
-    p.substeps = 6;
+    p.substeps = 20;
     p.stiffness = 1e5f;
     const std::string message = facet::validate_cloth_params(p);
     const std::string marker = "safe range is (0, ";

@@ -4,27 +4,30 @@
 // ("Deformation constraints in a mass-spring model to describe rigid cloth
 // behavior", Graphics Interface 1995). Everything runs in double precision
 // on one thread in a fixed order, so a state is a pure function of the
-// parameters, the wind and the step count.
+// parameters, the wind and the step count. The parameter checks and the
+// stability bound are in cloth_limits.cpp.
 #include "anim/cloth.hpp"
+#include "core/integer_hash.hpp"
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
+#include "anim/cloth_grid.hpp"
 #include "core/error.hpp"
 
 namespace facet {
 namespace {
+
+using namespace cloth_detail;
 
 // The strain limit's Gauss-Seidel passes per substep stop once no spring
 // was more than kStrainTolerance (relative) over its limit at the start of
 // a pass, or after kMaxStrainPasses.
 constexpr int kMaxStrainPasses = 16;
 constexpr double kStrainTolerance = 0.005;
-// Samples per axis of the lattice's wave vectors in the stability bound.
-constexpr int kSymbolSamples = 64;
 // The largest turn of the wind by gusts, in radians per unit of gust,
 // sideways and up or down. A flag answers sideways turns by flapping.
 constexpr double kSideTurn = 1.0, kLiftTurn = 0.5;
@@ -33,21 +36,7 @@ constexpr double kStartTwist = 1e-4;
 
 // --- Deterministic gust noise ------------------------------------------------
 // Integer hashing only (no global RNG, no trigonometry): the same bits on
-// every platform. Chris Wellons' "lowbias32" (hash-prospector, 2020), the
-// same hash shade/integer_hash.hpp uses; anim cannot depend on shade.
-
-uint32_t hash32(uint32_t x) {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
-    return x;
-}
-
-uint32_t hash32(uint32_t a, uint32_t b, uint32_t c) {
-    return hash32(hash32(a ^ hash32(b + 0x9e3779b9U)) ^ hash32(c + 0x85ebca6bU));
-}
+// every platform (core/integer_hash.hpp).
 
 // Smooth value noise in [-1, 1] over t (in periods): random values at the
 // integers, blended with Perlin's quintic fade (C2, so forces do not jerk).
@@ -71,184 +60,6 @@ double gust_noise(uint32_t seed, uint32_t channel, double seconds) {
            0.2 * value_noise(seed, 3 * channel + 2, seconds / 0.31);
 }
 
-// --- Messages ----------------------------------------------------------------
-
-template <typename T>
-std::string range_message(const char* name, T value, const std::string& range,
-                          const char* unit = "") {
-    std::ostringstream s;
-    s << name << " must be " << range << unit << ", got " << value << unit;
-    return s.str();
-}
-
-bool finite(double v) {
-    return std::isfinite(v);
-}
-
-// --- Grid geometry -------------------------------------------------------------
-
-struct Grid {
-    int columns, rows;
-    double dx, dy;  // cell sides, m
-};
-
-Grid grid_of(const ClothParams& p) {
-    return {p.columns, p.rows, static_cast<double>(p.width) / (p.columns - 1),
-            static_cast<double>(p.height) / (p.rows - 1)};
-}
-
-// Hooke constants per spring kind, chosen so `stiffness` is the sheet's
-// stretch modulus whatever the cells' aspect: a row of springs of length dx
-// spaced dy apart carries k * strain * dx / dy newtons per metre.
-struct SpringConstants {
-    double horizontal, vertical, shear, bend_horizontal, bend_vertical;
-};
-
-SpringConstants spring_constants(const ClothParams& p, const Grid& g) {
-    const double s = p.stiffness;
-    const double diagonal2 = g.dx * g.dx + g.dy * g.dy;
-    return {s * g.dy / g.dx, s * g.dx / g.dy, p.shear_stiffness * s * 2 * g.dx * g.dy / diagonal2,
-            p.bend_stiffness * s * g.dy / g.dx, p.bend_stiffness * s * g.dx / g.dy};
-}
-
-double critical_damping(const ClothParams& p, double k, double mass) {
-    return 2.0 * p.damping * std::sqrt(k * mass);
-}
-
-double particle_mass(const ClothParams& p) {
-    return static_cast<double>(p.mass) / (static_cast<double>(p.columns) * p.rows);
-}
-
-// The largest eigenvalue of the springs' stiffness (or damping) matrix of the
-// infinite lattice, from its Fourier symbol: a plane wave exp(i theta.j)
-// sees K(theta) = sum over spring kinds of 2 k (1 - cos(theta.e)) d d^T.
-// The finite grid's matrix is a principal submatrix (pins) of the lattice's
-// minus the springs its free edges lack, so its eigenvalues are no larger.
-// cos(theta) is sampled directly on [-1, 1] (with sin = sqrt(1 - cos^2)) so
-// no trigonometric function is needed: the bound and thus the automatic
-// substep count are the same bits everywhere.
-double lattice_max_eigenvalue(const SpringConstants& k, const Grid& g) {
-    const double d2 = g.dx * g.dx + g.dy * g.dy;
-    const double wxx = g.dx * g.dx / d2, wyy = g.dy * g.dy / d2, wxy = g.dx * g.dy / d2;
-    const bool bend_x = g.columns >= 3, bend_y = g.rows >= 3;
-    double best = 0;
-    for (int a = 0; a <= kSymbolSamples; ++a) {
-        const double cx = -1.0 + 2.0 * a / kSymbolSamples;
-        const double sx = std::sqrt(std::max(0.0, 1.0 - cx * cx));
-        for (int b = 0; b <= kSymbolSamples; ++b) {
-            const double cy = -1.0 + 2.0 * b / kSymbolSamples;
-            const double sy = std::sqrt(std::max(0.0, 1.0 - cy * cy));
-            const double down = 1.0 - (cx * cy - sx * sy);  // diagonal (+1, +1): (dx, -dy)
-            const double up = 1.0 - (cx * cy + sx * sy);    // diagonal (+1, -1): (dx, +dy)
-            double xx = 2 * k.horizontal * (1 - cx) + 2 * k.shear * (down + up) * wxx;
-            double yy = 2 * k.vertical * (1 - cy) + 2 * k.shear * (down + up) * wyy;
-            const double xy = 2 * k.shear * (up - down) * wxy;
-            if (bend_x) xx += 2 * k.bend_horizontal * 2 * sx * sx;  // 1 - cos 2t = 2 sin^2 t
-            if (bend_y) yy += 2 * k.bend_vertical * 2 * sy * sy;
-            const double mid = 0.5 * (xx + yy), half = 0.5 * (xx - yy);
-            best = std::max(best, mid + std::sqrt(half * half + xy * xy));
-        }
-    }
-    return best;
-}
-
-// lambda (1/s^2) and gamma (1/s) of the stability number, split so the
-// stiffness can be solved for: lambda = stiffness * lambda_per_stiffness,
-// gamma = sqrt(stiffness) * spring_gamma_per_root + other_gamma.
-struct StabilityTerms {
-    double lambda_per_stiffness;
-    double spring_gamma_per_root;
-    double other_gamma;  // air friction and the wind's drag on moving faces
-};
-
-StabilityTerms stability_terms(ClothParams p) {
-    const Grid g = grid_of(p);
-    const double m = particle_mass(p);
-    p.stiffness = 1;
-    const SpringConstants k = spring_constants(p, g);
-    const SpringConstants c = {critical_damping(p, k.horizontal, m),
-                               critical_damping(p, k.vertical, m), critical_damping(p, k.shear, m),
-                               critical_damping(p, k.bend_horizontal, m),
-                               critical_damping(p, k.bend_vertical, m)};
-    // The wind's drag couples the four corners of each cell; by Gershgorin
-    // its rate at a vertex is at most drag * (area of its four cells) / 4 / m.
-    const double drag = std::max(p.wind_drag, p.wind_tangential_drag);
-    const double wind_rate = drag * g.dx * g.dy / m;
-    return {lattice_max_eigenvalue(k, g) / m, lattice_max_eigenvalue(c, g) / m,
-            p.friction + wind_rate};
-}
-
-double stability_number(const StabilityTerms& t, double stiffness, double h) {
-    const double lambda = t.lambda_per_stiffness * stiffness;
-    const double gamma = t.spring_gamma_per_root * std::sqrt(stiffness) + t.other_gamma;
-    // Semi-implicit Euler on x'' = -lambda x - gamma x' is stable while
-    // h^2 lambda + 2 h gamma <= 4 (the trace condition of its 2x2 step matrix).
-    return (h * h * lambda + 2 * h * gamma) / 4;
-}
-
-// The largest stiffness with stability number <= the limit at step h, or 0
-// when friction and wind drag alone exceed it: solve the quadratic in
-// q = sqrt(stiffness).
-double max_stable_stiffness(const StabilityTerms& t, double h) {
-    const double a = h * h * t.lambda_per_stiffness;
-    const double b = 2 * h * t.spring_gamma_per_root;
-    const double c = 2 * h * t.other_gamma - 4 * kClothStabilityLimit;
-    if (c >= 0) return 0;
-    const double q = (-b + std::sqrt(b * b - 4 * a * c)) / (2 * a);
-    return q * q;
-}
-
-int substeps_needed(const StabilityTerms& t, double stiffness, double frame_seconds) {
-    // h from the quadratic h^2 lambda + 2 h gamma = 4 limit, then round up
-    // and step on until the count really satisfies the bound.
-    const double lambda = t.lambda_per_stiffness * stiffness;
-    const double gamma = t.spring_gamma_per_root * std::sqrt(stiffness) + t.other_gamma;
-    const double h =
-        (-2 * gamma + std::sqrt(4 * gamma * gamma + 16 * kClothStabilityLimit * lambda)) /
-        (2 * lambda);
-    const double estimate = std::ceil(frame_seconds / h);
-    if (!(estimate <= kMaxClothSubsteps)) return kMaxClothSubsteps + 1;
-    int n = std::max(1, static_cast<int>(estimate) - 1);
-    while (n <= kMaxClothSubsteps &&
-           stability_number(t, stiffness, frame_seconds / n) > kClothStabilityLimit)
-        ++n;
-    return n;
-}
-
-std::string grid_description(const ClothParams& p) {
-    std::ostringstream s;
-    s << p.columns << "x" << p.rows << " grid of " << p.mass << " kg at " << 1.0 / p.frame_seconds
-      << " frames/s";
-    return s.str();
-}
-
-std::string stability_message(const ClothParams& p) {
-    const StabilityTerms t = stability_terms(p);
-    const int needed = substeps_needed(t, p.stiffness, p.frame_seconds);
-    const int used = p.substeps > 0 ? p.substeps : kMaxClothSubsteps;
-    if (p.substeps > 0 ? needed <= p.substeps : needed <= kMaxClothSubsteps) return "";
-    const double h = p.frame_seconds / used;
-    const double max_k = max_stable_stiffness(t, h);
-    std::ostringstream s;
-    if (max_k <= 0) {
-        s << "friction (" << p.friction << " 1/s) and wind_drag (" << p.wind_drag << ", "
-          << p.wind_tangential_drag << " tangential) are too high for " << used
-          << " substeps per frame on a " << grid_description(p) << ": lower them or raise substeps";
-        return s.str();
-    }
-    s << "stiffness " << p.stiffness << " N/m is unstable with ";
-    if (p.substeps > 0)
-        s << p.substeps << " substeps per frame";
-    else
-        s << "at most " << kMaxClothSubsteps << " substeps per frame";
-    s << " on a " << grid_description(p) << ": the safe range is (0, " << max_k << "] N/m";
-    if (p.substeps > 0 && needed <= kMaxClothSubsteps)
-        s << ", or use at least " << needed << " substeps (0 chooses them)";
-    else
-        s << " (or raise mass, or use fewer grid vertices)";
-    return s.str();
-}
-
 // --- Forces --------------------------------------------------------------------
 
 glm::dvec3 unit_or(const glm::dvec3& v, const glm::dvec3& fallback) {
@@ -263,7 +74,8 @@ glm::dvec3 wind_vector(const WindState& w) {
 void column_winds(const ClothModel& model, const WindState& from, const WindState& to, int64_t step,
                   std::vector<glm::dvec3>& out) {
     const int n = model.substeps;
-    // Substep s of the frame starting at step `first` blends the two keys.
+    // Frames start at multiples of n steps; substep s of a frame blends its
+    // two key frames' winds by s / n.
     const int64_t s = ((step % n) + n) % n;
     const double alpha = static_cast<double>(s) / n;
     const glm::dvec3 base = wind_vector(from) * (1 - alpha) + wind_vector(to) * alpha;
@@ -469,6 +281,19 @@ void accumulate_forces(const ClothModel& model, const ClothState& state, Scratch
 // free end moves when one end is pinned). Gauss-Seidel in spring order.
 void limit_stretch(const ClothModel& model, std::vector<glm::dvec3>& x) {
     const double limit = 1.0 + static_cast<double>(model.params.max_stretch);
+    // Long range attachments first (Kim, Chentanez and Mueller-Fischer,
+    // "Long range attachments", SCA 2012): no vertex may be further from its
+    // nearest pin than limit x their rest distance. One pass bounds the
+    // stretch a pull from the pins would otherwise spread over many
+    // Gauss-Seidel passes along the whole cloth.
+    for (size_t i = 0; i < x.size(); ++i) {
+        const uint32_t pin = model.attachment[i];
+        if (pin == kNoAttachment) continue;
+        const glm::dvec3 d = x[i] - x[pin];
+        const double l2 = glm::dot(d, d);
+        const double max_l = limit * model.attachment_rest[i];
+        if (l2 > max_l * max_l) x[i] = x[pin] + d * (max_l / std::sqrt(l2));
+    }
     const double tolerance2 = (1 + kStrainTolerance) * (1 + kStrainTolerance);
     for (int pass = 0; pass < kMaxStrainPasses; ++pass) {
         double worst2 = 0;  // the largest (length / limit)^2 this pass met
@@ -518,82 +343,6 @@ void substep(const ClothModel& model, ClothState& state, Scratch& s) {
 
 }  // namespace
 
-// --- Validation ----------------------------------------------------------------
-
-std::string validate_wind(const WindState& w) {
-    const glm::vec3 d = w.direction;
-    if (!(finite(d.x) && finite(d.y) && finite(d.z)) || glm::length(d) == 0)
-        return "wind direction must be a finite, non-zero vector";
-    if (!(w.strength >= 0 && w.strength <= kMaxWindStrength))
-        return range_message("wind strength", w.strength,
-                             "between 0 and " + std::to_string(int(kMaxWindStrength)), " m/s");
-    if (!(w.gust >= 0 && w.gust <= 1)) return range_message("wind gust", w.gust, "between 0 and 1");
-    return "";
-}
-
-std::string validate_cloth_params(const ClothParams& p, const ClothPins& pins) {
-    const std::string side = "between 2 and " + std::to_string(kMaxClothGridSide);
-    if (p.columns < 2 || p.columns > kMaxClothGridSide)
-        return range_message("grid columns", p.columns, side);
-    if (p.rows < 2 || p.rows > kMaxClothGridSide) return range_message("grid rows", p.rows, side);
-    if (!(finite(p.width) && p.width > 0))
-        return range_message("width", p.width, "finite and greater than 0", " m");
-    if (!(finite(p.height) && p.height > 0))
-        return range_message("height", p.height, "finite and greater than 0", " m");
-    if (!(finite(p.mass) && p.mass > 0))
-        return range_message("mass", p.mass, "finite and greater than 0", " kg");
-    if (!(finite(p.stiffness) && p.stiffness > 0))
-        return range_message("stiffness", p.stiffness, "finite and greater than 0", " N/m");
-    if (!(p.shear_stiffness >= 0 && p.shear_stiffness <= 1))
-        return range_message("shear_stiffness", p.shear_stiffness, "between 0 and 1");
-    if (!(p.bend_stiffness >= 0 && p.bend_stiffness <= 1))
-        return range_message("bend_stiffness", p.bend_stiffness, "between 0 and 1");
-    if (!(p.max_stretch >= 0.01f && p.max_stretch <= 1))
-        return range_message("max_stretch", p.max_stretch, "between 0.01 and 1");
-    if (!(p.friction >= 0 && p.friction <= kMaxFriction))
-        return range_message("friction", p.friction,
-                             "between 0 and " + std::to_string(int(kMaxFriction)), " 1/s");
-    if (!(p.damping >= 0 && p.damping <= 1))
-        return range_message("damping", p.damping, "between 0 and 1");
-    if (!(p.wind_drag >= 0 && p.wind_drag <= kMaxWindDrag))
-        return range_message("wind_drag", p.wind_drag,
-                             "between 0 and " + std::to_string(int(kMaxWindDrag)));
-    if (!(p.wind_tangential_drag >= 0 && p.wind_tangential_drag <= kMaxWindDrag))
-        return range_message("wind_tangential_drag", p.wind_tangential_drag,
-                             "between 0 and " + std::to_string(int(kMaxWindDrag)));
-    const glm::vec3 g = p.gravity;
-    if (!(finite(g.x) && finite(g.y) && finite(g.z) && glm::length(g) <= 1000))
-        return "gravity must be a finite vector no longer than 1000 m/s^2";
-    if (!(p.frame_seconds > 0 && p.frame_seconds <= 1))
-        return range_message("frame duration", p.frame_seconds, "in (0, 1]", " s");
-    if (!(p.preroll_seconds >= 0 && p.preroll_seconds <= 60))
-        return range_message("preroll", p.preroll_seconds, "between 0 and 60", " s");
-    if (p.substeps < 0 || p.substeps > kMaxClothSubsteps)
-        return range_message(
-            "substeps", p.substeps,
-            "between 1 and " + std::to_string(kMaxClothSubsteps) + " (or 0 to choose them)");
-    const long long count = static_cast<long long>(p.columns) * p.rows;
-    for (int v : pins.vertices)
-        if (v < 0 || v >= count)
-            return range_message(
-                "pinned vertex", v,
-                "an index row * columns + column between 0 and " + std::to_string(count - 1));
-    if (!pins.left_edge && !pins.top_edge && pins.vertices.empty())
-        return "pin: at least one vertex must be pinned (left_edge, top_edge or a vertex list); "
-               "a free cloth would fall forever";
-    return stability_message(p);
-}
-
-double cloth_stability_number(const ClothParams& params, int substeps) {
-    return stability_number(stability_terms(params), params.stiffness,
-                            params.frame_seconds / substeps);
-}
-
-int cloth_substeps(const ClothParams& params) {
-    if (params.substeps > 0) return params.substeps;
-    return substeps_needed(stability_terms(params), params.stiffness, params.frame_seconds);
-}
-
 // --- Model ---------------------------------------------------------------------
 
 ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
@@ -629,6 +378,27 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
             part.uvs.push_back({static_cast<float>(c) / (C - 1), static_cast<float>(r) / (R - 1)});
         }
     for (int c = 0; c < C; ++c) m.column_x.push_back(m.rest_positions[at(c, 0)].x);
+
+    // Each free vertex's nearest pin at rest, for the long range attachments
+    // (the rest shape is flat, so the straight line is the distance in the
+    // cloth). Ties go to the first pin in index order.
+    std::vector<uint32_t> pinned_list;
+    for (uint32_t i = 0; i < n; ++i)
+        if (m.pinned[i]) pinned_list.push_back(i);
+    m.attachment.assign(n, kNoAttachment);
+    m.attachment_rest.assign(n, 0);
+    for (uint32_t i = 0; i < n; ++i) {
+        if (m.pinned[i]) continue;
+        double best = std::numeric_limits<double>::infinity();
+        for (uint32_t pin : pinned_list) {
+            const double d = glm::length(m.rest_positions[i] - m.rest_positions[pin]);
+            if (d < best) {
+                best = d;
+                m.attachment[i] = pin;
+            }
+        }
+        m.attachment_rest[i] = best;
+    }
 
     // The list of springs (the strain limit walks it; the forces use the same
     // springs grouped by kind, spring_families).
@@ -707,7 +477,7 @@ glm::dvec3 wind_at_step(const ClothModel& model, const WindState& from, const Wi
 void advance_cloth_frame(const ClothModel& model, ClothState& state, const WindState& from,
                          const WindState& to) {
     for (const WindState* w : {&from, &to})
-        if (std::string problem = validate_wind(*w); !problem.empty())
+        if (std::string problem = validate_wind(*w, model.params); !problem.empty())
             throw Error(ExitCode::invalid_input, "cloth: " + problem);
     Scratch s;
     s.families = spring_families(model);

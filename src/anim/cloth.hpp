@@ -31,8 +31,11 @@ struct ClothParams {
     int rows = 32;
     float width = 1.5f;   // m, finite and > 0
     float height = 1.0f;  // m, finite and > 0
-    // Total mass in kg, finite and > 0, spread evenly over the vertices as in
-    // the seed (1.3). Flag cotton (bunting) weighs about 0.2 kg/m^2.
+    // Total mass in kg, spread evenly over the vertices as in the seed (1.3).
+    // Flag cotton (bunting) weighs about 0.2 kg/m^2. Finite and > 0, and
+    // light enough that its weight alone, over `stiffness` times the shorter
+    // side, stays within max_stretch (heavier, the strain limit alone would
+    // hold the cloth up, and it cannot).
     float mass = 0.3f;
     // Stretch stiffness of the sheet in N/m: the Hooke constant k of every
     // structural spring of a square cell (rectangular cells scale it by the
@@ -61,17 +64,17 @@ struct ClothParams {
     // It only has to calm jitter at the scale of a cell (the air damps the
     // large motions), and more of it needs more substeps.
     float damping = 0.05f;
-    // Wind force coefficient in kg/(m^2 s): a face of area A feels
-    // F = wind_drag A n (n.(w - v)). 1.0 gives 5 Pa on a face square to a
-    // 5 m/s wind, so the default flag droops about 20 degrees below the wind.
-    // [0, kMaxWindDrag].
+    // Wind force coefficient in kg/(m^2 s): a face (grid cell) of area A
+    // moving at v feels F = wind_drag A n (n.(w - v)). 1.0 gives 5 Pa on a
+    // face square to a 5 m/s wind; the default flag flies 20 to 30 degrees
+    // below the wind. [0, kMaxWindDrag].
     float wind_drag = 1.0f;
     // Tangential wind coefficient in kg/(m^2 s), not in the seed: the face
     // also feels wind_tangential_drag A (w - n (n.w)), the skin friction and
-    // the form drag of ripples finer than the grid. It is what keeps a real
-    // flag out of the wind's way: the normal force alone cannot hold up a
-    // flag that lies along the wind, so it would sag in its own plane.
-    // [0, kMaxWindDrag].
+    // the form drag of ripples finer than the grid. It is what holds a real
+    // flag out in the wind: the normal force alone cannot hold up a flag
+    // that lies along the wind, so it would sag in its own plane. 0 gives
+    // the seed's force alone. [0, kMaxWindDrag].
     float wind_tangential_drag = 0.5f;
     glm::vec3 gravity = {0, -9.81f, 0};  // m/s^2, finite, length <= 1000
     // Integration steps per frame, or 0 to choose the fewest that are stable
@@ -88,6 +91,7 @@ constexpr int kMaxClothSubsteps = 1000;
 constexpr float kMaxFriction = 100;
 constexpr float kMaxWindDrag = 100;
 constexpr float kMaxWindStrength = 100;  // m/s
+constexpr uint32_t kNoAttachment = 0xffffffffU;
 
 // Which vertices hang on the pole. The union of the three is pinned; at
 // least one vertex must be.
@@ -98,8 +102,9 @@ struct ClothPins {
     std::vector<int> vertices;
 };
 
-// The wind at one frame, in the cloth's local space. The caller keyframes it;
-// between frames it is interpolated linearly over the substeps.
+// The wind at one frame, in the cloth's local space. The caller keyframes it
+// (the seed's key frames); between frames it is interpolated linearly over
+// the substeps, and the frames between key frames are simulated.
 struct WindState {
     glm::vec3 direction = {1, 0, 0};  // any non-zero length; normalised here
     float strength = 5;               // m/s, [0, kMaxWindStrength]
@@ -115,6 +120,13 @@ struct WindState {
 // names the parameter, its value and its safe range (the first problem found).
 std::string validate_cloth_params(const ClothParams& params, const ClothPins& pins = {});
 std::string validate_wind(const WindState& wind);
+// Also checks the wind against a cloth (valid params): the strongest gust,
+// strength x (1 + gust), must not move a vertex more than a tenth of a cell
+// in one substep (max_wind_speed), or the strain limit cannot keep up. With
+// the defaults that is several hundred m/s, so only extreme wind_drag,
+// light cloths or few substeps meet it.
+std::string validate_wind(const WindState& wind, const ClothParams& params);
+double max_wind_speed(const ClothParams& params);
 
 // Substeps per frame the simulation uses: params.substeps if set, otherwise
 // the fewest that satisfy the stability bound (docs/cloth.md). Valid params only.
@@ -127,6 +139,8 @@ int cloth_substeps(const ClothParams& params);
 double cloth_stability_number(const ClothParams& params, int substeps);
 constexpr double kClothStabilityLimit = 0.8;
 
+// One spring of the grid. The strain limit walks the list; the forces use
+// the same springs grouped by kind (cloth.cpp, spring_families).
 struct ClothSpring {
     uint32_t a, b;
     double rest;         // rest length, m
@@ -145,9 +159,15 @@ struct ClothModel {
     std::vector<glm::dvec3> rest_positions;  // per vertex
     std::vector<double> column_x;            // rest x of each column
     std::vector<ClothSpring> springs;        // structural, then shear, then bend
-    std::vector<uint32_t> indices;           // three per triangle, front face +Z
-    MeshPart rest_part;                      // rest positions, +Z normals, UVs, indices
-    int preroll_frames = 0;                  // whole frames simulated before frame 0
+    // Per vertex, its nearest pin at rest and their rest distance (long
+    // range attachments); kNoAttachment for pinned vertices.
+    std::vector<uint32_t> attachment;
+    std::vector<double> attachment_rest;
+    // Three per triangle, two triangles per cell cell by cell along each
+    // row, diagonals alternating like a checkerboard; front face +Z.
+    std::vector<uint32_t> indices;
+    MeshPart rest_part;      // rest positions, +Z normals, UVs, indices
+    int preroll_frames = 0;  // whole frames simulated before frame 0
 };
 
 // The moving part. `step` counts substeps from frame 0 (negative in preroll);
@@ -163,7 +183,9 @@ struct ClothState {
 // What the renderer needs at one frame, in local space.
 struct ClothFrame {
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;  // area-weighted, unit length, towards +Z at rest
+    // Unit length, towards +Z at rest: from central differences across the
+    // grid, so they do not depend on the triangles' alternating diagonals.
+    std::vector<glm::vec3> normals;
 };
 
 // Throws facet::Error (invalid_input) with validate_cloth_params' message.
@@ -178,7 +200,8 @@ void advance_cloth_frame(const ClothModel& model, ClothState& state, const WindS
                          const WindState& to);
 ClothFrame cloth_frame(const ClothModel& model, const ClothState& state);
 double kinetic_energy(const ClothModel& model, const ClothState& state);
-// The wind vector a face in `column` feels at `step` (for tests and docs).
+// The wind vector the cells in `column` (0 .. columns - 2) feel at `step`,
+// gusts included (for tests and docs).
 glm::dvec3 wind_at_step(const ClothModel& model, const WindState& from, const WindState& to,
                         int64_t step, int column);
 
@@ -190,7 +213,8 @@ glm::dvec3 wind_at_step(const ClothModel& model, const WindState& from, const Wi
 // its results do not depend on the renderer's thread count.
 class ClothSimulation {
   public:
-    // `wind_at(frame)` must be a pure function of the frame (frame >= 0).
+    // `wind_at(frame)` must be a pure function of the frame (frame >= 0);
+    // without one the wind is WindState{}.
     using WindAt = std::function<WindState(int frame)>;
     static constexpr int kCheckpointInterval = 32;
 

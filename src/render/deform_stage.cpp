@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "anim/track.hpp"
 #include "render/frame_renderer.hpp"
 
 namespace facet {
@@ -14,19 +13,7 @@ void FrameRenderer::make_cloth_simulations() {
     const double fps = scene_.output.fps;
     for (const ClothObject& c : world_.cloths) {
         const ObjectDesc& obj = scene_.objects[c.object];
-        const ClothDesc& desc = *obj.cloth;
-        // The wind of simulation frame i is the keyed wind at scene frame
-        // first + i, turned into the cloth's local space.
-        auto wind_at = [&obj, &desc, first, fps](int frame) {
-            const FrameTime at{static_cast<double>(first + frame), frame / fps};
-            const glm::dquat to_local = glm::inverse(evaluate_rotation(obj.rotate, at));
-            WindState wind;
-            wind.direction = glm::vec3(to_local * glm::dvec3(evaluate(desc.wind_direction, at)));
-            wind.strength = evaluate(desc.wind_strength, at);
-            wind.gust = evaluate(desc.gust, at);
-            wind.seed = static_cast<uint32_t>(desc.seed);
-            return wind;
-        };
+        auto wind_at = [&obj, first, fps](int frame) { return cloth_wind(obj, frame, first, fps); };
         cloth_sims_.push_back(std::make_unique<ClothSimulation>(c.params, c.pins, wind_at));
     }
 }

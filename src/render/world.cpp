@@ -112,6 +112,18 @@ ClothParams cloth_params(const ClothDesc& c, const ObjectDesc& object, double fp
     return p;
 }
 
+WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, double fps) {
+    const ClothDesc& desc = *object.cloth;
+    const FrameTime at{static_cast<double>(first_frame + frame), frame / fps};
+    const glm::dquat to_local = glm::inverse(evaluate_rotation(object.rotate, at));
+    WindState wind;
+    wind.direction = glm::vec3(to_local * glm::dvec3(evaluate(desc.wind_direction, at)));
+    wind.strength = evaluate(desc.wind_strength, at);
+    wind.gust = evaluate(desc.gust, at);
+    wind.seed = static_cast<uint32_t>(desc.seed);
+    return wind;
+}
+
 ClothPins cloth_pins(const ClothDesc& c) {
     ClothPins pins;
     pins.left_edge = c.pin_left;
@@ -147,6 +159,16 @@ World build_world(const SceneDesc& scene) {
                 const ClothModel model = build_cloth_model(
                     cloth_params(*obj.cloth, obj, scene.output.fps, scene.output.frames.front()),
                     cloth_pins(*obj.cloth));
+                // Every frame's wind must suit this cloth; checked here so a bad
+                // key frame fails before anything is rendered.
+                const int first = scene.output.frames.front();
+                for (int f = 0; f <= scene.output.frames.back() - first; ++f) {
+                    const std::string problem =
+                        validate_wind(cloth_wind(obj, f, first, scene.output.fps), model.params);
+                    if (!problem.empty())
+                        throw Error(ExitCode::invalid_input,
+                                    "frame " + std::to_string(first + f) + ": " + problem);
+                }
                 Mesh cloth_mesh;
                 cloth_mesh.source = "cloth";
                 cloth_mesh.parts.push_back(model.rest_part);

@@ -49,6 +49,10 @@ ClothParams cloth_params(const ClothDesc& cloth, const ObjectDesc& object, doubl
                          int first_frame);
 ClothPins cloth_pins(const ClothDesc& cloth);
 
+// The keyed wind of a cloth object at simulation frame `frame` (scene frame
+// first_frame + frame), turned into the object's local space.
+WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, double fps);
+
 struct World {
     std::vector<Material> materials;
     std::vector<uint32_t> material_object;  // per material: the scene object it belongs to

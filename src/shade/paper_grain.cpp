@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "shade/integer_hash.hpp"
+#include "core/integer_hash.hpp"
 
 namespace facet {
 

@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "shade/integer_hash.hpp"
+#include "core/integer_hash.hpp"
 #include "shade/paper_grain.hpp"
 
 namespace facet {
