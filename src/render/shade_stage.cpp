@@ -19,7 +19,7 @@ namespace {
 // What is left to do to a pixel after its lighting: hatching strokes and
 // wireframe lines (docs/styles.md, "Layers").
 struct PixelFinish {
-    const StyleState* style = nullptr;
+    const StyleState* style = nullptr;  // null when the style has no layers
     glm::vec3 albedo{0};
     glm::vec2 hatch_uv{0};
     float hatch_lod = 0;
@@ -31,6 +31,7 @@ float luminance(const glm::vec3& c) {
 }
 
 glm::vec3 finish_pixel(glm::vec3 color, const PixelFinish& f, float palette_tone = -1) {
+    if (!f.style) return color;  // no layers: most pixels
     const StyleState& style = *f.style;
     if (style.hatching) {
         const HatchingState& h = *style.hatching;
@@ -219,8 +220,10 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
             }
 
             PixelFinish finish;
-            finish.style = &style;
-            finish.albedo = albedo;
+            if (style.hatching || style.wireframe) {
+                finish.style = &style;
+                finish.albedo = albedo;
+            }
             if (style.wireframe && !world_.edge_mask.empty()) {
                 const glm::vec3 bary(b0, b1, b2);
                 const glm::vec3 ddx(-db1dx - db2dx, db1dx, db2dx);
