@@ -17,6 +17,7 @@
 #include "render/camera.hpp"
 #include "render/render_job.hpp"
 #include "render/world.hpp"
+#include "render_hashes.hpp"
 #include "scene_support.hpp"
 #include "support.hpp"
 
@@ -423,34 +424,13 @@ TEST_CASE("a framing camera fits the clip plane it is not given", "[camera]") {
 // ---------------------------------------------------------------------------
 // Frame-subset determinism of an animated scene
 
-namespace {
-
-std::map<std::string, std::string> render_hashes(std::vector<int> frames, const std::string& out) {
-    SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    options.overrides.push_back({"output.passes", "[color, depth]", "test"});
-    SceneDesc scene = load_scene(test::source_path("tests/scenes/anim_subset.yaml"), options);
-    World world = build_world(scene);
-    RenderOptions ro;
-    ro.threads = 2;
-    ro.frames = std::move(frames);
-    ro.out_dir = out;
-    RenderResult result = render_scene(scene, world, ro, nullptr);
-    Manifest manifest = read_manifest(result.manifest_path);
-    std::map<std::string, std::string> hashes;
-    for (const auto& f : manifest.files)
-        hashes[std::to_string(f.frame) + "/" + f.pass + "/" + f.format] = f.sha256;
-    return hashes;
-}
-
-}  // namespace
-
 TEST_CASE("frames 4-5 alone render the same files as in a 1-6 run", "[anim][camera]") {
     TempDir full("anim-full"), part("anim-part");
-    auto all = render_hashes({1, 2, 3, 4, 5, 6}, full.path());
-    auto some = render_hashes({4, 5}, part.path());
-    REQUIRE(all.size() == 12);  // 6 frames x (colour, depth)
-    REQUIRE(some.size() == 4);
+    auto all =
+        test::render_hashes("tests/scenes/anim_subset.yaml", 2, {1, 2, 3, 4, 5, 6}, full.path());
+    auto some = test::render_hashes("tests/scenes/anim_subset.yaml", 2, {4, 5}, part.path());
+    REQUIRE(all.size() == 24);  // 6 frames x (colour, depth) x (PNG, EXR)
+    REQUIRE(some.size() == 8);
     for (const auto& [key, hash] : some) {
         INFO(key);
         CHECK(all.at(key) == hash);

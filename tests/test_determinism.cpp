@@ -4,38 +4,10 @@
 
 #include <map>
 
-#include "output/manifest.hpp"
-#include "render/render_job.hpp"
-#include "support.hpp"
+#include "render_hashes.hpp"
 
 using namespace facet;
-
-namespace {
-
-// (frame, pass, format) -> sha256 of the file, as the run's manifest records it.
-std::map<std::string, std::string> render_hashes(const std::string& scene_file, unsigned threads,
-                                                 std::vector<int> frames, const std::string& out,
-                                                 int samples = 1) {
-    SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    options.overrides.push_back({"output.passes", "[color, depth]", "test"});
-    options.overrides.push_back({"output.formats", "[png, exr]", "test"});
-    options.overrides.push_back({"output.samples", std::to_string(samples), "test"});
-    SceneDesc scene = load_scene(test::source_path(scene_file), options);
-    World world = build_world(scene);
-    RenderOptions ro;
-    ro.threads = threads;
-    ro.frames = std::move(frames);
-    ro.out_dir = out;
-    RenderResult result = render_scene(scene, world, ro, nullptr);
-    Manifest m = read_manifest(result.manifest_path);
-    std::map<std::string, std::string> hashes;
-    for (const auto& f : m.files)
-        hashes[std::to_string(f.frame) + "/" + f.pass + "/" + f.format] = f.sha256;
-    return hashes;
-}
-
-}  // namespace
+using facet::test::render_hashes;
 
 TEST_CASE("identical files at 1, 2 and 3 threads", "[determinism]") {
     for (const char* scene : {"tests/scenes/shapes.yaml", "scenes/turntable.yaml"}) {

@@ -17,23 +17,28 @@ namespace {
 // A chain of presets longer than this is a mistake, not a design.
 constexpr size_t kMaxExtendsDepth = 16;
 
-ShadingModel parse_shading(const Field& f) {
-    std::string name = f.choice({"flat", "gouraud", "phong", "blinn_phong", "blinn-phong", "unlit",
-                                 "depth", "normal", "palette", "gooch", "toon"});
-    if (name == "flat") return ShadingModel::flat;
-    if (name == "gouraud") return ShadingModel::gouraud;
-    if (name == "phong") return ShadingModel::phong;
-    if (name == "unlit") return ShadingModel::unlit;
-    if (name == "depth") return ShadingModel::depth;
-    if (name == "normal") return ShadingModel::normal;
-    if (name == "palette") return ShadingModel::palette;
-    if (name == "gooch") return ShadingModel::gooch;
-    if (name == "toon") return ShadingModel::toon;
-    return ShadingModel::blinn_phong;
-}
+// Each model's name in style files; also what `facet validate` prints.
+struct ShadingName {
+    ShadingModel model;
+    const char* name;
+};
+constexpr ShadingName kShadingNames[] = {
+    {ShadingModel::flat, "flat"},     {ShadingModel::gouraud, "gouraud"},
+    {ShadingModel::phong, "phong"},   {ShadingModel::blinn_phong, "blinn_phong"},
+    {ShadingModel::unlit, "unlit"},   {ShadingModel::depth, "depth"},
+    {ShadingModel::normal, "normal"}, {ShadingModel::palette, "palette"},
+    {ShadingModel::gooch, "gooch"},   {ShadingModel::toon, "toon"},
+};
 
-float unit_number(const Field& f) {
-    return static_cast<float>(f.number(0, 1));
+ShadingModel parse_shading(const Field& f) {
+    std::string name = f.text();
+    if (name == "blinn-phong") return ShadingModel::blinn_phong;  // the preset's spelling
+    std::string list;
+    for (const ShadingName& entry : kShadingNames) {
+        if (name == entry.name) return entry.model;
+        list += std::string(list.empty() ? "" : ", ") + entry.name;
+    }
+    f.fail("must be one of: " + list + "; got '" + name + "'");
 }
 
 void apply_toon(const Field& f, ToonDesc& toon) {
@@ -180,28 +185,8 @@ StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
 }  // namespace
 
 const char* shading_model_name(ShadingModel model) {
-    switch (model) {
-        case ShadingModel::flat:
-            return "flat";
-        case ShadingModel::gouraud:
-            return "gouraud";
-        case ShadingModel::phong:
-            return "phong";
-        case ShadingModel::blinn_phong:
-            return "blinn_phong";
-        case ShadingModel::unlit:
-            return "unlit";
-        case ShadingModel::depth:
-            return "depth";
-        case ShadingModel::normal:
-            return "normal";
-        case ShadingModel::palette:
-            return "palette";
-        case ShadingModel::gooch:
-            return "gooch";
-        case ShadingModel::toon:
-            return "toon";
-    }
+    for (const ShadingName& entry : kShadingNames)
+        if (entry.model == model) return entry.name;
     return "?";
 }
 

@@ -1,0 +1,37 @@
+#pragma once
+// Renders frames of a scene through a whole run (files and manifest) and
+// returns what the manifest records, for determinism tests.
+#include <map>
+#include <string>
+#include <vector>
+
+#include "output/manifest.hpp"
+#include "render/render_job.hpp"
+#include "support.hpp"
+
+namespace facet::test {
+
+// (frame, pass, format) -> sha256 of the file: colour and depth, PNG and EXR.
+inline std::map<std::string, std::string> render_hashes(const std::string& scene_file,
+                                                        unsigned threads, std::vector<int> frames,
+                                                        const std::string& out, int samples = 1) {
+    SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    options.overrides.push_back({"output.passes", "[color, depth]", "test"});
+    options.overrides.push_back({"output.formats", "[png, exr]", "test"});
+    options.overrides.push_back({"output.samples", std::to_string(samples), "test"});
+    SceneDesc scene = load_scene(source_path(scene_file), options);
+    World world = build_world(scene);
+    RenderOptions ro;
+    ro.threads = threads;
+    ro.frames = std::move(frames);
+    ro.out_dir = out;
+    RenderResult result = render_scene(scene, world, ro, nullptr);
+    Manifest manifest = read_manifest(result.manifest_path);
+    std::map<std::string, std::string> hashes;
+    for (const auto& f : manifest.files)
+        hashes[std::to_string(f.frame) + "/" + f.pass + "/" + f.format] = f.sha256;
+    return hashes;
+}
+
+}  // namespace facet::test
