@@ -13,7 +13,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "anim/cloth.hpp"
+#include "cloth/cloth.hpp"
 #include "core/error.hpp"
 #include "support.hpp"
 
@@ -24,6 +24,25 @@ using facet::ClothSimulation;
 using facet::WindState;
 
 namespace {
+
+// The message a check throws, or "" when the values pass.
+template <typename Check>
+std::string problem(Check&& check) {
+    try {
+        check();
+        return "";
+    } catch (const facet::Error& e) {
+        return e.detail();
+    }
+}
+
+ClothSimulation simulation(const ClothParams& params, const ClothPins& pins,
+                           ClothSimulation::WindAt wind) {
+    return ClothSimulation(std::make_shared<const facet::ClothModel>(
+                               facet::build_cloth_model(params, pins)),
+                           std::move(wind));
+}
+
 
 WindState calm() {
     WindState w;
@@ -97,7 +116,7 @@ WindState gusty(int frame) {
 }
 
 void run_stretch_check(int frames) {
-    ClothSimulation sim(ClothParams{}, ClothPins{}, gusty);
+    ClothSimulation sim = simulation(ClothParams{}, ClothPins{}, gusty);
     StretchRange r;
     for (int f = 1; f <= frames; ++f) measure(sim.model(), sim.simulate_to(f), r);
     INFO("largest stretch " << r.max_limited << ", smallest structural " << r.min_structural);
@@ -113,8 +132,8 @@ void run_stretch_check(int frames) {
 
 TEST_CASE("Cloth defaults are valid and stable with a modest number of substeps", "[cloth]") {
     ClothParams p;
-    CHECK(facet::validate_cloth_params(p).empty());
-    CHECK(facet::validate_wind(WindState{}).empty());
+    CHECK(problem([&] { facet::check_cloth_params(p); }).empty());
+    CHECK(problem([&] { facet::check_wind(WindState{}); }).empty());
     const int n = facet::cloth_substeps(p);
     CHECK(n >= 1);
     CHECK(n <= 100);
@@ -157,7 +176,7 @@ TEST_CASE("Pinned cloth vertices never move", "[cloth]") {
         pins.left_edge = false;
         pins.vertices = {0, p.columns - 1};
     }
-    ClothSimulation sim(p, pins, [](int) { return steady({1, 0.2f, 0.5f}, 15, 1); });
+    ClothSimulation sim = simulation(p, pins, [](int) { return steady({1, 0.2f, 0.5f}, 15, 1); });
     const facet::ClothModel& m = sim.model();
     size_t pinned = 0;
     for (int f = 0; f <= 48; f += 3) {
@@ -185,7 +204,7 @@ TEST_CASE("A cloth without wind comes to rest hanging under gravity", "[cloth]")
     ClothPins pins;
     pins.left_edge = false;
     pins.top_edge = true;
-    ClothSimulation sim(p, pins, [](int) { return calm(); });
+    ClothSimulation sim = simulation(p, pins, [](int) { return calm(); });
     double peak = 0, at10 = 0, last = 0;
     for (int f = 1; f <= 720; ++f) {  // 30 s
         last = facet::kinetic_energy(sim.model(), sim.simulate_to(f));
@@ -218,7 +237,7 @@ TEST_CASE("A cloth without wind comes to rest hanging under gravity", "[cloth]")
 TEST_CASE("Wind along +X carries the flag's free edge towards +X", "[cloth]") {
     ClothParams p = small_cloth();
     auto free_edge_after = [&](WindState wind, int frames) {
-        ClothSimulation sim(p, ClothPins{}, [wind](int) { return wind; });
+        ClothSimulation sim = simulation(p, ClothPins{}, [wind](int) { return wind; });
         return column_mean(sim.simulate_to(frames), p, p.columns - 1);
     };
     const glm::dvec3 still = free_edge_after(calm(), 72);
@@ -233,7 +252,7 @@ TEST_CASE("Wind along +X carries the flag's free edge towards +X", "[cloth]") {
         top.left_edge = false;
         top.top_edge = true;
         for (float sign : {1.0f, -1.0f}) {
-            ClothSimulation sim(p, top, [sign](int) { return steady({0, 0, sign}, 5); });
+            ClothSimulation sim = simulation(p, top, [sign](int) { return steady({0, 0, sign}, 5); });
             double z = 0;
             for (int c = 0; c < p.columns; ++c) z += at(sim.simulate_to(48), p, c, p.rows - 1).z;
             z /= p.columns;
@@ -263,7 +282,7 @@ TEST_CASE("Gusts keep the flag moving in a steady wind", "[cloth]") {
     other_seed.seed = 2;
     CHECK(facet::wind_at_step(m, other_seed, other_seed, 500, 0) != b);
 
-    ClothSimulation sim(p, ClothPins{}, [&](int) { return steady_wind; });
+    ClothSimulation sim = simulation(p, ClothPins{}, [&](int) { return steady_wind; });
     double least = 1e9;
     for (int f = 24; f <= 240; f += 24) {
         // The flag's shape keeps changing: compare with half a second before.
@@ -290,11 +309,11 @@ TEST_CASE("Cloth frames are the same bits whichever frames are asked for", "[clo
     ClothParams p = small_cloth();
     p.preroll_seconds = 1;
     auto wind = [](int frame) { return steady({1, 0, 0.3f}, 4 + 0.02f * frame, 0.5f); };
-    ClothSimulation sequential(p, ClothPins{}, wind);
+    ClothSimulation sequential = simulation(p, ClothPins{}, wind);
     std::vector<ClothFrame> frames(151);
     for (int f = 1; f <= 150; ++f) frames[f] = sequential.state_at(f);
 
-    ClothSimulation direct(p, ClothPins{}, wind);
+    ClothSimulation direct = simulation(p, ClothPins{}, wind);
     const ClothFrame at150 = direct.state_at(150);
     CHECK(same_bits(at150.positions, frames[150].positions));
     CHECK(same_bits(at150.normals, frames[150].normals));
@@ -306,7 +325,7 @@ TEST_CASE("Cloth frames are the same bits whichever frames are asked for", "[clo
         CHECK(same_bits(again.normals, frames[f].normals));
     }
     // A third simulation asked only for frames 100-120.
-    ClothSimulation subset(p, ClothPins{}, wind);
+    ClothSimulation subset = simulation(p, ClothPins{}, wind);
     for (int f = 100; f <= 120; ++f)
         CHECK(same_bits(subset.state_at(f).positions, frames[f].positions));
     // The output is finite with unit normals.
@@ -367,44 +386,44 @@ TEST_CASE("Invalid cloth settings are rejected naming the safe range", "[cloth]"
         ClothParams p;
         ClothPins pins;
         c.change(p, pins);
-        CHECK_THAT(facet::validate_cloth_params(p, pins), Catch::Contains(c.message));
-        facet::test::require_input_error([&] { ClothSimulation(p, pins, nullptr); }, c.message);
-        facet::test::require_input_error([&] { ClothSimulation(p, pins, nullptr); }, "cloth: ");
+        CHECK_THAT(problem([&] { facet::check_cloth_params(p, pins); }), Catch::Contains(c.message));
+        facet::test::require_input_error([&] { simulation(p, pins, nullptr); }, c.message);
+        facet::test::require_input_error([&] { simulation(p, pins, nullptr); }, "cloth: ");
     }
 
     SECTION("the wind") {
         WindState w;
         w.strength = -1;
-        CHECK_THAT(facet::validate_wind(w),
+        CHECK_THAT(problem([&] { facet::check_wind(w); }),
                    Catch::Contains("wind strength must be between 0 and 100 m/s"));
         w = WindState{};
         w.gust = 2;
-        CHECK_THAT(facet::validate_wind(w),
+        CHECK_THAT(problem([&] { facet::check_wind(w); }),
                    Catch::Contains("wind gust must be between 0 and 1, got 2"));
         w = WindState{};
         w.direction = {0, 0, 0};
-        CHECK_THAT(facet::validate_wind(w),
+        CHECK_THAT(problem([&] { facet::check_wind(w); }),
                    Catch::Contains("wind direction must be a finite, non-zero"));
         // Wind too strong for a cloth's settings names the strongest it takes.
         ClothParams heavy_drag;
         heavy_drag.wind_drag = 100;
-        REQUIRE(facet::validate_cloth_params(heavy_drag).empty());
+        REQUIRE(problem([&] { facet::check_cloth_params(heavy_drag); }).empty());
         w = WindState{};
         w.strength = 100;
         w.gust = 1;
-        CHECK(facet::validate_wind(w).empty());
-        CHECK_THAT(facet::validate_wind(w, heavy_drag),
+        CHECK(problem([&] { facet::check_wind(w); }).empty());
+        CHECK_THAT(problem([&] { facet::check_wind(w, heavy_drag); }),
                    Catch::Contains("wind strength 100 m/s with gust 1 is too strong for this "
                                    "cloth (wind_drag 100, 48x32 grid of 0.3 kg") &&
                        Catch::Contains("strength x (1 + gust) must be at most "));
         const double most = facet::max_wind_speed(heavy_drag);
         w.strength = static_cast<float>(most / 2 * 0.99);
-        CHECK(facet::validate_wind(w, heavy_drag).empty());
-        CHECK(facet::validate_wind(w, ClothParams{}).empty());
+        CHECK(problem([&] { facet::check_wind(w, heavy_drag); }).empty());
+        CHECK(problem([&] { facet::check_wind(w, ClothParams{}); }).empty());
         CHECK(facet::max_wind_speed(ClothParams{}) > 2 * facet::kMaxWindStrength);
         // A bad key frame fails when the simulation reaches it.
         ClothParams p = small_cloth();
-        ClothSimulation sim(p, ClothPins{}, [](int f) {
+        ClothSimulation sim = simulation(p, ClothPins{}, [](int f) {
             return steady({1, 0, 0}, f < 10 ? 5 : -3);
         });
         CHECK_NOTHROW(sim.simulate_to(8));
@@ -417,7 +436,7 @@ TEST_CASE("The stated safe stiffness is stable and just above it is rejected", "
     ClothParams p = small_cloth();
     p.substeps = 20;
     p.stiffness = 1e5f;
-    const std::string message = facet::validate_cloth_params(p);
+    const std::string message = problem([&] { facet::check_cloth_params(p); });
     const std::string marker = "safe range is (0, ";
     const size_t at_marker = message.find(marker);
     REQUIRE(at_marker != std::string::npos);
@@ -426,12 +445,12 @@ TEST_CASE("The stated safe stiffness is stable and just above it is rejected", "
     CHECK_THAT(message, Catch::Contains("or use at least"));
 
     p.stiffness = static_cast<float>(safe * 1.01);
-    CHECK_FALSE(facet::validate_cloth_params(p).empty());
+    CHECK_FALSE(problem([&] { facet::check_cloth_params(p); }).empty());
     p.stiffness = static_cast<float>(safe * 0.99);
-    REQUIRE(facet::validate_cloth_params(p).empty());
+    REQUIRE(problem([&] { facet::check_cloth_params(p); }).empty());
     // At the limit the explicit step really is stable: gusty wind for 10 s
     // and the cloth neither explodes nor jitters (its energy stays small).
-    ClothSimulation sim(p, ClothPins{}, [](int) { return steady({1, 0, 0}, 8, 0.8f); });
+    ClothSimulation sim = simulation(p, ClothPins{}, [](int) { return steady({1, 0, 0}, 8, 0.8f); });
     StretchRange r;
     double energy = 0;
     for (int f = 1; f <= 240; ++f) {

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "core/frame_range.hpp"
 
 using facet::parse_frame_ranges;
@@ -97,7 +98,7 @@ TEST_CASE("a list of exactly one million frames is still accepted", "[frame_rang
     CHECK(stepped.back() == 1999998);
 }
 
-TEST_CASE("invalid frame lists throw std::invalid_argument", "[frame_range]") {
+TEST_CASE("invalid frame lists throw facet::Error", "[frame_range]") {
     auto invalid = GENERATE(as<std::string>{},
                             "",             // nothing
                             " ",            // only spaces
@@ -129,7 +130,7 @@ TEST_CASE("invalid frame lists throw std::invalid_argument", "[frame_range]") {
                             "1-600000,700001-1300000",  // too many in total
                             "x-5", "5-x");
     CAPTURE(invalid);
-    CHECK_THROWS_AS(parse_frame_ranges(invalid), std::invalid_argument);
+    CHECK_THROWS_AS(parse_frame_ranges(invalid), facet::Error);
 }
 
 TEST_CASE("frame list errors say what is wrong", "[frame_range]") {

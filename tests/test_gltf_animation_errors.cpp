@@ -282,7 +282,7 @@ TEST_CASE("glTF channels for other targets are left out with a warning", "[gltf]
             // tinygltf itself drops a channel without a node, silently.
             if (name == "extension path") {
                 REQUIRE(mesh.warnings.size() == 1);
-                CHECK_THAT(mesh.warnings[0], Catch::Contains("channel 0"));
+                CHECK_THAT(mesh.warnings[0].message, Catch::Contains("channel 0"));
             }
             CHECK(facet::animation_duration(mesh, 0) == 1.0);
         }

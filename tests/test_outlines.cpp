@@ -8,6 +8,7 @@
 #include <functional>
 #include <limits>
 
+#include "core/error.hpp"
 #include "post/outlines.hpp"
 
 using namespace facet;
@@ -293,5 +294,5 @@ TEST_CASE("outlines are identical with 1 and 2 threads", "[outline]") {
 TEST_CASE("outline buffers of the wrong size are refused", "[outline]") {
     OutlineBuffers b = square_scene();
     b.normal.pop_back();
-    CHECK_THROWS_AS(draw(b, OutlineStyle{}), std::invalid_argument);
+    CHECK_THROWS_AS(draw(b, OutlineStyle{}), facet::Error);
 }

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/error.hpp"
 #include "output/output_path.hpp"
 
 using facet::OutputNameFields;
@@ -30,7 +31,7 @@ std::string name(const std::string& text, const OutputNameFields& f) {
 std::string parse_error(const std::string& text) {
     try {
         facet::parse_output_template(text);
-    } catch (const std::invalid_argument& e) {
+    } catch (const facet::Error& e) {
         return e.what();
     }
     return "";
@@ -43,7 +44,7 @@ std::string collision(const std::string& text, const std::vector<std::string>& c
     try {
         facet::check_unique_outputs(facet::parse_output_template(text), "shapes", cameras, passes,
                                     exts, frames);
-    } catch (const std::invalid_argument& e) {
+    } catch (const facet::Error& e) {
         return e.what();
     }
     return "";
@@ -351,5 +352,5 @@ TEST_CASE("output paths are made relative to the manifest folder", "[output][nam
     // Whole components only: "shapes2" is not inside "shapes".
     CHECK_THROWS_WITH(facet::path_relative_to_manifest("shapes2/a.png", "shapes"),
                       Contains("'shapes2/a.png' is not inside the manifest's folder 'shapes'"));
-    CHECK_THROWS_AS(facet::path_relative_to_manifest("shapes", "shapes"), std::invalid_argument);
+    CHECK_THROWS_AS(facet::path_relative_to_manifest("shapes", "shapes"), facet::Error);
 }

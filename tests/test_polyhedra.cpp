@@ -450,14 +450,14 @@ TEST_CASE("scene keys of the new primitives reach the meshes", "[scene][polyhedr
 )");
     facet::SceneDesc scene = facet::test::load(path);
     REQUIRE(scene.objects.size() == 6);
-    const auto& box = *scene.objects[0].primitive;
+    const auto& box = scene.objects[0].primitive->spec;
     CHECK(box.box_size == glm::vec3(1, 2, 3));
-    CHECK(scene.objects[1].primitive->box_size == glm::vec3(0.5f));
-    CHECK(scene.objects[2].primitive->sides == 5);
-    CHECK(scene.objects[3].primitive->subdivisions == 1);
-    CHECK(scene.objects[3].primitive->smooth == false);
-    CHECK(scene.objects[4].primitive->tube == 1.0f);  // half the radius by default
-    CHECK(scene.objects[5].primitive->type == "dodecahedron");
+    CHECK(scene.objects[1].primitive->spec.box_size == glm::vec3(0.5f));
+    CHECK(scene.objects[2].primitive->spec.sides == 5);
+    CHECK(scene.objects[3].primitive->spec.subdivisions == 1);
+    CHECK(scene.objects[3].primitive->spec.smooth == false);
+    CHECK(scene.objects[4].primitive->spec.tube == 1.0f);  // half the radius by default
+    CHECK(scene.objects[5].primitive->spec.type == "dodecahedron");
 
     facet::World world = facet::build_world(scene);
     REQUIRE(world.draws.size() == 6);

@@ -76,7 +76,7 @@ TEST_CASE("overrides replace values from the scene file", "[scene][override]") {
             load(path, with_overrides({define("objects.1", "{name: cone, primitive: cone}")}));
         CHECK(scene.objects[1].name == "cone");
         REQUIRE(scene.objects[1].primitive.has_value());
-        CHECK(scene.objects[1].primitive->type == "cone");
+        CHECK(scene.objects[1].primitive->spec.type == "cone");
         CHECK(scene.objects[0].name == "box");
     }
     SECTION("later overrides win over earlier ones") {

@@ -48,7 +48,7 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0].name == "object0");
     REQUIRE(scene.objects[0].primitive.has_value());
-    CHECK(scene.objects[0].primitive->type == "cube");
+    CHECK(scene.objects[0].primitive->spec.type == "cube");
     CHECK(scene.objects[0].mesh.empty());
     CHECK(scene.objects[0].scale.value == glm::vec3(1));
     CHECK(scene.objects[0].visible);
@@ -175,7 +175,7 @@ objects:
     const auto& box = scene.objects[0];
     CHECK(box.name == "box");
     REQUIRE(box.primitive.has_value());
-    CHECK(box.primitive->type == "cube");
+    CHECK(box.primitive->spec.type == "cube");
     CHECK(box.translate.value == glm::vec3(1, 2, 3));
     CHECK(box.rotate.value == glm::vec3(10, 20, 30));
     CHECK(box.scale.value == glm::vec3(2, 2, 2));  // a number scales every axis
@@ -196,10 +196,10 @@ objects:
     const auto& ball = scene.objects[1];
     CHECK(ball.name == "ball");
     REQUIRE(ball.primitive.has_value());
-    CHECK(ball.primitive->type == "sphere");
-    CHECK(ball.primitive->radius == 0.75f);
-    CHECK(ball.primitive->segments == 24);
-    CHECK(ball.primitive->rings == 12);
+    CHECK(ball.primitive->spec.type == "sphere");
+    CHECK(ball.primitive->spec.radius == 0.75f);
+    CHECK(ball.primitive->spec.segments == 24);
+    CHECK(ball.primitive->spec.rings == 12);
     CHECK(ball.scale.value == glm::vec3(1, 2, 3));  // a list scales per axis
     CHECK_FALSE(ball.visible);
     CHECK_FALSE(ball.material.color.has_value());  // unset values stay unset

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/error.hpp"
 #include "shade/paper_grain.hpp"
 #include "shade/tonal_art_map.hpp"
 
@@ -249,12 +250,12 @@ TEST_CASE("paper grain: tileable noise in [0, 1] around 0.5", "[style][tam]") {
 TEST_CASE("tonal art map: parameters out of range are refused", "[style][tam]") {
     TamParams p = small_params();
     p.size = 100;
-    CHECK_THROWS_AS(generate_tonal_art_map(p), std::invalid_argument);
+    CHECK_THROWS_AS(generate_tonal_art_map(p), facet::Error);
     p = small_params();
     p.max_darkness = 1.0f;
-    CHECK_THROWS_AS(generate_tonal_art_map(p), std::invalid_argument);
+    CHECK_THROWS_AS(generate_tonal_art_map(p), facet::Error);
     p = small_params();
     p.levels = 0;
-    CHECK_THROWS_AS(generate_tonal_art_map(p), std::invalid_argument);
-    CHECK_THROWS_AS(make_paper_grain({64, 7, 3, 1}), std::invalid_argument);
+    CHECK_THROWS_AS(generate_tonal_art_map(p), facet::Error);
+    CHECK_THROWS_AS(make_paper_grain({64, 7, 3, 1}), facet::Error);
 }

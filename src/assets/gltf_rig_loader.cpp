@@ -212,7 +212,7 @@ void read_values(const tinygltf::Model& model, int accessor, RigChannelPath targ
 }
 
 RigAnimation read_animation(const tinygltf::Model& model, int index, const MeshRig& rig,
-                            const std::string& path, std::vector<std::string>& warnings) {
+                            const std::string& path, Warnings& warnings) {
     const tinygltf::Animation& anim = model.animations[index];
     RigAnimation out;
     out.name = anim.name.empty() ? "animation" + std::to_string(index) : anim.name;
@@ -234,8 +234,8 @@ RigAnimation read_animation(const tinygltf::Model& model, int index, const MeshR
         // §3.11.1: without a node the target is defined by an extension;
         // other paths come from extensions too. Neither moves a mesh here.
         if (ch.target_node < 0 || !known) {
-            warnings.push_back(cw + " targets '" + ch.target_path +
-                               "', not a node's transform or weights; ignored");
+            warnings.push_back({{path}, "", cw + " targets '" + ch.target_path +
+                                                "', not a node's transform or weights; ignored"});
             continue;
         }
         if (static_cast<size_t>(ch.target_node) >= rig.nodes.size())
@@ -289,7 +289,7 @@ bool has_rig_data(const tinygltf::Model& model) {
 }
 
 void read_rig_nodes_and_animations(const tinygltf::Model& model, const std::string& path,
-                                   MeshRig& rig, std::vector<std::string>& warnings) {
+                                   MeshRig& rig, Warnings& warnings) {
     for (size_t i = 0; i < model.nodes.size(); ++i)
         rig.nodes.push_back(rest_node(model, static_cast<int>(i), path));
     read_hierarchy(model, path, rig);

@@ -8,6 +8,7 @@
 #include <tiny_gltf.h>
 
 #include "assets/mesh_rig.hpp"
+#include "core/diagnostics.hpp"
 
 namespace facet::gltf_detail {
 
@@ -19,7 +20,7 @@ bool has_rig_data(const tinygltf::Model& model);
 // cannot use (no target node, or a path added by an extension) are left out
 // with a warning.
 void read_rig_nodes_and_animations(const tinygltf::Model& model, const std::string& path,
-                                   MeshRig& rig, std::vector<std::string>& warnings);
+                                   MeshRig& rig, Warnings& warnings);
 
 // Fills the skin and morph data of `part`, whose node, skin and mesh-space
 // positions are already set, from `primitive`, in the file's vertex order.

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/diagnostics.hpp"
 #include "assets/mesh_rig.hpp"
 #include "assets/texture.hpp"
 
@@ -48,7 +49,7 @@ struct Mesh {
     std::string source;  // file it came from, or the primitive's description
     std::vector<MeshPart> parts;
     std::vector<Material> materials;
-    std::vector<std::string> warnings;  // non-fatal problems found while loading
+    Warnings warnings;  // non-fatal problems found while loading, each naming the file
     // glTF nodes, skins, morph targets and animations, for posing the parts
     // (anim/gltf_pose.hpp); null when the file has none of them. The parts
     // above are always the static rest pose.

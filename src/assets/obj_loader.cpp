@@ -313,7 +313,7 @@ Mesh load_obj(const std::string& path) {
 
     Mesh mesh;
     mesh.source = path;
-    mesh.warnings = split_lines(warn, "");
+    for (std::string& line : split_lines(warn, "")) mesh.warnings.push_back({{path}, "", line});
 
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (const auto& m : obj_materials) {

@@ -101,14 +101,15 @@ std::vector<int> selected_frames(const RenderArgs& args) {
     if (args.frames.empty()) return {};
     try {
         return parse_frame_ranges(args.frames);
-    } catch (const std::invalid_argument& e) {
-        fail_input(command_line("--frames " + args.frames), "", e.what());
+    } catch (const Error& e) {
+        fail_input(command_line("--frames " + args.frames), "", e.detail());
     }
 }
 
 void print_warnings(const SceneDesc& scene, const World& world) {
-    for (const auto& w : scene.warnings) std::fprintf(stderr, "facet: warning: %s\n", w.c_str());
-    for (const auto& w : world.warnings) std::fprintf(stderr, "facet: warning: %s\n", w.c_str());
+    for (const Warnings* list : {&scene.warnings, &world.warnings})
+        for (const Warning& w : *list)
+            std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
 }
 
 int render_command(const RenderArgs& args) {
@@ -195,7 +196,7 @@ int info_command(const std::string& path) {
     std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
     std::printf("morphed:    %zu of %zu parts, up to %zu targets\n", morphed_parts,
                 mesh.parts.size(), most_targets);
-    for (const auto& w : mesh.warnings) std::printf("warning: %s\n", w.c_str());
+    for (const Warning& w : mesh.warnings) std::printf("warning: %s\n", w.describe().c_str());
     return 0;
 }
 

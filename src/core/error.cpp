@@ -1,5 +1,7 @@
 #include "core/error.hpp"
 
+#include "core/diagnostics.hpp"
+
 namespace facet {
 
 std::string SourceLocation::describe() const {
@@ -9,19 +11,28 @@ std::string SourceLocation::describe() const {
     return file + ":" + std::to_string(line) + ":" + std::to_string(column);
 }
 
-static std::string compose(const SourceLocation& where, const std::string& key,
-                           const std::string& message) {
-    std::string text = where.describe() + ": ";
+std::string describe_problem(const SourceLocation& where, const std::string& key,
+                             const std::string& message) {
+    std::string text;
+    if (!where.file.empty() || !where.origin.empty()) text = where.describe() + ": ";
     if (!key.empty()) text += "'" + key + "': ";
     return text + message;
 }
 
 Error::Error(ExitCode code, const std::string& message)
-    : std::runtime_error(message), code_(code) {}
+    : std::runtime_error(message), code_(code), detail_(message) {}
 
 Error::Error(ExitCode code, const SourceLocation& where, const std::string& key,
              const std::string& message)
-    : std::runtime_error(compose(where, key, message)), code_(code) {}
+    : std::runtime_error(describe_problem(where, key, message)),
+      code_(code),
+      where_(where),
+      key_(key),
+      detail_(message) {}
+
+std::string Warning::describe() const {
+    return describe_problem(where, key, message);
+}
 
 void fail_input(const SourceLocation& where, const std::string& key, const std::string& message) {
     throw Error(ExitCode::invalid_input, where, key, message);

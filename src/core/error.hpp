@@ -6,7 +6,7 @@
 
 namespace facet {
 
-// The exit codes of shared/design.md §2.
+// The exit codes (README, "Exit codes"; docs/architecture.md).
 enum class ExitCode : int {
     ok = 0,
     runtime_failure = 1,
@@ -26,6 +26,9 @@ struct SourceLocation {
     std::string describe() const;
 };
 
+// The one error type of the project: what() is the whole message a user
+// reads ("file:line:col: 'key': detail"); the parts stay available for
+// machine-readable reports (`validate --json`).
 class Error : public std::runtime_error {
   public:
     Error(ExitCode code, const std::string& message);
@@ -33,10 +36,21 @@ class Error : public std::runtime_error {
           const std::string& message);
 
     ExitCode code() const { return code_; }
+    const SourceLocation& where() const { return where_; }  // empty when not known
+    const std::string& key() const { return key_; }
+    const std::string& detail() const { return detail_; }  // the message without place and key
 
   private:
     ExitCode code_;
+    SourceLocation where_;
+    std::string key_;
+    std::string detail_;
 };
+
+// "file:line:col: 'key': message", or "'key': message" / "message" when
+// the place is unknown.
+std::string describe_problem(const SourceLocation& where, const std::string& key,
+                             const std::string& message);
 
 // Shorthands for the two most common kinds.
 [[noreturn]] void fail_input(const SourceLocation& where, const std::string& key,

@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
-#include <stdexcept>
+
+#include "core/error.hpp"
 
 namespace facet {
 namespace {
@@ -19,7 +20,7 @@ int parse_int(std::string_view text, const std::string& whole) {
     const char* end = begin + trimmed.size();
     auto [ptr, ec] = std::from_chars(begin, end, value);
     if (trimmed.empty() || ec != std::errc() || ptr != end)
-        throw std::invalid_argument("'" + std::string(text) + "' in frame range '" + whole +
+        throw Error(ExitCode::invalid_input, "'" + std::string(text) + "' in frame range '" + whole +
                                     "' is not a whole number");
     return value;
 }
@@ -28,7 +29,7 @@ int parse_int(std::string_view text, const std::string& whole) {
 
 std::vector<int> parse_frame_ranges(const std::string& text) {
     if (text.find_first_not_of(" ,") == std::string::npos)
-        throw std::invalid_argument("frame range is empty");
+        throw Error(ExitCode::invalid_input, "frame range is empty");
     std::vector<int> frames;
     size_t start = 0;
     while (start <= text.size()) {
@@ -37,14 +38,14 @@ std::vector<int> parse_frame_ranges(const std::string& text) {
                               (comma == std::string::npos ? text.size() : comma) - start);
         start = comma == std::string::npos ? text.size() + 1 : comma + 1;
         if (part.find_first_not_of(' ') == std::string_view::npos)
-            throw std::invalid_argument("frame range '" + text + "' has an empty item");
+            throw Error(ExitCode::invalid_input, "frame range '" + text + "' has an empty item");
 
         int step = 1;
         if (size_t colon = part.find(':'); colon != std::string_view::npos) {
             step = parse_int(part.substr(colon + 1), text);
             part = part.substr(0, colon);
             if (step < 1)
-                throw std::invalid_argument("step in frame range '" + text + "' must be >= 1");
+                throw Error(ExitCode::invalid_input, "step in frame range '" + text + "' must be >= 1");
         }
         // A '-' after the first character separates the bounds (the first may be a sign).
         size_t dash = part.find('-', part.find_first_not_of(' ') + 1);
@@ -56,10 +57,10 @@ std::vector<int> parse_frame_ranges(const std::string& text) {
             last = parse_int(part.substr(dash + 1), text);
         }
         if (last < first)
-            throw std::invalid_argument("frame range '" + std::string(part) +
+            throw Error(ExitCode::invalid_input, "frame range '" + std::string(part) +
                                         "' ends before it starts");
         if ((static_cast<long long>(last) - first) / step + frames.size() >= kMaxFrames)
-            throw std::invalid_argument("frame range '" + text + "' has more than " +
+            throw Error(ExitCode::invalid_input, "frame range '" + text + "' has more than " +
                                         std::to_string(kMaxFrames) + " frames");
         for (long long f = first; f <= last; f += step) frames.push_back(static_cast<int>(f));
     }

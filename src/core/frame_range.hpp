@@ -6,7 +6,7 @@
 namespace facet {
 
 // Parses a range list into ascending, distinct frame numbers. Throws
-// std::invalid_argument with a message saying what is wrong.
+// facet::Error (invalid_input, no place: the caller knows it) saying what is wrong.
 std::vector<int> parse_frame_ranges(const std::string& text);
 
 }  // namespace facet

@@ -4,9 +4,11 @@
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
-#include <stdexcept>
 #include <string_view>
 #include <unordered_map>
+
+#include "core/error.hpp"
+#include "core/suggest.hpp"
 
 namespace facet {
 namespace {
@@ -21,7 +23,7 @@ constexpr int kMaxFramePadding = 9;
 constexpr const char* kManifestName = "manifest.json";
 
 [[noreturn]] void fail(const std::string& text, const std::string& message) {
-    throw std::invalid_argument("output template '" + text + "': " + message);
+    throw Error(ExitCode::invalid_input, "output template '" + text + "': " + message);
 }
 
 // 'text', in quotes. Built by appending, because GCC 12 at -O3 warns falsely
@@ -46,51 +48,17 @@ std::string known_placeholders() {
     return list + ", {frame:06}, ####";
 }
 
-// Edit distance, to suggest the name the user probably meant.
-size_t edit_distance(std::string_view a, std::string_view b) {
-    std::vector<size_t> previous(b.size() + 1), current(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) previous[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        current[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-            current[j] = std::min({previous[j] + 1, current[j - 1] + 1, substitution});
-        }
-        std::swap(previous, current);
-    }
-    return previous[b.size()];
-}
-
-// The known name the user probably meant, or nullptr if none is close:
-// one that starts with what was typed ("cam"), or vice versa ("frames"), or
-// else the nearest by edit distance, ignoring case.
-const char* closest_placeholder(const std::string& typed) {
-    std::string lower = typed;
-    for (char& c : lower) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (lower.size() >= 2) {
-        for (Placeholder p : kAllPlaceholders) {
-            std::string_view known = placeholder_name(p);
-            if (known.starts_with(lower) || std::string_view(lower).starts_with(known))
-                return placeholder_name(p);
-        }
-    }
-    const char* closest = nullptr;
-    // A suggestion further away than this would only confuse ("{foo}" -> "{ext}").
-    size_t closest_distance = std::max<size_t>(2, lower.size() / 2) + 1;
-    for (Placeholder p : kAllPlaceholders) {
-        size_t distance = edit_distance(lower, placeholder_name(p));
-        if (distance < closest_distance) {
-            closest = placeholder_name(p);
-            closest_distance = distance;
-        }
-    }
-    return closest;
+// The known placeholder the user probably meant, or "" if none is close.
+std::string closest_placeholder(const std::string& typed) {
+    std::vector<std::string_view> names;
+    for (Placeholder p : kAllPlaceholders) names.push_back(placeholder_name(p));
+    return closest_name(typed, names);
 }
 
 [[noreturn]] void fail_unknown_placeholder(const std::string& text, const std::string& name) {
     std::string message = "unknown placeholder '{" + name + "}'";
-    if (const char* closest = closest_placeholder(name))
-        message += "; did you mean '{" + std::string(closest) + "}'?";
+    if (const std::string closest = closest_placeholder(name); !closest.empty())
+        message += "; did you mean '{" + closest + "}'?";
     fail(text, message + " (known: " + known_placeholders() + ")");
 }
 
@@ -424,7 +392,7 @@ std::string path_relative_to_manifest(const std::string& output_path,
         output_path.compare(0, manifest_dir.size(), manifest_dir) == 0 &&
         output_path[manifest_dir.size()] == '/')
         return output_path.substr(manifest_dir.size() + 1);
-    throw std::invalid_argument("output file '" + output_path +
+    throw Error(ExitCode::invalid_input, "output file '" + output_path +
                                 "' is not inside the manifest's folder '" + manifest_dir + "'");
 }
 

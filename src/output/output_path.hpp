@@ -48,19 +48,19 @@ struct OutputNameFields {
     std::string ext;  // png, exr
 };
 
-// Parses and checks a template. Throws std::invalid_argument naming the
+// Parses and checks a template. Throws facet::Error (invalid_input) naming the
 // template and the offending text for: an empty template, an unknown
 // placeholder (with the closest known name), an unclosed '{' or a stray '}',
 // a bad frame padding (width must be 1..9), an absolute path, a '..' or '.'
 // component, an empty component ("a//b") or a missing file name ("a/").
 OutputTemplate parse_output_template(const std::string& text);
 
-// The file's path relative to the output folder. Throws std::invalid_argument
+// The file's path relative to the output folder. Throws facet::Error (invalid_input)
 // when a field the template uses would leave the output folder or break the
 // path apart: empty, "." or "..", or containing '/'.
 std::string expand(const OutputTemplate& output_template, const OutputNameFields& fields);
 
-// Throws std::invalid_argument naming two (frame, camera, pass, ext)
+// Throws facet::Error (invalid_input) naming two (frame, camera, pass, ext)
 // combinations that expand to the same file, or one that would overwrite
 // manifest.json. Run it before rendering anything. Each combination is
 // expanded once and looked up in a hash set, so long frame lists are cheap.
@@ -82,7 +82,7 @@ std::string manifest_directory(const OutputTemplate& output_template, const Outp
 
 // `output_path` (relative to the output folder, as from expand) made relative
 // to `manifest_dir` (as from manifest_directory), for the manifest's `path`
-// entries. Throws std::invalid_argument if the file is not inside it.
+// entries. Throws facet::Error (invalid_input) if the file is not inside it.
 std::string path_relative_to_manifest(const std::string& output_path,
                                       const std::string& manifest_dir);
 

@@ -4,7 +4,8 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <stdexcept>
+
+#include "core/error.hpp"
 
 namespace facet {
 
@@ -107,7 +108,7 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
                 ThreadPool& pool) {
     const size_t n = static_cast<size_t>(b.width) * static_cast<size_t>(b.height);
     if (b.depth.size() != n || b.normal.size() != n || b.object_id.size() != n)
-        throw std::invalid_argument("outlines: buffer sizes do not match width * height");
+        throw Error(ExitCode::runtime_failure, "outlines: buffer sizes do not match width * height");
     scratch.edges.assign(n, 0);
     const uint8_t enabled = enabled_flags(style);
     if (enabled == 0) return;
@@ -248,7 +249,7 @@ void draw_outlines(const OutlineBuffers& b, const OutlineStyle& style, ColorImag
 
 void composite_lines(const ColorImage& lines, ColorImage& color, ThreadPool& pool) {
     if (lines.width != color.width || lines.height != color.height)
-        throw std::invalid_argument("outlines: line and colour images differ in size");
+        throw Error(ExitCode::runtime_failure, "outlines: line and colour images differ in size");
     pool.parallel_for(static_cast<size_t>(color.height), [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < color.width; ++x) {

@@ -98,7 +98,7 @@ struct OutlineScratch {
 };
 
 // Pass 1 alone: scratch.edges gets the flags, for enabled kinds only.
-// Throws std::invalid_argument if the buffers do not match their size.
+// Throws facet::Error (runtime_failure) if the buffers do not match their size.
 void find_edges(const OutlineBuffers& buffers, const OutlineStyle& style, OutlineScratch& scratch,
                 ThreadPool& pool);
 

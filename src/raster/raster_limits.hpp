@@ -2,6 +2,8 @@
 // Limits and precision of the rasterizer, named in one place.
 #include <cstdint>
 
+#include "core/limits.hpp"
+
 namespace facet {
 
 // Vertex positions snap to 1/256 of a pixel (8 fractional bits, as D3D11
@@ -24,7 +26,7 @@ constexpr int kTileSize = 64;
 // thread count.
 constexpr uint32_t kTrianglesPerChunk = 8192;
 
-// Largest image side; keeps tile and pixel indices well inside int32.
-constexpr int kMaxImageSide = 16384;
+// The largest image side is core/limits.hpp's kMaxImageSide: it keeps
+// tile and pixel indices well inside int32.
 
 }  // namespace facet

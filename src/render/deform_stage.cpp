@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "anim/cloth_scene.hpp"
 #include "render/frame_renderer.hpp"
 
 namespace facet {
@@ -14,7 +15,7 @@ void FrameRenderer::make_cloth_simulations() {
     for (const ClothObject& c : world_.cloths) {
         const ObjectDesc& obj = scene_.objects[c.object];
         auto wind_at = [&obj, first, fps](int frame) { return cloth_wind(obj, frame, first, fps); };
-        cloth_sims_.push_back(std::make_unique<ClothSimulation>(c.params, c.pins, wind_at));
+        cloth_sims_.push_back(std::make_unique<ClothSimulation>(c.model, wind_at));
     }
 }
 

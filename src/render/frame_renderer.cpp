@@ -74,7 +74,7 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
         hidden_edges_on_ =
             hidden_edges_on_ || (style->wireframe.enabled && style->wireframe.hidden);
     }
-    outlines_on_ = any_outlines(scene.style.outlines);
+    outlines_on_ = scene.style.outlines.any();
     make_cloth_simulations();
 }
 

@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "anim/cloth.hpp"
+#include "cloth/cloth.hpp"
 #include "anim/frame_state.hpp"
 #include "anim/gltf_pose.hpp"
 #include "core/image.hpp"

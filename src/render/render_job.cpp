@@ -215,9 +215,9 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
         check_unique_outputs(layout.names, scene.name, camera_names, passes, exts, frames);
         layout.manifest_dir = manifest_directory(
             layout.names, {scene.name, camera_names.front(), "", 0, ""}, cameras.size() == 1);
-    } catch (const std::invalid_argument& e) {
+    } catch (const Error& e) {
         if (out.path) fail_input(out.path_at, "output.path", e.what());
-        throw Error(ExitCode::invalid_input, e.what());
+        throw;
     }
     return layout;
 }

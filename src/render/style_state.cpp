@@ -87,10 +87,6 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
     return s;
 }
 
-bool any_outlines(const OutlinesDesc& o) {
-    return o.silhouette.enabled || o.crease.enabled || o.boundary.enabled || o.intersection.enabled;
-}
-
 OutlineStyle evaluate_outlines(const OutlinesDesc& o, const FrameTime& at, float pixel_scale) {
     auto line = [&](const LineDesc& d) {
         return LineStyle{d.enabled, evaluate(d.width, at) * pixel_scale, evaluate(d.color, at)};

@@ -63,6 +63,4 @@ StyleState evaluate_style(const StyleDesc& style, const FrameTime& at, TamCache&
 OutlineStyle evaluate_outlines(const OutlinesDesc& outlines, const FrameTime& at,
                                float pixel_scale);
 
-bool any_outlines(const OutlinesDesc& outlines);
-
 }  // namespace facet

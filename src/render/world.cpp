@@ -5,8 +5,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "anim/cloth_scene.hpp"
 #include "anim/gltf_pose.hpp"
-#include "anim/track.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
 
@@ -85,52 +85,18 @@ void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
     }
 }
 
+// A cloth's rest pose as a mesh of one double-sided part.
+Mesh cloth_mesh(const ClothModel& model) {
+    Mesh mesh;
+    mesh.source = "cloth";
+    mesh.parts.push_back(model.rest_part);
+    mesh.materials.push_back(Material{});
+    mesh.materials.back().name = "cloth";
+    mesh.materials.back().double_sided = true;  // both faces show
+    return mesh;
+}
+
 }  // namespace
-
-ClothParams cloth_params(const ClothDesc& c, const ObjectDesc& object, double fps,
-                         int first_frame) {
-    ClothParams p;
-    p.columns = c.grid.x;
-    p.rows = c.grid.y;
-    p.width = c.size.x;
-    p.height = c.size.y;
-    p.mass = c.mass;
-    p.stiffness = c.stiffness;
-    p.shear_stiffness = c.shear;
-    p.bend_stiffness = c.bend;
-    p.max_stretch = c.max_stretch;
-    p.friction = c.friction;
-    p.damping = c.damping;
-    p.wind_drag = c.wind_drag;
-    p.wind_tangential_drag = c.wind_tangential_drag;
-    const glm::dquat to_local =
-        glm::inverse(evaluate_rotation(object.rotate, {static_cast<double>(first_frame), 0.0}));
-    p.gravity = glm::vec3(to_local * glm::dvec3(c.gravity));
-    p.substeps = c.substeps;
-    p.frame_seconds = 1.0 / fps;
-    p.preroll_seconds = c.preroll;
-    return p;
-}
-
-WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, double fps) {
-    const ClothDesc& desc = *object.cloth;
-    const FrameTime at{static_cast<double>(first_frame + frame), frame / fps};
-    const glm::dquat to_local = glm::inverse(evaluate_rotation(object.rotate, at));
-    WindState wind;
-    wind.direction = glm::vec3(to_local * glm::dvec3(evaluate(desc.wind_direction, at)));
-    wind.strength = evaluate(desc.wind_strength, at);
-    wind.gust = evaluate(desc.gust, at);
-    wind.seed = static_cast<uint32_t>(desc.seed);
-    return wind;
-}
-
-ClothPins cloth_pins(const ClothDesc& c) {
-    ClothPins pins;
-    pins.left_edge = c.pin_left;
-    pins.top_edge = c.pin_top;
-    pins.vertices = c.pin_vertices;
-    return pins;
-}
 
 World build_world(const SceneDesc& scene) {
     World world;
@@ -151,57 +117,25 @@ World build_world(const SceneDesc& scene) {
                 } catch (const Error& e) {
                     fail_input(obj.mesh_at, "objects." + std::to_string(o) + ".mesh", e.what());
                 }
-                for (const auto& w : slot->warnings) world.warnings.push_back(obj.mesh + ": " + w);
+                world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
+                                      slot->warnings.end());
             }
             mesh = slot;
         } else if (obj.cloth) {
             try {
-                const ClothModel model = build_cloth_model(
-                    cloth_params(*obj.cloth, obj, scene.output.fps, scene.output.frames.front()),
-                    cloth_pins(*obj.cloth));
-                // Every frame's wind must suit this cloth; checked here so a bad
-                // key frame fails before anything is rendered.
-                const int first = scene.output.frames.front();
-                for (int f = 0; f <= scene.output.frames.back() - first; ++f) {
-                    const std::string problem =
-                        validate_wind(cloth_wind(obj, f, first, scene.output.fps), model.params);
-                    if (!problem.empty())
-                        throw Error(ExitCode::invalid_input,
-                                    "frame " + std::to_string(first + f) + ": " + problem);
-                }
-                Mesh cloth_mesh;
-                cloth_mesh.source = "cloth";
-                cloth_mesh.parts.push_back(model.rest_part);
-                cloth_mesh.materials.push_back(Material{});
-                cloth_mesh.materials.back().name = "cloth";
-                cloth_mesh.materials.back().double_sided = true;  // both faces show
+                std::shared_ptr<const ClothModel> model = build_scene_cloth(obj, scene.output);
+                mesh = std::make_shared<Mesh>(cloth_mesh(*model));
                 if (obj.visible)
-                    world.cloths.push_back({o, static_cast<uint32_t>(world.draws.size()),
-                                            model.params, cloth_pins(*obj.cloth)});
-                mesh = std::make_shared<Mesh>(std::move(cloth_mesh));
+                    world.cloths.push_back({o, static_cast<uint32_t>(world.draws.size()), model});
             } catch (const Error& e) {
                 fail_input(obj.cloth->where, "objects." + std::to_string(o) + ".cloth", e.what());
             }
         } else {
-            const PrimitiveDesc& p = *obj.primitive;
-            PrimitiveSpec spec;
-            spec.type = p.type;
-            spec.size = p.size;
-            spec.box_size = p.box_size;
-            spec.radius = p.radius;
-            spec.height = p.height;
-            spec.segments = p.segments;
-            spec.rings = p.rings;
-            spec.sides = p.sides;
-            spec.tube = p.tube;
-            spec.subdivisions = p.subdivisions;
-            spec.thickness = p.thickness;
-            spec.hole_radius = p.hole_radius;
-            spec.smooth = p.smooth;
             try {
-                mesh = std::make_shared<Mesh>(make_primitive(spec));
+                mesh = std::make_shared<Mesh>(make_primitive(obj.primitive->spec));
             } catch (const Error& e) {
-                fail_input(p.where, "objects." + std::to_string(o) + ".primitive", e.what());
+                fail_input(obj.primitive->where, "objects." + std::to_string(o) + ".primitive",
+                           e.what());
             }
         }
         world.object_bounds.push_back(mesh->bounds());

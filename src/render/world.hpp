@@ -9,7 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "anim/cloth.hpp"
+#include "cloth/cloth.hpp"
 #include "assets/mesh.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -34,24 +34,13 @@ struct AnimatedMesh {
     uint32_t first_draw;  // the mesh's parts are draws first_draw, first_draw + 1, ...
 };
 
-// An object that is a simulated cloth (anim/cloth.hpp): its one draw is
-// re-posed every frame from the simulation.
+// An object that is a simulated cloth (cloth/cloth.hpp): its one draw is
+// re-posed every frame from the simulation of its model, built once.
 struct ClothObject {
     uint32_t object;
     uint32_t draw;
-    ClothParams params;
-    ClothPins pins;
+    std::shared_ptr<const ClothModel> model;
 };
-
-// The simulation parameters of a scene's cloth, in the object's local space
-// (gravity turned by the inverse of the object's rotation at `first_frame`).
-ClothParams cloth_params(const ClothDesc& cloth, const ObjectDesc& object, double fps,
-                         int first_frame);
-ClothPins cloth_pins(const ClothDesc& cloth);
-
-// The keyed wind of a cloth object at simulation frame `frame` (scene frame
-// first_frame + frame), turned into the object's local space.
-WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, double fps);
 
 struct World {
     std::vector<Material> materials;
@@ -67,7 +56,7 @@ struct World {
     // `receive_shadows` as 1 or 0, the value shading puts in its lanes.
     std::vector<uint8_t> casts_shadows;
     std::vector<float> receives_shadows;
-    std::vector<std::string> warnings;  // from mesh loading, for the user
+    Warnings warnings;  // from mesh loading, for the user
 
     // Model-space vertex data of all draws, concatenated.
     std::vector<glm::vec3> positions;

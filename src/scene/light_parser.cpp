@@ -5,13 +5,13 @@
 #include <vector>
 
 #include "core/color_temperature.hpp"
+#include "core/limits.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/yaml_field.hpp"
 
 namespace facet {
 namespace {
 
-constexpr double kMaxCoordinate = 1e7;
 constexpr double kMaxIntensity = 1e9;
 constexpr int kMinShadowResolution = 16;
 constexpr int kMaxShadowResolution = 8192;

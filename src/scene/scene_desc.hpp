@@ -11,6 +11,9 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "assets/primitives.hpp"
+#include "cloth/cloth_params.hpp"
+#include "core/diagnostics.hpp"
 #include "core/error.hpp"
 #include "scene/animated.hpp"
 #include "scene/style_desc.hpp"
@@ -135,22 +138,10 @@ struct MaterialDesc {
     std::optional<bool> double_sided;
 };
 
-// Which keys apply to which type: docs/scene-format.md, "Primitives".
+// Which keys apply to which type: docs/scene-format.md, "Primitives". The
+// values are the primitive builder's own record (assets/primitives.hpp).
 struct PrimitiveDesc {
-    std::string type;  // plane, cube, box, sphere, cylinder, cone, tetrahedron, octahedron,
-                       // icosahedron, dodecahedron, prism, antiprism, pyramid, icosphere, torus
-    float size = 1;    // plane edge, cube edge
-    glm::vec3 box_size = {1, 1, 1};  // box: `size` as [x, y, z] (or one number for all three)
-    float radius = 0.5f;             // circumradius; the major radius of a torus
-    float height = 1;
-    int segments = 32;           // around the axis
-    int rings = 16;              // sphere latitude bands; divisions round a torus's tube
-    int sides = 6;               // prism, antiprism, pyramid
-    float tube = 0.25f;          // torus minor radius; half of `radius` unless given
-    int subdivisions = 2;        // icosphere
-    float thickness = 0.1f;      // platform slab
-    float hole_radius = 0.1f;    // platform: the hole for the pole
-    std::optional<bool> smooth;  // round types only; unset keeps the type's default
+    PrimitiveSpec spec;
     SourceLocation where;
 };
 
@@ -159,23 +150,14 @@ struct SpinDesc {
     float turns = 1;  // over the frame range
 };
 
-// A cloth grid simulated as a mass-spring sheet (docs/cloth.md): its keys as
-// written; anim/cloth.hpp checks the physics (build_world reports it).
+// A cloth grid simulated as a mass-spring sheet (docs/cloth.md): the
+// simulation's own records (cloth/cloth_params.hpp) as the keys set them,
+// with gravity in world space and no frame duration yet (anim/cloth_scene.hpp
+// turns them into the cloth's local space at the scene's fps), plus the
+// keyed wind.
 struct ClothDesc {
-    glm::vec2 size = {1.5f, 1.0f};  // width along local +X, height along -Y
-    glm::ivec2 grid = {48, 32};     // vertices along the width and the height
-    bool pin_left = true, pin_top = false;
-    std::vector<int> pin_vertices;    // row * columns + column
-    float mass = 0.3f;                // kg, whole cloth
-    float stiffness = 100;            // N/m
-    float shear = 0.2f, bend = 0.5f;  // fractions of stiffness
-    float max_stretch = 0.1f;
-    float friction = 0.1f;  // air friction, 1/s
-    float damping = 0.05f;  // fraction of critical
-    float wind_drag = 1.0f, wind_tangential_drag = 0.5f;
-    glm::vec3 gravity = {0, -9.81f, 0};  // world space
-    int substeps = 0;                    // 0: the fewest stable
-    float preroll = 2;                   // seconds simulated before the first frame
+    ClothParams params;
+    ClothPins pins;
     // The wind, in world space; keyable: the key frames of seed 004.
     Animated<glm::vec3> wind_direction = glm::vec3(1, 0, 0);
     Animated<float> wind_strength = 5.0f;  // m/s
@@ -224,7 +206,7 @@ struct SceneDesc {
     std::vector<LightDesc> lights;
     std::vector<ObjectDesc> objects;
     // Values read but without effect, with where they are (printed by the CLI).
-    std::vector<std::string> warnings;
+    Warnings warnings;
 };
 
 // One `-D key.path=value` (or a command-line option turned into one).

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/frame_range.hpp"
+#include "core/limits.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
@@ -15,8 +16,6 @@ LightDesc parse_light(const Field& f);  // light_parser.cpp
 
 namespace {
 
-constexpr int kMaxImageSide = 16384;
-constexpr float kMaxCoordinate = 1e7f;
 
 std::string format_number(double value) {
     std::ostringstream s;
@@ -63,8 +62,8 @@ OutputDesc parse_output(const Field& f) {
         out.frames_text = frames.text();
         try {
             out.frames = parse_frame_ranges(out.frames_text);
-        } catch (const std::invalid_argument& e) {
-            frames.fail(e.what());
+        } catch (const Error& e) {
+            frames.fail(e.detail());
         }
     }
     if (f.has("fps")) out.fps = f["fps"].number(0.001, 1000);
@@ -167,7 +166,7 @@ FramingDesc parse_framing(const Field& f) {
     return framing;
 }
 
-CameraDesc parse_camera(const Field& f, bool named, std::vector<std::string>& warnings) {
+CameraDesc parse_camera(const Field& f, bool named, Warnings& warnings) {
     CameraDesc cam;
     cam.where = f.where();
     cam.key = f.path();
@@ -202,8 +201,7 @@ CameraDesc parse_camera(const Field& f, bool named, std::vector<std::string>& wa
     // be meant are errors; a value made redundant (say an orbit added with
     // -D to a scene with a fixed position) is reported and ignored.
     auto ignored = [&](const char* key, const std::string& why) {
-        warnings.push_back(f[key].where().describe() + ": '" + f[key].path() +
-                           "' is ignored: " + why);
+        warnings.push_back({f[key].where(), f[key].path(), "is ignored: " + why});
     };
     if (cam.orbit && cam.path) f["path"].fail("a camera has either an orbit or a path, not both");
     if (cam.frame && cam.path)
@@ -302,11 +300,12 @@ float length_value(const Field& f) {
 }
 
 PrimitiveDesc parse_primitive(const Field& f) {
-    PrimitiveDesc p;
-    p.where = f.where();
+    PrimitiveDesc desc;
+    desc.where = f.where();
+    PrimitiveSpec& p = desc.spec;
     if (f.is_scalar()) {  // shorthand: `primitive: sphere`
         p.type = primitive_type(f).type;
-        return p;
+        return desc;
     }
     f.check_keys({"type", "size", "radius", "height", "segments", "rings", "sides", "tube",
                   "subdivisions", "smooth", "thickness", "hole_radius"});
@@ -350,7 +349,7 @@ PrimitiveDesc parse_primitive(const Field& f) {
             f["tube"].fail(s.str());
         }
     }
-    return p;
+    return desc;
 }
 
 glm::vec3 parse_axis(const Field& f) {
@@ -365,6 +364,7 @@ glm::vec3 parse_axis(const Field& f) {
 
 ClothDesc parse_cloth(const Field& f) {
     ClothDesc c;
+    ClothParams& p = c.params;
     c.where = f.where();
     f.check_keys({"size", "grid", "pin", "mass", "stiffness", "shear", "bend", "max_stretch",
                   "friction", "damping", "wind_drag", "wind_tangential_drag", "gravity", "substeps",
@@ -372,47 +372,49 @@ ClothDesc parse_cloth(const Field& f) {
     if (f.has("size")) {
         Field size = f["size"];
         if (!size.is_sequence() || size.size() != 2) size.fail("must be [width, height]");
-        c.size = {length_value(size[0]), length_value(size[1])};
+        p.width = length_value(size[0]);
+        p.height = length_value(size[1]);
     }
     if (f.has("grid")) {
         Field grid = f["grid"];
         if (!grid.is_sequence() || grid.size() != 2) grid.fail("must be [columns, rows]");
-        c.grid = {grid[0].integer(2, 256), grid[1].integer(2, 256)};
+        p.columns = grid[0].integer(2, kMaxClothGridSide);
+        p.rows = grid[1].integer(2, kMaxClothGridSide);
     }
     if (f.has("pin")) {
         Field pin = f["pin"];
-        c.pin_left = false;
+        c.pins.left_edge = false;
         if (pin.is_scalar()) {
             const std::string where = pin.choice({"left_edge", "top_edge", "left_and_top"});
-            c.pin_left = where != "top_edge";
-            c.pin_top = where != "left_edge";
+            c.pins.left_edge = where != "top_edge";
+            c.pins.top_edge = where != "left_edge";
         } else {
             if (pin.size() == 0) pin.fail("pin at least one vertex");
-            const int count = c.grid.x * c.grid.y;
+            const int count = p.columns * p.rows;
             for (size_t i = 0; i < pin.size(); ++i)
-                c.pin_vertices.push_back(pin[i].integer(0, count - 1));
+                c.pins.vertices.push_back(pin[i].integer(0, count - 1));
         }
     }
-    auto number = [&](const char* key, float& out, double lo, double hi) {
-        if (f.has(key)) out = static_cast<float>(f[key].number(lo, hi));
+    auto number = [&](const char* key, auto& out, double lo, double hi) {
+        if (f.has(key)) out = static_cast<std::remove_reference_t<decltype(out)>>(f[key].number(lo, hi));
     };
-    number("mass", c.mass, 1e-6, 1e6);
-    number("stiffness", c.stiffness, 1e-6, 1e9);
-    number("shear", c.shear, 0, 1);
-    number("bend", c.bend, 0, 1);
-    number("max_stretch", c.max_stretch, 0.01, 1);
-    number("friction", c.friction, 0, 100);
-    number("damping", c.damping, 0, 1);
-    number("wind_drag", c.wind_drag, 0, 100);
-    number("wind_tangential_drag", c.wind_tangential_drag, 0, 100);
-    number("preroll", c.preroll, 0, 60);
-    if (f.has("gravity")) c.gravity = f["gravity"].vec3();
-    if (f.has("substeps")) c.substeps = f["substeps"].integer(0, 1000);
+    number("mass", p.mass, 1e-6, 1e6);
+    number("stiffness", p.stiffness, 1e-6, 1e9);
+    number("shear", p.shear_stiffness, 0, 1);
+    number("bend", p.bend_stiffness, 0, 1);
+    number("max_stretch", p.max_stretch, 0.01, 1);
+    number("friction", p.friction, 0, kMaxFriction);
+    number("damping", p.damping, 0, 1);
+    number("wind_drag", p.wind_drag, 0, kMaxWindDrag);
+    number("wind_tangential_drag", p.wind_tangential_drag, 0, kMaxWindDrag);
+    number("preroll", p.preroll_seconds, 0, 60);
+    if (f.has("gravity")) p.gravity = f["gravity"].vec3();
+    if (f.has("substeps")) p.substeps = f["substeps"].integer(0, kMaxClothSubsteps);
     if (f.has("wind")) {
         Field w = f["wind"];
         w.check_keys({"direction", "strength", "gust", "seed"});
         if (w.has("direction")) c.wind_direction = w["direction"].animated_direction();
-        if (w.has("strength")) c.wind_strength = w["strength"].animated_number(0, 100);
+        if (w.has("strength")) c.wind_strength = w["strength"].animated_number(0, kMaxWindStrength);
         if (w.has("gust")) c.gust = w["gust"].animated_number(0, 1);
         if (w.has("seed")) c.seed = w["seed"].integer(0, 1000000000);
     }
@@ -437,15 +439,11 @@ AnimationChoiceDesc parse_animation_choice(const Field& f) {
 
 // An object's `style:` is a preset (name or path) of its own, or values that
 // change the scene's style for this object only.
-bool any_outline(const OutlinesDesc& o) {
-    return o.silhouette.enabled || o.crease.enabled || o.boundary.enabled || o.intersection.enabled;
-}
-
 // Outlines, background and the depth view range belong to the whole image,
 // so an object's style cannot change them: its own keys are errors, and a
 // preset's are left as the scene has them, with a warning.
 StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
-                             const StyleContext& context, std::vector<std::string>& warnings) {
+                             const StyleContext& context, Warnings& warnings) {
     if (f.is_map())
         for (const char* key : {"outlines", "background", "depth_range", "shadows"})
             if (f.has(key))
@@ -458,11 +456,11 @@ StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
         apply_style_layer(f, style, context, visiting);
     } else {
         style = parse_style_field(f, context);
-        const bool own_outlines = any_outline(style.outlines);
+        const bool own_outlines = style.outlines.any();
         if (own_outlines || style.background)
-            warnings.push_back(f.where().describe() + ": '" + f.path() + "': the outlines and " +
-                               "background of preset '" + style.name +
-                               "' apply to whole images only; the scene's style sets them");
+            warnings.push_back({f.where(), f.path(),
+                                "the outlines and background of preset '" + style.name +
+                                    "' apply to whole images only; the scene's style sets them"});
     }
     style.outlines = scene_style.outlines;
     style.background = scene_style.background;
@@ -473,7 +471,7 @@ StyleDesc parse_object_style(const Field& f, const StyleDesc& scene_style,
 
 ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_dir,
                         const StyleDesc& scene_style, const StyleContext& style_context,
-                        std::vector<std::string>& warnings) {
+                        Warnings& warnings) {
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",

@@ -71,6 +71,9 @@ struct OutlinesDesc {
     LineDesc silhouette, crease, boundary, intersection;
     float crease_angle = 30;        // degrees between face normals
     float depth_threshold = 0.02f;  // relative jump in depth that makes a silhouette
+    bool any() const {
+        return silhouette.enabled || crease.enabled || boundary.enabled || intersection.enabled;
+    }
 };
 
 struct WireframeDesc {
@@ -99,7 +102,7 @@ struct StyleDesc {
     // "lit with shadows" display modes differ only in this.
     std::optional<bool> shadows;
 
-    // The seed-000 palette method (design.md §5) and Gooch 1998.
+    // The seed-000 palette method (docs/references.md, seed 000) and Gooch 1998.
     Animated<glm::vec3> cool = glm::vec3(0, 0, 0.4f);     // c_shadow; Gooch's blue
     Animated<glm::vec3> warm = glm::vec3(0.4f, 0.4f, 0);  // c_lit; Gooch's yellow
     Animated<float> alpha = 0.2f, beta = 0.6f;

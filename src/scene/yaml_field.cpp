@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/color.hpp"
+#include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
@@ -27,27 +28,10 @@ bool parse_hex_color(const std::string& text, glm::vec4& out) {
         if (end != byte.c_str() + 2) return false;
         channels[c] = static_cast<float>(value) / 255.0f;
     }
-    // Colour pickers give sRGB; shading is linear (shared/design.md §2). Alpha is linear.
+    // Colour pickers give sRGB; shading is linear (docs/scene-format.md). Alpha is linear.
     out = {srgb_to_linear(channels[0]), srgb_to_linear(channels[1]), srgb_to_linear(channels[2]),
            channels[3]};
     return true;
-}
-
-// Levenshtein distance, for "did you mean" hints on misspelt keys.
-size_t edit_distance(const std::string& a, const std::string& b) {
-    std::vector<size_t> row(b.size() + 1);
-    for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
-    for (size_t i = 1; i <= a.size(); ++i) {
-        size_t diagonal = row[0];
-        row[0] = i;
-        for (size_t j = 1; j <= b.size(); ++j) {
-            size_t above = row[j];
-            row[j] =
-                std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
-            diagonal = above;
-        }
-    }
-    return row[b.size()];
 }
 
 std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& name) {
@@ -128,17 +112,15 @@ void Field::check_keys(std::initializer_list<const char*> allowed) const {
         bool known = false;
         for (const char* name : allowed) known = known || key == name;
         if (!known) {
-            std::string list, closest;
-            size_t best = 3;  // suggest only names within two edits
+            std::string list;
+            std::vector<std::string_view> names;
             for (const char* name : allowed) {
                 list += std::string(list.empty() ? "" : ", ") + name;
-                size_t d = edit_distance(key, name);
-                if (d < best) best = d, closest = name;
+                names.push_back(name);
             }
             Field key_field(doc_, it->first, join_path(path_, key));
-            key_field.fail(closest.empty() ? "unknown key (expected one of: " + list + ")"
-                                           : "unknown key; did you mean '" + closest +
-                                                 "'? (expected one of: " + list + ")");
+            key_field.fail("unknown key" + did_you_mean(key, names) + " (expected one of: " + list +
+                           ")");
         }
     }
 }

@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
 #include <string>
 
+#include "core/error.hpp"
 #include "core/integer_hash.hpp"
 #include "shade/paper_grain.hpp"
 
@@ -40,7 +40,7 @@ bool is_power_of_two(int v) {
 }
 
 void check(bool ok, const char* what) {
-    if (!ok) throw std::invalid_argument(std::string("tonal art map: ") + what);
+    if (!ok) throw Error(ExitCode::invalid_input, std::string("tonal art map: ") + what);
 }
 
 void validate(const TamParams& p) {

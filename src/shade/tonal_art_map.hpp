@@ -83,7 +83,7 @@ struct TonalArtMap {
     std::vector<int> level_strokes;             // strokes in each level's finest mip
 };
 
-// Throws std::invalid_argument for parameters out of range (the style
+// Throws facet::Error (invalid_input) for parameters out of range (the style
 // parser is expected to have reported those with a file position already).
 TonalArtMap generate_tonal_art_map(const TamParams& params);
 

@@ -4,7 +4,7 @@
 // bound use.
 #include <cmath>
 
-#include "anim/cloth.hpp"
+#include "cloth/cloth.hpp"
 
 namespace facet::cloth_detail {
 

@@ -8,8 +8,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "anim/cloth.hpp"
-#include "anim/cloth_grid.hpp"
+#include "cloth/cloth.hpp"
+#include "cloth/cloth_grid.hpp"
+#include "core/error.hpp"
 
 namespace facet {
 namespace {
@@ -25,12 +26,16 @@ constexpr double kMaxStepMove = 0.1;
 
 // --- Messages ----------------------------------------------------------------
 
+[[noreturn]] void fail_cloth(const std::string& message) {
+    throw Error(ExitCode::invalid_input, message);
+}
+
 template <typename T>
-std::string range_message(const char* name, T value, const std::string& range,
-                          const char* unit = "") {
+[[noreturn]] void fail_range(const char* name, T value, const std::string& range,
+                             const char* unit = "") {
     std::ostringstream s;
     s << name << " must be " << range << unit << ", got " << value << unit;
-    return s.str();
+    fail_cloth(s.str());
 }
 
 bool finite(double v) {
@@ -148,8 +153,8 @@ double weight_strain(const ClothParams& p) {
            (static_cast<double>(p.stiffness) * std::min(p.width, p.height));
 }
 
-std::string weight_message(const ClothParams& p) {
-    if (weight_strain(p) <= p.max_stretch) return "";
+void check_weight(const ClothParams& p) {
+    if (weight_strain(p) <= p.max_stretch) return;
     const double scale = p.max_stretch / weight_strain(p);
     std::ostringstream s;
     s << "mass " << p.mass << " kg is too heavy for stiffness " << p.stiffness
@@ -157,15 +162,15 @@ std::string weight_message(const ClothParams& p) {
       << " %, more than max_stretch (" << 100 * p.max_stretch
       << " %); the safe range for mass is (0, " << p.mass * scale
       << "] kg, or raise stiffness to at least " << p.stiffness / scale << " N/m";
-    return s.str();
+    fail_cloth(s.str());
 }
 
-std::string stability_message(const ClothParams& p) {
+void check_stability(const ClothParams& p) {
     const StabilityTerms t = stability_terms(p);
     const int needed = substeps_needed(t, p.stiffness, p.frame_seconds);
     const int used = p.substeps > 0 ? p.substeps : kMaxClothSubsteps;
     if (p.substeps > 0 ? needed <= p.substeps : needed <= kMaxClothSubsteps)
-        return weight_message(p);
+        return check_weight(p);
     const double h = p.frame_seconds / used;
     const double max_k = max_stable_stiffness(t, h);
     std::ostringstream s;
@@ -173,7 +178,7 @@ std::string stability_message(const ClothParams& p) {
         s << "friction (" << p.friction << " 1/s) and wind_drag (" << p.wind_drag << ", "
           << p.wind_tangential_drag << " tangential) are too high for " << used
           << " substeps per frame on a " << grid_description(p) << ": lower them or raise substeps";
-        return s.str();
+        fail_cloth(s.str());
     }
     s << "stiffness " << p.stiffness << " N/m is unstable with ";
     if (p.substeps > 0)
@@ -185,75 +190,75 @@ std::string stability_message(const ClothParams& p) {
         s << ", or use at least " << needed << " substeps (0 chooses them)";
     else
         s << " (or raise mass, or use fewer grid vertices)";
-    return s.str();
+    fail_cloth(s.str());
 }
 
 }  // namespace
 
 // --- Validation ----------------------------------------------------------------
 
-std::string validate_wind(const WindState& w) {
+void check_wind(const WindState& w) {
     const glm::vec3 d = w.direction;
     if (!(finite(d.x) && finite(d.y) && finite(d.z)) || glm::length(d) == 0)
-        return "wind direction must be a finite, non-zero vector";
+        fail_cloth("wind direction must be a finite, non-zero vector");
     if (!(w.strength >= 0 && w.strength <= kMaxWindStrength))
-        return range_message("wind strength", w.strength,
+        fail_range("wind strength", w.strength,
                              "between 0 and " + std::to_string(int(kMaxWindStrength)), " m/s");
-    if (!(w.gust >= 0 && w.gust <= 1)) return range_message("wind gust", w.gust, "between 0 and 1");
-    return "";
+    if (!(w.gust >= 0 && w.gust <= 1)) fail_range("wind gust", w.gust, "between 0 and 1");
 }
 
-std::string validate_cloth_params(const ClothParams& p, const ClothPins& pins) {
+void check_cloth_params(const ClothParams& p, const ClothPins& pins) {
     const std::string side = "between 2 and " + std::to_string(kMaxClothGridSide);
     if (p.columns < 2 || p.columns > kMaxClothGridSide)
-        return range_message("grid columns", p.columns, side);
-    if (p.rows < 2 || p.rows > kMaxClothGridSide) return range_message("grid rows", p.rows, side);
+        fail_range("grid columns", p.columns, side);
+    if (p.rows < 2 || p.rows > kMaxClothGridSide) fail_range("grid rows", p.rows, side);
     if (!(finite(p.width) && p.width > 0))
-        return range_message("width", p.width, "finite and greater than 0", " m");
+        fail_range("width", p.width, "finite and greater than 0", " m");
     if (!(finite(p.height) && p.height > 0))
-        return range_message("height", p.height, "finite and greater than 0", " m");
+        fail_range("height", p.height, "finite and greater than 0", " m");
     if (!(finite(p.mass) && p.mass > 0))
-        return range_message("mass", p.mass, "finite and greater than 0", " kg");
+        fail_range("mass", p.mass, "finite and greater than 0", " kg");
     if (!(finite(p.stiffness) && p.stiffness > 0))
-        return range_message("stiffness", p.stiffness, "finite and greater than 0", " N/m");
+        fail_range("stiffness", p.stiffness, "finite and greater than 0", " N/m");
     if (!(p.shear_stiffness >= 0 && p.shear_stiffness <= 1))
-        return range_message("shear_stiffness", p.shear_stiffness, "between 0 and 1");
+        fail_range("shear_stiffness", p.shear_stiffness, "between 0 and 1");
     if (!(p.bend_stiffness >= 0 && p.bend_stiffness <= 1))
-        return range_message("bend_stiffness", p.bend_stiffness, "between 0 and 1");
+        fail_range("bend_stiffness", p.bend_stiffness, "between 0 and 1");
     if (!(p.max_stretch >= 0.01f && p.max_stretch <= 1))
-        return range_message("max_stretch", p.max_stretch, "between 0.01 and 1");
+        fail_range("max_stretch", p.max_stretch, "between 0.01 and 1");
     if (!(p.friction >= 0 && p.friction <= kMaxFriction))
-        return range_message("friction", p.friction,
+        fail_range("friction", p.friction,
                              "between 0 and " + std::to_string(int(kMaxFriction)), " 1/s");
     if (!(p.damping >= 0 && p.damping <= 1))
-        return range_message("damping", p.damping, "between 0 and 1");
+        fail_range("damping", p.damping, "between 0 and 1");
     if (!(p.wind_drag >= 0 && p.wind_drag <= kMaxWindDrag))
-        return range_message("wind_drag", p.wind_drag,
+        fail_range("wind_drag", p.wind_drag,
                              "between 0 and " + std::to_string(int(kMaxWindDrag)));
     if (!(p.wind_tangential_drag >= 0 && p.wind_tangential_drag <= kMaxWindDrag))
-        return range_message("wind_tangential_drag", p.wind_tangential_drag,
+        fail_range("wind_tangential_drag", p.wind_tangential_drag,
                              "between 0 and " + std::to_string(int(kMaxWindDrag)));
     const glm::vec3 g = p.gravity;
     if (!(finite(g.x) && finite(g.y) && finite(g.z) && glm::length(g) <= 1000))
-        return "gravity must be a finite vector no longer than 1000 m/s^2";
+        fail_cloth("gravity must be a finite vector no longer than 1000 m/s^2");
     if (!(p.frame_seconds > 0 && p.frame_seconds <= 1))
-        return range_message("frame duration", p.frame_seconds, "in (0, 1]", " s");
+        fail_range("frame duration", p.frame_seconds, "in (0, 1]", " s");
     if (!(p.preroll_seconds >= 0 && p.preroll_seconds <= 60))
-        return range_message("preroll", p.preroll_seconds, "between 0 and 60", " s");
+        fail_range("preroll", p.preroll_seconds, "between 0 and 60", " s");
     if (p.substeps < 0 || p.substeps > kMaxClothSubsteps)
-        return range_message(
+        fail_range(
             "substeps", p.substeps,
             "between 1 and " + std::to_string(kMaxClothSubsteps) + " (or 0 to choose them)");
     const long long count = static_cast<long long>(p.columns) * p.rows;
     for (int v : pins.vertices)
         if (v < 0 || v >= count)
-            return range_message(
+            fail_range(
                 "pinned vertex", v,
                 "an index row * columns + column between 0 and " + std::to_string(count - 1));
     if (!pins.left_edge && !pins.top_edge && pins.vertices.empty())
-        return "pin: at least one vertex must be pinned (left_edge, top_edge or a vertex list); "
-               "a free cloth would fall forever";
-    return stability_message(p);
+        fail_cloth(
+            "pin: at least one vertex must be pinned (left_edge, top_edge or a vertex list); "
+            "a free cloth would fall forever");
+    check_stability(p);
 }
 
 double cloth_stability_number(const ClothParams& params, int substeps) {
@@ -277,18 +282,18 @@ double max_wind_speed(const ClothParams& p) {
     return kMaxStepMove * std::min(g.dx, g.dy) * particle_mass(p) / (h * h * drag * g.dx * g.dy);
 }
 
-std::string validate_wind(const WindState& w, const ClothParams& params) {
-    if (std::string problem = validate_wind(w); !problem.empty()) return problem;
+void check_wind(const WindState& w, const ClothParams& params) {
+    check_wind(w);
     const double peak = static_cast<double>(w.strength) * (1 + static_cast<double>(w.gust));
     const double most = max_wind_speed(params);
-    if (peak <= most) return "";
+    if (peak <= most) return;
     std::ostringstream s;
     s << "wind strength " << w.strength << " m/s with gust " << w.gust
       << " is too strong for this cloth (wind_drag "
       << std::max(params.wind_drag, params.wind_tangential_drag) << ", " << grid_description(params)
       << ", " << cloth_substeps(params) << " substeps): strength x (1 + gust) must be at most "
       << most << " m/s; raise substeps or mass, or lower wind_drag";
-    return s.str();
+    fail_cloth(s.str());
 }
 
 }  // namespace facet

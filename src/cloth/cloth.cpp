@@ -6,7 +6,7 @@
 // on one thread in a fixed order, so a state is a pure function of the
 // parameters, the wind and the step count. The parameter checks and the
 // stability bound are in cloth_limits.cpp.
-#include "anim/cloth.hpp"
+#include "cloth/cloth.hpp"
 #include "core/integer_hash.hpp"
 
 #include <algorithm>
@@ -15,7 +15,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "anim/cloth_grid.hpp"
+#include "cloth/cloth_grid.hpp"
 #include "core/error.hpp"
 
 namespace facet {
@@ -346,8 +346,11 @@ void substep(const ClothModel& model, ClothState& state, Scratch& s) {
 // --- Model ---------------------------------------------------------------------
 
 ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
-    if (std::string problem = validate_cloth_params(params, pins); !problem.empty())
-        throw Error(ExitCode::invalid_input, "cloth: " + problem);
+    try {
+        check_cloth_params(params, pins);
+    } catch (const Error& e) {
+        throw Error(ExitCode::invalid_input, "cloth: " + e.detail());
+    }
     ClothModel m;
     m.params = params;
     m.substeps = cloth_substeps(params);
@@ -476,9 +479,11 @@ glm::dvec3 wind_at_step(const ClothModel& model, const WindState& from, const Wi
 
 void advance_cloth_frame(const ClothModel& model, ClothState& state, const WindState& from,
                          const WindState& to) {
-    for (const WindState* w : {&from, &to})
-        if (std::string problem = validate_wind(*w, model.params); !problem.empty())
-            throw Error(ExitCode::invalid_input, "cloth: " + problem);
+    try {
+        for (const WindState* w : {&from, &to}) check_wind(*w, model.params);
+    } catch (const Error& e) {
+        throw Error(ExitCode::invalid_input, "cloth: " + e.detail());
+    }
     Scratch s;
     s.families = spring_families(model);
     const size_t n = state.positions.size();
@@ -529,11 +534,11 @@ ClothFrame cloth_frame(const ClothModel& model, const ClothState& state) {
 
 // --- Driver --------------------------------------------------------------------
 
-ClothSimulation::ClothSimulation(const ClothParams& params, const ClothPins& pins, WindAt wind_at)
-    : model_(build_cloth_model(params, pins)), wind_at_(std::move(wind_at)) {
-    current_ = start_state(model_);
+ClothSimulation::ClothSimulation(std::shared_ptr<const ClothModel> model, WindAt wind_at)
+    : model_(std::move(model)), wind_at_(std::move(wind_at)) {
+    current_ = start_state(*model_);
     const WindState first = wind(0);
-    while (current_.frame < 0) advance_cloth_frame(model_, current_, first, first);
+    while (current_.frame < 0) advance_cloth_frame(*model_, current_, first, first);
     checkpoints_.push_back(current_);
 }
 
@@ -552,7 +557,7 @@ const ClothState& ClothSimulation::simulate_to(int frame) {
     if (current_.frame > frame || checkpoints_[index].frame > current_.frame)
         current_ = checkpoints_[index];
     while (current_.frame < frame) {
-        advance_cloth_frame(model_, current_, wind(current_.frame), wind(current_.frame + 1));
+        advance_cloth_frame(*model_, current_, wind(current_.frame), wind(current_.frame + 1));
         if (current_.frame % kCheckpointInterval == 0 &&
             static_cast<size_t>(current_.frame / kCheckpointInterval) == checkpoints_.size())
             checkpoints_.push_back(current_);
