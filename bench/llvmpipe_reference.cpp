@@ -19,6 +19,7 @@
 #include "core/thread_pool.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/shade_lights.hpp"
 
 namespace facet_bench {
 namespace {
@@ -57,13 +58,28 @@ struct Gl {
 
     void load() {
 #define FACET_GL(name) name = gl_proc<decltype(name)>("gl" #name)
-        FACET_GL(CreateShader); FACET_GL(ShaderSource); FACET_GL(CompileShader);
-        FACET_GL(GetShaderiv); FACET_GL(GetShaderInfoLog); FACET_GL(CreateProgram);
-        FACET_GL(AttachShader); FACET_GL(BindAttribLocation); FACET_GL(LinkProgram);
-        FACET_GL(GetProgramiv); FACET_GL(GetProgramInfoLog); FACET_GL(UseProgram);
-        FACET_GL(GetUniformLocation); FACET_GL(UniformMatrix4fv); FACET_GL(UniformMatrix3fv);
-        FACET_GL(Uniform3fv); FACET_GL(Uniform4fv); FACET_GL(Uniform1i); FACET_GL(GenBuffers);
-        FACET_GL(BindBuffer); FACET_GL(BufferData); FACET_GL(VertexAttribPointer);
+        FACET_GL(CreateShader);
+        FACET_GL(ShaderSource);
+        FACET_GL(CompileShader);
+        FACET_GL(GetShaderiv);
+        FACET_GL(GetShaderInfoLog);
+        FACET_GL(CreateProgram);
+        FACET_GL(AttachShader);
+        FACET_GL(BindAttribLocation);
+        FACET_GL(LinkProgram);
+        FACET_GL(GetProgramiv);
+        FACET_GL(GetProgramInfoLog);
+        FACET_GL(UseProgram);
+        FACET_GL(GetUniformLocation);
+        FACET_GL(UniformMatrix4fv);
+        FACET_GL(UniformMatrix3fv);
+        FACET_GL(Uniform3fv);
+        FACET_GL(Uniform4fv);
+        FACET_GL(Uniform1i);
+        FACET_GL(GenBuffers);
+        FACET_GL(BindBuffer);
+        FACET_GL(BufferData);
+        FACET_GL(VertexAttribPointer);
         FACET_GL(EnableVertexAttribArray);
 #undef FACET_GL
     }
@@ -206,8 +222,8 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     GLuint buffers[3];
     gl.GenBuffers(3, buffers);
     gl.BindBuffer(GL_ARRAY_BUFFER, buffers[0]);
-    gl.BufferData(GL_ARRAY_BUFFER, world.positions.size() * sizeof(glm::vec3), world.positions.data(),
-                  GL_STATIC_DRAW);
+    gl.BufferData(GL_ARRAY_BUFFER, world.positions.size() * sizeof(glm::vec3),
+                  world.positions.data(), GL_STATIC_DRAW);
     gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     gl.EnableVertexAttribArray(0);
     gl.BindBuffer(GL_ARRAY_BUFFER, buffers[1]);
@@ -216,8 +232,8 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
     gl.EnableVertexAttribArray(1);
     gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[2]);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, world.indices.size() * sizeof(uint32_t), world.indices.data(),
-                  GL_STATIC_DRAW);
+    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, world.indices.size() * sizeof(uint32_t),
+                  world.indices.data(), GL_STATIC_DRAW);
 
     glViewport(0, 0, width, height);
     glEnable(GL_DEPTH_TEST);
@@ -246,8 +262,8 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
         const facet::FrameState state = facet::evaluate_frame(scene, world.object_bounds, frame);
         // Same view as facet (make_camera), standard GL projection (depth -1..1).
         const facet::CameraMatrices cam = facet::make_camera(state.camera, aspect);
-        const glm::mat4 projection = glm::perspective(glm::radians(state.camera.fov_degrees), aspect,
-                                                      state.camera.near, state.camera.far);
+        const glm::mat4 projection = glm::perspective(glm::radians(state.camera.fov_degrees),
+                                                      aspect, state.camera.near, state.camera.far);
         const glm::mat4 view_projection = projection * cam.view;
         const std::vector<facet::ShadeLight> lights = facet::make_shade_lights(state.lights);
         const int light_count = static_cast<int>(std::min<size_t>(lights.size(), 8));
@@ -275,11 +291,14 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
             gl.Uniform3fv(u_albedo, 1, glm::value_ptr(m.color));
             const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
             gl.Uniform4fv(u_terms, 1, glm::value_ptr(terms));
-            if (m.double_sided) glDisable(GL_CULL_FACE);
-            else glEnable(GL_CULL_FACE);
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.triangle_count * 3), GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(static_cast<uintptr_t>(d.first_triangle) * 3 *
-                                                         sizeof(uint32_t)));
+            if (m.double_sided)
+                glDisable(GL_CULL_FACE);
+            else
+                glEnable(GL_CULL_FACE);
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.triangle_count * 3),
+                           GL_UNSIGNED_INT,
+                           reinterpret_cast<const void*>(static_cast<uintptr_t>(d.first_triangle) *
+                                                         3 * sizeof(uint32_t)));
         }
     };
 

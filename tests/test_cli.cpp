@@ -1,4 +1,4 @@
-// The facet command line as a user runs it: exit codes (shared/design.md §2),
+// The facet command line as a user runs it: exit codes (README, "Using it"),
 // the manifest and its files, overrides, and what it prints.
 #include <catch2/catch.hpp>
 

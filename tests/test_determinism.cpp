@@ -1,5 +1,5 @@
 // Determinism: the same frames give bit-identical files for any thread
-// count and any frame subset (shared/design.md §6).
+// count and any frame subset (docs/architecture.md, "Why the output is bit-identical").
 #include <catch2/catch.hpp>
 
 #include <map>

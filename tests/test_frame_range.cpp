@@ -1,4 +1,4 @@
-// facet::parse_frame_ranges: the frame list syntax of shared/design.md §2
+// facet::parse_frame_ranges: the frame list syntax of docs/scene-format.md ("Frame ranges")
 // ("1-120", "1-120:2", "1,5,10-20"), inclusive ranges, sorted and distinct.
 #include <catch2/catch.hpp>
 

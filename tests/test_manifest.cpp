@@ -1,4 +1,4 @@
-// manifest.json writing, reading and merging (shared/design.md §2), and the
+// manifest.json writing, reading and merging (docs/scene-format.md, "manifest.json"), and the
 // atomic file writer everything in output/ goes through.
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 // facet::load_scene on invalid scene files: each throws facet::Error (exit
 // code 2) naming the file, the line and column of the offending text, and the
-// dotted key (shared/design.md §2).
+// dotted key (docs/scene-format.md).
 #include <catch2/catch.hpp>
 
 #include <filesystem>

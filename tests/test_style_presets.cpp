@@ -14,7 +14,7 @@
 
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/style_state.hpp"
+#include "render/style_eval.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_support.hpp"

@@ -1,4 +1,4 @@
-// The flag scene's primitives (seed 004, section 1.2): the flagpole, a
+// The flag scene's primitives (docs/references.md, seed 004 §1.2): the flagpole, a
 // cylinder with a hemispherical tip of its own radius, and the platform, a
 // square slab with a round hole through its centre for the pole. Both are
 // closed, outward-facing meshes; the types are registered in primitives.cpp.

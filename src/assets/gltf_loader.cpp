@@ -106,7 +106,7 @@ Mesh load_gltf(const std::string& path) {
 
     Mesh mesh;
     mesh.source = path;
-    if (!warn.empty()) mesh.warnings.push_back({{path}, "", trim(warn)});
+    if (!warn.empty()) mesh.warnings.push_back(file_warning(path, trim(warn)));
     // The rest pose below is baked as always; a file that can move also
     // keeps what moves it (gltf_rig_loader.cpp).
     std::shared_ptr<MeshRig> rig;
@@ -177,12 +177,14 @@ Mesh load_gltf(const std::string& path) {
             std::string what = "mesh '" + gm.name + "' primitive " + std::to_string(p);
             int mode = prim.mode < 0 ? kModeTriangles : prim.mode;
             if (mode != kModeTriangles && mode != kModeStrip && mode != kModeFan) {
-                mesh.warnings.push_back({{path}, "", what + ": points and lines are not rendered"});
+                mesh.warnings.push_back(
+                    file_warning(path, what + ": points and lines are not rendered"));
                 continue;
             }
             auto pos_it = prim.attributes.find("POSITION");
             if (pos_it == prim.attributes.end()) {
-                mesh.warnings.push_back({{path}, "", what + ": no POSITION attribute, skipped"});
+                mesh.warnings.push_back(
+                    file_warning(path, what + ": no POSITION attribute, skipped"));
                 continue;
             }
             MeshPart part;
@@ -288,10 +290,9 @@ Mesh load_gltf(const std::string& path) {
                     part.normals[v] =
                         len > 0 && std::isfinite(len) ? sum[v] / len : glm::vec3(0, 1, 0);
                 }
-                mesh.warnings.push_back({{path},
-                                         "",
-                                         what + ": " + std::to_string(unusable_normals.size()) +
-                                             " normals of zero length replaced by face normals"});
+                mesh.warnings.push_back(
+                    file_warning(path, what + ": " + std::to_string(unusable_normals.size()) +
+                                           " normals of zero length replaced by face normals"));
             }
             validate_part(part, path);
             mesh.parts.push_back(std::move(part));

@@ -234,8 +234,9 @@ RigAnimation read_animation(const tinygltf::Model& model, int index, const MeshR
         // §3.11.1: without a node the target is defined by an extension;
         // other paths come from extensions too. Neither moves a mesh here.
         if (ch.target_node < 0 || !known) {
-            warnings.push_back({{path}, "", cw + " targets '" + ch.target_path +
-                                                "', not a node's transform or weights; ignored"});
+            warnings.push_back(
+                file_warning(path, cw + " targets '" + ch.target_path +
+                                       "', not a node's transform or weights; ignored"));
             continue;
         }
         if (static_cast<size_t>(ch.target_node) >= rig.nodes.size())

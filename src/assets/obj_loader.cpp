@@ -313,7 +313,8 @@ Mesh load_obj(const std::string& path) {
 
     Mesh mesh;
     mesh.source = path;
-    for (std::string& line : split_lines(warn, "")) mesh.warnings.push_back({{path}, "", line});
+    for (std::string& line : split_lines(warn, ""))
+        mesh.warnings.push_back(file_warning(path, line));
 
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (const auto& m : obj_materials) {

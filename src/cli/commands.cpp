@@ -327,18 +327,22 @@ int bench_command(const BenchArgs& args) {
     return 0;
 }
 
+// -D, the same wherever a command takes a scene. One value per -D: a vector
+// option would otherwise also swallow the words after it, so
+// `render -D camera.fov=30 scene.yaml` lost its scene.
+void add_define_option(CLI::App* cmd, std::vector<std::string>& defines) {
+    cmd->add_option("-D,--define", defines, "Override a scene value: key.path=value (repeatable)")
+        ->take_all()
+        ->allow_extra_args(false);
+}
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
     cmd->add_option("--passes", args.passes, "Passes to write: color, depth or color,depth");
     cmd->add_option("--formats", args.formats, "File formats: png, exr or png,exr");
     cmd->add_option("--style", args.style, "Style preset name or file");
-    // One value per -D: a vector option would otherwise also swallow the
-    // words after it, so `render -D camera.fov=30 scene.yaml` lost its scene.
-    cmd->add_option("-D,--define", args.defines,
-                    "Override a scene value: key.path=value (repeatable)")
-        ->take_all()
-        ->allow_extra_args(false);
+    add_define_option(cmd, args.defines);
     cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
     cmd->add_option("--camera", args.cameras,
                     "Camera(s) to render by name, comma-separated, or 'all'");
@@ -417,9 +421,7 @@ int run_command_line(int argc, char** argv) {
                       "PNG to write (default out/SCENE-sheet.png)");
     sheet->add_option("--threads", sheet_args.threads, "Worker threads (0: one per core)")
         ->check(CLI::Range(0u, 256u));
-    sheet->add_option("-D,--define", sheet_args.defines, "Override a scene value (repeatable)")
-        ->take_all()
-        ->allow_extra_args(false);
+    add_define_option(sheet, sheet_args.defines);
 
     BenchArgs bench_args;
     CLI::App* bench = app.add_subcommand(

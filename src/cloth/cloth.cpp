@@ -1,4 +1,4 @@
-// The mass-spring cloth (cloth.hpp). Forces follow seed 004, section 1.3
+// The mass-spring cloth (cloth.hpp). Forces follow seed 004 §1.3 (docs/references.md)
 // (system 1.11) and the algorithm of section 2.1; the integration is
 // semi-implicit Euler in fixed substeps with Provot's strain limit
 // ("Deformation constraints in a mass-spring model to describe rigid cloth

@@ -1,6 +1,6 @@
 #pragma once
-// A mass-spring cloth on a rectangular grid: the flag of seed 004 (sections
-// 1.3 and 2.1), as plain data and pure functions plus a small caching driver.
+// A mass-spring cloth on a rectangular grid: the flag of seed 004 (docs/references.md,
+// §1.3 and §2.1), as plain data and pure functions plus a small caching driver.
 // docs/cloth.md describes the model, the forces, the integration and the
 // parameters' safe ranges.
 //

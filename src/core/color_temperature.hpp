@@ -1,5 +1,5 @@
 #pragma once
-// Light colours given as a colour temperature (the seed-001 light's
+// Light colours given as a colour temperature (docs/references.md: the seed-001 light's
 // "spectral characteristics"): the colour of a black body at that
 // temperature, as linear sRGB.
 namespace facet {

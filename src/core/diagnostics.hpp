@@ -21,4 +21,12 @@ struct Warning {
 
 using Warnings = std::vector<Warning>;
 
+// A warning about a whole file (an asset), without a line.
+inline Warning file_warning(const std::string& file, const std::string& message) {
+    Warning w;
+    w.where.file = file;
+    w.message = message;
+    return w;
+}
+
 }  // namespace facet

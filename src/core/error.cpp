@@ -13,10 +13,20 @@ std::string SourceLocation::describe() const {
 
 std::string describe_problem(const SourceLocation& where, const std::string& key,
                              const std::string& message) {
+    // Built by appending: GCC 12 at -O3 warns falsely (-Wrestrict, GCC bug
+    // 105329) about some "literal" + std::string expressions.
     std::string text;
-    if (!where.file.empty() || !where.origin.empty()) text = where.describe() + ": ";
-    if (!key.empty()) text += "'" + key + "': ";
-    return text + message;
+    if (!where.file.empty() || !where.origin.empty()) {
+        text += where.describe();
+        text += ": ";
+    }
+    if (!key.empty()) {
+        text += '\'';
+        text += key;
+        text += "': ";
+    }
+    text += message;
+    return text;
 }
 
 Error::Error(ExitCode code, const std::string& message)

@@ -76,4 +76,13 @@ void ThreadPool::parallel_for(size_t count, const std::function<void(size_t)>& t
     if (failure) std::rethrow_exception(failure);
 }
 
+void ThreadPool::parallel_for_chunks(size_t count, size_t chunk_size,
+                                     const std::function<void(size_t, size_t)>& task) {
+    const size_t chunks = (count + chunk_size - 1) / chunk_size;
+    parallel_for(chunks, [&](size_t chunk) {
+        const size_t first = chunk * chunk_size;
+        task(first, std::min(first + chunk_size, count));
+    });
+}
+
 }  // namespace facet

@@ -27,6 +27,12 @@ class ThreadPool {
     // caller, and returns when all are done. The first exception is rethrown.
     void parallel_for(size_t count, const std::function<void(size_t)>& task);
 
+    // Runs task(first, last) over [0, count) cut into fixed chunks of
+    // `chunk_size` items: the cut depends on the sizes alone, never on the
+    // thread count.
+    void parallel_for_chunks(size_t count, size_t chunk_size,
+                             const std::function<void(size_t first, size_t last)>& task);
+
   private:
     void worker_loop();
     void run_tasks();

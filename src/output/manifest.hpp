@@ -1,6 +1,6 @@
 #pragma once
 // manifest.json: what a run wrote, so tools and tests find outputs without
-// guessing file names (shared/design.md §2).
+// guessing file names (docs/scene-format.md, "manifest.json").
 #include <string>
 #include <vector>
 

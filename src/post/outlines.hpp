@@ -8,7 +8,7 @@
 //   crease        no jump, but normals differ by more than crease_angle
 //   boundary      the object id changes (including object against background)
 //   intersection  two different objects meet without a jump in depth:
-//                 where they pass through each other (seed 001's display
+//                 where they pass through each other (docs/references.md, seed 001's display
 //                 mode "the lines where models intersect")
 //
 // Method, in passes over rows, each row written by one task only, so the

@@ -73,4 +73,16 @@ int clip_triangle(const ClipVertex in[3], uint32_t planes, float gx, float gy,
     return count;
 }
 
+bool clip_segment_to_near(glm::vec4& a, glm::vec4& b) {
+    const float da = plane_distance(0, a, 0, 0), db = plane_distance(0, b, 0, 0);
+    if (da < 0 && db < 0) return false;
+    if ((da >= 0) != (db >= 0)) {
+        const glm::vec4& inside = da >= 0 ? a : b;
+        glm::vec4& outside = da >= 0 ? b : a;
+        const float di = da >= 0 ? da : db, dout = da >= 0 ? db : da;
+        outside = inside + (outside - inside) * (di / (di - dout));
+    }
+    return a.w > 0 && b.w > 0;
+}
+
 }  // namespace facet

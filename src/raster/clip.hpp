@@ -3,6 +3,7 @@
 // Blinn & Newell 1978), against the near and far planes and the guard band.
 #include <cstdint>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -19,6 +20,18 @@ constexpr int kMaxClippedVertices = 9;
 // Bit per plane that a clip-space point is outside of. `guard` is the guard
 // band half-size in NDC units for x and y.
 uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y);
+
+// Clips the segment a-b to the near plane in place, interpolating from the
+// end in front of it as clip_triangle does. False when nothing is left, or
+// an end is not in front of the eye (w <= 0).
+bool clip_segment_to_near(glm::vec4& a, glm::vec4& b);
+
+// Clip space to screen pixels (x right, y down, the image's top-left corner
+// at 0), as the primitive stage maps vertices.
+inline glm::vec2 clip_to_screen(const glm::vec4& v, float half_width, float half_height) {
+    const float inv_w = 1.0f / v.w;
+    return {(v.x * inv_w + 1.0f) * half_width, (1.0f - v.y * inv_w) * half_height};
+}
 
 // Clips the triangle to the inside of every plane in `planes` (outcode
 // bits). Returns the vertex count of the resulting convex polygon (0 if

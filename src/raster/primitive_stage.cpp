@@ -78,8 +78,9 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
         float inv_w[3], z[3];
         for (int i = 0; i < 3; ++i) {
             inv_w[i] = 1.0f / v[i].w;
-            X[i] = to_fixed((v[i].x * inv_w[i] + 1.0f) * half_w);
-            Y[i] = to_fixed((1.0f - v[i].y * inv_w[i]) * half_h);
+            const glm::vec2 screen = clip_to_screen(v[i], half_w, half_h);
+            X[i] = to_fixed(screen.x);
+            Y[i] = to_fixed(screen.y);
             z[i] = v[i].z * inv_w[i];
         }
         int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);

@@ -32,10 +32,14 @@ ColorImage render_contact_sheet(const SheetRequest& request) {
         SceneOptions options = request.options;
         options.overrides.insert(options.overrides.end(), cell.overrides.begin(),
                                  cell.overrides.end());
-        options.overrides.push_back({"output.size",
-                                     "[" + std::to_string(request.cell_width) + ", " +
-                                         std::to_string(request.cell_height) + "]",
-                                     "sheet cell size"});
+        // Appended piece by piece: GCC 12 at -O3 warns falsely (-Wrestrict,
+        // GCC bug 105329) about "literal" + std::string.
+        std::string size = "[";
+        size += std::to_string(request.cell_width);
+        size += ", ";
+        size += std::to_string(request.cell_height);
+        size += "]";
+        options.overrides.push_back({"output.size", size, "sheet cell size"});
         const SceneDesc scene = load_scene(request.scene, options);
         const World world = build_world(scene);
         FrameRenderer renderer(scene, world, pool);

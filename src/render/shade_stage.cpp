@@ -1,142 +1,176 @@
-// Shading stage: every visible pixel of a tile is shaded once (deferred),
-// from the triangle id and depth the tile stage left in the visibility
-// buffer, by the style of the object it shows (docs/styles.md).
-#include <algorithm>
-#include <cmath>
+#include "render/shade_stage.hpp"
+
 #include <limits>
 
 #include <glm/geometric.hpp>
 
-#include "core/color.hpp"
-#include "render/frame_renderer.hpp"
-#include "shade/lighting_batch.hpp"
-#include "shade/shadow_map.hpp"
+#include "raster/surface_sample.hpp"
+#include "shade/layers.hpp"
+#include "shade/shading_models.hpp"
+#include "shade/texture_lod.hpp"
+#include "shade/wireframe.hpp"
 
 namespace facet {
-
 namespace {
 
-// What is left to do to a pixel after its lighting: hatching strokes and
-// wireframe lines (docs/styles.md, "Layers").
-struct PixelFinish {
-    const StyleState* style = nullptr;  // null when the style has no layers
-    glm::vec3 albedo{0};
-    glm::vec2 hatch_uv{0};
-    float hatch_lod = 0;
-    float wire = 0;  // wireframe line coverage
+// Everything shading needs about one visible pixel, gathered from the
+// surface sample, the triangle's vertices, its material and its style.
+struct VisiblePoint {
+    uint32_t style;  // index into FrameInputs::styles
+    uint32_t object;
+    glm::vec3 position, normal;  // world space; normal facing the viewer, any length
+    glm::vec3 albedo;
+    const Material* material;
+    float receives_shadow;
+    float depth;
+    LightingResult vertex_light;  // Gouraud only
+    LayerInputs layers;
 };
 
-float luminance(const glm::vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;  // Rec. 709, linear
-}
-
-glm::vec3 finish_pixel(glm::vec3 color, const PixelFinish& f, float palette_tone = -1) {
-    if (!f.style) return color;  // no layers: most pixels
-    const StyleState& style = *f.style;
-    if (style.hatching) {
-        const HatchingState& h = *style.hatching;
-        // The palette model hatches its own dark cels (seed 000); other
-        // models hatch by how much light the surface gets, the brightness
-        // relative to its own colour's, so dark colours are not all ink.
-        const float lit = luminance(color) / std::max(luminance(f.albedo), 1e-4f);
-        const float tone = palette_tone >= 0 ? palette_hatch_tone(style.palette, palette_tone)
-                                             : std::clamp(lit, 0.0f, 1.0f);
-        const float coverage = tam_coverage(*h.tam, tone, f.hatch_uv, f.hatch_lod) * h.strength;
-        if (h.pencil) color *= tam_paper_shade(*h.tam, f.hatch_uv, f.hatch_lod);
-        const glm::vec3 ink = h.ink ? *h.ink : palette_ink(style.palette, f.albedo);
-        color = apply_hatching(color, ink, coverage);
-    }
-    if (f.wire > 0) color += (style.wire.color - color) * f.wire;
-    return color;
-}
-
-// Pixels waiting for Phong lighting, gathered so eight are lit at once.
-struct PendingPixels {
-    SurfaceBatch surface;
-    Highlight highlight = Highlight::blinn;
-    glm::vec3 albedo[simd::kLanes];
-    PixelFinish finish[simd::kLanes];
-    glm::vec4* target[simd::kLanes];
-    int count = 0;
+// The texture coordinates of a triangle's corners, times `scale`.
+struct CornerUvs {
+    glm::vec2 uv[3];
 };
 
-void flush(PendingPixels& pending, const glm::vec3& eye, std::span<const ShadeLight> lights) {
-    if (pending.count == 0) return;
-    pad_batch(pending.surface, pending.count);
-    LightingBatch l = light_surface_batch(pending.surface, eye, lights, pending.highlight);
-    for (int i = 0; i < pending.count; ++i) {
-        const glm::vec3& a = pending.albedo[i];
-        const glm::vec3 c(a.x * l.dr[i] + l.sr[i], a.y * l.dg[i] + l.sg[i],
-                          a.z * l.db[i] + l.sb[i]);
-        *pending.target[i] = glm::vec4(finish_pixel(c, pending.finish[i]), 1.0f);
-    }
-    pending.count = 0;
+CornerUvs corner_uvs(const World& world, const uint32_t* corners, glm::vec2 scale) {
+    return {{world.uvs[corners[0]] * scale, world.uvs[corners[1]] * scale,
+             world.uvs[corners[2]] * scale}};
 }
 
-// The stylised models, one pixel at a time. n and v unit; the key light
-// (lights[0]) drives the palette, Gooch and toon terms, its shadow taken in
-// by darkening its n.l towards -1 (so toon styles get a hard shadow band).
-glm::vec3 shade_stylised(const StyleState& style, const glm::vec3& k, const glm::vec3& position,
-                         const glm::vec3& n, const glm::vec3& v, std::span<const ShadeLight> lights,
-                         bool receives_shadows, float& palette_tone) {
-    auto visibility_of = [&](const ShadeLight& light) {
-        return receives_shadows ? light_visibility(light, position, n) : 1.0f;
-    };
-    float n_dot_l = 0;  // no lights: the middle of the palette
-    for (const ShadeLight& light : lights) {
-        if (light.is_ambient) continue;
-        const LightSample key = sample_light(light, position);
-        const float visibility = visibility_of(light);
-        n_dot_l = dot3(n, key.to_light);
-        n_dot_l = -1.0f + (n_dot_l + 1.0f) * visibility;
-        break;
+TextureLookup lookup(const CornerUvs& c, const SurfaceSample& s, glm::vec2 texels) {
+    return texture_lookup(c.uv[0], c.uv[1], c.uv[2], s, texels);
+}
+
+// Hatching coordinates: the object's UVs, or the screen for screen-space
+// strokes and objects without UVs.
+void hatch_coordinates(const HatchingState& h, const Draw& draw, const World& world,
+                       const uint32_t* corners, const SurfaceSample& s, int x, int y,
+                       int samples_per_side, LayerInputs& out) {
+    const float size = static_cast<float>(h.tam->params.size);
+    if (h.screen_space || !draw.has_uvs) {
+        const float tile_samples = h.tile_pixels * static_cast<float>(samples_per_side);
+        out.hatch_uv =
+            glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f) / tile_samples;
+        out.hatch_lod = std::max(0.0f, std::log2(size / tile_samples));
+        return;
     }
-    glm::vec3 c(0);
-    switch (style.model) {
-        case ShadingModel::palette: {
-            const PaletteShading p = seed_palette(style.palette, k, n_dot_l);
-            c = p.color;
-            palette_tone = p.tone;
-            break;
+    const TextureLookup t =
+        lookup(corner_uvs(world, corners, glm::vec2(h.scale)), s, glm::vec2(size));
+    out.hatch_uv = t.uv;
+    out.hatch_lod = t.lod;
+}
+
+VisiblePoint gather_point(const SurfaceSample& s, int x, int y, const ShadeInputs& in) {
+    const World& world = in.world;
+    const uint32_t tri = s.triangle;
+    const uint32_t* corners = &world.indices[3 * static_cast<size_t>(tri)];
+    const uint32_t i0 = corners[0], i1 = corners[1], i2 = corners[2];
+    const Draw& draw = world.draws[world.triangle_draw[tri]];
+    VisiblePoint p;
+    p.object = draw.object;
+    p.style = in.plan.object_style[draw.object];
+    const StyleState& style = in.frame.styles[p.style];
+    p.material = &in.frame.materials[draw.material];
+    const Material& mat = *p.material;
+    const float b0 = s.bary.x, b1 = s.bary.y, b2 = s.bary.z;
+    const auto& wp = in.vertices.world_position;
+
+    p.albedo = style.base_color.value_or(mat.color);
+    if (mat.texture && !style.base_color) {
+        const glm::vec2 texels(mat.texture->width, mat.texture->height);
+        const TextureLookup t = lookup(corner_uvs(world, corners, mat.uv_scale), s, texels);
+        p.albedo *= glm::vec3(mat.texture->sample(t.uv, t.lod));
+    }
+    if (style.model == ShadingModel::flat) {
+        p.normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
+    } else {
+        const auto& wn = in.vertices.world_normal;
+        p.normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
+    }
+    if (s.back_facing) p.normal = -p.normal;
+    p.position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
+    p.receives_shadow = world.receives_shadows[draw.object];
+    p.depth = s.w;
+    if (style.model == ShadingModel::gouraud) {
+        const auto& lit = in.vertices.lit;
+        p.vertex_light.diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
+        p.vertex_light.specular =
+            b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
+    }
+    p.layers.albedo = p.albedo;
+    if (style.wireframe && !world.edge_mask.empty())
+        p.layers.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy),
+                                      style.wire.width * static_cast<float>(in.samples_per_side),
+                                      world.edge_mask[tri]);
+    if (style.hatching)
+        hatch_coordinates(*style.hatching, draw, world, corners, s, x, y, in.samples_per_side,
+                          p.layers);
+    return p;
+}
+
+// Visible points waiting to be shaded, all of one style, at most eight.
+class PendingPoints {
+  public:
+    PendingPoints(const ShadeInputs& in, const ShadingContext& context)
+        : in_(in), context_(context) {}
+
+    void add(const VisiblePoint& p, glm::vec4* target) {
+        if (lanes_.count > 0 && p.style != style_) flush();
+        style_ = p.style;
+        const int i = lanes_.count++;
+        SurfaceBatch& s = lanes_.surface;
+        s.px[i] = p.position.x, s.py[i] = p.position.y, s.pz[i] = p.position.z;
+        s.nx[i] = p.normal.x, s.ny[i] = p.normal.y, s.nz[i] = p.normal.z;
+        s.ambient[i] = p.material->ambient, s.diffuse[i] = p.material->diffuse;
+        s.specular[i] = p.material->specular, s.shininess[i] = p.material->shininess;
+        s.receives_shadow[i] = p.receives_shadow;
+        lanes_.albedo[i] = p.albedo;
+        lanes_.depth[i] = p.depth;
+        lanes_.vertex_light[i] = p.vertex_light;
+        layers_[i] = p.layers;
+        targets_[i] = target;
+        if (lanes_.count == simd::kLanes) flush();
+    }
+
+    void flush() {
+        if (lanes_.count == 0) return;
+        const StyleState& style = in_.frame.styles[style_];
+        ShadedLanes shaded;
+        shade_lanes(style, context_, lanes_, shaded);
+        const bool layers = has_layers(style);
+        for (int i = 0; i < lanes_.count; ++i) {
+            const glm::vec3 c =
+                layers ? apply_layers(style, shaded.color[i], layers_[i], shaded.palette_tone[i])
+                       : shaded.color[i];
+            *targets_[i] = glm::vec4(c, 1.0f);
         }
-        case ShadingModel::gooch: {
-            // Gooch 1998 is the palette blend without ambient or cels.
-            PaletteStyle g = style.palette;
-            g.ambient = 0;
-            g.cels = 0;
-            c = seed_palette(g, k, n_dot_l).color;
-            break;
-        }
-        default:
-            c = toon_diffuse(style.toon, k, n_dot_l) + toon_rim(style.toon, n, v);
-            break;
+        lanes_.count = 0;
     }
-    for (const ShadeLight& light : lights) {
-        if (light.is_ambient) continue;
-        const LightSample l = sample_light(light, position);
-        if (!(l.radiance.x > 0 || l.radiance.y > 0 || l.radiance.z > 0)) continue;
-        LightSample seen = l;
-        seen.radiance *= visibility_of(light);
-        if (style.model == ShadingModel::palette)
-            c += seed_specular(style.palette, k, n, v, seen);
-        else if (style.model == ShadingModel::gooch)
-            c += gooch_highlight(style.gooch, n, v, seen);
-        else
-            c += toon_specular(style.toon, n, v, seen);
-    }
-    return c;
+
+  private:
+    const ShadeInputs& in_;
+    const ShadingContext& context_;
+    uint32_t style_ = 0;
+    SurfaceLanes lanes_;
+    LayerInputs layers_[simd::kLanes];
+    glm::vec4* targets_[simd::kLanes];
+};
+
+void write_gbuffer(OutlineBuffers& g, int x, int y, float depth, const glm::vec3& normal,
+                   uint32_t object) {
+    const size_t at = g.index(x, y);
+    g.depth[at] = depth;
+    g.normal[at] = normal;
+    g.object_id[at] = object;
 }
 
 }  // namespace
 
-void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices& camera,
-                               std::span<const ShadeLight> lights, glm::vec2 depth_range,
-                               FrameImages& out) {
-    const glm::vec4 background = scene_.style.background.value_or(scene_.output.background);
+void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                const ShadeTarget& out) {
     const float infinity = std::numeric_limits<float>::infinity();
-    const bool outlines = outlines_on_;
-    PendingPixels pending;
-
+    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
+    PendingPoints pending(in, context);
     for (int ty = 0; ty < tile.height; ++ty) {
         const int y = tile.y0 + ty;
         glm::vec4* color_row = &out.color.at(tile.x0, y);
@@ -144,184 +178,27 @@ void FrameRenderer::shade_tile(const TileVisibility& tile, const CameraMatrices&
         for (int tx = 0; tx < tile.width; ++tx) {
             const int x = tile.x0 + tx;
             const uint32_t id = tile.id[ty * kTileSize + tx];
-            const size_t outline_at = outlines ? outline_buffers_.index(x, y) : 0;
             if (id == kNoTriangle) {
-                color_row[tx] = background;
+                color_row[tx] = in.frame.background;
                 depth_row[tx] = infinity;
-                if (outlines) {
-                    outline_buffers_.depth[outline_at] = infinity;
-                    outline_buffers_.object_id[outline_at] = kNoObject;
-                }
+                if (out.gbuffer)
+                    write_gbuffer(*out.gbuffer, x, y, infinity, glm::vec3(0), kNoObject);
                 continue;
             }
-            const ShadeSetup& s = rasterizer_.shade_setup(id);
-            // Perspective-correct barycentrics of the source triangle: b/w and
-            // 1/w are affine in screen space, b is not (Heckbert & Moreton 1991).
-            const float fx = (static_cast<float>(x) + 0.5f) - s.x0;
-            const float fy = (static_cast<float>(y) + 0.5f) - s.y0;
-            const float inv_w = s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy;
-            const float w = 1.0f / inv_w;
-            const float b1 = (s.b1_w[0] + s.b1_w[1] * fx + s.b1_w[2] * fy) * w;
-            const float b2 = (s.b2_w[0] + s.b2_w[1] * fx + s.b2_w[2] * fy) * w;
-            const float b0 = 1.0f - b1 - b2;
-            depth_row[tx] = w;  // w_clip is the distance along the viewing axis
-            // Screen-space derivatives of b = (b/w) / (1/w), by the quotient
-            // rule: for texture and stroke levels of detail, and wire widths.
-            const float db1dx = (s.b1_w[1] - b1 * s.inv_w[1]) * w;
-            const float db1dy = (s.b1_w[2] - b1 * s.inv_w[2]) * w;
-            const float db2dx = (s.b2_w[1] - b2 * s.inv_w[1]) * w;
-            const float db2dy = (s.b2_w[2] - b2 * s.inv_w[2]) * w;
-
-            const uint32_t tri = s.source_triangle;
-            const uint32_t i0 = world_.indices[3 * tri], i1 = world_.indices[3 * tri + 1],
-                           i2 = world_.indices[3 * tri + 2];
-            const Draw& draw = world_.draws[world_.triangle_draw[tri]];
-            const Material& mat = materials()[draw.material];
-            const StyleState& style = styles_[object_style_[draw.object]];
-            const ShadingModel model = style.model;
-            const auto& wp = vertices_.world_position;
-
-            auto uv_at = [&](float scale, glm::vec2 size, float& lod) {
-                const auto& uv = world_.uvs;
-                const glm::vec2 uv0 = uv[i0] * scale;
-                const glm::vec2 e1 = uv[i1] * scale - uv0, e2 = uv[i2] * scale - uv0;
-                const glm::vec2 ddx = (e1 * db1dx + e2 * db2dx) * size;
-                const glm::vec2 ddy = (e1 * db1dy + e2 * db2dy) * size;
-                const float texels = std::max(glm::length(ddx), glm::length(ddy));
-                lod = texels > 1.0f ? std::log2(texels) : 0.0f;
-                return uv0 + e1 * b1 + e2 * b2;
-            };
-
-            glm::vec3 albedo = style.base_color.value_or(mat.color);
-            if (mat.texture && !style.base_color) {
-                const auto& uv = world_.uvs;
-                const glm::vec2 uv0 = uv[i0] * mat.uv_scale;
-                const glm::vec2 e1 = uv[i1] * mat.uv_scale - uv0, e2 = uv[i2] * mat.uv_scale - uv0;
-                const glm::vec2 size(mat.texture->width, mat.texture->height);
-                const glm::vec2 ddx = (e1 * db1dx + e2 * db2dx) * size;
-                const glm::vec2 ddy = (e1 * db1dy + e2 * db2dy) * size;
-                const float texels = std::max(glm::length(ddx), glm::length(ddy));
-                const float lod = texels > 1.0f ? std::log2(texels) : 0.0f;
-                albedo *= glm::vec3(mat.texture->sample(uv0 + e1 * b1 + e2 * b2, lod));
+            const SurfaceSample s = reconstruct_surface(raster.shade_setup(id), x, y);
+            const VisiblePoint p = gather_point(s, x, y, in);
+            depth_row[tx] = p.depth;
+            if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, p.depth, p.normal, p.object);
+            const StyleState& style = in.frame.styles[p.style];
+            if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
+                color_row[tx] = glm::vec4(
+                    style.wire_fill + (style.wire.color - style.wire_fill) * p.layers.wire, 1.0f);
+                continue;
             }
-
-            glm::vec3 normal;
-            if (model == ShadingModel::flat) {
-                normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
-            } else {
-                const auto& wn = vertices_.world_normal;
-                normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
-            }
-            if (s.back_facing) normal = -normal;
-            if (outlines) {
-                outline_buffers_.depth[outline_at] = w;
-                outline_buffers_.normal[outline_at] = normal;
-                outline_buffers_.object_id[outline_at] = draw.object;
-            }
-
-            PixelFinish finish;
-            if (style.hatching || style.wireframe) {
-                finish.style = &style;
-                finish.albedo = albedo;
-            }
-            if (style.wireframe && !world_.edge_mask.empty()) {
-                const glm::vec3 bary(b0, b1, b2);
-                const glm::vec3 ddx(-db1dx - db2dx, db1dx, db2dx);
-                const glm::vec3 ddy(-db1dy - db2dy, db1dy, db2dy);
-                finish.wire = wire_coverage(edge_distances(bary, ddx, ddy),
-                                            style.wire.width * static_cast<float>(side_),
-                                            world_.edge_mask[tri]);
-                if (!style.wire_fill_shading) {
-                    color_row[tx] = glm::vec4(
-                        style.wire_fill + (style.wire.color - style.wire_fill) * finish.wire, 1.0f);
-                    continue;
-                }
-            }
-            if (style.hatching) {
-                const HatchingState& h = *style.hatching;
-                const float size = static_cast<float>(h.tam->params.size);
-                if (h.screen_space || !draw.has_uvs) {
-                    const float tile_samples = h.tile_pixels * static_cast<float>(side_);
-                    finish.hatch_uv =
-                        glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f) /
-                        tile_samples;
-                    finish.hatch_lod = std::max(0.0f, std::log2(size / tile_samples));
-                } else {
-                    finish.hatch_uv = uv_at(h.scale, glm::vec2(size), finish.hatch_lod);
-                }
-            }
-
-            switch (model) {
-                case ShadingModel::unlit:
-                    color_row[tx] = glm::vec4(finish_pixel(albedo, finish), 1.0f);
-                    continue;
-                case ShadingModel::depth: {
-                    float t = (depth_range.y - w) / (depth_range.y - depth_range.x);
-                    color_row[tx] =
-                        glm::vec4(glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f))), 1.0f);
-                    continue;
-                }
-                case ShadingModel::gouraud: {
-                    const auto& lit = vertices_.lit;
-                    glm::vec3 diffuse =
-                        b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
-                    glm::vec3 specular =
-                        b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
-                    color_row[tx] =
-                        glm::vec4(finish_pixel(albedo * diffuse + specular, finish), 1.0f);
-                    continue;
-                }
-                case ShadingModel::normal: {
-                    float len = glm::length(normal);
-                    glm::vec3 n = (len > 0 ? normal / len : glm::vec3(0, 1, 0)) * 0.5f + 0.5f;
-                    // Shown as the stored bytes, so undo the sRGB encoding to come.
-                    color_row[tx] = {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z),
-                                     1.0f};
-                    continue;
-                }
-                case ShadingModel::palette:
-                case ShadingModel::gooch:
-                case ShadingModel::toon: {
-                    const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
-                    const glm::vec3 n = normalise_or(normal, glm::vec3(0, 1, 0));
-                    const glm::vec3 v = normalise_or(camera.position - position, n);
-                    float palette_tone = -1;
-                    const glm::vec3 c =
-                        shade_stylised(style, albedo, position, n, v, lights,
-                                       world_.receives_shadows[draw.object] > 0, palette_tone);
-                    color_row[tx] = glm::vec4(finish_pixel(c, finish, palette_tone), 1.0f);
-                    continue;
-                }
-                default:
-                    break;
-            }
-            // flat, phong and blinn_phong: lit eight pixels at a time.
-            const Highlight highlight =
-                model == ShadingModel::phong ? Highlight::phong : Highlight::blinn;
-            if (pending.count > 0 && pending.highlight != highlight)
-                flush(pending, camera.position, lights);
-            pending.highlight = highlight;
-            const glm::vec3 position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
-            const int lane = pending.count++;
-            SurfaceBatch& sb = pending.surface;
-            sb.px[lane] = position.x;
-            sb.py[lane] = position.y;
-            sb.pz[lane] = position.z;
-            sb.nx[lane] = normal.x;
-            sb.ny[lane] = normal.y;
-            sb.nz[lane] = normal.z;
-            sb.ambient[lane] = mat.ambient;
-            sb.diffuse[lane] = mat.diffuse;
-            sb.specular[lane] = mat.specular;
-            sb.shininess[lane] = mat.shininess;
-            sb.receives_shadow[lane] = world_.receives_shadows[draw.object];
-            pending.albedo[lane] = albedo;
-            pending.finish[lane] = finish;
-            pending.target[lane] = &color_row[tx];
-            if (pending.count == simd::kLanes) flush(pending, camera.position, lights);
+            pending.add(p, &color_row[tx]);
         }
     }
-    flush(pending, camera.position, lights);
+    pending.flush();
 }
 
 }  // namespace facet

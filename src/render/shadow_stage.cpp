@@ -12,7 +12,7 @@
 namespace facet {
 namespace {
 
-constexpr size_t kVerticesPerChunk = 16384;
+constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thread count
 // Spots wider than this (half-angle, degrees) get a cube map: one
 // perspective map would spread its texels too thin near the edge.
 constexpr float kMaxPerspectiveSpotAngle = 60.0f;
@@ -98,10 +98,7 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
 
     const size_t count = positions.size();
     clip_.resize(count);
-    const size_t chunks = (count + kVerticesPerChunk - 1) / kVerticesPerChunk;
-    pool.parallel_for(chunks, [&](size_t chunk) {
-        const size_t first = chunk * kVerticesPerChunk;
-        const size_t last = std::min(first + kVerticesPerChunk, count);
+    pool.parallel_for_chunks(count, kVerticesPerChunk, [&](size_t first, size_t last) {
         for (size_t v = first; v < last; ++v) {
             const uint32_t draw = world_.vertex_draw[v];
             if (!world_.casts_shadows[world_.draws[draw].object]) continue;
@@ -133,40 +130,32 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
     });
 }
 
-void ShadowStage::render(const FrameState& state, std::span<const glm::vec3> positions,
-                         ThreadPool& pool) {
-    if (light_data_.empty()) return;
-    // The casters' bounding sphere: what the maps must hold. Animated
-    // meshes are measured in this frame's pose, which can leave their rest
-    // bounds.
-    bounds_ = world_.object_bounds;
-    for (const AnimatedMesh& a : world_.animated_meshes) {
-        Bounds posed;
-        for (size_t part = 0; part < a.mesh->parts.size(); ++part) {
-            const Draw& d = world_.draws[a.first_draw + part];
-            for (uint32_t v = d.first_vertex; v < d.first_vertex + d.vertex_count; ++v)
-                posed.add(positions[v]);
-        }
-        bounds_[a.object] = posed;
-    }
+std::span<const ShadowMap* const> ShadowStage::render(const FrameState& state,
+                                                      const PosedVertices& posed,
+                                                      ThreadPool& pool) {
+    if (light_data_.empty()) return light_maps_;
+    // The casters' bounding sphere: what the maps must hold, in this pose.
+    const std::span<const Bounds> object_bounds = posed.object_bounds;
     std::vector<Sphere> spheres;
-    std::vector<uint8_t> seen(bounds_.size(), 0);
+    std::vector<uint8_t> seen(object_bounds.size(), 0);
     for (const Draw& d : world_.draws) {
-        if (!world_.casts_shadows[d.object] || seen[d.object] || bounds_[d.object].empty())
+        if (!world_.casts_shadows[d.object] || seen[d.object] || object_bounds[d.object].empty())
             continue;
         seen[d.object] = 1;
         spheres.push_back(
-            transformed_box_sphere(bounds_[d.object], state.objects[d.object].transform));
+            transformed_box_sphere(object_bounds[d.object], state.objects[d.object].transform));
     }
     const bool casters = !spheres.empty() && !caster_indices_.empty();
-    const Sphere bounds = enclosing_sphere(spheres);
+    const Sphere casters_sphere = enclosing_sphere(spheres);
     for (LightMap& lm : light_data_) {
         light_maps_[lm.light] = nullptr;
         if (!casters) continue;
-        fit(lm, state.lights[lm.light], bounds);
-        for (int face = 0; face < lm.map.faces; ++face) draw_face(lm, face, state, positions, pool);
+        fit(lm, state.lights[lm.light], casters_sphere);
+        for (int face = 0; face < lm.map.faces; ++face)
+            draw_face(lm, face, state, posed.positions, pool);
         light_maps_[lm.light] = &lm.map;
     }
+    return light_maps_;
 }
 
 }  // namespace facet

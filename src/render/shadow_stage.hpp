@@ -13,6 +13,7 @@
 #include "anim/frame_state.hpp"
 #include "core/thread_pool.hpp"
 #include "raster/rasterizer.hpp"
+#include "render/pose_stage.hpp"
 #include "render/world.hpp"
 #include "shade/shadow_map.hpp"
 
@@ -22,15 +23,13 @@ class ShadowStage {
   public:
     ShadowStage(const SceneDesc& scene, const World& world);
 
-    // Renders this frame's maps from the model-space positions of all world
-    // vertices (World::positions, or this frame's pose of animated meshes).
-    // The result depends on the frame alone, not on the thread count: the
-    // raster core's tiles each write their own texels.
-    void render(const FrameState& state, std::span<const glm::vec3> positions, ThreadPool& pool);
-
-    // Per scene light: its map for the last rendered frame, or null when it
-    // casts no shadows (off, an ambient light, or nothing in the scene casts).
-    std::span<const ShadowMap* const> maps() const { return light_maps_; }
+    // Renders this frame's maps from the frame's pose and returns, per
+    // scene light, its map or null when it casts no shadows (off, an ambient
+    // light, or nothing in the scene casts); valid until the next call. The
+    // result depends on the frame alone, not on the thread count: the raster
+    // core's tiles each write their own texels.
+    std::span<const ShadowMap* const> render(const FrameState& state, const PosedVertices& posed,
+                                             ThreadPool& pool);
 
   private:
     struct LightMap {
@@ -46,7 +45,6 @@ class ShadowStage {
     std::vector<uint32_t> caster_indices_;  // triangles of the objects that cast shadows
     std::vector<glm::vec4> clip_;           // per world vertex; only casters' are written
     std::vector<glm::mat4> draw_clip_;      // per draw: model -> the face's clip space
-    std::vector<Bounds> bounds_;            // per scene object, model space, this frame
     std::vector<LightMap> light_data_;      // never resized after construction: lights point in
     std::vector<const ShadowMap*> light_maps_;
 };

@@ -1,5 +1,5 @@
 #pragma once
-// The thread study of seed 004: the same frames rendered at several thread
+// The thread study of seed 004 (docs/references.md): the same frames rendered at several thread
 // counts, time per frame and speed-up against one thread (`facet bench`).
 #include <functional>
 #include <string>

@@ -1,32 +1,31 @@
-// Vertex stage: model -> world -> clip space for every vertex of the frame,
-// in parallel over fixed chunks (each vertex's result depends only on itself).
+#include "render/vertex_stage.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
-#include "render/frame_renderer.hpp"
 #include "shade/lighting_batch.hpp"
 
 namespace facet {
 namespace {
-constexpr size_t kVerticesPerChunk = 16384;
+constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thread count
 }
 
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
 // batch lighting as per-pixel shading.
-void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& eye,
-                                   std::span<const ShadeLight> lights) {
+void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
+                        std::span<const ShadeLight> lights) {
     for (size_t start = first; start < last; start += simd::kLanes) {
         const int count = static_cast<int>(std::min<size_t>(simd::kLanes, last - start));
         SurfaceBatch s;
         for (int i = 0; i < count; ++i) {
             const size_t v = start + i;
-            const glm::vec3& p = vertices_.world_position[v];
-            const glm::vec3& n = vertices_.world_normal[v];
+            const glm::vec3& p = out_.world_position[v];
+            const glm::vec3& n = out_.world_normal[v];
             const Draw& draw = world_.draws[world_.vertex_draw[v]];
-            const Material& m = materials()[draw.material];
+            const Material& m = frame.materials[draw.material];
             s.px[i] = p.x, s.py[i] = p.y, s.pz[i] = p.z;
             s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
             s.ambient[i] = m.ambient, s.diffuse[i] = m.diffuse;
@@ -34,23 +33,22 @@ void FrameRenderer::light_vertices(size_t first, size_t last, const glm::vec3& e
             s.receives_shadow[i] = world_.receives_shadows[draw.object];
         }
         pad_batch(s, count);
-        const LightingBatch l = light_surface_batch(s, eye, lights, Highlight::blinn);
+        const LightingBatch l =
+            light_surface_batch(s, frame.camera.position, lights, Highlight::blinn);
         for (int i = 0; i < count; ++i)
-            vertices_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
+            out_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
     }
 }
 
-void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& camera,
-                                 std::span<const ShadeLight> lights) {
-    const size_t count = world_.positions.size();
-    vertices_.clip.resize(count);
-    vertices_.world_position.resize(count);
-    vertices_.world_normal.resize(count);
-    const bool gouraud = any_gouraud_;
-    vertices_.lit.resize(gouraud ? count : 0);
-    const bool posed = world_.deforms();  // posed by render() already
-    const std::vector<glm::vec3>& positions = posed ? posed_positions_ : world_.positions;
-    const std::vector<glm::vec3>& normals = posed ? posed_normals_ : world_.normals;
+const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
+                                                  const PosedVertices& posed,
+                                                  std::span<const ShadeLight> lights,
+                                                  bool light_vertices, ThreadPool& pool) {
+    const size_t count = posed.positions.size();
+    out_.clip.resize(count);
+    out_.world_position.resize(count);
+    out_.world_normal.resize(count);
+    out_.lit.resize(light_vertices ? count : 0);
 
     struct DrawTransform {
         glm::mat4 model;
@@ -58,26 +56,23 @@ void FrameRenderer::vertex_stage(const FrameState& state, const CameraMatrices& 
     };
     std::vector<DrawTransform> transforms;
     for (const Draw& d : world_.draws) {
-        const glm::mat4& m = state.objects[d.object].transform;
+        const glm::mat4& m = frame.state.objects[d.object].transform;
         transforms.push_back({m, glm::transpose(glm::inverse(glm::mat3(m)))});
     }
-
-    const size_t chunks = (count + kVerticesPerChunk - 1) / kVerticesPerChunk;
-    pool_.parallel_for(chunks, [&](size_t chunk) {
-        const size_t first = chunk * kVerticesPerChunk;
-        const size_t last = std::min(first + kVerticesPerChunk, count);
+    const glm::mat4& view_projection = frame.camera.view_projection;
+    pool.parallel_for_chunks(count, kVerticesPerChunk, [&](size_t first, size_t last) {
         for (size_t v = first; v < last; ++v) {
-            const uint32_t draw = world_.vertex_draw[v];
-            const DrawTransform& t = transforms[draw];
-            glm::vec4 world = t.model * glm::vec4(positions[v], 1.0f);
-            vertices_.world_position[v] = glm::vec3(world);
-            vertices_.clip[v] = camera.view_projection * world;
-            glm::vec3 n = t.normal * normals[v];
-            float len = glm::length(n);
-            vertices_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
+            const DrawTransform& t = transforms[world_.vertex_draw[v]];
+            const glm::vec4 world = t.model * glm::vec4(posed.positions[v], 1.0f);
+            out_.world_position[v] = glm::vec3(world);
+            out_.clip[v] = view_projection * world;
+            const glm::vec3 n = t.normal * posed.normals[v];
+            const float len = glm::length(n);
+            out_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
         }
-        if (gouraud) light_vertices(first, last, camera.position, lights);
+        if (light_vertices) light(first, last, frame, lights);
     });
+    return out_;
 }
 
 }  // namespace facet

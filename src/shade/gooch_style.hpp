@@ -15,38 +15,28 @@
 // assumes one light; see shade/palette_style.hpp for why the first and not
 // a sum); every light adds its own highlight, scaled by its radiance.
 //
-// Per pixel (n, v unit; lights from sample_light):
-//   glm::vec3 c = gooch_diffuse(style, kd, dot3(n, lights[0].to_light));
+// Per pixel (n, v unit; lights from sample_light; `palette` has ambient 0
+// and cels 0):
+//   glm::vec3 c = seed_palette(palette, kd, dot3(n, lights[0].to_light)).color;
 //   for (const LightSample& l : lights) c += gooch_highlight(style, n, v, l);
+#include <span>
+
 #include <glm/vec3.hpp>
 
 #include "shade/light_sample.hpp"
+#include "shade/palette_style.hpp"
 #include "shade/style_math.hpp"
+#include "shade/stylised_light.hpp"
 
 namespace facet {
 
+// The diffuse blend is the palette model's (shade/palette_style.hpp,
+// seed_palette) with the paper's colours (k_blue = shadow colour, k_yellow =
+// lit colour), no ambient term and no cels; this file adds the highlight.
 struct GoochStyle {
-    float blue = 0.4f;                // b, the paper's value
-    float yellow = 0.4f;              // y, the paper's value
-    float alpha = 0.2f;               // the paper's value
-    float beta = 0.6f;                // the paper's value
     glm::vec3 highlight_color{1.0f};  // the paper's highlights are white
     float shininess = 32.0f;          // not given in the paper
 };
-
-inline glm::vec3 gooch_cool(const GoochStyle& style, const glm::vec3& kd) {
-    return glm::vec3(0.0f, 0.0f, style.blue) + style.alpha * kd;
-}
-
-inline glm::vec3 gooch_warm(const GoochStyle& style, const glm::vec3& kd) {
-    return glm::vec3(style.yellow, style.yellow, 0.0f) + style.beta * kd;
-}
-
-// The cool-to-warm blend; `n_dot_l` is the key light's cosine, any sign.
-inline glm::vec3 gooch_diffuse(const GoochStyle& style, const glm::vec3& kd, float n_dot_l) {
-    const float t = (1.0f + std::clamp(n_dot_l, -1.0f, 1.0f)) * 0.5f;
-    return t * gooch_warm(style, kd) + (1.0f - t) * gooch_cool(style, kd);
-}
 
 // Phong's highlight (r·v)^s with r = 2(n·l)n − l, only where n·l > 0.
 inline glm::vec3 gooch_highlight(const GoochStyle& style, const glm::vec3& n, const glm::vec3& v,
@@ -56,6 +46,23 @@ inline glm::vec3 gooch_highlight(const GoochStyle& style, const glm::vec3& n, co
     const glm::vec3 r = (2.0f * n_dot_l) * n - light.to_light;
     const float power = pow_unit(dot3(r, v), style.shininess);
     return power * (style.highlight_color * light.radiance);
+}
+
+// The whole Gooch model at one point (n, v unit; kd the object colour):
+// the palette blend of `palette`'s two colours without ambient or cels,
+// then every light's highlight.
+inline glm::vec3 shade_gooch(const GoochStyle& style, const PaletteStyle& palette,
+                             const glm::vec3& kd, const glm::vec3& position, const glm::vec3& n,
+                             const glm::vec3& v, std::span<const ShadeLight> lights,
+                             bool receives_shadows) {
+    PaletteStyle blend = palette;
+    blend.ambient = 0;
+    blend.cels = 0;
+    glm::vec3 c =
+        seed_palette(blend, kd, key_light_cosine(lights, position, n, receives_shadows)).color;
+    add_highlights(c, lights, position, n, receives_shadows,
+                   [&](const LightSample& l) { return gooch_highlight(style, n, v, l); });
+    return c;
 }
 
 }  // namespace facet

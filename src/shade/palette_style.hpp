@@ -1,14 +1,13 @@
 #pragma once
-// The seed-000 stylisation method (shared/seeds/000, section 3.2.4 and the
-// appendix's draw_pixel; shared/design.md §5): Gooch's cool-to-warm blend
-// with two free palette colours, colour quantised to N cels that keep their
-// hue, hatching in the dark cels, and a highlight added last.
+// The seed-000 stylisation method (docs/references.md, seed 000 §3.2.4 and
+// its appendix's draw_pixel): Gooch's cool-to-warm blend with two free
+// palette colours, colour quantised to N cels, hatching in the dark cels,
+// and a highlight added last.
 //
-// Where the seed's listing and its text disagree, facet follows the text and
-// design.md §5, and says so below:
+// Where facet departs from the seed's text or listing, and why:
 //  - |c| is the Euclidean length of the RGB vector (the listing's
 //    vec3_length), so white (1,1,1) has |c| = sqrt(3).
-//  - q = round(L·N)/N and c' = c·q/L (design.md). The listing truncates
+//  - q = round(L·N)/N and c' = c·q/L (the seed: c·q). The listing truncates
 //    (an int cast) and multiplies by q without dividing by L, which scales
 //    the colour by roughly L twice; dividing keeps |c'| = q exactly.
 //  - The listing weights the shadow colour by (1 + n·l)/2, as Gooch 1998
@@ -36,11 +35,13 @@
 //   glm::vec3 c = apply_hatching(p.color, palette_ink(style, k), coverage);
 //   for (const LightSample& l : lights) c += seed_specular(style, k, n, v, l);
 #include <cmath>
+#include <span>
 
 #include <glm/vec3.hpp>
 
 #include "shade/light_sample.hpp"
 #include "shade/style_math.hpp"
+#include "shade/stylised_light.hpp"
 
 namespace facet {
 
@@ -118,6 +119,22 @@ inline glm::vec3 seed_specular(const PaletteStyle& style, const glm::vec3& k, co
     const glm::vec3 h = normalise_or(light.to_light + v, n);
     const float power = pow_unit(dot3(n, h), style.shininess);
     return (style.specular * power) * (k * light.radiance);
+}
+
+// The whole palette model at one point (n, v unit; k the object colour):
+// the palette term from the key light, then every light's highlight.
+// `tone` gets the cel's tone, for hatching.
+inline glm::vec3 shade_palette(const PaletteStyle& style, const glm::vec3& k,
+                               const glm::vec3& position, const glm::vec3& n, const glm::vec3& v,
+                               std::span<const ShadeLight> lights, bool receives_shadows,
+                               float& tone) {
+    const PaletteShading p =
+        seed_palette(style, k, key_light_cosine(lights, position, n, receives_shadows));
+    tone = p.tone;
+    glm::vec3 c = p.color;
+    add_highlights(c, lights, position, n, receives_shadows,
+                   [&](const LightSample& l) { return seed_specular(style, k, n, v, l); });
+    return c;
 }
 
 }  // namespace facet

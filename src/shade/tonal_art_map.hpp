@@ -67,6 +67,8 @@ struct TamParams {
 
     // A pencil look: lighter, softer, thinner strokes on grainy paper.
     static TamParams pencil();
+
+    bool operator==(const TamParams&) const = default;
 };
 
 struct TamImage {

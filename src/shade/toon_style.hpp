@@ -5,7 +5,7 @@
 // list of thresholds or a colour ramp; a hard-edged highlight; and a rim
 // light on the parts that turn away from the viewer. Band edges can be
 // softened with a smoothstep so they do not alias into stairs. The seed-000
-// survey (section 1.5.2) describes the two-colour case with one threshold.
+// survey (docs/references.md, §1.5.2) describes the two-colour case with one threshold.
 //
 // Thresholds and ramp positions are in n·l units, [−1, 1], so a band can
 // start on the shadowed side. The band values replace the light: the key
@@ -24,6 +24,7 @@
 
 #include "shade/light_sample.hpp"
 #include "shade/style_math.hpp"
+#include "shade/stylised_light.hpp"
 
 namespace facet {
 
@@ -103,6 +104,18 @@ inline glm::vec3 toon_rim(const ToonStyle& style, const glm::vec3& n, const glm:
     const float facing = saturate(dot3(n, v));
     const float rim = pow_unit(1.0f - facing, style.rim_power);
     return band_edge(rim, style.rim_threshold, style.rim_softness) * style.rim_color;
+}
+
+// The whole toon model at one point (n, v unit): bands from the key light,
+// the rim light, then every light's highlight.
+inline glm::vec3 shade_toon(const ToonStyle& style, const glm::vec3& albedo,
+                            const glm::vec3& position, const glm::vec3& n, const glm::vec3& v,
+                            std::span<const ShadeLight> lights, bool receives_shadows) {
+    const float n_dot_l = key_light_cosine(lights, position, n, receives_shadows);
+    glm::vec3 c = toon_diffuse(style, albedo, n_dot_l) + toon_rim(style, n, v);
+    add_highlights(c, lights, position, n, receives_shadows,
+                   [&](const LightSample& l) { return toon_specular(style, n, v, l); });
+    return c;
 }
 
 }  // namespace facet

@@ -4,7 +4,8 @@
 // Rendering": each pixel knows its distance in pixels to the three edges of
 // the triangle it shows, and is covered where the nearest edge is within
 // half the line width. No second pass, no depth offset, no z-fighting
-// (seed 001's wireframe display mode, seed 004's Bresenham lines).
+// (seed 001's wireframe display mode; seed 004 draws Bresenham lines,
+// which these anti-aliased lines replace: docs/references.md).
 //
 // The coverage ramp is clamp(w/2 + 0.5 − d, 0, 1), a pixel-wide box
 // filter, the same as post/outlines.hpp, so lines of both agree in width.

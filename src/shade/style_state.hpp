@@ -1,17 +1,13 @@
 #pragma once
-// A style evaluated at one frame: its keyed values resolved and turned into
-// the parameter records of the shading models in shade/ and post/.
-#include <map>
-#include <memory>
+// A style at one frame, as the shading models take it: the parameters of
+// each model and layer, keyed values already evaluated (render/style_eval.hpp
+// builds it from a scene's StyleDesc).
 #include <optional>
-#include <tuple>
-#include <vector>
 
-#include "anim/track.hpp"
-#include "post/outlines.hpp"
+#include <glm/vec3.hpp>
+
 #include "scene/style_desc.hpp"
 #include "shade/gooch_style.hpp"
-#include "shade/lighting.hpp"
 #include "shade/palette_style.hpp"
 #include "shade/tonal_art_map.hpp"
 #include "shade/toon_style.hpp"
@@ -43,24 +39,5 @@ struct StyleState {
     glm::vec3 wire_hidden_color{0.6f};
     glm::vec3 wire_fill{1};
 };
-
-// Tonal art maps take a fraction of a second to generate, so each distinct
-// set of parameters is generated once per run.
-class TamCache {
-  public:
-    const TonalArtMap& get(const TamParams& params);
-
-  private:
-    std::map<std::vector<float>, std::unique_ptr<TonalArtMap>> maps_;
-};
-
-TamParams tam_params(const HatchingDesc& hatching);
-
-StyleState evaluate_style(const StyleDesc& style, const FrameTime& at, TamCache& tams);
-
-// The outline settings of the scene's style at this frame, widths in
-// pixels of the image they are drawn on (`pixel_scale` samples per pixel side).
-OutlineStyle evaluate_outlines(const OutlinesDesc& outlines, const FrameTime& at,
-                               float pixel_scale);
 
 }  // namespace facet

@@ -1,23 +1,14 @@
-#include "render/style_state.hpp"
+#include "render/style_eval.hpp"
 
 #include <cmath>
 
 namespace facet {
 
-const TonalArtMap& TamCache::get(const TamParams& p) {
-    const std::vector<float> key = {static_cast<float>(p.levels),
-                                    static_cast<float>(p.size),
-                                    static_cast<float>(p.seed),
-                                    p.max_darkness,
-                                    p.stroke_width,
-                                    p.hatch_angle,
-                                    p.grain,
-                                    p.paper_shading,
-                                    p.pressure_min,
-                                    p.pressure_max};
-    auto& slot = maps_[key];
-    if (!slot) slot = std::make_unique<TonalArtMap>(generate_tonal_art_map(p));
-    return *slot;
+const TonalArtMap& TamCache::get(const TamParams& params) {
+    for (const auto& map : maps_)
+        if (map->params == params) return *map;
+    maps_.push_back(std::make_unique<TonalArtMap>(generate_tonal_art_map(params)));
+    return *maps_.back();
 }
 
 TamParams tam_params(const HatchingDesc& h) {
@@ -47,8 +38,6 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
     p.specular = evaluate(d.specular, at);
     p.shininess = evaluate(d.shininess, at);
 
-    s.gooch.alpha = p.alpha;
-    s.gooch.beta = p.beta;
     s.gooch.shininess = p.shininess;
     s.gooch.highlight_color = glm::vec3(p.specular);
 

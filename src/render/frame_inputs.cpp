@@ -1,0 +1,91 @@
+#include "render/frame_inputs.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+namespace facet {
+namespace {
+
+// The world's materials with this frame's animated values applied.
+std::vector<Material> frame_materials(const World& world, const FrameState& state) {
+    std::vector<Material> materials = world.materials;
+    for (size_t m = 0; m < materials.size(); ++m) {
+        const MaterialState& s = state.objects[world.material_object[m]].material;
+        Material& mat = materials[m];
+        if (s.color) mat.color = *s.color;
+        if (s.ambient) mat.ambient = *s.ambient;
+        if (s.diffuse) mat.diffuse = *s.diffuse;
+        if (s.specular) mat.specular = *s.specular;
+        if (s.shininess) mat.shininess = *s.shininess;
+    }
+    return materials;
+}
+
+}  // namespace
+
+StylePlan plan_styles(const SceneDesc& scene) {
+    StylePlan plan;
+    plan.styles.push_back(&scene.style);
+    for (const ObjectDesc& obj : scene.objects) {
+        plan.object_style.push_back(obj.style ? static_cast<uint32_t>(plan.styles.size()) : 0);
+        if (obj.style) plan.styles.push_back(&*obj.style);
+    }
+    for (const StyleDesc* style : plan.styles) {
+        plan.any_gouraud = plan.any_gouraud || style->shading == ShadingModel::gouraud;
+        plan.hidden_edges =
+            plan.hidden_edges || (style->wireframe.enabled && style->wireframe.hidden);
+    }
+    plan.outlines = scene.style.outlines.any();
+    return plan;
+}
+
+glm::vec2 fit_depth_view_range(const World& world, const FrameState& state,
+                               const CameraMatrices& camera) {
+    // Fit the bounding sphere of everything visible; for an orbiting camera
+    // it stays constant, so animations do not flicker.
+    Bounds all;
+    for (const Draw& d : world.draws) {
+        const Bounds& b = world.object_bounds[d.object];
+        const glm::mat4& m = state.objects[d.object].transform;
+        for (int corner = 0; corner < 8; ++corner) {
+            glm::vec3 p((corner & 1) ? b.max.x : b.min.x, (corner & 2) ? b.max.y : b.min.y,
+                        (corner & 4) ? b.max.z : b.min.z);
+            all.add(glm::vec3(m * glm::vec4(p, 1.0f)));
+        }
+    }
+    if (all.empty()) return {camera.near, camera.far};
+    glm::vec3 centre = (all.min + all.max) * 0.5f;
+    float radius = glm::length(all.max - centre);
+    float d = glm::dot(centre - camera.position, camera.forward);
+    float near = std::max(camera.near, d - radius);
+    float far = std::max(near + 1e-3f, d + radius);
+    return {near, far};
+}
+
+FrameEvaluator::FrameEvaluator(const SceneDesc& scene, const World& world, int samples_per_side)
+    : scene_(scene),
+      world_(world),
+      samples_per_side_(samples_per_side),
+      plan_(plan_styles(scene)) {}
+
+FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
+    FrameInputs in;
+    in.state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index);
+    const FrameTime at{static_cast<double>(in.state.frame), in.state.time};
+    const float aspect =
+        static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
+    in.camera = make_camera(in.state.camera, aspect);
+    in.materials = frame_materials(world_, in.state);
+    for (const StyleDesc* style : plan_.styles)
+        in.styles.push_back(evaluate_style(*style, at, tams_));
+    if (plan_.outlines)
+        in.outlines =
+            evaluate_outlines(scene_.style.outlines, at, static_cast<float>(samples_per_side_));
+    in.background = scene_.style.background.value_or(scene_.output.background);
+    in.depth_view_range = fit_depth_view_range(world_, in.state, in.camera);
+    in.style_depth_range = scene_.style.depth_range.value_or(in.depth_view_range);
+    return in;
+}
+
+}  // namespace facet

@@ -1,0 +1,70 @@
+#pragma once
+// Stage 1 of a frame: evaluate everything the frame's stages read that the
+// scene keys or animates (anim/frame_state.hpp for objects, camera and
+// lights; materials, styles and outlines here), into one plain record.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec4.hpp>
+
+#include "anim/frame_state.hpp"
+#include "post/outlines.hpp"
+#include "render/camera.hpp"
+#include "render/style_eval.hpp"
+#include "render/world.hpp"
+#include "shade/style_state.hpp"
+
+namespace facet {
+
+// Which style shades which object, fixed for a run: [0] is the scene's
+// style, then one per object with a `style:` of its own.
+struct StylePlan {
+    std::vector<const StyleDesc*> styles;
+    std::vector<uint32_t> object_style;  // per scene object, index into styles
+    bool any_gouraud = false;            // some style lights vertices
+    bool hidden_edges = false;           // some style draws hidden wireframe edges
+    bool outlines = false;               // the scene's style draws outlines
+};
+
+StylePlan plan_styles(const SceneDesc& scene);
+
+struct FrameInputs {
+    FrameState state;  // objects, camera and lights at this frame
+    CameraMatrices camera;
+    std::vector<Material> materials;  // the world's, with this frame's animated values
+    std::vector<StyleState> styles;   // StylePlan::styles at this frame
+    OutlineStyle outlines;            // when StylePlan::outlines; widths in sample pixels
+    glm::vec4 background;             // linear RGBA behind everything
+    // Near..far of the visible scene's bounding sphere, for grey depth
+    // views (the depth PNG, unless output.depth_range is set).
+    glm::vec2 depth_view_range;
+    // What the `depth` shading model maps to white..black: the style's
+    // depth_range, else depth_view_range.
+    glm::vec2 style_depth_range;
+};
+
+// Evaluates frames of one scene. Keeps what is expensive to make and the
+// same across frames (tonal art maps), so evaluate() is not const.
+class FrameEvaluator {
+  public:
+    // `samples_per_side` scales outline widths to the sample grid.
+    FrameEvaluator(const SceneDesc& scene, const World& world, int samples_per_side);
+
+    const StylePlan& plan() const { return plan_; }
+
+    FrameInputs evaluate(int frame, size_t camera_index);
+
+  private:
+    const SceneDesc& scene_;
+    const World& world_;
+    int samples_per_side_;
+    StylePlan plan_;
+    TamCache tams_;
+};
+
+// The depth range that fits the visible scene's bounding sphere.
+glm::vec2 fit_depth_view_range(const World& world, const FrameState& state,
+                               const CameraMatrices& camera);
+
+}  // namespace facet

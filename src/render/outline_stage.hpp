@@ -1,0 +1,25 @@
+#pragma once
+// Stage 9 of a frame: outlines (post/outlines.hpp) from the G-buffer the
+// shading stage filled, drawn over the colour at the sample resolution so
+// that the resolve anti-aliases them like the surfaces.
+#include "core/image.hpp"
+#include "core/thread_pool.hpp"
+#include "post/outlines.hpp"
+
+namespace facet {
+
+class OutlineStage {
+  public:
+    // The G-buffer for this frame's shading, `width` x `height` samples.
+    OutlineBuffers& gbuffer(int width, int height);
+
+    // Lines from the G-buffer over `color` (the same size).
+    void draw(const OutlineStyle& style, ColorImage& color, ThreadPool& pool);
+
+  private:
+    OutlineBuffers buffers_;
+    OutlineScratch scratch_;
+    ColorImage lines_;
+};
+
+}  // namespace facet

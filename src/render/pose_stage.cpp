@@ -1,0 +1,59 @@
+#include "render/pose_stage.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anim/cloth_scene.hpp"
+
+namespace facet {
+
+PoseStage::PoseStage(const SceneDesc& scene, const World& world) : scene_(scene), world_(world) {
+    const int first = scene.output.frames.front();
+    const double fps = scene.output.fps;
+    for (const ClothObject& c : world.cloths) {
+        const ObjectDesc& obj = scene.objects[c.object];
+        auto wind_at = [&obj, first, fps](int frame) { return cloth_wind(obj, frame, first, fps); };
+        cloths_.push_back(std::make_unique<ClothSimulation>(c.model, wind_at));
+    }
+}
+
+void PoseStage::write_part(uint32_t draw, std::span<const glm::vec3> positions,
+                           std::span<const glm::vec3> normals) {
+    const Draw& d = world_.draws[draw];
+    std::copy(positions.begin(), positions.end(), positions_.begin() + d.first_vertex);
+    std::copy(normals.begin(), normals.end(), normals_.begin() + d.first_vertex);
+}
+
+PosedVertices PoseStage::pose(const FrameState& state) {
+    if (!world_.deforms()) return {world_.positions, world_.normals, world_.object_bounds};
+    if (positions_.empty()) {
+        positions_ = world_.positions;
+        normals_ = world_.normals;
+    }
+    bounds_ = world_.object_bounds;
+    for (const AnimatedMesh& a : world_.animated_meshes) {
+        double seconds = state.objects[a.object].animation_seconds;
+        if (a.loop && a.duration > 0) {
+            seconds = std::fmod(seconds, a.duration);
+            if (seconds < 0) seconds += a.duration;
+        }
+        pose_mesh(*a.mesh, a.animation, seconds, scratch_);
+        Bounds posed;
+        for (size_t part = 0; part < scratch_.size(); ++part) {
+            write_part(a.first_draw + static_cast<uint32_t>(part), scratch_[part].positions,
+                       scratch_[part].normals);
+            for (const glm::vec3& p : scratch_[part].positions) posed.add(p);
+        }
+        bounds_[a.object] = posed;
+    }
+    // Cloth frames count from the scene's first frame; the simulation runs
+    // from there in fixed steps whatever frames are rendered.
+    const int frame = std::max(0, state.frame - scene_.output.frames.front());
+    for (size_t i = 0; i < world_.cloths.size(); ++i) {
+        const ClothFrame cloth = cloths_[i]->state_at(frame);
+        write_part(world_.cloths[i].draw, cloth.positions, cloth.normals);
+    }
+    return {positions_, normals_, bounds_};
+}
+
+}  // namespace facet

@@ -1,0 +1,45 @@
+#pragma once
+// Stage 5 of a frame: every vertex from model space to world and clip space,
+// in parallel over fixed chunks (each vertex's result depends only on
+// itself); Gouraud styles also light each vertex here.
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/thread_pool.hpp"
+#include "render/frame_inputs.hpp"
+#include "render/pose_stage.hpp"
+#include "render/world.hpp"
+#include "shade/lighting.hpp"
+
+namespace facet {
+
+// Per-vertex results, in World's vertex order.
+struct TransformedVertices {
+    std::vector<glm::vec4> clip;
+    std::vector<glm::vec3> world_position;
+    std::vector<glm::vec3> world_normal;  // unit, +Y for a zero normal
+    std::vector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
+};
+
+class VertexStage {
+  public:
+    explicit VertexStage(const World& world) : world_(world) {}
+
+    // Valid until the next call. `light_vertices`: fill `lit` (Blinn-Phong
+    // with the frame's materials and lights).
+    const TransformedVertices& transform(const FrameInputs& frame, const PosedVertices& posed,
+                                         std::span<const ShadeLight> lights, bool light_vertices,
+                                         ThreadPool& pool);
+
+  private:
+    void light(size_t first, size_t last, const FrameInputs& frame,
+               std::span<const ShadeLight> lights);
+
+    const World& world_;
+    TransformedVertices out_;
+};
+
+}  // namespace facet

@@ -1,0 +1,33 @@
+#include "shade/layers.hpp"
+
+#include <algorithm>
+
+namespace facet {
+namespace {
+
+float luminance(const glm::vec3& c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;  // Rec. 709, linear
+}
+
+}  // namespace
+
+glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
+                       float palette_tone) {
+    if (style.hatching) {
+        const HatchingState& h = *style.hatching;
+        // The palette model hatches its own dark cels (seed 000); other
+        // models hatch by how much light the surface gets, the brightness
+        // relative to its own colour's, so dark colours are not all ink.
+        const float lit = luminance(color) / std::max(luminance(in.albedo), 1e-4f);
+        const float tone = palette_tone >= 0 ? palette_hatch_tone(style.palette, palette_tone)
+                                             : std::clamp(lit, 0.0f, 1.0f);
+        const float coverage = tam_coverage(*h.tam, tone, in.hatch_uv, in.hatch_lod) * h.strength;
+        if (h.pencil) color *= tam_paper_shade(*h.tam, in.hatch_uv, in.hatch_lod);
+        const glm::vec3 ink = h.ink ? *h.ink : palette_ink(style.palette, in.albedo);
+        color = apply_hatching(color, ink, coverage);
+    }
+    if (in.wire > 0) color += (style.wire.color - color) * in.wire;
+    return color;
+}
+
+}  // namespace facet

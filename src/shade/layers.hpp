@@ -1,0 +1,29 @@
+#pragma once
+// Layers drawn over a shading model's colour (docs/styles.md, "Layers"):
+// hatching strokes from a tonal art map, then wireframe lines.
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "shade/style_state.hpp"
+
+namespace facet {
+
+// What the layers need at one point besides its colour.
+struct LayerInputs {
+    glm::vec3 albedo{0};  // the object colour, for the default ink
+    glm::vec2 hatch_uv{0};
+    float hatch_lod = 0;
+    float wire = 0;  // wireframe line coverage, 0..1
+};
+
+inline bool has_layers(const StyleState& style) {
+    return style.hatching.has_value() || style.wireframe;
+}
+
+// `palette_tone` is the palette model's cel tone (>= 0), which hatches by
+// cels as seed 000 does; other models hatch by how much light the surface
+// gets (-1).
+glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
+                       float palette_tone);
+
+}  // namespace facet

@@ -1,0 +1,85 @@
+#include "shade/shading_models.hpp"
+
+#include "shade/gooch_style.hpp"
+#include "shade/light_sample.hpp"
+#include "shade/model_depth_view.hpp"
+#include "shade/model_gouraud.hpp"
+#include "shade/model_normal_view.hpp"
+#include "shade/model_phong.hpp"
+#include "shade/model_unlit.hpp"
+#include "shade/palette_style.hpp"
+#include "shade/toon_style.hpp"
+
+namespace facet {
+namespace {
+
+// The stylised models light one point at a time: unit normal and view vector.
+template <typename Model>
+void shade_stylised(const SurfaceLanes& in, const ShadingContext& context, Model model,
+                    ShadedLanes& out) {
+    const SurfaceBatch& s = in.surface;
+    for (int i = 0; i < in.count; ++i) {
+        const glm::vec3 position(s.px[i], s.py[i], s.pz[i]);
+        const glm::vec3 n = normalise_or({s.nx[i], s.ny[i], s.nz[i]}, glm::vec3(0, 1, 0));
+        const glm::vec3 v = normalise_or(context.eye - position, n);
+        out.color[i] = model(i, position, n, v, s.receives_shadow[i] > 0, out.palette_tone[i]);
+    }
+}
+
+}  // namespace
+
+void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
+                 ShadedLanes& out) {
+    for (int i = 0; i < in.count; ++i) out.palette_tone[i] = -1;
+    const std::span<const ShadeLight> lights = context.lights;
+    switch (style.model) {
+        case ShadingModel::unlit:
+            for (int i = 0; i < in.count; ++i) out.color[i] = shade_unlit(in, i);
+            return;
+        case ShadingModel::depth:
+            for (int i = 0; i < in.count; ++i)
+                out.color[i] = shade_depth_view(in, i, context.depth_range);
+            return;
+        case ShadingModel::normal:
+            for (int i = 0; i < in.count; ++i) out.color[i] = shade_normal_view(in, i);
+            return;
+        case ShadingModel::gouraud:
+            for (int i = 0; i < in.count; ++i) out.color[i] = shade_gouraud(in, i);
+            return;
+        case ShadingModel::flat:
+        case ShadingModel::blinn_phong:
+        case ShadingModel::phong:
+            pad_batch(in.surface, in.count);
+            shade_phong(in, context,
+                        style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn,
+                        out);
+            return;
+        case ShadingModel::palette:
+            shade_stylised(
+                in, context,
+                [&](int i, auto& p, auto& n, auto& v, bool r, float& tone) {
+                    return shade_palette(style.palette, in.albedo[i], p, n, v, lights, r, tone);
+                },
+                out);
+            return;
+        case ShadingModel::gooch:
+            shade_stylised(
+                in, context,
+                [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
+                    return shade_gooch(style.gooch, style.palette, in.albedo[i], p, n, v, lights,
+                                       r);
+                },
+                out);
+            return;
+        case ShadingModel::toon:
+            shade_stylised(
+                in, context,
+                [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
+                    return shade_toon(style.toon, in.albedo[i], p, n, v, lights, r);
+                },
+                out);
+            return;
+    }
+}
+
+}  // namespace facet
