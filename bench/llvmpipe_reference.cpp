@@ -1,24 +1,36 @@
-// The llvmpipe reference of facet_bench: the bench scenes drawn by OpenGL on
-// Mesa's llvmpipe through OSMesa (off-screen), with a GLSL program that shades
-// exactly as facet's Blinn-Phong does. Built only when OSMesa is found.
+// The llvmpipe reference of facet_bench: a facet scene drawn by OpenGL on
+// Mesa's llvmpipe through OSMesa (off-screen), doing the same work as
+// facet: the same meshes (posed each frame when they move), the same camera,
+// lights, materials and textures, the scene style's shading model as GLSL,
+// a two-pass shadow map for a shadow-casting sun, MSAA for output.samples,
+// an sRGB framebuffer, and colour plus depth read back. The whole job adds
+// a PNG of each frame through libpng at zlib level 1. Built only when
+// OSMesa is found.
+#include <png.h>
+
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <stdexcept>
 
 #include <GL/osmesa.h>  // includes GL/gl.h and GL/glext.h
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/matrix.hpp>
 
+#include "anim/camera_path.hpp"
 #include "anim/frame_state.hpp"
 #include "bench_common.hpp"
+#include "core/color.hpp"
 #include "core/thread_pool.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/pose_stage.hpp"
 #include "render/shade_lights.hpp"
 
 namespace facet_bench {
@@ -31,128 +43,199 @@ F gl_proc(const char* name) {
     return reinterpret_cast<F>(p);
 }
 
-struct Gl {
-    PFNGLCREATESHADERPROC CreateShader;
-    PFNGLSHADERSOURCEPROC ShaderSource;
-    PFNGLCOMPILESHADERPROC CompileShader;
-    PFNGLGETSHADERIVPROC GetShaderiv;
-    PFNGLGETSHADERINFOLOGPROC GetShaderInfoLog;
-    PFNGLCREATEPROGRAMPROC CreateProgram;
-    PFNGLATTACHSHADERPROC AttachShader;
-    PFNGLBINDATTRIBLOCATIONPROC BindAttribLocation;
-    PFNGLLINKPROGRAMPROC LinkProgram;
-    PFNGLGETPROGRAMIVPROC GetProgramiv;
-    PFNGLGETPROGRAMINFOLOGPROC GetProgramInfoLog;
-    PFNGLUSEPROGRAMPROC UseProgram;
-    PFNGLGETUNIFORMLOCATIONPROC GetUniformLocation;
-    PFNGLUNIFORMMATRIX4FVPROC UniformMatrix4fv;
-    PFNGLUNIFORMMATRIX3FVPROC UniformMatrix3fv;
-    PFNGLUNIFORM3FVPROC Uniform3fv;
-    PFNGLUNIFORM4FVPROC Uniform4fv;
-    PFNGLUNIFORM1IPROC Uniform1i;
-    PFNGLGENBUFFERSPROC GenBuffers;
-    PFNGLBINDBUFFERPROC BindBuffer;
-    PFNGLBUFFERDATAPROC BufferData;
-    PFNGLVERTEXATTRIBPOINTERPROC VertexAttribPointer;
-    PFNGLENABLEVERTEXATTRIBARRAYPROC EnableVertexAttribArray;
+#define FACET_GL_FUNCTIONS(X)                                                                      \
+    X(CreateShader, PFNGLCREATESHADERPROC)                                                         \
+    X(ShaderSource, PFNGLSHADERSOURCEPROC)                                                         \
+    X(CompileShader, PFNGLCOMPILESHADERPROC) X(GetShaderiv, PFNGLGETSHADERIVPROC) X(               \
+        GetShaderInfoLog, PFNGLGETSHADERINFOLOGPROC) X(CreateProgram, PFNGLCREATEPROGRAMPROC)      \
+        X(AttachShader, PFNGLATTACHSHADERPROC) X(BindAttribLocation, PFNGLBINDATTRIBLOCATIONPROC)  \
+            X(LinkProgram, PFNGLLINKPROGRAMPROC) X(GetProgramiv, PFNGLGETPROGRAMIVPROC) X(         \
+                GetProgramInfoLog, PFNGLGETPROGRAMINFOLOGPROC) X(UseProgram, PFNGLUSEPROGRAMPROC)  \
+                X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC) X(                              \
+                    UniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC) X(UniformMatrix3fv,               \
+                                                                   PFNGLUNIFORMMATRIX3FVPROC)      \
+                    X(Uniform1i, PFNGLUNIFORM1IPROC) X(Uniform1f, PFNGLUNIFORM1FPROC) X(           \
+                        Uniform2fv, PFNGLUNIFORM2FVPROC) X(Uniform3fv, PFNGLUNIFORM3FVPROC)        \
+                        X(Uniform4fv, PFNGLUNIFORM4FVPROC) X(GenBuffers, PFNGLGENBUFFERSPROC) X(   \
+                            BindBuffer, PFNGLBINDBUFFERPROC) X(BufferData, PFNGLBUFFERDATAPROC)    \
+                            X(BufferSubData, PFNGLBUFFERSUBDATAPROC) X(                            \
+                                VertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC)                 \
+                                X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC) X(    \
+                                    ActiveTexture, PFNGLACTIVETEXTUREPROC)                         \
+                                    X(GenerateMipmap, PFNGLGENERATEMIPMAPPROC) X(                  \
+                                        GenFramebuffers,                                           \
+                                        PFNGLGENFRAMEBUFFERSPROC) X(BindFramebuffer,               \
+                                                                    PFNGLBINDFRAMEBUFFERPROC)      \
+                                        X(FramebufferTexture2D, PFNGLFRAMEBUFFERTEXTURE2DPROC) X(  \
+                                            FramebufferRenderbuffer,                               \
+                                            PFNGLFRAMEBUFFERRENDERBUFFERPROC)                      \
+                                            X(CheckFramebufferStatus,                              \
+                                              PFNGLCHECKFRAMEBUFFERSTATUSPROC)                     \
+                                                X(GenRenderbuffers, PFNGLGENRENDERBUFFERSPROC)     \
+                                                    X(BindRenderbuffer, PFNGLBINDRENDERBUFFERPROC) \
+                                                        X(RenderbufferStorageMultisample,          \
+                                                          PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
+                                                            X(BlitFramebuffer,                     \
+                                                              PFNGLBLITFRAMEBUFFERPROC)
 
+struct Gl {
+#define FACET_GL_MEMBER(name, type) type name = nullptr;
+    FACET_GL_FUNCTIONS(FACET_GL_MEMBER)
+#undef FACET_GL_MEMBER
     void load() {
-#define FACET_GL(name) name = gl_proc<decltype(name)>("gl" #name)
-        FACET_GL(CreateShader);
-        FACET_GL(ShaderSource);
-        FACET_GL(CompileShader);
-        FACET_GL(GetShaderiv);
-        FACET_GL(GetShaderInfoLog);
-        FACET_GL(CreateProgram);
-        FACET_GL(AttachShader);
-        FACET_GL(BindAttribLocation);
-        FACET_GL(LinkProgram);
-        FACET_GL(GetProgramiv);
-        FACET_GL(GetProgramInfoLog);
-        FACET_GL(UseProgram);
-        FACET_GL(GetUniformLocation);
-        FACET_GL(UniformMatrix4fv);
-        FACET_GL(UniformMatrix3fv);
-        FACET_GL(Uniform3fv);
-        FACET_GL(Uniform4fv);
-        FACET_GL(Uniform1i);
-        FACET_GL(GenBuffers);
-        FACET_GL(BindBuffer);
-        FACET_GL(BufferData);
-        FACET_GL(VertexAttribPointer);
-        FACET_GL(EnableVertexAttribArray);
-#undef FACET_GL
+#define FACET_GL_LOAD(name, type) name = gl_proc<type>("gl" #name);
+        FACET_GL_FUNCTIONS(FACET_GL_LOAD)
+#undef FACET_GL_LOAD
     }
 };
 
-// Per-pixel Blinn-Phong, term for term what src/shade/lighting_batch.cpp and
-// src/render/shade_stage.cpp compute: colour = albedo * (ambient + sum of
-// diffuse) + sum of specular; directional radiance = colour * intensity,
-// point radiance divided by distance squared; normals interpolated in world
-// space and flipped on back faces.
-const char* kVertexShader = R"(#version 130
+// The light loop, term for term what src/shade/lighting_batch.cpp computes:
+// ambient * (sum of ambient lights, or white), then per light Lambert and
+// the Phong or Blinn highlight, with inverse-square falloff, the range
+// window and the spot cone for point and spot lights, and the shadow map's
+// visibility for the light that has one.
+const char* kLightingGlsl = R"(
+const int kMaxLights = 8;
+uniform int u_light_count;
+uniform vec4 u_light_pos[kMaxLights];   // xyz: position, or direction to the light; w: 1 point or spot
+uniform vec4 u_light_axis[kMaxLights];  // xyz: spot axis towards the light; w: 1 / range or 0
+uniform vec3 u_radiance[kMaxLights];
+uniform vec2 u_spot[kMaxLights];        // cone scale and offset; (0, 1) for no cone
+uniform vec3 u_ambient_light;
+uniform vec4 u_terms;  // ambient, diffuse, specular, shininess
+uniform int u_shadow_light;
+#ifdef SHADOWS
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_shadow_matrix;  // world -> shadow map [0, 1]^3
+uniform float u_shadow_texel;
+float shadow(vec3 p) {
+    vec4 s = u_shadow_matrix * vec4(p, 1.0);
+    // Four bilinear comparisons round the point: a 4 x 4 texel filter.
+    float d = u_shadow_texel;
+    return 0.25 * (shadow2D(u_shadow_map, s.xyz + vec3(-d, -d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(d, -d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(-d, d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(d, d, 0.0)).r);
+}
+#endif
+void light_point(vec3 p, vec3 n, vec3 to_eye, bool phong, out vec3 diffuse, out vec3 specular) {
+    diffuse = u_terms.x * u_ambient_light;
+    specular = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        vec3 l;
+        vec3 radiance = u_radiance[i];
+        if (u_light_pos[i].w > 0.5) {
+            vec3 d = u_light_pos[i].xyz - p;
+            float dist2 = dot(d, d);
+            if (dist2 <= 0.0) continue;
+            l = d / sqrt(dist2);
+            float falloff = 1.0 / dist2;
+            if (u_light_axis[i].w > 0.0) {
+                float x = dist2 * u_light_axis[i].w * u_light_axis[i].w;
+                float w = clamp(1.0 - x * x, 0.0, 1.0);
+                falloff *= w * w;
+            }
+            float t = clamp(dot(l, u_light_axis[i].xyz) * u_spot[i].x + u_spot[i].y, 0.0, 1.0);
+            falloff *= t * t * (3.0 - 2.0 * t);
+            radiance *= falloff;
+        } else {
+            l = u_light_pos[i].xyz;
+        }
+        float n_dot_l = dot(n, l);
+        if (n_dot_l <= 0.0) continue;
+#ifdef SHADOWS
+        if (i == u_shadow_light) radiance *= shadow(p);
+#endif
+        diffuse += u_terms.y * n_dot_l * radiance;
+        float cosine;
+        if (phong) {
+            cosine = dot(2.0 * n_dot_l * n - l, to_eye);
+        } else {
+            vec3 h = l + to_eye;
+            float hl = length(h);
+            cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;
+        }
+        if (cosine > 0.0 && u_terms.z > 0.0)
+            specular += u_terms.z * pow(min(cosine, 1.0), u_terms.w) * radiance;
+    }
+}
+)";
+
+const char* kVertexShader = R"(
 in vec3 a_position;
 in vec3 a_normal;
+in vec2 a_uv;
 uniform mat4 u_model;
 uniform mat3 u_normal_matrix;
 uniform mat4 u_view_projection;
+uniform vec3 u_eye;
 out vec3 v_world;
 out vec3 v_normal;
+out vec2 v_uv;
+#ifdef GOURAUD
+out vec3 v_diffuse;
+out vec3 v_specular;
+#endif
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
     v_world = world.xyz;
     vec3 n = u_normal_matrix * a_normal;
     float len = length(n);
     v_normal = len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
+    v_uv = a_uv;
+#ifdef GOURAUD
+    light_point(v_world, v_normal, normalize(u_eye - v_world), false, v_diffuse, v_specular);
+#endif
     gl_Position = u_view_projection * world;
 }
 )";
 
-const char* kFragmentShader = R"(#version 130
-const int kMaxLights = 8;
+const char* kFragmentShader = R"(
 in vec3 v_world;
 in vec3 v_normal;
+in vec2 v_uv;
+#ifdef GOURAUD
+in vec3 v_diffuse;
+in vec3 v_specular;
+#endif
 uniform vec3 u_eye;
 uniform vec3 u_albedo;
-uniform vec4 u_terms;  // ambient, diffuse, specular, shininess
-uniform int u_light_count;
-uniform vec4 u_light[kMaxLights];  // w = 1: point at xyz; w = 0: unit direction towards the light
-uniform vec3 u_radiance[kMaxLights];
+uniform vec2 u_uv_scale;
+#ifdef TEXTURED
+uniform sampler2D u_texture;
+#endif
+out vec4 frag_color;
 void main() {
+    vec3 albedo = u_albedo;
+#ifdef TEXTURED
+    albedo *= texture(u_texture, v_uv * u_uv_scale).rgb;
+#endif
+#if defined(UNLIT)
+    frag_color = vec4(albedo, 1.0);
+#elif defined(GOURAUD)
+    frag_color = vec4(albedo * v_diffuse + v_specular, 1.0);
+#else
     float len = length(v_normal);
     vec3 n = len > 0.0 ? v_normal / len : vec3(0.0, 1.0, 0.0);
     if (!gl_FrontFacing) n = -n;
-    vec3 to_eye = normalize(u_eye - v_world);
-    vec3 diffuse = vec3(u_terms.x);
-    vec3 specular = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
-        vec3 to_light;
-        vec3 radiance = u_radiance[i];
-        if (u_light[i].w > 0.5) {
-            vec3 d = u_light[i].xyz - v_world;
-            float dist2 = dot(d, d);
-            if (dist2 <= 0.0) continue;
-            to_light = d / sqrt(dist2);
-            radiance /= dist2;
-        } else {
-            to_light = u_light[i].xyz;
-        }
-        float n_dot_l = dot(n, to_light);
-        if (n_dot_l <= 0.0) continue;
-        diffuse += u_terms.y * n_dot_l * radiance;
-        if (u_terms.z <= 0.0) continue;
-        vec3 half_vector = to_light + to_eye;
-        float hl = length(half_vector);
-        float cosine = hl > 0.0 ? dot(n, half_vector / hl) : 0.0;
-        if (cosine > 0.0) specular += u_terms.z * pow(cosine, u_terms.w) * radiance;
-    }
-    gl_FragColor = vec4(u_albedo * diffuse + specular, 1.0);
+    vec3 diffuse, specular;
+    light_point(v_world, n, normalize(u_eye - v_world), PHONG, diffuse, specular);
+    frag_color = vec4(albedo * diffuse + specular, 1.0);
+#endif
 }
 )";
 
-GLuint compile(const Gl& gl, GLenum type, const char* source) {
+const char* kDepthVertexShader = R"(
+in vec3 a_position;
+uniform mat4 u_clip;
+void main() { gl_Position = u_clip * vec4(a_position, 1.0); }
+)";
+const char* kDepthFragmentShader = "void main() {}\n";
+
+GLuint compile(const Gl& gl, GLenum type, const std::string& source) {
     GLuint s = gl.CreateShader(type);
-    gl.ShaderSource(s, 1, &source, nullptr);
+    const char* text = source.c_str();
+    gl.ShaderSource(s, 1, &text, nullptr);
     gl.CompileShader(s);
     GLint ok = 0;
     gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -162,6 +245,26 @@ GLuint compile(const Gl& gl, GLenum type, const char* source) {
         throw std::runtime_error(std::string("shader compile failed: ") + log);
     }
     return s;
+}
+
+GLuint link(const Gl& gl, const std::string& defines, const char* vertex, const char* fragment,
+            bool lighting) {
+    const std::string head = "#version 130\n" + defines + (lighting ? kLightingGlsl : "");
+    GLuint program = gl.CreateProgram();
+    gl.AttachShader(program, compile(gl, GL_VERTEX_SHADER, head + vertex));
+    gl.AttachShader(program, compile(gl, GL_FRAGMENT_SHADER, head + fragment));
+    gl.BindAttribLocation(program, 0, "a_position");
+    gl.BindAttribLocation(program, 1, "a_normal");
+    gl.BindAttribLocation(program, 2, "a_uv");
+    gl.LinkProgram(program);
+    GLint linked = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
+    if (!linked) {
+        char log[4096];
+        gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
+        throw std::runtime_error(std::string("program link failed: ") + log);
+    }
+    return program;
 }
 
 int count_llvmpipe_threads() {
@@ -177,196 +280,497 @@ int count_llvmpipe_threads() {
     return n;
 }
 
+// A PNG through libpng's simplified API would pick its own settings; the
+// classic one lets the reference say zlib level 1 with default filters.
+void write_png_rgb(const std::string& path, const uint8_t* rgb_bottom_up, int width, int height) {
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) throw std::runtime_error("cannot write " + path);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png_create_info_struct(png);
+    if (setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        std::fclose(f);
+        throw std::runtime_error("libpng failed on " + path);
+    }
+    png_init_io(png, f);
+    png_set_compression_level(png, 1);
+    png_set_IHDR(png, info, width, height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+                 PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    for (int y = height - 1; y >= 0; --y)  // GL rows are bottom-up
+        png_write_row(png,
+                      const_cast<png_bytep>(rgb_bottom_up + static_cast<size_t>(y) * width * 3));
+    png_write_end(png, info);
+    png_destroy_write_struct(&png, &info);
+    std::fclose(f);
+}
+
+struct Program {
+    GLuint id = 0;
+    GLint model, normal_matrix, view_projection, eye, albedo, uv_scale, terms, light_count,
+        light_pos, light_axis, radiance, spot, ambient_light, shadow_light, shadow_map,
+        shadow_matrix, shadow_texel, texture;
+};
+
+Program make_program(const Gl& gl, const std::string& defines) {
+    Program p;
+    p.id = link(gl, defines, kVertexShader, kFragmentShader, true);
+    auto loc = [&](const char* name) { return gl.GetUniformLocation(p.id, name); };
+    p.model = loc("u_model"), p.normal_matrix = loc("u_normal_matrix");
+    p.view_projection = loc("u_view_projection"), p.eye = loc("u_eye");
+    p.albedo = loc("u_albedo"), p.uv_scale = loc("u_uv_scale"), p.terms = loc("u_terms");
+    p.light_count = loc("u_light_count"), p.light_pos = loc("u_light_pos");
+    p.light_axis = loc("u_light_axis"), p.radiance = loc("u_radiance"), p.spot = loc("u_spot");
+    p.ambient_light = loc("u_ambient_light"), p.shadow_light = loc("u_shadow_light");
+    p.shadow_map = loc("u_shadow_map"), p.shadow_matrix = loc("u_shadow_matrix");
+    p.shadow_texel = loc("u_shadow_texel"), p.texture = loc("u_texture");
+    return p;
+}
+
+// Everything the reference draws with, made once.
+class Reference {
+  public:
+    Reference(const facet::SceneDesc& scene, const facet::World& world)
+        : scene_(scene), world_(world), width_(scene.output.width), height_(scene.output.height) {
+        gl_.load();
+        model_ = scene.style.shading;
+        samples_ = scene.output.samples;
+        for (size_t i = 0; i < scene.lights.size(); ++i)
+            if (scene.lights[i].shadows && scene.lights[i].type == facet::LightType::directional &&
+                scene.style.shadows.value_or(true) && shadow_light_ < 0)
+                shadow_light_ = static_cast<int>(i);
+        if (scene.style.shadows == true && shadow_light_ < 0)
+            for (size_t i = 0; i < scene.lights.size() && shadow_light_ < 0; ++i)
+                if (scene.lights[i].type == facet::LightType::directional)
+                    shadow_light_ = static_cast<int>(i);
+        make_buffers();
+        make_textures();
+        make_targets();
+        for (bool textured : {false, true})
+            programs_[textured] = make_program(gl_, defines(textured));
+        if (shadow_light_ >= 0) make_shadow_map();
+    }
+
+    std::string features() const {
+        std::string f = facet::shading_model_name(model_);
+        if (!textures_.empty()) f += ", textured (mipmapped)";
+        if (shadow_light_ >= 0) f += ", shadow map " + std::to_string(shadow_size_) + "^2";
+        if (samples_ > 1) f += ", " + std::to_string(samples_) + "x MSAA";
+        if (world_.deforms()) f += ", vertices posed and uploaded each frame";
+        return f;
+    }
+
+    void draw(int frame, facet::PoseStage& pose) {
+        const facet::FrameState state = facet::evaluate_frame(scene_, world_.object_bounds, frame);
+        if (world_.deforms()) upload_pose(pose.pose(state));
+        if (shadow_light_ >= 0) draw_shadow_map(state, pose);
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? msaa_fbo_ : resolve_fbo_);
+        glViewport(0, 0, width_, height_);
+        glEnable(GL_FRAMEBUFFER_SRGB);
+        const glm::vec4 bg = scene_.style.background.value_or(scene_.output.background);
+        glClearColor(bg.r, bg.g, bg.b, bg.a);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+        const facet::CameraMatrices cam = facet::make_camera(state.camera, aspect);
+        const glm::mat4 view_projection =
+            glm::perspective(glm::radians(state.camera.fov_degrees), aspect, state.camera.near,
+                             state.camera.far) *
+            cam.view;
+        const std::vector<facet::ShadeLight> lights = facet::make_shade_lights(state.lights);
+        for (const facet::Draw& d : world_.draws) {
+            const facet::Material& m = world_.materials[d.material];
+            const bool textured = m.texture && d.has_uvs;
+            const Program& p = programs_[textured];
+            gl_.UseProgram(p.id);
+            set_lights(p, lights, cam.position, view_projection);
+            const glm::mat4& model_matrix = state.objects[d.object].transform;
+            const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model_matrix)));
+            gl_.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model_matrix));
+            gl_.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
+            gl_.Uniform3fv(p.albedo, 1, glm::value_ptr(m.color));
+            gl_.Uniform2fv(p.uv_scale, 1, glm::value_ptr(m.uv_scale));
+            const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
+            gl_.Uniform4fv(p.terms, 1, glm::value_ptr(terms));
+            if (textured) {
+                gl_.ActiveTexture(GL_TEXTURE0);
+                glBindTexture(GL_TEXTURE_2D, textures_.at(m.texture.get()));
+                gl_.Uniform1i(p.texture, 0);
+            }
+            if (m.double_sided)
+                glDisable(GL_CULL_FACE);
+            else
+                glEnable(GL_CULL_FACE);
+            draw_elements(d);
+        }
+        if (samples_ > 1) {  // resolve, as facet's output is one sample per pixel
+            gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
+            gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
+            gl_.BlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_,
+                                GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+        }
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+    }
+
+    void read_back(std::vector<uint8_t>& rgb, std::vector<float>& depth) {
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width_, height_, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+        glReadPixels(0, 0, width_, height_, GL_DEPTH_COMPONENT, GL_FLOAT, depth.data());
+    }
+
+  private:
+    std::string defines(bool textured) const {
+        std::string d;
+        if (model_ == facet::ShadingModel::unlit) d += "#define UNLIT\n";
+        if (model_ == facet::ShadingModel::gouraud) d += "#define GOURAUD\n";
+        d += std::string("#define PHONG ") +
+             (model_ == facet::ShadingModel::phong ? "true" : "false") + "\n";
+        if (textured) d += "#define TEXTURED\n";
+        if (shadow_light_ >= 0) d += "#define SHADOWS\n";
+        return d;
+    }
+
+    void make_buffers() {
+        gl_.GenBuffers(4, buffers_);
+        auto array = [&](GLuint buffer, GLuint attribute, int size, const void* data,
+                         size_t bytes) {
+            gl_.BindBuffer(GL_ARRAY_BUFFER, buffer);
+            gl_.BufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes), data,
+                           world_.deforms() ? GL_DYNAMIC_DRAW : GL_STATIC_DRAW);
+            gl_.VertexAttribPointer(attribute, size, GL_FLOAT, GL_FALSE, 0, nullptr);
+            gl_.EnableVertexAttribArray(attribute);
+        };
+        array(buffers_[0], 0, 3, world_.positions.data(), world_.positions.size() * 12);
+        array(buffers_[1], 1, 3, world_.normals.data(), world_.normals.size() * 12);
+        array(buffers_[2], 2, 2, world_.uvs.data(), world_.uvs.size() * 8);
+        gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers_[3]);
+        gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER,
+                       static_cast<GLsizeiptr>(world_.indices.size() * sizeof(uint32_t)),
+                       world_.indices.data(), GL_STATIC_DRAW);
+    }
+
+    void upload_pose(const facet::PosedVertices& posed) {
+        gl_.BindBuffer(GL_ARRAY_BUFFER, buffers_[0]);
+        gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(posed.positions.size() * 12),
+                          posed.positions.data());
+        gl_.BindBuffer(GL_ARRAY_BUFFER, buffers_[1]);
+        gl_.BufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(posed.normals.size() * 12),
+                          posed.normals.data());
+    }
+
+    // Textures as facet decodes them (linear RGBA float), stored as sRGB
+    // bytes so the sampler decodes them as facet's do; mipmaps by the GL.
+    void make_textures() {
+        for (const facet::Material& m : world_.materials) {
+            if (!m.texture || textures_.count(m.texture.get())) continue;
+            const facet::Texture& t = *m.texture;
+            std::vector<uint8_t> bytes(static_cast<size_t>(t.width) * t.height * 4);
+            for (int y = 0; y < t.height; ++y)
+                for (int x = 0; x < t.width; ++x) {
+                    const glm::vec4 c = t.texels[static_cast<size_t>(y) * t.width + x];
+                    uint8_t* b = &bytes[(static_cast<size_t>(y) * t.width + x) * 4];
+                    for (int k = 0; k < 3; ++k)
+                        b[k] = static_cast<uint8_t>(
+                            std::lround(facet::linear_to_srgb(std::clamp(c[k], 0.0f, 1.0f)) * 255));
+                    b[3] = static_cast<uint8_t>(std::lround(std::clamp(c[3], 0.0f, 1.0f) * 255));
+                }
+            GLuint id = 0;
+            glGenTextures(1, &id);
+            glBindTexture(GL_TEXTURE_2D, id);
+            glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, t.width, t.height, 0, GL_RGBA,
+                         GL_UNSIGNED_BYTE, bytes.data());
+            gl_.GenerateMipmap(GL_TEXTURE_2D);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+            const GLint wrap = t.wrap == facet::Wrap::clamp ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+            textures_[m.texture.get()] = id;
+        }
+    }
+
+    // The image targets: sRGB colour and 24-bit depth, multisampled when
+    // the scene asks for samples (then resolved into the single-sample pair).
+    void make_targets() {
+        GLuint rb[4];
+        gl_.GenRenderbuffers(4, rb);
+        gl_.GenFramebuffers(1, &resolve_fbo_);
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, resolve_fbo_);
+        attach(rb[0], rb[1], 0);
+        if (samples_ > 1) {
+            gl_.GenFramebuffers(1, &msaa_fbo_);
+            gl_.BindFramebuffer(GL_FRAMEBUFFER, msaa_fbo_);
+            attach(rb[2], rb[3], samples_);
+        }
+    }
+
+    void attach(GLuint color, GLuint depth, int samples) {
+        gl_.BindRenderbuffer(GL_RENDERBUFFER, color);
+        gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_SRGB8_ALPHA8, width_,
+                                           height_);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color);
+        gl_.BindRenderbuffer(GL_RENDERBUFFER, depth);
+        gl_.RenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width_,
+                                           height_);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+        if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("framebuffer incomplete (samples " + std::to_string(samples) +
+                                     ")");
+    }
+
+    void make_shadow_map() {
+        const facet::LightDesc& l = scene_.lights[static_cast<size_t>(shadow_light_)];
+        shadow_size_ = l.shadow_resolution > 0 ? l.shadow_resolution : 2048;
+        glGenTextures(1, &shadow_texture_);
+        glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+        glTexImage2D(GL_TEXTURE_2D, 0, GL_DEPTH_COMPONENT24, shadow_size_, shadow_size_, 0,
+                     GL_DEPTH_COMPONENT, GL_FLOAT, nullptr);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_MODE, GL_COMPARE_REF_TO_TEXTURE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_COMPARE_FUNC, GL_LEQUAL);
+        gl_.GenFramebuffers(1, &shadow_fbo_);
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+        gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                 shadow_texture_, 0);
+        glDrawBuffer(GL_NONE);
+        glReadBuffer(GL_NONE);
+        if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            throw std::runtime_error("shadow framebuffer incomplete");
+        depth_program_ = link(gl_, "", kDepthVertexShader, kDepthFragmentShader, false);
+        depth_clip_ = gl_.GetUniformLocation(depth_program_, "u_clip");
+    }
+
+    // Pass one: the casters' depth from the sun, an orthographic box round
+    // their bounding sphere (as facet's shadow stage fits it).
+    void draw_shadow_map(const facet::FrameState& state, facet::PoseStage& pose) {
+        const facet::PosedVertices posed = pose.pose(state);
+        std::vector<facet::Sphere> spheres;
+        for (const facet::Draw& d : world_.draws)
+            if (world_.casts_shadows[d.object] && !posed.object_bounds[d.object].empty())
+                spheres.push_back(facet::transformed_box_sphere(posed.object_bounds[d.object],
+                                                                state.objects[d.object].transform));
+        const facet::Sphere s = facet::enclosing_sphere(spheres);
+        const glm::vec3 centre(s.center);
+        const float r = static_cast<float>(s.radius);
+        const glm::vec3 dir =
+            glm::normalize(state.lights[static_cast<size_t>(shadow_light_)].direction);
+        const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+        const glm::mat4 view = glm::lookAt(centre - dir * (2 * r), centre, up);
+        const glm::mat4 projection = glm::ortho(-r, r, -r, r, r, 3 * r);
+        const glm::mat4 light_clip = projection * view;
+        const glm::mat4 to_texture = glm::translate(glm::mat4(1), glm::vec3(0.5f)) *
+                                     glm::scale(glm::mat4(1), glm::vec3(0.5f));
+        shadow_matrix_ = to_texture * light_clip;
+
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
+        glViewport(0, 0, shadow_size_, shadow_size_);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        glDisable(GL_CULL_FACE);  // both sides cast, as in facet
+        glEnable(GL_POLYGON_OFFSET_FILL);
+        glPolygonOffset(2.0f, 4.0f);
+        gl_.UseProgram(depth_program_);
+        for (const facet::Draw& d : world_.draws) {
+            if (!world_.casts_shadows[d.object]) continue;
+            const glm::mat4 clip = light_clip * state.objects[d.object].transform;
+            gl_.UniformMatrix4fv(depth_clip_, 1, GL_FALSE, glm::value_ptr(clip));
+            draw_elements(d);
+        }
+        glDisable(GL_POLYGON_OFFSET_FILL);
+    }
+
+    void set_lights(const Program& p, const std::vector<facet::ShadeLight>& lights,
+                    const glm::vec3& eye, const glm::mat4& view_projection) {
+        std::vector<glm::vec4> pos, axis;
+        std::vector<glm::vec3> radiance;
+        std::vector<glm::vec2> spot;
+        glm::vec3 ambient(0);
+        bool any_ambient = false;
+        int shadow_index = -1;
+        // make_shade_lights keeps scene order for the lights that shine
+        // from somewhere, so the shadow light's index among them is found by
+        // counting the non-ambient scene lights before it.
+        int scene_index = -1, lit_index = 0;
+        for (const facet::LightDesc& l : scene_.lights) {
+            ++scene_index;
+            if (l.type == facet::LightType::ambient) continue;
+            if (scene_index == shadow_light_) shadow_index = lit_index;
+            ++lit_index;
+        }
+        for (const facet::ShadeLight& l : lights) {
+            if (l.is_ambient) {
+                ambient += l.radiance;
+                any_ambient = true;
+                continue;
+            }
+            if (pos.size() == 8) continue;
+            pos.push_back(l.is_point ? glm::vec4(l.position, 1) : glm::vec4(l.direction, 0));
+            axis.push_back(glm::vec4(l.direction, l.inv_range));
+            radiance.push_back(l.radiance);
+            spot.push_back(l.is_spot ? glm::vec2(l.spot_scale, l.spot_offset) : glm::vec2(0, 1));
+        }
+        if (!any_ambient) ambient = glm::vec3(1);
+        const int count = static_cast<int>(pos.size());
+        gl_.UniformMatrix4fv(p.view_projection, 1, GL_FALSE, glm::value_ptr(view_projection));
+        gl_.Uniform3fv(p.eye, 1, glm::value_ptr(eye));
+        gl_.Uniform1i(p.light_count, count);
+        if (count) {
+            gl_.Uniform4fv(p.light_pos, count, glm::value_ptr(pos[0]));
+            gl_.Uniform4fv(p.light_axis, count, glm::value_ptr(axis[0]));
+            gl_.Uniform3fv(p.radiance, count, glm::value_ptr(radiance[0]));
+            gl_.Uniform2fv(p.spot, count, glm::value_ptr(spot[0]));
+        }
+        gl_.Uniform3fv(p.ambient_light, 1, glm::value_ptr(ambient));
+        gl_.Uniform1i(p.shadow_light, shadow_index);
+        if (shadow_light_ >= 0) {
+            gl_.ActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, shadow_texture_);
+            gl_.Uniform1i(p.shadow_map, 1);
+            gl_.UniformMatrix4fv(p.shadow_matrix, 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
+            gl_.Uniform1f(p.shadow_texel, 1.0f / static_cast<float>(shadow_size_));
+        }
+    }
+
+    void draw_elements(const facet::Draw& d) {
+        glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.triangle_count * 3), GL_UNSIGNED_INT,
+                       reinterpret_cast<const void*>(static_cast<uintptr_t>(d.first_triangle) * 3 *
+                                                     sizeof(uint32_t)));
+    }
+
+    const facet::SceneDesc& scene_;
+    const facet::World& world_;
+    int width_, height_;
+    Gl gl_;
+    facet::ShadingModel model_;
+    int samples_ = 1;
+    int shadow_light_ = -1;  // scene light index of the sun with the shadow map
+    int shadow_size_ = 0;
+    GLuint buffers_[4] = {};
+    std::map<const facet::Texture*, GLuint> textures_;
+    GLuint resolve_fbo_ = 0, msaa_fbo_ = 0, shadow_fbo_ = 0, shadow_texture_ = 0;
+    GLuint depth_program_ = 0;
+    GLint depth_clip_ = -1;
+    glm::mat4 shadow_matrix_{1};
+    Program programs_[2];  // untextured, textured
+};
+
+// facet's first frame against llvmpipe's, both as 8-bit sRGB.
+void compare_first_frame(const facet::SceneDesc& scene, const facet::World& world, int frame,
+                         const std::vector<uint8_t>& gl_rgb, GlResult& r) {
+    const int width = scene.output.width, height = scene.output.height;
+    facet::ThreadPool pool(2);
+    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameImages ours;
+    renderer.render(frame, 0, ours);
+    const glm::vec4 bg = scene.style.background.value_or(scene.output.background);
+    uint8_t clear[3];
+    for (int c = 0; c < 3; ++c)
+        clear[c] = static_cast<uint8_t>(
+            std::lround(facet::linear_to_srgb(std::clamp(bg[c], 0.0f, 1.0f)) * 255));
+    double diff_sum = 0;
+    size_t both = 0;
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const uint8_t* g = &gl_rgb[(static_cast<size_t>(height - 1 - y) * width + x) * 3];
+            const bool gl_hit =
+                std::abs(g[0] - clear[0]) + std::abs(g[1] - clear[1]) + std::abs(g[2] - clear[2]) >
+                3;
+            const bool our_hit = std::isfinite(ours.depth.at(x, y));
+            if (gl_hit != our_hit) {
+                ++r.coverage_mismatch_px;
+                continue;
+            }
+            if (!our_hit) continue;
+            ++both;
+            const glm::vec4 c = facet::to_float(ours.color.at(x, y));
+            int worst = 0;
+            for (int k = 0; k < 3; ++k) {
+                const int mine = static_cast<int>(
+                    std::lround(facet::linear_to_srgb(std::clamp(c[k], 0.0f, 1.0f)) * 255));
+                worst = std::max(worst, std::abs(mine - g[k]));
+            }
+            diff_sum += worst;
+            if (worst > 8) ++r.differing;
+        }
+    r.mean_abs_diff = both ? diff_sum / static_cast<double>(both) : NAN;
+}
+
 }  // namespace
 
 GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world,
-                        const std::vector<int>& frames) {
+                        const std::vector<int>& frames, const std::string& png_dir) {
     GlResult r;
     const char* lp = std::getenv("LP_NUM_THREADS");
     r.lp_threads = lp ? std::atoi(lp) : -1;
     const int width = scene.output.width, height = scene.output.height;
 
+    // OSMesa wants a buffer of its own; everything is drawn into FBOs.
     OSMesaContext ctx = OSMesaCreateContextExt(OSMESA_RGBA, 24, 0, 0, nullptr);
     if (!ctx) throw std::runtime_error("OSMesaCreateContextExt failed");
-    std::vector<uint8_t> target(static_cast<size_t>(width) * height * 4);
-    if (!OSMesaMakeCurrent(ctx, target.data(), GL_UNSIGNED_BYTE, width, height))
+    std::vector<uint8_t> window(4 * 16 * 16);
+    if (!OSMesaMakeCurrent(ctx, window.data(), GL_UNSIGNED_BYTE, 16, 16))
         throw std::runtime_error("OSMesaMakeCurrent failed");
     r.renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     r.renderer += " / GL ";
     r.renderer += reinterpret_cast<const char*>(glGetString(GL_VERSION));
 
-    Gl gl;
-    gl.load();
-    GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, compile(gl, GL_VERTEX_SHADER, kVertexShader));
-    gl.AttachShader(program, compile(gl, GL_FRAGMENT_SHADER, kFragmentShader));
-    gl.BindAttribLocation(program, 0, "a_position");
-    gl.BindAttribLocation(program, 1, "a_normal");
-    gl.LinkProgram(program);
-    GLint linked = 0;
-    gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
-    if (!linked) {
-        char log[4096];
-        gl.GetProgramInfoLog(program, sizeof log, nullptr, log);
-        throw std::runtime_error(std::string("program link failed: ") + log);
-    }
-    gl.UseProgram(program);
-    auto loc = [&](const char* name) { return gl.GetUniformLocation(program, name); };
-    const GLint u_model = loc("u_model"), u_normal_matrix = loc("u_normal_matrix"),
-                u_view_projection = loc("u_view_projection"), u_eye = loc("u_eye"),
-                u_albedo = loc("u_albedo"), u_terms = loc("u_terms"),
-                u_light_count = loc("u_light_count"), u_light = loc("u_light"),
-                u_radiance = loc("u_radiance");
-
-    // The same model-space arrays facet's vertex stage reads.
-    GLuint buffers[3];
-    gl.GenBuffers(3, buffers);
-    gl.BindBuffer(GL_ARRAY_BUFFER, buffers[0]);
-    gl.BufferData(GL_ARRAY_BUFFER, world.positions.size() * sizeof(glm::vec3),
-                  world.positions.data(), GL_STATIC_DRAW);
-    gl.VertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.EnableVertexAttribArray(0);
-    gl.BindBuffer(GL_ARRAY_BUFFER, buffers[1]);
-    gl.BufferData(GL_ARRAY_BUFFER, world.normals.size() * sizeof(glm::vec3), world.normals.data(),
-                  GL_STATIC_DRAW);
-    gl.VertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
-    gl.EnableVertexAttribArray(1);
-    gl.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffers[2]);
-    gl.BufferData(GL_ELEMENT_ARRAY_BUFFER, world.indices.size() * sizeof(uint32_t),
-                  world.indices.data(), GL_STATIC_DRAW);
-
-    glViewport(0, 0, width, height);
+    Reference reference(scene, world);
+    r.features = reference.features();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
-    const glm::vec4 bg = scene.output.background;
-    glClearColor(bg.r, bg.g, bg.b, bg.a);
-    glClearDepth(1.0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-
-    bool textured = false;
-    for (const auto& m : world.materials) textured |= static_cast<bool>(m.texture);
-    if (textured) std::cerr << "warning: the llvmpipe side ignores textures\n";
-
-    // The clear colour as the bytes glReadPixels returns for it.
-    uint8_t clear[4];
-    for (int c = 0; c < 4; ++c)
-        clear[c] = static_cast<uint8_t>(std::lround(std::clamp(bg[c], 0.0f, 1.0f) * 255.0f));
-
-    std::vector<uint8_t> pixels(target.size()), first_image;
-    std::vector<double> finish, readback, cpu;
-    r.min_covered = SIZE_MAX;
-    const float aspect = static_cast<float>(width) / static_cast<float>(height);
-    auto draw_frame = [&](int frame) {
-        const facet::FrameState state = facet::evaluate_frame(scene, world.object_bounds, frame);
-        // Same view as facet (make_camera), standard GL projection (depth -1..1).
-        const facet::CameraMatrices cam = facet::make_camera(state.camera, aspect);
-        const glm::mat4 projection = glm::perspective(glm::radians(state.camera.fov_degrees),
-                                                      aspect, state.camera.near, state.camera.far);
-        const glm::mat4 view_projection = projection * cam.view;
-        const std::vector<facet::ShadeLight> lights = facet::make_shade_lights(state.lights);
-        const int light_count = static_cast<int>(std::min<size_t>(lights.size(), 8));
-        std::vector<glm::vec4> light_vec;
-        std::vector<glm::vec3> radiance;
-        for (int i = 0; i < light_count; ++i) {
-            const auto& l = lights[static_cast<size_t>(i)];
-            light_vec.push_back(l.is_point ? glm::vec4(l.position, 1) : glm::vec4(l.direction, 0));
-            radiance.push_back(l.radiance);
-        }
-        gl.UniformMatrix4fv(u_view_projection, 1, GL_FALSE, glm::value_ptr(view_projection));
-        gl.Uniform3fv(u_eye, 1, glm::value_ptr(cam.position));
-        gl.Uniform1i(u_light_count, light_count);
-        if (light_count) {
-            gl.Uniform4fv(u_light, light_count, glm::value_ptr(light_vec[0]));
-            gl.Uniform3fv(u_radiance, light_count, glm::value_ptr(radiance[0]));
-        }
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        for (const facet::Draw& d : world.draws) {
-            const glm::mat4& model = state.objects[d.object].transform;
-            const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model)));
-            const facet::Material& m = world.materials[d.material];
-            gl.UniformMatrix4fv(u_model, 1, GL_FALSE, glm::value_ptr(model));
-            gl.UniformMatrix3fv(u_normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
-            gl.Uniform3fv(u_albedo, 1, glm::value_ptr(m.color));
-            const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
-            gl.Uniform4fv(u_terms, 1, glm::value_ptr(terms));
-            if (m.double_sided)
-                glDisable(GL_CULL_FACE);
-            else
-                glEnable(GL_CULL_FACE);
-            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(d.triangle_count * 3),
-                           GL_UNSIGNED_INT,
-                           reinterpret_cast<const void*>(static_cast<uintptr_t>(d.first_triangle) *
-                                                         3 * sizeof(uint32_t)));
-        }
-    };
+    facet::PoseStage pose(scene, world);
+    std::vector<uint8_t> rgb(static_cast<size_t>(width) * height * 3), first;
+    std::vector<float> depth(static_cast<size_t>(width) * height);
 
     // One untimed frame first: llvmpipe compiles shader variants on first use.
-    draw_frame(frames.front());
-    glFinish();
+    reference.draw(frames.front(), pose);
+    reference.read_back(rgb, depth);
     r.raster_threads_seen = count_llvmpipe_threads();
 
-    for (int frame : frames) {
-        const double c0 = process_cpu_ms();
-        auto t0 = Clock::now();
-        draw_frame(frame);
-        glFinish();
-        auto t1 = Clock::now();
-        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, pixels.data());
-        auto t2 = Clock::now();
-        cpu.push_back(process_cpu_ms() - c0);
-        finish.push_back(ms_since(t0, t1));
-        readback.push_back(ms_since(t0, t2));
-        size_t covered = 0;
-        for (size_t p = 0; p < pixels.size(); p += 4)
-            covered += std::memcmp(&pixels[p], clear, 3) != 0;
-        r.min_covered = std::min(r.min_covered, covered);
-        if (first_image.empty()) first_image = pixels;
+    std::vector<double> render, render_cpu, job, job_cpu;
+    const glm::vec4 bg = scene.style.background.value_or(scene.output.background);
+    uint8_t clear[3];
+    for (int c = 0; c < 3; ++c)
+        clear[c] = static_cast<uint8_t>(
+            std::lround(facet::linear_to_srgb(std::clamp(bg[c], 0.0f, 1.0f)) * 255));
+    r.min_covered = SIZE_MAX;
+    for (int pass = 0; pass < 2; ++pass) {  // render only, then the whole job
+        for (int frame : frames) {
+            const double c0 = process_cpu_ms();
+            const auto t0 = Clock::now();
+            reference.draw(frame, pose);
+            glFinish();
+            reference.read_back(rgb, depth);
+            if (pass == 1) {
+                char name[64];
+                std::snprintf(name, sizeof name, "/gl.%04d.png", frame);
+                write_png_rgb(png_dir + name, rgb.data(), width, height);
+            }
+            const double ms = ms_since(t0, Clock::now());
+            const double cpu = process_cpu_ms() - c0;
+            (pass == 0 ? render : job).push_back(ms);
+            (pass == 0 ? render_cpu : job_cpu).push_back(cpu);
+            if (pass == 0) {
+                size_t covered = 0;
+                for (size_t p = 0; p < rgb.size(); p += 3)
+                    covered += std::memcmp(&rgb[p], clear, 3) != 0;
+                r.min_covered = std::min(r.min_covered, covered);
+                if (first.empty()) first = rgb;
+            }
+        }
     }
     if (GLenum err = glGetError(); err != GL_NO_ERROR)
         throw std::runtime_error("GL error " + std::to_string(err));
     OSMesaDestroyContext(ctx);
-
-    r.finish_ms = median(finish);
-    r.readback_ms = median(readback);
-    r.readback_cpu_ms = median(cpu);
-    r.readback_min_ms = *std::min_element(readback.begin(), readback.end());
-    r.readback_max_ms = *std::max_element(readback.begin(), readback.end());
-
-    // Sanity check of equivalence: facet's first frame against llvmpipe's,
-    // both as 8-bit linear colour (GL rows are bottom-up).
-    facet::ThreadPool pool(2);
-    facet::FrameRenderer renderer(scene, world, pool);
-    facet::FrameImages ours;
-    renderer.render(frames.front(), 0, ours);
-    double diff_sum = 0;
-    size_t mismatched = 0, both = 0;
-    for (int y = 0; y < height; ++y)
-        for (int x = 0; x < width; ++x) {
-            const uint8_t* g = &first_image[(static_cast<size_t>(height - 1 - y) * width + x) * 4];
-            const bool gl_hit = std::memcmp(g, clear, 3) != 0;
-            const bool our_hit = std::isfinite(ours.depth.at(x, y));
-            if (gl_hit != our_hit) {
-                ++mismatched;
-                continue;
-            }
-            if (!our_hit) continue;
-            ++both;
-            bool pixel_differs = false;
-            const glm::vec4 c = ours.color.at(x, y);
-            for (int k = 0; k < 3; ++k) {
-                const int v = static_cast<int>(std::lround(std::clamp(c[k], 0.0f, 1.0f) * 255.0f));
-                const int d = std::abs(v - static_cast<int>(g[k]));
-                diff_sum += d;
-                r.max_diff = std::max(r.max_diff, d);
-                pixel_differs |= d != 0;
-            }
-            r.differing += pixel_differs;
-        }
-    r.mean_abs_diff = both ? diff_sum / (3.0 * static_cast<double>(both)) : NAN;
-    r.coverage_mismatch = static_cast<double>(mismatched) / (static_cast<double>(width) * height);
-    r.coverage_mismatch_px = mismatched;
+    r.render_ms = stat_of(render);
+    r.render_cpu_ms = median(render_cpu);
+    r.job_ms = stat_of(job);
+    r.job_cpu_ms = median(job_cpu);
+    compare_first_frame(scene, world, frames.front(), first, r);
     r.ok = true;
     return r;
 }

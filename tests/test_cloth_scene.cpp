@@ -3,6 +3,7 @@
 // frames of scenes/flag.yaml.
 #include <catch2/catch.hpp>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
@@ -36,7 +37,8 @@ std::vector<std::vector<glm::vec4>> render_frames(const SceneDesc& scene, const 
     for (int f : frames) {
         FrameImages images;
         renderer.render(f, 0, images);
-        out.push_back(images.color.pixels);
+        const ColorImage color = to_float_image(images.color);
+        out.push_back(std::vector<glm::vec4>(color.pixels.begin(), color.pixels.end()));
     }
     return out;
 }
@@ -58,8 +60,9 @@ TEST_CASE("a cloth frame is the same rendered alone, in a run, or on more thread
 
 TEST_CASE("cloth settings a simulation cannot use name the scene's cloth", "[cloth][scene]") {
     TempDir dir("cloth-scene");
-    const std::string text = "objects:\n  - name: flag\n    cloth: { stiffness: 1000000000, "
-                             "substeps: 1 }\n";
+    const std::string text =
+        "objects:\n  - name: flag\n    cloth: { stiffness: 1000000000, "
+        "substeps: 1 }\n";
     const std::string path = write_text(dir.file("s.yaml"), text);
     const SceneDesc scene = load(path);
     try {
@@ -77,7 +80,8 @@ TEST_CASE("cloth settings a simulation cannot use name the scene's cloth", "[clo
     const std::string bad_pin =
         "objects:\n  - name: flag\n    cloth: { grid: [4, 4], pin: [0, 16] }\n";
     const std::string pin_path = write_text(dir.file("pin.yaml"), bad_pin);
-    check_error_at(load_error(pin_path), pin_path, line_col(bad_pin, "16"), "objects.0.cloth.pin.1");
+    check_error_at(load_error(pin_path), pin_path, line_col(bad_pin, "16"),
+                   "objects.0.cloth.pin.1");
 }
 
 // clang-format off

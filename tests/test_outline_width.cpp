@@ -14,6 +14,7 @@
 #include <glm/vec4.hpp>
 
 #include "anim/frame_state.hpp"
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
@@ -42,7 +43,7 @@ Rendered render_text(const std::string& text) {
     FrameRenderer renderer(r.scene, world, pool);
     FrameImages images;
     renderer.render(1, 0, images);
-    r.color = images.color;
+    r.color = to_float_image(images.color);
     const FrameState state = evaluate_frame(r.scene, world.object_bounds, 1, 0);
     r.camera = make_camera(state.camera, static_cast<float>(r.scene.output.width) /
                                              static_cast<float>(r.scene.output.height));

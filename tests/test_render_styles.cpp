@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
@@ -95,7 +96,7 @@ int red_pixels_of_cube_wireframe(bool hidden) {
     facet::FrameImages images;
     renderer.render(1, 0, images);
     int red = 0, black = 0;
-    for (const glm::vec4& c : images.color.pixels) {
+    for (const glm::vec4& c : facet::to_float_image(images.color).pixels) {
         red += c.r > 0.5f && c.g < 0.3f && c.b < 0.3f;
         black += c.r < 0.2f && c.g < 0.2f && c.b < 0.2f;
     }
@@ -164,7 +165,7 @@ objects:
     double contour = 0;
     int rows = 0;
     for (int y = 46; y <= 60; y += 2, ++rows) {
-        const std::vector<double> runs = line_runs(images.color, y, ink);
+        const std::vector<double> runs = line_runs(facet::to_float_image(images.color), y, ink);
         INFO("row " << y);
         REQUIRE(runs.size() == 3);
         CHECK(runs[1] == Approx(width).margin(0.15));  // the inner edge is right

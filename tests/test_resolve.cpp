@@ -26,9 +26,10 @@ TEST_CASE("supersampled frames resolve to mean colour and nearest depth", "[post
     depth.at(2, 1) = 7.0f;
 
     ThreadPool pool(2);
-    ColorImage out_color(2, 1);
+    HalfColorImage out_half(2, 1);
     DepthImage out_depth(2, 1);
-    resolve_supersampled(color, depth, k, out_color, out_depth, pool);
+    resolve_supersampled(color, depth, k, out_half, out_depth, pool);
+    const ColorImage out_color = to_float_image(out_half);
     CHECK(out_color.at(0, 0).r == Approx(0.25f));
     CHECK(out_color.at(0, 0).g == Approx(0.0f));
     CHECK(out_color.at(0, 0).a == Approx(1.0f));
@@ -39,6 +40,6 @@ TEST_CASE("supersampled frames resolve to mean colour and nearest depth", "[post
 
     // All samples missing: the depth stays +inf.
     DepthImage empty(4, 2, inf);
-    resolve_supersampled(color, empty, k, out_color, out_depth, pool);
+    resolve_supersampled(color, empty, k, out_half, out_depth, pool);
     CHECK(std::isinf(out_depth.at(0, 0)));
 }

@@ -2,6 +2,7 @@
 // reaches the rendered pixels, loops and holds as the scene says.
 #include <catch2/catch.hpp>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
@@ -29,7 +30,7 @@ ColorImage render_frame(const SceneDesc& scene, const World& world, int frame) {
     FrameRenderer renderer(scene, world, pool);
     FrameImages images;
     renderer.render(frame, 0, images);
-    return images.color;
+    return to_float_image(images.color);
 }
 
 bool same_pixels(const ColorImage& a, const ColorImage& b) {

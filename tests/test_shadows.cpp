@@ -8,6 +8,7 @@
 #include <string>
 
 #include "anim/frame_state.hpp"
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
@@ -23,7 +24,8 @@ const char* kFloorMaterial = "{ color: [1, 1, 1], ambient: 0.2, diffuse: 0.8, sp
 const char* kRedMaterial = "{ color: [1, 0, 0], ambient: 0.2, diffuse: 0.8, specular: 0 }";
 
 struct Rendered {
-    FrameImages images;
+    FrameImages frame;
+    ColorImage color;  // the frame's colour as floats
     CameraMatrices camera;
 };
 
@@ -35,7 +37,8 @@ Rendered render_yaml(const std::string& yaml, unsigned threads = 2) {
     ThreadPool pool(threads);
     FrameRenderer renderer(scene, world, pool);
     Rendered out;
-    renderer.render(1, 0, out.images);
+    renderer.render(1, 0, out.frame);
+    out.color = to_float_image(out.frame.color);
     const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
     out.camera = make_camera(state.camera, static_cast<float>(scene.output.width) /
                                                static_cast<float>(scene.output.height));
@@ -49,15 +52,15 @@ bool is_floor(const glm::vec4& c) {
 // The pixel that shows world point p; the test fails if p is off screen.
 glm::vec4 pixel_at(const Rendered& r, const glm::vec3& p) {
     const glm::vec4 clip = r.camera.view_projection * glm::vec4(p, 1.0f);
-    const float x = (clip.x / clip.w + 1.0f) * 0.5f * static_cast<float>(r.images.color.width);
-    const float y = (1.0f - clip.y / clip.w) * 0.5f * static_cast<float>(r.images.color.height);
+    const float x = (clip.x / clip.w + 1.0f) * 0.5f * static_cast<float>(r.color.width);
+    const float y = (1.0f - clip.y / clip.w) * 0.5f * static_cast<float>(r.color.height);
     INFO("world point (" << p.x << ", " << p.y << ", " << p.z << ") at pixel " << x << ", " << y);
     REQUIRE(clip.w > 0);
     REQUIRE(x >= 0);
     REQUIRE(y >= 0);
-    REQUIRE(x < static_cast<float>(r.images.color.width));
-    REQUIRE(y < static_cast<float>(r.images.color.height));
-    return r.images.color.at(static_cast<int>(x), static_cast<int>(y));
+    REQUIRE(x < static_cast<float>(r.color.width));
+    REQUIRE(y < static_cast<float>(r.color.height));
+    return r.color.at(static_cast<int>(x), static_cast<int>(y));
 }
 
 // Floor brightness halfway between shadowed (0.2) and lit (0.2 + 0.8 n·l).
@@ -88,7 +91,7 @@ struct ShadowPixels {
 // Shadowed floor pixels of the top view (image x -> world x, image y -> world z).
 ShadowPixels count_shadow(const Rendered& r, float n_dot_l) {
     ShadowPixels s;
-    const ColorImage& img = r.images.color;
+    const ColorImage& img = r.color;
     for (int y = 0; y < img.height; ++y)
         for (int x = 0; x < img.width; ++x) {
             const glm::vec4& c = img.at(x, y);
@@ -220,9 +223,9 @@ namespace {
 // Colour differences between a render with shadows and one without.
 size_t changed_pixels(const Rendered& a, const Rendered& b, bool (*where)(const glm::vec4&)) {
     size_t changed = 0;
-    for (size_t i = 0; i < a.images.color.pixels.size(); ++i) {
-        const glm::vec4& p = a.images.color.pixels[i];
-        const glm::vec4& q = b.images.color.pixels[i];
+    for (size_t i = 0; i < a.color.pixels.size(); ++i) {
+        const glm::vec4& p = a.color.pixels[i];
+        const glm::vec4& q = b.color.pixels[i];
         if (where(q) && glm::vec3(p) != glm::vec3(q)) ++changed;
     }
     return changed;
@@ -293,11 +296,11 @@ objects:
         const Rendered on = render_yaml(scene(c.sphere, c.light));
         const Rendered off = render_yaml(scene(c.sphere, ""));
         size_t compared = 0, changed = 0;
-        for (size_t i = 0; i < on.images.color.pixels.size(); ++i) {
-            const glm::vec4& q = off.images.color.pixels[i];
+        for (size_t i = 0; i < on.color.pixels.size(); ++i) {
+            const glm::vec4& q = off.color.pixels[i];
             if (!is_red(q) || q.r < 0.2f + 0.8f * 0.3f) continue;
             ++compared;
-            if (on.images.color.pixels[i].r != q.r) ++changed;
+            if (on.color.pixels[i].r != q.r) ++changed;
         }
         CHECK(compared > 1000);
         CHECK(changed == 0);
@@ -345,6 +348,6 @@ objects:
     const Rendered one = render_yaml(yaml, 1);
     const Rendered two = render_yaml(yaml, 2);
     const Rendered three = render_yaml(yaml, 3);
-    CHECK(one.images.color.pixels == two.images.color.pixels);
-    CHECK(one.images.color.pixels == three.images.color.pixels);
+    CHECK(one.color.pixels == two.color.pixels);
+    CHECK(one.color.pixels == three.color.pixels);
 }

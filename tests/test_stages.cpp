@@ -196,7 +196,7 @@ TEST_CASE("shading models: one switch, each model's own result", "[stages][style
     SurfaceLanes in;
     in.count = 2;
     for (int i = 0; i < 2; ++i) {
-        in.albedo[i] = glm::vec3(0.2f, 0.4f, 0.6f);
+        in.albedo[0][i] = 0.2f, in.albedo[1][i] = 0.4f, in.albedo[2][i] = 0.6f;
         in.surface.px[i] = 0, in.surface.py[i] = 0, in.surface.pz[i] = 0;
         in.surface.nx[i] = 0, in.surface.ny[i] = 0, in.surface.nz[i] = 2;  // any length
         in.surface.ambient[i] = 0.1f, in.surface.diffuse[i] = 0.9f;
@@ -211,18 +211,18 @@ TEST_CASE("shading models: one switch, each model's own result", "[stages][style
 
     style.model = ShadingModel::unlit;
     shade_lanes(style, context, in, out);
-    CHECK(out.color[0] == in.albedo[0]);
+    CHECK(out.color_at(0) == in.albedo_at(0));
     CHECK(out.palette_tone[0] == -1.0f);
 
     style.model = ShadingModel::depth;  // near end white, far end black
     shade_lanes(style, context, in, out);
-    CHECK(out.color[0] == glm::vec3(1.0f));
-    CHECK(out.color[1] == glm::vec3(0.0f));
+    CHECK(out.color_at(0) == glm::vec3(1.0f));
+    CHECK(out.color_at(1) == glm::vec3(0.0f));
 
     style.model = ShadingModel::blinn_phong;  // n.l = 1: albedo * (ambient + diffuse)
     shade_lanes(style, context, in, out);
-    CHECK(out.color[0].x == Approx(0.2f * (0.1f + 0.9f)));
-    CHECK(out.color[1].z == Approx(0.6f * (0.1f + 0.9f)));
+    CHECK(out.color_at(0).x == Approx(0.2f * (0.1f + 0.9f)));
+    CHECK(out.color_at(1).z == Approx(0.6f * (0.1f + 0.9f)));
 
     style.model = ShadingModel::palette;  // the palette model reports its cel's tone
     shade_lanes(style, context, in, out);

@@ -2,6 +2,7 @@
 // the same pixels for any thread count.
 #include <catch2/catch.hpp>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
@@ -30,7 +31,8 @@ TEST_CASE("styled renders are identical for 1, 2 and 3 threads", "[style][determ
             FrameRenderer renderer(scene, world, pool);
             FrameImages out;
             renderer.render(2, 0, out);
-            images.push_back(out.color.pixels);
+            const ColorImage color = to_float_image(out.color);
+            images.push_back(std::vector<glm::vec4>(color.pixels.begin(), color.pixels.end()));
         }
         CHECK(images[0] == images[1]);
         CHECK(images[0] == images[2]);

@@ -12,6 +12,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/style_eval.hpp"
@@ -239,7 +240,8 @@ objects:
     facet::FrameImages images;
     renderer.render(1, 0, images);
     // The cube centres land 15 pixels either side of the middle.
-    const glm::vec4 left = images.color.at(17, 16), right = images.color.at(47, 16);
+    const glm::vec4 left = facet::to_float(images.color.at(17, 16)),
+                    right = facet::to_float(images.color.at(47, 16));
     CHECK(same(glm::vec3(left), {0, 0, 1}));
     CHECK(same(glm::vec3(right), {1, 0, 0}));
 }

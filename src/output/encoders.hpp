@@ -7,12 +7,15 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/half.hpp"
 #include "core/image.hpp"
 
 namespace facet {
 
 // 8-bit sRGB PNG from linear colour: RGB when every pixel is opaque, RGBA
-// otherwise. `compression` is zlib's 0..9.
+// otherwise. `compression` is zlib's 0..9. The float version converts to
+// half first, so both give the same bytes for the same colour.
+std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression);
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 
 // 16-bit grey PNG view of linear depth: range.x (near) maps to 65535,
@@ -20,7 +23,7 @@ std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression);
 
 // OpenEXR, half-float linear RGBA, ZIP compression.
-std::vector<uint8_t> encode_exr_color(const ColorImage& image);
+std::vector<uint8_t> encode_exr_color(const HalfColorImage& image);
 
 // OpenEXR, one float32 channel "Z" with linear view depth, +inf background.
 std::vector<uint8_t> encode_exr_depth(const DepthImage& depth);

@@ -58,19 +58,16 @@ Imf::Header make_header(int width, int height) {
 
 }  // namespace
 
-std::vector<uint8_t> encode_exr_color(const ColorImage& image) {
-    const size_t count = image.pixels.size();
-    std::vector<Imath::half> planes[4];
-    for (auto& p : planes) p.resize(count);
-    for (size_t i = 0; i < count; ++i)
-        for (int c = 0; c < 4; ++c) planes[c][i] = Imath::half(image.pixels[i][c]);
+std::vector<uint8_t> encode_exr_color(const HalfColorImage& image) {
     Imf::Header header = make_header(image.width, image.height);
     const char* names[4] = {"R", "G", "B", "A"};
     Imf::FrameBuffer fb;
+    // The frame's own half floats, straight from the interleaved pixels.
+    char* base = reinterpret_cast<char*>(const_cast<Rgba16F*>(image.pixels.data()));
     for (int c = 0; c < 4; ++c) {
         header.channels().insert(names[c], Imf::Channel(Imf::HALF));
-        fb.insert(names[c], Imf::Slice(Imf::HALF, reinterpret_cast<char*>(planes[c].data()),
-                                       sizeof(Imath::half), sizeof(Imath::half) * image.width));
+        fb.insert(names[c], Imf::Slice(Imf::HALF, base + c * sizeof(uint16_t), sizeof(Rgba16F),
+                                       sizeof(Rgba16F) * static_cast<size_t>(image.width)));
     }
     return write_exr(header, fb, image.height);
 }

@@ -12,15 +12,23 @@
 namespace facet {
 namespace {
 
-// Linear [0,1] in 1/65535 steps -> 8-bit sRGB. A table is exact to well
-// under half an 8-bit step and ten times faster than pow per channel.
-const std::vector<uint8_t>& linear_to_srgb8_table() {
-    static const std::vector<uint8_t> table = [] {
-        std::vector<uint8_t> t(65536);
-        for (int i = 0; i < 65536; ++i)
-            t[i] = static_cast<uint8_t>(std::lround(linear_to_srgb(i / 65535.0) * 255.0));
-        return t;
-    }();
+// Every half-float colour value -> its 8-bit sRGB byte (negative and NaN
+// black, above 1 white), and -> its 8-bit linear byte for alpha. Built once
+// (a constant, not state): a lookup per channel instead of pow.
+struct HalfToByte {
+    std::vector<uint8_t> srgb, linear;
+    HalfToByte() : srgb(65536), linear(65536) {
+        for (uint32_t h = 0; h < 65536; ++h) {
+            const float v = half_to_float(static_cast<uint16_t>(h));
+            const double unit = v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0;
+            srgb[h] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+            linear[h] = static_cast<uint8_t>(std::lround(unit * 255.0));
+        }
+    }
+};
+
+const HalfToByte& half_to_byte() {
+    static const HalfToByte table;
     return table;
 }
 
@@ -64,20 +72,21 @@ bool write_png(std::vector<uint8_t>& out, int width, int height, int bit_depth, 
 
 }  // namespace
 
-std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) {
-    const auto& table = linear_to_srgb8_table();
+std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression) {
+    const HalfToByte& table = half_to_byte();
     // Opaque images are written as RGB: a quarter less data to compress.
+    const uint16_t one = 0x3c00;
     bool opaque = true;
-    for (const glm::vec4& c : image.pixels) opaque = opaque && c.a >= 1.0f;
+    for (const Rgba16F& c : image.pixels) opaque = opaque && c.a == one;
     const size_t channels = opaque ? 3 : 4;
     std::vector<uint8_t> pixels(static_cast<size_t>(image.width) * image.height * channels);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
-        const glm::vec4& c = image.pixels[i];
+        const Rgba16F& c = image.pixels[i];
         uint8_t* p = &pixels[channels * i];
-        p[0] = table[unit_to_u16(c.r)];
-        p[1] = table[unit_to_u16(c.g)];
-        p[2] = table[unit_to_u16(c.b)];
-        if (!opaque) p[3] = static_cast<uint8_t>((unit_to_u16(c.a) * 255u + 32767u) / 65535u);
+        p[0] = table.srgb[c.r];
+        p[1] = table.srgb[c.g];
+        p[2] = table.srgb[c.b];
+        if (!opaque) p[3] = table.linear[c.a];
     }
     std::vector<uint8_t> out;
     if (!write_png(out, image.width, image.height, 8,
@@ -85,6 +94,10 @@ std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) 
                    static_cast<size_t>(image.width) * channels, compression))
         throw Error(ExitCode::runtime_failure, "PNG encoding failed");
     return out;
+}
+
+std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression) {
+    return encode_png_color(to_half_image(image), compression);
 }
 
 std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression) {

@@ -5,7 +5,7 @@
 namespace facet {
 
 void resolve_supersampled(const ColorImage& color, const DepthImage& depth, int k,
-                          ColorImage& out_color, DepthImage& out_depth, ThreadPool& pool) {
+                          HalfColorImage& out_color, DepthImage& out_depth, ThreadPool& pool) {
     const float weight = 1.0f / static_cast<float>(k * k);
     // Rows are independent, and each sum runs in the same order whatever
     // thread does it: identical results for any thread count.
@@ -19,7 +19,7 @@ void resolve_supersampled(const ColorImage& color, const DepthImage& depth, int 
                     sum += color.at(x * k + sx, y * k + sy);
                     nearest = std::min(nearest, depth.at(x * k + sx, y * k + sy));
                 }
-            out_color.at(x, y) = sum * weight;
+            out_color.at(x, y) = to_half(sum * weight);
             out_depth.at(x, y) = nearest;
         }
     });

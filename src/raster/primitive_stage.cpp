@@ -39,13 +39,18 @@ struct PlaneSolver {
 
 }  // namespace
 
-Rasterizer::Rasterizer(int width, int height) : width_(width), height_(height) {
+Rasterizer::Rasterizer(int width, int height, int tile_size)
+    : width_(width), height_(height), tile_size_(tile_size) {
+    if (tile_size < 8 || tile_size > kTileSize)
+        throw Error(ExitCode::runtime_failure, "tile size " + std::to_string(tile_size) +
+                                                   " is out of range (8.." +
+                                                   std::to_string(kTileSize) + ")");
     if (width < 1 || height < 1 || width > kMaxImageSide || height > kMaxImageSide)
         throw Error(ExitCode::invalid_input, "image size " + std::to_string(width) + "x" +
                                                  std::to_string(height) + " is out of range (1.." +
                                                  std::to_string(kMaxImageSide) + ")");
-    tiles_x_ = (width + kTileSize - 1) / kTileSize;
-    tiles_y_ = (height + kTileSize - 1) / kTileSize;
+    tiles_x_ = (width + tile_size - 1) / tile_size;
+    tiles_y_ = (height + tile_size - 1) / tile_size;
     guard_x_ = 1.0f + 2.0f * kGuardBandPixels / static_cast<float>(width);
     guard_y_ = 1.0f + 2.0f * kGuardBandPixels / static_cast<float>(height);
 }
@@ -149,8 +154,8 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
         uint32_t local = static_cast<uint32_t>(bins.triangles.size());
         bins.triangles.push_back(tri);
         bins.shading.push_back(shade);
-        for (int64_t ty = py0 / kTileSize; ty <= py1 / kTileSize; ++ty)
-            for (int64_t tx = px0 / kTileSize; tx <= px1 / kTileSize; ++tx) {
+        for (int64_t ty = py0 / tile_size_; ty <= py1 / tile_size_; ++ty)
+            for (int64_t tx = px0 / tile_size_; tx <= px1 / tile_size_; ++tx) {
                 bins.scratch_tiles.push_back(static_cast<uint32_t>(ty * tiles_x_ + tx));
                 bins.scratch_tiles.push_back(local);
             }

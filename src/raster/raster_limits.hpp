@@ -18,7 +18,10 @@ constexpr int64_t kSubpixelScale = int64_t(1) << kSubpixelBits;
 // values (products of two coordinate differences) fit easily in int64.
 constexpr float kGuardBandPixels = 8192.0f;
 
-// Screen tiles: each is rasterized and shaded by one thread at a time.
+// Screen tiles: each is rasterized and shaded by one thread at a time. A
+// tile is at most kTileSize wide and high (the row stride of its buffers);
+// a rasterizer may use a smaller size, so that a tile holds whole pixels of
+// a k x k sample grid (63 for k = 3, 60 for k = 5).
 constexpr int kTileSize = 64;
 
 // Source triangles per primitive-stage chunk. Fixed, so that the set of

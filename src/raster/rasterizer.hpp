@@ -35,10 +35,12 @@ struct TileVisibility {
 
 class Rasterizer {
   public:
-    Rasterizer(int width, int height);
+    // `tile_size` in [8, kTileSize]: the side of the screen tiles.
+    Rasterizer(int width, int height, int tile_size = kTileSize);
 
     int width() const { return width_; }
     int height() const { return height_; }
+    int tile_size() const { return tile_size_; }
 
     // Primitive stage, in parallel over fixed chunks of triangles.
     void set_geometry(const RasterInput& input, ThreadPool& pool);
@@ -67,6 +69,7 @@ class Rasterizer {
     void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const;
 
     int width_, height_;
+    int tile_size_;
     int tiles_x_, tiles_y_;
     float guard_x_, guard_y_;  // guard band half-size in NDC units
     std::vector<ChunkBins> chunks_;

@@ -50,7 +50,7 @@ ColorImage render_contact_sheet(const SheetRequest& request) {
         const int x0 = (c % columns) * pitch_x, y0 = (c / columns) * pitch_y;
         for (int y = 0; y < request.cell_height; ++y)
             for (int x = 0; x < request.cell_width; ++x)
-                sheet.at(x0 + x, y0 + y) = images.color.at(x, y);
+                sheet.at(x0 + x, y0 + y) = to_float(images.color.at(x, y));
         const int text_width = label_width(cell.label, kLabelScale);
         draw_label(sheet, x0 + std::max(kPadding, (request.cell_width - text_width) / 2),
                    y0 + request.cell_height + kPadding, cell.label, kLabelColor, kLabelScale);

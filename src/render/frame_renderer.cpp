@@ -7,13 +7,11 @@
 namespace facet {
 namespace {
 
-// Gives `images` the size, keeping its buffers when they have it already.
+// Gives `image` the size, keeping its buffer when it has it already.
 // Shading writes every pixel (background included), so nothing is cleared.
-void fit(FrameImages& images, int width, int height) {
-    if (images.color.width != width || images.color.height != height)
-        images.color = ColorImage(width, height);
-    if (images.depth.width != width || images.depth.height != height)
-        images.depth = DepthImage(width, height);
+template <typename Image>
+void fit(Image& image, int width, int height) {
+    if (image.width != width || image.height != height) image = Image(width, height);
 }
 
 RasterInput raster_input(const World& world, const TransformedVertices& vertices) {
@@ -37,7 +35,9 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       pose_(scene, world),
       shadows_(scene, world),
       vertices_(world),
-      rasterizer_(scene.output.width * side_, scene.output.height * side_),
+      // Tiles hold whole pixels of the k x k sample grid.
+      rasterizer_(scene.output.width * side_, scene.output.height * side_,
+                  kTileSize - kTileSize % side_),
       hidden_edges_(world) {}
 
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
@@ -52,24 +52,30 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         vertices_.transform(inputs, posed, lights, plan.any_gouraud, pool_);
     rasterizer_.set_geometry(raster_input(world_, vertices), pool_);
 
-    // With supersampling, shade at side x side the size, then resolve (post/).
-    fit(out, scene_.output.width, scene_.output.height);
+    // Shading writes finished pixels, resolving anti-aliased ones itself,
+    // unless screen-space passes need every sample first (then post/
+    // resolves). Either way one sample per pixel without anti-aliasing.
+    fit(out.color, scene_.output.width, scene_.output.height);
+    fit(out.depth, scene_.output.width, scene_.output.height);
     out.depth_view_range = inputs.depth_view_range;
-    FrameImages& target = side_ == 1 ? out : supersampled_;
-    if (side_ > 1) fit(supersampled_, rasterizer_.width(), rasterizer_.height());
+    const bool per_sample = plan.outlines || plan.hidden_edges;
+    if (per_sample) {
+        fit(sample_color_, rasterizer_.width(), rasterizer_.height());
+        fit(sample_depth_, rasterizer_.width(), rasterizer_.height());
+    }
     const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_};
     const ShadeTarget shade_out{
-        target.color, target.depth,
+        per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
+        per_sample ? sample_depth_ : out.depth,
         plan.outlines ? &outlines_.gbuffer(rasterizer_.width(), rasterizer_.height()) : nullptr};
     rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
         shade_tile(tile, rasterizer_, shade_in, shade_out);
     });
+    if (!per_sample) return;
     if (plan.hidden_edges && !world_.edge_mask.empty())
-        hidden_edges_.draw(vertices.clip, inputs, plan, side_, target.depth, target.color);
-    if (plan.outlines) outlines_.draw(inputs.outlines, target.color, pool_);
-    if (side_ > 1)
-        resolve_supersampled(supersampled_.color, supersampled_.depth, side_, out.color, out.depth,
-                             pool_);
+        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_);
+    if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_);
+    resolve_supersampled(sample_color_, sample_depth_, side_, out.color, out.depth, pool_);
 }
 
 }  // namespace facet

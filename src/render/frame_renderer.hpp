@@ -7,6 +7,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "core/half.hpp"
 #include "core/image.hpp"
 #include "core/thread_pool.hpp"
 #include "raster/rasterizer.hpp"
@@ -21,7 +22,7 @@
 namespace facet {
 
 struct FrameImages {
-    ColorImage color;            // linear RGBA
+    HalfColorImage color;        // linear RGBA, half floats (core/half.hpp)
     DepthImage depth;            // linear view depth, +inf where nothing was hit
     glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
 };
@@ -46,7 +47,9 @@ class FrameRenderer {
     Rasterizer rasterizer_;
     HiddenEdgeStage hidden_edges_;
     OutlineStage outlines_;
-    FrameImages supersampled_;  // shading target when side_ > 1
+    // Every sample in float, when passes at the sample resolution follow.
+    ColorImage sample_color_;
+    DepthImage sample_depth_;
 };
 
 }  // namespace facet

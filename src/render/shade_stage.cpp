@@ -1,204 +1,319 @@
 #include "render/shade_stage.hpp"
 
+#include <algorithm>
+#include <cstring>
 #include <limits>
+#include <vector>
 
-#include <glm/geometric.hpp>
-
-#include "raster/surface_sample.hpp"
-#include "shade/layers.hpp"
-#include "shade/shading_models.hpp"
-#include "shade/texture_lod.hpp"
-#include "shade/wireframe.hpp"
+#include "render/shade_batch.hpp"
+#include "render/tile_fragments.hpp"
 
 namespace facet {
 namespace {
 
-// Everything shading needs about one visible pixel, gathered from the
-// surface sample, the triangle's vertices, its material and its style.
-struct VisiblePoint {
-    uint32_t style;  // index into FrameInputs::styles
-    uint32_t object;
-    glm::vec3 position, normal;  // world space; normal facing the viewer, any length
-    glm::vec3 albedo;
-    const Material* material;
-    float receives_shadow;
-    float depth;
-    LightingResult vertex_light;  // Gouraud only
-    LayerInputs layers;
-};
+using simd::kLanes;
+using simd::vf;
+using simd::vi;
 
-// The texture coordinates of a triangle's corners, times `scale`.
-struct CornerUvs {
-    glm::vec2 uv[3];
-};
+constexpr float kInfinity = std::numeric_limits<float>::infinity();
 
-CornerUvs corner_uvs(const World& world, const uint32_t* corners, glm::vec2 scale) {
-    return {{world.uvs[corners[0]] * scale, world.uvs[corners[1]] * scale,
-             world.uvs[corners[2]] * scale}};
-}
-
-TextureLookup lookup(const CornerUvs& c, const SurfaceSample& s, glm::vec2 texels) {
-    return texture_lookup(c.uv[0], c.uv[1], c.uv[2], s, texels);
-}
-
-// Hatching coordinates: the object's UVs, or the screen for screen-space
-// strokes and objects without UVs.
-void hatch_coordinates(const HatchingState& h, const Draw& draw, const World& world,
-                       const uint32_t* corners, const SurfaceSample& s, int x, int y,
-                       int samples_per_side, LayerInputs& out) {
-    const float size = static_cast<float>(h.tam->params.size);
-    if (h.screen_space || !draw.has_uvs) {
-        const float tile_samples = h.tile_pixels * static_cast<float>(samples_per_side);
-        out.hatch_uv =
-            glm::vec2(static_cast<float>(x) + 0.5f, static_cast<float>(y) + 0.5f) / tile_samples;
-        out.hatch_lod = std::max(0.0f, std::log2(size / tile_samples));
-        return;
-    }
-    const TextureLookup t =
-        lookup(corner_uvs(world, corners, glm::vec2(h.scale)), s, glm::vec2(size));
-    out.hatch_uv = t.uv;
-    out.hatch_lod = t.lod;
-}
-
-VisiblePoint gather_point(const SurfaceSample& s, int x, int y, const ShadeInputs& in) {
-    const World& world = in.world;
-    const uint32_t tri = s.triangle;
-    const uint32_t* corners = &world.indices[3 * static_cast<size_t>(tri)];
-    const uint32_t i0 = corners[0], i1 = corners[1], i2 = corners[2];
-    const Draw& draw = world.draws[world.triangle_draw[tri]];
-    VisiblePoint p;
-    p.object = draw.object;
-    p.style = in.plan.object_style[draw.object];
-    const StyleState& style = in.frame.styles[p.style];
-    p.material = &in.frame.materials[draw.material];
-    const Material& mat = *p.material;
-    const float b0 = s.bary.x, b1 = s.bary.y, b2 = s.bary.z;
-    const auto& wp = in.vertices.world_position;
-
-    p.albedo = style.base_color.value_or(mat.color);
-    if (mat.texture && !style.base_color) {
-        const glm::vec2 texels(mat.texture->width, mat.texture->height);
-        const TextureLookup t = lookup(corner_uvs(world, corners, mat.uv_scale), s, texels);
-        p.albedo *= glm::vec3(mat.texture->sample(t.uv, t.lod));
-    }
-    if (style.model == ShadingModel::flat) {
-        p.normal = glm::cross(wp[i1] - wp[i0], wp[i2] - wp[i0]);
-    } else {
-        const auto& wn = in.vertices.world_normal;
-        p.normal = b0 * wn[i0] + b1 * wn[i1] + b2 * wn[i2];
-    }
-    if (s.back_facing) p.normal = -p.normal;
-    p.position = b0 * wp[i0] + b1 * wp[i1] + b2 * wp[i2];
-    p.receives_shadow = world.receives_shadows[draw.object];
-    p.depth = s.w;
-    if (style.model == ShadingModel::gouraud) {
-        const auto& lit = in.vertices.lit;
-        p.vertex_light.diffuse = b0 * lit[i0].diffuse + b1 * lit[i1].diffuse + b2 * lit[i2].diffuse;
-        p.vertex_light.specular =
-            b0 * lit[i0].specular + b1 * lit[i1].specular + b2 * lit[i2].specular;
-    }
-    p.layers.albedo = p.albedo;
-    if (style.wireframe && !world.edge_mask.empty())
-        p.layers.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy),
-                                      style.wire.width * static_cast<float>(in.samples_per_side),
-                                      world.edge_mask[tri]);
-    if (style.hatching)
-        hatch_coordinates(*style.hatching, draw, world, corners, s, x, y, in.samples_per_side,
-                          p.layers);
-    return p;
-}
-
-// Visible points waiting to be shaded, all of one style, at most eight.
-class PendingPoints {
+// The style that shades a triangle id, remembering the last id asked for:
+// neighbouring pixels mostly show the same triangle.
+class StyleLookup {
   public:
-    PendingPoints(const ShadeInputs& in, const ShadingContext& context)
-        : in_(in), context_(context) {}
+    StyleLookup(const ShadeInputs& in, const Rasterizer& raster) : in_(in), raster_(raster) {}
 
-    void add(const VisiblePoint& p, glm::vec4* target) {
-        if (lanes_.count > 0 && p.style != style_) flush();
-        style_ = p.style;
-        const int i = lanes_.count++;
-        SurfaceBatch& s = lanes_.surface;
-        s.px[i] = p.position.x, s.py[i] = p.position.y, s.pz[i] = p.position.z;
-        s.nx[i] = p.normal.x, s.ny[i] = p.normal.y, s.nz[i] = p.normal.z;
-        s.ambient[i] = p.material->ambient, s.diffuse[i] = p.material->diffuse;
-        s.specular[i] = p.material->specular, s.shininess[i] = p.material->shininess;
-        s.receives_shadow[i] = p.receives_shadow;
-        lanes_.albedo[i] = p.albedo;
-        lanes_.depth[i] = p.depth;
-        lanes_.vertex_light[i] = p.vertex_light;
-        layers_[i] = p.layers;
-        targets_[i] = target;
-        if (lanes_.count == simd::kLanes) flush();
-    }
-
-    void flush() {
-        if (lanes_.count == 0) return;
-        const StyleState& style = in_.frame.styles[style_];
-        ShadedLanes shaded;
-        shade_lanes(style, context_, lanes_, shaded);
-        const bool layers = has_layers(style);
-        for (int i = 0; i < lanes_.count; ++i) {
-            const glm::vec3 c =
-                layers ? apply_layers(style, shaded.color[i], layers_[i], shaded.palette_tone[i])
-                       : shaded.color[i];
-            *targets_[i] = glm::vec4(c, 1.0f);
+    uint32_t operator()(uint32_t id) {
+        if (in_.frame.styles.size() == 1) return 0;
+        if (id != last_id_) {
+            last_id_ = id;
+            const uint32_t tri = raster_.shade_setup(id).source_triangle;
+            const World& world = in_.world;
+            last_style_ = in_.plan.object_style[world.draws[world.triangle_draw[tri]].object];
         }
-        lanes_.count = 0;
+        return last_style_;
     }
 
   private:
     const ShadeInputs& in_;
-    const ShadingContext& context_;
-    uint32_t style_ = 0;
-    SurfaceLanes lanes_;
-    LayerInputs layers_[simd::kLanes];
-    glm::vec4* targets_[simd::kLanes];
+    const Rasterizer& raster_;
+    uint32_t last_id_ = kNoTriangle, last_style_ = 0;
 };
+
+// Linear view depth of sample (x, y) of the triangle behind `id`: the same
+// operations as reconstruct_surfaces, so the same bits as its w.
+float sample_depth(const Rasterizer& raster, uint32_t id, int x, int y) {
+    const ShadeSetup& s = raster.shade_setup(id);
+    const float fx = (static_cast<float>(x) + 0.5f) - s.x0;
+    const float fy = (static_cast<float>(y) + 0.5f) - s.y0;
+    return 1.0f / (s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy);
+}
+
+// The nearest of a pixel's samples (largest reversed-Z) and its linear depth.
+float nearest_sample_depth(const TileVisibility& tile, const Rasterizer& raster, int side, int px,
+                           int py) {
+    int nearest = -1;
+    float nearest_z = 0;
+    for (int sy = py * side; sy < (py + 1) * side; ++sy)
+        for (int sx = px * side; sx < (px + 1) * side; ++sx) {
+            const int at = sy * kTileSize + sx;
+            if (tile.id[at] != kNoTriangle && (nearest < 0 || tile.depth[at] > nearest_z)) {
+                nearest = at;
+                nearest_z = tile.depth[at];
+            }
+        }
+    if (nearest < 0) return kInfinity;
+    return sample_depth(raster, tile.id[nearest], tile.x0 + nearest % kTileSize,
+                        tile.y0 + nearest / kTileSize);
+}
 
 void write_gbuffer(OutlineBuffers& g, int x, int y, float depth, const glm::vec3& normal,
                    uint32_t object) {
-    const size_t at = g.index(x, y);
-    g.depth[at] = depth;
-    g.normal[at] = normal;
-    g.object_id[at] = object;
+    const size_t i = g.index(x, y);
+    g.depth[i] = depth;
+    g.normal[i] = normal;
+    g.object_id[i] = object;
+}
+
+// --- Pixels whose samples all show one thing, eight along a row at a time ---
+
+// Eight pixels of a row: what each shows, and the colours and depths to write.
+struct RowChunk {
+    int px0, py, count;   // first pixel (in the tile), row, pixels in the chunk
+    uint32_t id[kLanes];  // per pixel: a triangle id, kNoTriangle or kMixedPixel
+    vf color[4];          // RGBA of the pixels written here
+    vf depth;
+};
+
+// Shades the chunk's pixels in `mine` (lanes of one style); the points are
+// the pixels' centres.
+[[gnu::always_inline]] inline void shade_chunk_style(const ShadeInputs& in,
+                                                     const Rasterizer& raster,
+                                                     const TileVisibility& tile, uint32_t style,
+                                                     unsigned mine, RowChunk& chunk) {
+    const int side = in.samples_per_side;
+    const float k = static_cast<float>(side);
+    ShadeBatch b;
+    b.count = chunk.count;
+    const int first = __builtin_ctz(mine);
+    for (int i = 0; i < kLanes; ++i) b.id[i] = chunk.id[(mine >> i) & 1 ? i : first];
+    const vf lane = {0, 1, 2, 3, 4, 5, 6, 7};
+    b.x = (lane + static_cast<float>(chunk.px0)) * k + (static_cast<float>(tile.x0) + 0.5f * k);
+    b.y = simd::splat(static_cast<float>(tile.y0 + chunk.py * side) + 0.5f * k);
+    shade_batch(in, raster, style, b);
+    vi mask;
+    for (int i = 0; i < kLanes; ++i) mask[i] = (mine >> i) & 1 ? -1 : 0;
+    for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
+    chunk.color[3] = mask ? simd::splat(1.0f) : chunk.color[3];
+    if (side == 1) {
+        chunk.depth = mask ? b.sample.w : chunk.depth;
+    } else {
+        for (int i = 0; i < chunk.count; ++i)
+            if ((mine >> i) & 1)
+                chunk.depth[i] = nearest_sample_depth(tile, raster, side, chunk.px0 + i, chunk.py);
+    }
+}
+
+// RGBA planes of eight pixels into eight half-float RGBA pixels in memory.
+[[gnu::always_inline]] inline void store_rgba(const vf (&c)[4], Rgba16F* pixels) {
+    vi h[4];
+    for (int a = 0; a < 4; ++a) h[a] = float_to_half(c[a]);
+    // Pack the pairs (r, g) and (b, a) of each pixel into one 32-bit lane,
+    // then interleave the two: pixel i is lanes 2i, 2i + 1 of the result.
+    const vi rg = h[0] | (h[1] << 16), ba = h[2] | (h[3] << 16);
+    const vi lo = {0, 8, 1, 9, 2, 10, 3, 11}, hi = {4, 12, 5, 13, 6, 14, 7, 15};
+    const vi out[2] = {__builtin_shuffle(rg, ba, lo), __builtin_shuffle(rg, ba, hi)};
+    std::memcpy(pixels, out, sizeof out);
+}
+
+[[gnu::always_inline]] inline void write_chunk(const TileVisibility& tile, const ShadeTarget& out,
+                                               int side, const RowChunk& chunk, bool any_mixed) {
+    const int x = tile.x0 / side + chunk.px0, y = tile.y0 / side + chunk.py;
+    Rgba16F* colors = &out.pixels->at(x, y);
+    float* depths = &out.depth.at(x, y);
+    if (chunk.count == kLanes && !any_mixed) {
+        store_rgba(chunk.color, colors);
+        std::memcpy(depths, &chunk.depth, sizeof chunk.depth);
+        return;
+    }
+    for (int i = 0; i < chunk.count; ++i) {
+        if (chunk.id[i] == kMixedPixel) continue;  // written from its fragments
+        colors[i] = to_half(
+            glm::vec4(chunk.color[0][i], chunk.color[1][i], chunk.color[2][i], chunk.color[3][i]));
+        depths[i] = chunk.depth[i];
+    }
+}
+
+// What the chunk's pixels show: a triangle, the background, or a mix.
+// Returns the mask of pixels that show a triangle.
+[[gnu::always_inline]] inline unsigned chunk_ids(const TileVisibility& tile, int side,
+                                                 RowChunk& chunk, bool& any_mixed) {
+    const uint32_t* row = tile.id + chunk.py * kTileSize + chunk.px0;
+    if (side == 1 && chunk.count == kLanes) {
+        std::memcpy(chunk.id, row, sizeof chunk.id);
+    } else {
+        for (int i = 0; i < kLanes; ++i)
+            chunk.id[i] = i >= chunk.count ? kNoTriangle
+                          : side == 1      ? row[i]
+                                           : pixel_id(tile, side, chunk.px0 + i, chunk.py);
+    }
+    unsigned shown = 0;
+    any_mixed = false;
+    for (int i = 0; i < kLanes; ++i) {
+        shown |= (chunk.id[i] < kMixedPixel ? 1u : 0u) << i;
+        any_mixed = any_mixed || chunk.id[i] == kMixedPixel;
+    }
+    return shown;
+}
+
+// Every pixel of the tile that is background or shows one triangle.
+[[gnu::always_inline]] inline void shade_simple_pixels(const TileVisibility& tile,
+                                                       const Rasterizer& raster,
+                                                       const ShadeInputs& in,
+                                                       const ShadeTarget& out) {
+    const int side = in.samples_per_side;
+    const int pixels_x = tile.width / side, pixels_y = tile.height / side;
+    const glm::vec4 bg = in.frame.background;
+    const bool one_style = in.frame.styles.size() == 1;
+    StyleLookup style_of_id(in, raster);
+    RowChunk chunk;
+    for (chunk.py = 0; chunk.py < pixels_y; ++chunk.py)
+        for (chunk.px0 = 0; chunk.px0 < pixels_x; chunk.px0 += kLanes) {
+            chunk.count = std::min(kLanes, pixels_x - chunk.px0);
+            for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
+            chunk.depth = simd::splat(kInfinity);
+            bool any_mixed = false;
+            unsigned shown = chunk_ids(tile, side, chunk, any_mixed);
+            if (one_style && shown) shade_chunk_style(in, raster, tile, 0, shown, chunk);
+            while (!one_style && shown) {  // one style at a time
+                const uint32_t style = style_of_id(chunk.id[__builtin_ctz(shown)]);
+                unsigned mine = 0;
+                for (int i = 0; i < kLanes; ++i)
+                    if ((shown >> i) & 1 && style_of_id(chunk.id[i]) == style) mine |= 1u << i;
+                shade_chunk_style(in, raster, tile, style, mine, chunk);
+                shown &= ~mine;
+            }
+            write_chunk(tile, out, side, chunk, any_mixed);
+        }
+}
+
+// --- Fragments: pixels whose samples show several things ---
+
+// Fragments in batches of eight of one style, each batch's colours handed
+// to `write(batch, fragment indices)`.
+template <typename Write>
+void shade_fragments(const TileFragments& f, const Rasterizer& raster, const ShadeInputs& in,
+                     Write write) {
+    StyleLookup style_of_id(in, raster);
+    std::vector<uint32_t> style_of(static_cast<size_t>(f.count));
+    std::vector<int> order(static_cast<size_t>(f.count));
+    for (int i = 0; i < f.count; ++i) style_of[i] = style_of_id(f.id[i]);
+    for (int i = 0; i < f.count; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](int a, int b) { return style_of[a] < style_of[b]; });
+    ShadeBatch b;
+    int fragment[kLanes];
+    for (int first = 0; first < f.count;) {
+        const uint32_t style = style_of[order[first]];
+        b.count = 0;
+        while (b.count < kLanes && first + b.count < f.count &&
+               style_of[order[first + b.count]] == style) {
+            fragment[b.count] = order[first + b.count];
+            ++b.count;
+        }
+        float xs[kLanes], ys[kLanes];
+        for (int i = 0; i < kLanes; ++i) {
+            const int at = fragment[i < b.count ? i : 0];
+            b.id[i] = f.id[at];
+            xs[i] = f.x[at];
+            ys[i] = f.y[at];
+        }
+        std::memcpy(&b.x, xs, sizeof b.x);
+        std::memcpy(&b.y, ys, sizeof b.y);
+        shade_batch(in, raster, style, b);
+        write(b, fragment);
+        first += b.count;
+    }
+}
+
+// Mixed pixels, resolved here: each the coverage-weighted sum of its
+// fragments and the background, with the nearest sample's depth.
+void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                        const ShadeTarget& out, TileFragments& f) {
+    build_tile_fragments(tile, in.samples_per_side, true, f);
+    if (f.count == 0) return;
+    const int side = f.side;
+    const float per_sample = 1.0f / static_cast<float>(side * side);
+    const glm::vec4 bg = in.frame.background;
+    std::vector<glm::vec4> sums(static_cast<size_t>(f.pixels_x * f.pixels_y), glm::vec4(0));
+    shade_fragments(f, raster, in, [&](const ShadeBatch& b, const int* fragment) {
+        for (int i = 0; i < b.count; ++i) {
+            const int at = fragment[i];
+            const float weight = static_cast<float>(f.samples[at]) * per_sample;
+            sums[f.pixel[at]] +=
+                glm::vec4(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f) * weight;
+        }
+    });
+    for (int at = 0; at < f.count; ++at) {
+        if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
+        const int px = f.pixel_x[at], py = f.pixel_y[at];
+        const glm::vec4 color =
+            sums[f.pixel[at]] + bg * (static_cast<float>(f.empty[f.pixel[at]]) * per_sample);
+        const int x = tile.x0 / side + px, y = tile.y0 / side + py;
+        out.pixels->at(x, y) = to_half(color);
+        out.depth.at(x, y) = nearest_sample_depth(tile, raster, side, px, py);
+    }
+}
+
+// Every sample, for passes at the sample resolution: each covered sample
+// gets its fragment's colour, depth, normal and object; the rest background.
+void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                        const ShadeTarget& out, TileFragments& f) {
+    build_tile_fragments(tile, in.samples_per_side, false, f);
+    const int side = f.side;
+    shade_fragments(f, raster, in, [&](const ShadeBatch& b, const int* fragment) {
+        for (int i = 0; i < b.count; ++i) {
+            const int at = fragment[i];
+            const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f);
+            const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+            for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
+                for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
+                    if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
+                    const int x = tile.x0 + sx, y = tile.y0 + sy;
+                    const float depth = sample_depth(raster, f.id[at], x, y);
+                    out.samples->at(x, y) = color;
+                    out.depth.at(x, y) = depth;
+                    if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
+                }
+        }
+    });
+    for (int ty = 0; ty < tile.height; ++ty)
+        for (int tx = 0; tx < tile.width; ++tx) {
+            if (tile.id[ty * kTileSize + tx] != kNoTriangle) continue;
+            const int x = tile.x0 + tx, y = tile.y0 + ty;
+            out.samples->at(x, y) = in.frame.background;
+            out.depth.at(x, y) = kInfinity;
+            if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, kInfinity, glm::vec3(0), kNoObject);
+        }
 }
 
 }  // namespace
 
-void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                const ShadeTarget& out) {
-    const float infinity = std::numeric_limits<float>::infinity();
-    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
-    PendingPoints pending(in, context);
-    for (int ty = 0; ty < tile.height; ++ty) {
-        const int y = tile.y0 + ty;
-        glm::vec4* color_row = &out.color.at(tile.x0, y);
-        float* depth_row = &out.depth.at(tile.x0, y);
-        for (int tx = 0; tx < tile.width; ++tx) {
-            const int x = tile.x0 + tx;
-            const uint32_t id = tile.id[ty * kTileSize + tx];
-            if (id == kNoTriangle) {
-                color_row[tx] = in.frame.background;
-                depth_row[tx] = infinity;
-                if (out.gbuffer)
-                    write_gbuffer(*out.gbuffer, x, y, infinity, glm::vec3(0), kNoObject);
-                continue;
-            }
-            const SurfaceSample s = reconstruct_surface(raster.shade_setup(id), x, y);
-            const VisiblePoint p = gather_point(s, x, y, in);
-            depth_row[tx] = p.depth;
-            if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, p.depth, p.normal, p.object);
-            const StyleState& style = in.frame.styles[p.style];
-            if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
-                color_row[tx] = glm::vec4(
-                    style.wire_fill + (style.wire.color - style.wire_fill) * p.layers.wire, 1.0f);
-                continue;
-            }
-            pending.add(p, &color_row[tx]);
-        }
+// Built twice, for AVX2 and for baseline x86-64, which do the same IEEE
+// operations in the same order and so give the same bits.
+__attribute__((target_clones("avx2", "default"))) void shade_tile(const TileVisibility& tile,
+                                                                  const Rasterizer& raster,
+                                                                  const ShadeInputs& in,
+                                                                  const ShadeTarget& out) {
+    if (out.samples) {
+        TileFragments fragments;
+        return shade_every_sample(tile, raster, in, out, fragments);
     }
-    pending.flush();
+    shade_simple_pixels(tile, raster, in, out);
+    if (in.samples_per_side > 1) {
+        TileFragments fragments;
+        shade_mixed_pixels(tile, raster, in, out, fragments);
+    }
 }
 
 }  // namespace facet

@@ -1,11 +1,17 @@
 #pragma once
-// Stage 7 of a frame (deferred shading): every pixel of a rasterized tile,
-// from the triangle id and depth the tile stage left in the visibility
-// buffer. Each visible point is shaded once, by the style of the object it
-// shows (shade/shading_models.hpp); background pixels get the background.
-// The stage also fills the G-buffer the outline stage reads.
+// Stage 7 of a frame (deferred shading): the fragments of a rasterized tile
+// (render/tile_fragments.hpp), from the triangle ids and depths the tile
+// stage left in the visibility buffer. Each fragment is shaded once, by the
+// style of the object it shows (shade/shading_models.hpp), eight fragments
+// of one style at a time. Background pixels get the background.
+//
+// The stage writes either the finished pixels (each the coverage-weighted
+// sum of its fragments) or, when screen-space passes follow at the sample
+// resolution (outlines, hidden edges), every sample with its fragment's
+// colour and the G-buffer those passes read.
 #include <span>
 
+#include "core/half.hpp"
 #include "core/image.hpp"
 #include "post/outlines.hpp"
 #include "raster/rasterizer.hpp"
@@ -22,18 +28,21 @@ struct ShadeInputs {
     const StylePlan& plan;
     const TransformedVertices& vertices;
     std::span<const ShadeLight> lights;
-    int samples_per_side;  // wire widths and screen-space strokes scale with it
+    int samples_per_side;  // k: the rasterizer runs at k times the output's width and height
 };
 
-// The images the stage writes, at the rasterizer's (sample) resolution.
+// One of two kinds of target: finished pixels (`pixels` set, `depth` of the
+// output size), or every sample (`samples` set, `depth` of the rasterizer's
+// size, and the G-buffer when outlines follow).
 struct ShadeTarget {
-    ColorImage& color;        // linear RGBA
+    HalfColorImage* pixels;   // linear RGBA, half floats
+    ColorImage* samples;      // linear RGBA, floats
     DepthImage& depth;        // linear view depth, +inf for background
-    OutlineBuffers* gbuffer;  // depth, normal and object id; null when no outlines
+    OutlineBuffers* gbuffer;  // per sample: depth, normal, object id; null when not needed
 };
 
-// Shades one tile; `raster` resolves the tile's triangle ids. Called for
-// different tiles on several threads at once: writes only the tile's pixels.
+// Shades one tile; `raster` resolves its triangle ids. Called for different
+// tiles on several threads at once: writes only the tile's own pixels.
 void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                 const ShadeTarget& out);
 

@@ -9,11 +9,13 @@
 namespace facet {
 
 // What the layers need at one point besides its colour.
+// No default values: the shading stage keeps eight of these per batch and
+// fills them only for styles with layers.
 struct LayerInputs {
-    glm::vec3 albedo{0};  // the object colour, for the default ink
-    glm::vec2 hatch_uv{0};
-    float hatch_lod = 0;
-    float wire = 0;  // wireframe line coverage, 0..1
+    glm::vec3 albedo;  // the object colour, for the default ink
+    glm::vec2 hatch_uv;
+    float hatch_lod;
+    float wire;  // wireframe line coverage, 0..1
 };
 
 inline bool has_layers(const StyleState& style) {

@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "shade/simd_math.hpp"
+#include "core/simd_math.hpp"
 
 namespace facet {
 

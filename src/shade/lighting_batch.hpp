@@ -4,8 +4,8 @@
 // implementation of the formulas. Results are identical on every CPU.
 #include <span>
 
+#include "core/simd_math.hpp"
 #include "shade/lighting.hpp"
-#include "shade/simd_math.hpp"
 
 namespace facet {
 

@@ -8,9 +8,11 @@
 
 namespace facet {
 
-inline glm::vec3 shade_depth_view(const SurfaceLanes& in, int lane, glm::vec2 range) {
-    const float t = (range.y - in.depth[lane]) / (range.y - range.x);
-    return glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f)));
+inline void shade_depth_view(const SurfaceLanes& in, glm::vec2 range, ShadedLanes& out) {
+    for (int i = 0; i < in.count; ++i) {
+        const float t = (range.y - in.depth[i]) / (range.y - range.x);
+        out.set(i, glm::vec3(srgb_to_linear(std::clamp(t, 0.0f, 1.0f))));
+    }
 }
 
 }  // namespace facet

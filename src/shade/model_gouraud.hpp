@@ -5,9 +5,9 @@
 
 namespace facet {
 
-inline glm::vec3 shade_gouraud(const SurfaceLanes& in, int lane) {
-    const LightingResult& l = in.vertex_light[lane];
-    return in.albedo[lane] * l.diffuse + l.specular;
+inline void shade_gouraud(const SurfaceLanes& in, ShadedLanes& out) {
+    for (int c = 0; c < 3; ++c)
+        out.color[c] = in.albedo[c] * in.vertex_diffuse[c] + in.vertex_specular[c];
 }
 
 }  // namespace facet

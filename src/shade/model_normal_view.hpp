@@ -6,12 +6,14 @@
 
 namespace facet {
 
-inline glm::vec3 shade_normal_view(const SurfaceLanes& in, int lane) {
-    const glm::vec3 normal(in.surface.nx[lane], in.surface.ny[lane], in.surface.nz[lane]);
-    const float len = glm::length(normal);
-    const glm::vec3 n = (len > 0 ? normal / len : glm::vec3(0, 1, 0)) * 0.5f + 0.5f;
-    // Shown as the stored bytes, so undo the sRGB encoding to come.
-    return {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z)};
+inline void shade_normal_view(const SurfaceLanes& in, ShadedLanes& out) {
+    for (int i = 0; i < in.count; ++i) {
+        const glm::vec3 normal(in.surface.nx[i], in.surface.ny[i], in.surface.nz[i]);
+        const float len = glm::length(normal);
+        const glm::vec3 n = (len > 0 ? normal / len : glm::vec3(0, 1, 0)) * 0.5f + 0.5f;
+        // Shown as the stored bytes, so undo the sRGB encoding to come.
+        out.set(i, {srgb_to_linear(n.x), srgb_to_linear(n.y), srgb_to_linear(n.z)});
+    }
 }
 
 }  // namespace facet

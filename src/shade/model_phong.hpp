@@ -10,11 +10,9 @@ namespace facet {
 inline void shade_phong(const SurfaceLanes& in, const ShadingContext& context, Highlight highlight,
                         ShadedLanes& out) {
     const LightingBatch l = light_surface_batch(in.surface, context.eye, context.lights, highlight);
-    for (int i = 0; i < in.count; ++i) {
-        const glm::vec3& a = in.albedo[i];
-        out.color[i] =
-            glm::vec3(a.x * l.dr[i] + l.sr[i], a.y * l.dg[i] + l.sg[i], a.z * l.db[i] + l.sb[i]);
-    }
+    out.color[0] = in.albedo[0] * l.dr + l.sr;
+    out.color[1] = in.albedo[1] * l.dg + l.sg;
+    out.color[2] = in.albedo[2] * l.db + l.sb;
 }
 
 }  // namespace facet

@@ -4,8 +4,8 @@
 
 namespace facet {
 
-inline glm::vec3 shade_unlit(const SurfaceLanes& in, int lane) {
-    return in.albedo[lane];
+inline void shade_unlit(const SurfaceLanes& in, ShadedLanes& out) {
+    for (int c = 0; c < 3; ++c) out.color[c] = in.albedo[c];
 }
 
 }  // namespace facet

@@ -22,7 +22,7 @@ void shade_stylised(const SurfaceLanes& in, const ShadingContext& context, Model
         const glm::vec3 position(s.px[i], s.py[i], s.pz[i]);
         const glm::vec3 n = normalise_or({s.nx[i], s.ny[i], s.nz[i]}, glm::vec3(0, 1, 0));
         const glm::vec3 v = normalise_or(context.eye - position, n);
-        out.color[i] = model(i, position, n, v, s.receives_shadow[i] > 0, out.palette_tone[i]);
+        out.set(i, model(i, position, n, v, s.receives_shadow[i] > 0, out.palette_tone[i]));
     }
 }
 
@@ -34,18 +34,13 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
     const std::span<const ShadeLight> lights = context.lights;
     switch (style.model) {
         case ShadingModel::unlit:
-            for (int i = 0; i < in.count; ++i) out.color[i] = shade_unlit(in, i);
-            return;
+            return shade_unlit(in, out);
         case ShadingModel::depth:
-            for (int i = 0; i < in.count; ++i)
-                out.color[i] = shade_depth_view(in, i, context.depth_range);
-            return;
+            return shade_depth_view(in, context.depth_range, out);
         case ShadingModel::normal:
-            for (int i = 0; i < in.count; ++i) out.color[i] = shade_normal_view(in, i);
-            return;
+            return shade_normal_view(in, out);
         case ShadingModel::gouraud:
-            for (int i = 0; i < in.count; ++i) out.color[i] = shade_gouraud(in, i);
-            return;
+            return shade_gouraud(in, out);
         case ShadingModel::flat:
         case ShadingModel::blinn_phong:
         case ShadingModel::phong:
@@ -58,7 +53,7 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
             shade_stylised(
                 in, context,
                 [&](int i, auto& p, auto& n, auto& v, bool r, float& tone) {
-                    return shade_palette(style.palette, in.albedo[i], p, n, v, lights, r, tone);
+                    return shade_palette(style.palette, in.albedo_at(i), p, n, v, lights, r, tone);
                 },
                 out);
             return;
@@ -66,7 +61,7 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
             shade_stylised(
                 in, context,
                 [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
-                    return shade_gooch(style.gooch, style.palette, in.albedo[i], p, n, v, lights,
+                    return shade_gooch(style.gooch, style.palette, in.albedo_at(i), p, n, v, lights,
                                        r);
                 },
                 out);
@@ -75,7 +70,7 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
             shade_stylised(
                 in, context,
                 [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
-                    return shade_toon(style.toon, in.albedo[i], p, n, v, lights, r);
+                    return shade_toon(style.toon, in.albedo_at(i), p, n, v, lights, r);
                 },
                 out);
             return;

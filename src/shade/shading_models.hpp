@@ -21,15 +21,25 @@ namespace facet {
 struct SurfaceLanes {
     int count = 0;
     SurfaceBatch surface;
-    glm::vec3 albedo[simd::kLanes];             // object colour, texture applied
-    float depth[simd::kLanes];                  // linear view depth
-    LightingResult vertex_light[simd::kLanes];  // Gouraud: the interpolated vertex lighting
+    simd::vf albedo[3];  // object colour (linear RGB), texture applied
+    simd::vf depth;      // linear view depth
+    // Gouraud: the vertex lighting interpolated, diffuse and specular RGB.
+    simd::vf vertex_diffuse[3], vertex_specular[3];
+
+    glm::vec3 albedo_at(int lane) const {
+        return {albedo[0][lane], albedo[1][lane], albedo[2][lane]};
+    }
 };
 
 struct ShadedLanes {
-    glm::vec3 color[simd::kLanes];  // linear RGB
+    simd::vf color[3];  // linear RGB
     // Palette only: the tone of the cel for hatching (seed 000), else -1.
     float palette_tone[simd::kLanes];
+
+    glm::vec3 color_at(int lane) const { return {color[0][lane], color[1][lane], color[2][lane]}; }
+    void set(int lane, const glm::vec3& c) {
+        color[0][lane] = c.x, color[1][lane] = c.y, color[2][lane] = c.z;
+    }
 };
 
 struct ShadingContext {

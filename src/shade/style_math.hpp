@@ -1,10 +1,10 @@
 #pragma once
 // Small scalar helpers shared by the stylised shading models. Everything
 // here is IEEE-exact arithmetic (add, mul, div, sqrt, compares), so a
-// result has the same bits on every x86-64, like shade/simd_math.hpp.
+// result has the same bits on every x86-64, like core/simd_math.hpp.
 #include <algorithm>
 
-#include "shade/simd_math.hpp"
+#include "core/simd_math.hpp"
 
 namespace facet {
 

@@ -25,6 +25,13 @@ typedef int32_t vi __attribute__((vector_size(32)));
     return vi{v, v, v, v, v, v, v, v};
 }
 
+// Bit i set where lane i of the mask is set (all ones).
+[[gnu::always_inline]] inline unsigned movemask(vi mask) {
+    unsigned bits = 0;
+    for (int i = 0; i < kLanes; ++i) bits |= (mask[i] != 0 ? 1u : 0u) << i;
+    return bits;
+}
+
 [[gnu::always_inline]] inline vf vsqrt(vf x) {
     vf r;
     for (int i = 0; i < kLanes; ++i) r[i] = __builtin_sqrtf(x[i]);

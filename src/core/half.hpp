@@ -1,0 +1,86 @@
+#pragma once
+// IEEE 754 binary16 ("half") conversions, bit-exact on every CPU: integer
+// operations only, rounding to nearest even as the standard says, so a
+// frame's half-float colour has the same bits whether F16C exists or not.
+// Frames keep their colour as half floats: what EXR stores, a 64 Ki-entry
+// table away from 8-bit sRGB for PNG, and half the memory traffic of float.
+#include <cstdint>
+#include <cstring>
+
+#include <glm/vec4.hpp>
+
+#include "core/image.hpp"
+#include "core/simd_math.hpp"
+
+namespace facet {
+
+struct Rgba16F {
+    uint16_t r, g, b, a;
+};
+
+using HalfColorImage = Image<Rgba16F>;  // linear RGBA, half floats
+
+// Eight floats to halves (in the low 16 bits of each lane): NaN stays NaN
+// (quiet), overflow goes to infinity, tiny values to subnormals or zero.
+[[gnu::always_inline]] inline simd::vi float_to_half(simd::vf value) {
+    using simd::splat_i;
+    using simd::vi;
+    vi bits;
+    std::memcpy(&bits, &value, sizeof bits);
+    const vi sign = (bits >> 16) & splat_i(0x8000);
+    const vi magnitude = bits & splat_i(0x7fffffff);
+    // Normal halves: rebias the exponent, round the 13 dropped bits to even.
+    const vi rebiased = magnitude - splat_i((127 - 15) << 23);
+    const vi odd = (rebiased >> 13) & splat_i(1);
+    const vi normal = (rebiased + splat_i(0x0fff) + odd) >> 13;
+    // Subnormal halves (|x| < 2^-14): add 0.5 so the float adder aligns the
+    // mantissa and rounds to even, then take the low bits.
+    simd::vf tiny;
+    std::memcpy(&tiny, &magnitude, sizeof tiny);
+    tiny = tiny + simd::splat(0.5f);
+    vi tiny_bits;
+    std::memcpy(&tiny_bits, &tiny, sizeof tiny_bits);
+    const vi subnormal = tiny_bits - splat_i(0x3f000000);
+    vi out = magnitude < splat_i(113 << 23) ? subnormal : normal;
+    out = magnitude >= splat_i(143 << 23) ? splat_i(0x7c00) : out;  // >= 65520: infinity
+    out = magnitude > splat_i(0x7f800000) ? splat_i(0x7e00) : out;  // NaN
+    return out | sign;
+}
+
+inline uint16_t float_to_half(float value) {
+    return static_cast<uint16_t>(float_to_half(simd::splat(value))[0]);
+}
+
+inline float half_to_float(uint16_t h) {
+    const uint32_t sign = static_cast<uint32_t>(h & 0x8000) << 16;
+    const uint32_t exponent = (h >> 10) & 0x1f, mantissa = h & 0x3ff;
+    uint32_t bits;
+    if (exponent == 0x1f) {
+        bits = sign | 0x7f800000u | (mantissa << 13);  // infinity, NaN
+    } else if (exponent != 0) {
+        bits = sign | ((exponent + 112) << 23) | (mantissa << 13);
+    } else if (mantissa == 0) {
+        bits = sign;
+    } else {  // subnormal: exact as a float
+        float f = static_cast<float>(mantissa) * (1.0f / 16777216.0f);  // 2^-24
+        std::memcpy(&bits, &f, sizeof bits);
+        bits |= sign;
+    }
+    float out;
+    std::memcpy(&out, &bits, sizeof out);
+    return out;
+}
+
+inline Rgba16F to_half(const glm::vec4& c) {
+    return {float_to_half(c.r), float_to_half(c.g), float_to_half(c.b), float_to_half(c.a)};
+}
+
+inline glm::vec4 to_float(const Rgba16F& c) {
+    return {half_to_float(c.r), half_to_float(c.g), half_to_float(c.b), half_to_float(c.a)};
+}
+
+// Whole images, for tests, contact sheets and anything else that wants floats.
+ColorImage to_float_image(const HalfColorImage& image);
+HalfColorImage to_half_image(const ColorImage& image);
+
+}  // namespace facet

@@ -1,0 +1,224 @@
+#include "render/shade_batch.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+#include "shade/layers.hpp"
+#include "shade/texture_lod.hpp"
+#include "shade/wireframe.hpp"
+
+namespace facet {
+namespace {
+
+using simd::kLanes;
+using simd::vf;
+using simd::vi;
+
+// A lane's value from one of the batch's triangles: splatted into every
+// lane for the first group, then selected into the group's lanes.
+[[gnu::always_inline]] inline void put(vf& v, vi mask, float value, bool first) {
+    v = first ? simd::splat(value) : (mask ? simd::splat(value) : v);
+}
+
+// The lanes that show the same triangle id: most batches hold one or two
+// triangles, so their data is loaded once per group, not once per lane.
+struct LaneGroup {
+    int lane;  // the first lane of the group
+    vi mask;
+};
+
+[[gnu::always_inline]] inline int group_lanes(const uint32_t (&ids)[kLanes],
+                                              LaneGroup (&groups)[kLanes]) {
+    vi all;
+    std::memcpy(&all, ids, sizeof all);
+    unsigned covered = 0;
+    int count = 0;
+    for (int lane = 0; lane < kLanes; ++lane) {
+        if (covered & (1u << lane)) continue;
+        const vi mask = all == simd::splat_i(static_cast<int32_t>(ids[lane]));
+        covered |= simd::movemask(mask);
+        groups[count++] = {lane, mask};
+    }
+    return count;
+}
+
+// Positions, normals, Gouraud light and material terms, group by group,
+// interpolated with the lanes' barycentrics.
+[[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
+                                                   const LaneGroup* groups, int group_count,
+                                                   ShadeBatch& b) {
+    const World& world = in.world;
+    const TransformedVertices& v = in.vertices;
+    const bool flat = style.model == ShadingModel::flat;
+    const bool gouraud = style.model == ShadingModel::gouraud;
+    vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
+    vf back = simd::splat(0.0f);
+    SurfaceBatch& s = b.lanes.surface;
+    for (int g = 0; g < group_count; ++g) {
+        const bool first = g == 0;
+        const vi mask = groups[g].mask;
+        const ShadeSetup& setup = *b.setup[groups[g].lane];
+        const uint32_t* corners = &world.indices[3 * static_cast<size_t>(setup.source_triangle)];
+        for (int c = 0; c < 3; ++c)
+            for (int a = 0; a < 3; ++a) {
+                put(p[c][a], mask, v.world_position[corners[c]][a], first);
+                if (!flat) put(n[c][a], mask, v.world_normal[corners[c]][a], first);
+                if (gouraud) {
+                    put(diffuse[c][a], mask, v.lit[corners[c]].diffuse[a], first);
+                    put(specular[c][a], mask, v.lit[corners[c]].specular[a], first);
+                }
+            }
+        put(back, mask, setup.back_facing ? 1.0f : 0.0f, first);
+        const Draw& draw = world.draws[world.triangle_draw[setup.source_triangle]];
+        const Material& m = in.frame.materials[draw.material];
+        put(s.ambient, mask, m.ambient, first);
+        put(s.diffuse, mask, m.diffuse, first);
+        put(s.specular, mask, m.specular, first);
+        put(s.shininess, mask, m.shininess, first);
+        put(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
+        for (int a = 0; a < 3; ++a)
+            put(b.lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
+                first);
+        for (int lane = 0; lane < kLanes; ++lane)
+            if (mask[lane]) {
+                b.object[lane] = draw.object;
+                b.material[lane] = &m;
+                b.has_uvs[lane] = draw.has_uvs;
+            }
+    }
+    const vf* bary = b.sample.bary;
+    auto interpolate = [&](const vf(&corner)[3][3], int a) {
+        return bary[0] * corner[0][a] + bary[1] * corner[1][a] + bary[2] * corner[2][a];
+    };
+    if (flat) {  // the face normal: (p1 - p0) x (p2 - p0)
+        vf e1[3], e2[3];
+        for (int a = 0; a < 3; ++a) e1[a] = p[1][a] - p[0][a], e2[a] = p[2][a] - p[0][a];
+        b.normal[0] = e1[1] * e2[2] - e2[1] * e1[2];
+        b.normal[1] = e1[2] * e2[0] - e2[2] * e1[0];
+        b.normal[2] = e1[0] * e2[1] - e2[0] * e1[1];
+    } else {
+        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate(n, a);
+    }
+    const vi facing_away = back > simd::splat(0.0f);
+    for (int a = 0; a < 3; ++a) b.normal[a] = facing_away ? -b.normal[a] : b.normal[a];
+    s.px = interpolate(p, 0), s.py = interpolate(p, 1), s.pz = interpolate(p, 2);
+    s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
+    b.lanes.depth = b.sample.w;
+    if (gouraud)
+        for (int a = 0; a < 3; ++a) {
+            b.lanes.vertex_diffuse[a] = interpolate(diffuse, a);
+            b.lanes.vertex_specular[a] = interpolate(specular, a);
+        }
+}
+
+// One lane's surface sample with derivatives per output pixel (k samples):
+// shading happens once per pixel, so footprints are a pixel's.
+SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
+    SurfaceSample s = surface_lane(b.sample, lane, *b.setup[lane]);
+    const float k = static_cast<float>(side);
+    s.ddx *= k;
+    s.ddy *= k;
+    return s;
+}
+
+struct CornerUvs {
+    glm::vec2 uv[3];
+};
+
+CornerUvs corner_uvs(const World& world, uint32_t triangle, glm::vec2 scale) {
+    const uint32_t* c = &world.indices[3 * static_cast<size_t>(triangle)];
+    return {{world.uvs[c[0]] * scale, world.uvs[c[1]] * scale, world.uvs[c[2]] * scale}};
+}
+
+// Textures, lane by lane: trilinear lookups do not vectorise.
+void apply_textures(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
+    if (style.base_color) return;
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        if (!m.texture) continue;
+        const SurfaceSample s = pixel_sample(b, i, in.samples_per_side);
+        const CornerUvs c = corner_uvs(in.world, s.triangle, m.uv_scale);
+        const TextureLookup t = texture_lookup(c.uv[0], c.uv[1], c.uv[2], s,
+                                               glm::vec2(m.texture->width, m.texture->height));
+        const glm::vec4 texel = m.texture->sample(t.uv, t.lod);
+        for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
+    }
+}
+
+// What the layers need, lane by lane: wire coverage and stroke coordinates.
+void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBatch& b,
+                  LayerInputs (&out)[kLanes]) {
+    const int side = in.samples_per_side;
+    for (int i = 0; i < b.count; ++i) {
+        LayerInputs& l = out[i];
+        l = LayerInputs{b.lanes.albedo_at(i), glm::vec2(0), 0.0f, 0.0f};
+        const SurfaceSample s = pixel_sample(b, i, side);
+        if (style.wireframe && !in.world.edge_mask.empty())
+            l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
+                                   in.world.edge_mask[s.triangle]);
+        if (!style.hatching) continue;
+        const HatchingState& h = *style.hatching;
+        const float size = static_cast<float>(h.tam->params.size);
+        if (h.screen_space || !b.has_uvs[i]) {
+            const float tile_samples = h.tile_pixels * static_cast<float>(side);
+            l.hatch_uv = glm::vec2(b.x[i], b.y[i]) / tile_samples;
+            l.hatch_lod = std::max(0.0f, std::log2(size / h.tile_pixels));
+        } else {
+            const CornerUvs c = corner_uvs(in.world, s.triangle, glm::vec2(h.scale));
+            const TextureLookup t = texture_lookup(c.uv[0], c.uv[1], c.uv[2], s, glm::vec2(size));
+            l.hatch_uv = t.uv;
+            l.hatch_lod = t.lod;
+        }
+    }
+}
+
+// The colours of a style with layers (or lines alone), lane by lane.
+void finish_layers(const ShadeInputs& in, const StyleState& style, const ShadingContext& context,
+                   ShadeBatch& b) {
+    LayerInputs layers[kLanes];
+    layer_inputs(in, style, b, layers);
+    if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
+        for (int i = 0; i < b.count; ++i) {
+            const glm::vec3 c =
+                style.wire_fill + (style.wire.color - style.wire_fill) * layers[i].wire;
+            for (int a = 0; a < 3; ++a) b.color[a][i] = c[a];
+        }
+        return;
+    }
+    ShadedLanes shaded;
+    shade_lanes(style, context, b.lanes, shaded);
+    for (int i = 0; i < b.count; ++i) {
+        const glm::vec3 c =
+            apply_layers(style, shaded.color_at(i), layers[i], shaded.palette_tone[i]);
+        for (int a = 0; a < 3; ++a) b.color[a][i] = c[a];
+    }
+}
+
+}  // namespace
+
+// Built twice, for AVX2 and for baseline x86-64, which do the same IEEE
+// operations in the same order and so give the same bits.
+__attribute__((target_clones("avx2", "default"))) void shade_batch(const ShadeInputs& in,
+                                                                   const Rasterizer& raster,
+                                                                   uint32_t style_index,
+                                                                   ShadeBatch& b) {
+    const StyleState& style = in.frame.styles[style_index];
+    for (int i = 0; i < kLanes; ++i) b.setup[i] = &raster.shade_setup(b.id[i]);
+    LaneGroup groups[kLanes];
+    const int group_count = group_lanes(b.id, groups);
+    SetupLanes setup = splat_setup(*b.setup[0]);
+    for (int g = 1; g < group_count; ++g)
+        select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
+    b.sample = reconstruct_surfaces(setup, b.x, b.y);
+    b.lanes.count = b.count;
+    gather_vertices(in, style, groups, group_count, b);
+    apply_textures(in, style, b);
+    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
+    if (has_layers(style)) return finish_layers(in, style, context, b);
+    ShadedLanes shaded;
+    shade_lanes(style, context, b.lanes, shaded);
+    for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
+}
+
+}  // namespace facet

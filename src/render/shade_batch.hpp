@@ -1,0 +1,40 @@
+#pragma once
+// Part of the shading stage (render/shade_stage.cpp): eight points of one
+// style, from the triangle each shows and where, to their colours. The
+// surface is reconstructed (raster/surface_sample.hpp), the triangle's
+// vertices and material gathered, textures and layers applied, and the
+// style's model run (shade/shading_models.hpp).
+#include <cstdint>
+
+#include "core/simd_math.hpp"
+#include "raster/rasterizer.hpp"
+#include "raster/surface_sample.hpp"
+#include "render/shade_stage.hpp"
+#include "shade/shading_models.hpp"
+
+namespace facet {
+
+struct ShadeBatch {
+    // Set by the caller. Lanes >= count repeat lane 0.
+    int count = 0;
+    uint32_t id[simd::kLanes];  // the rasterizer's triangle id
+    simd::vf x, y;              // where each point is, in the rasterizer's sample units
+
+    // Set by shade_batch.
+    const ShadeSetup* setup[simd::kLanes];
+    uint32_t object[simd::kLanes];
+    SurfaceSamples sample;
+    simd::vf normal[3];  // on the viewer's side, any length, as the G-buffer keeps it
+    simd::vf color[3];   // linear RGB, the result
+
+    // Scratch.
+    const Material* material[simd::kLanes];
+    bool has_uvs[simd::kLanes];
+    SurfaceLanes lanes;
+};
+
+// Shades the batch with in.frame.styles[style]; writes the fields marked
+// "set by shade_batch".
+void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style, ShadeBatch& b);
+
+}  // namespace facet
