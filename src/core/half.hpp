@@ -20,9 +20,11 @@ struct Rgba16F {
 
 using HalfColorImage = Image<Rgba16F>;  // linear RGBA, half floats
 
-// Eight floats to halves (in the low 16 bits of each lane): NaN stays NaN
-// (quiet), overflow goes to infinity, tiny values to subnormals or zero.
-[[gnu::always_inline]] inline simd::vi float_to_half(simd::vf value) {
+// Eight floats to halves (in the low 16 bits of each lane): overflow goes to
+// infinity, tiny values to subnormals or zero, NaN to a quiet NaN with the
+// top of its payload, exactly as the F16C instruction does, so that either
+// gives the same bits (float_to_half uses F16C where the build has it).
+[[gnu::always_inline]] inline simd::vi float_to_half_portable(simd::vf value) {
     using simd::splat_i;
     using simd::vi;
     vi bits;
@@ -43,8 +45,18 @@ using HalfColorImage = Image<Rgba16F>;  // linear RGBA, half floats
     const vi subnormal = tiny_bits - splat_i(0x3f000000);
     vi out = magnitude < splat_i(113 << 23) ? subnormal : normal;
     out = magnitude >= splat_i(143 << 23) ? splat_i(0x7c00) : out;  // >= 65520: infinity
-    out = magnitude > splat_i(0x7f800000) ? splat_i(0x7e00) : out;  // NaN
+    const vi nan = splat_i(0x7e00) | ((magnitude >> 13) & splat_i(0x3ff));
+    out = magnitude > splat_i(0x7f800000) ? nan : out;
     return out | sign;
+}
+
+[[gnu::always_inline]] inline simd::vi float_to_half(simd::vf value) {
+#ifdef __F16C__
+    const __m128i h = _mm256_cvtps_ph((__m256)value, _MM_FROUND_TO_NEAREST_INT);
+    return (simd::vi)_mm256_cvtepu16_epi32(h);
+#else
+    return float_to_half_portable(value);
+#endif
 }
 
 inline uint16_t float_to_half(float value) {

@@ -2,14 +2,17 @@
 // Eight-lane float maths with GCC vector extensions. Only IEEE-exact
 // operations are used (add, mul, div, sqrt, compares, bit moves), so every
 // lane gives the same bits as the same code run one value at a time, on
-// any x86-64 (SSE2 or AVX2 code paths alike). That keeps images identical
-// across machines, not only across thread counts.
+// any x86-64: a build for AVX2 (FACET_SIMD, CMakeLists.txt) and one for
+// baseline SSE2 give the same images. No FMA: contraction is off.
 #include <cstdint>
 
+#ifdef __AVX__
+#include <immintrin.h>
+#endif
+
 // The vectors are 32 bytes; on baseline x86-64 GCC warns that passing them
-// by value differs from AVX code. These helpers are always inlined, so they
-// are never called across that boundary: without optimisation an AVX2 clone
-// (target_clones) would otherwise call a baseline copy with the other ABI.
+// by value differs from AVX code. The whole program is built for one ISA,
+// so no call crosses that boundary.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 namespace facet::simd {
@@ -18,18 +21,32 @@ constexpr int kLanes = 8;
 typedef float vf __attribute__((vector_size(32)));
 typedef int32_t vi __attribute__((vector_size(32)));
 
+// With AVX the intrinsics: GCC 12 builds a braced {v, v, ...} or a loop
+// of lane stores with eight inserts (or through the stack), not one broadcast.
 [[gnu::always_inline]] inline vf splat(float v) {
+#ifdef __AVX__
+    return (vf)_mm256_set1_ps(v);
+#else
     return vf{v, v, v, v, v, v, v, v};
+#endif
 }
 [[gnu::always_inline]] inline vi splat_i(int32_t v) {
+#ifdef __AVX__
+    return (vi)_mm256_set1_epi32(v);
+#else
     return vi{v, v, v, v, v, v, v, v};
+#endif
 }
 
 // Bit i set where lane i of the mask is set (all ones).
 [[gnu::always_inline]] inline unsigned movemask(vi mask) {
+#ifdef __AVX__
+    return static_cast<unsigned>(_mm256_movemask_ps((__m256)mask));
+#else
     unsigned bits = 0;
     for (int i = 0; i < kLanes; ++i) bits |= (mask[i] != 0 ? 1u : 0u) << i;
     return bits;
+#endif
 }
 
 [[gnu::always_inline]] inline vf vsqrt(vf x) {

@@ -1,5 +1,6 @@
 #pragma once
 // Limits and precision of the rasterizer, named in one place.
+#include <cstddef>
 #include <cstdint>
 
 #include "core/limits.hpp"
@@ -23,6 +24,9 @@ constexpr float kGuardBandPixels = 8192.0f;
 // a rasterizer may use a smaller size, so that a tile holds whole pixels of
 // a k x k sample grid (63 for k = 3, 60 for k = 5).
 constexpr int kTileSize = 64;
+
+// Consecutive tiles one thread takes at a time (raster/tile_stage.cpp).
+constexpr size_t kTilesPerTask = 4;
 
 // Source triangles per primitive-stage chunk. Fixed, so that the set of
 // chunks (and therefore the per-tile bin order) does not depend on the

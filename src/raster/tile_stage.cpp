@@ -46,8 +46,17 @@ void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, 
 
 void Rasterizer::draw_tiles(ThreadPool& pool,
                             const std::function<void(const TileVisibility&)>& shade) const {
-    pool.parallel_for(static_cast<size_t>(tiles_x_) * tiles_y_,
-                      [&](size_t tile) { draw_tile(static_cast<int>(tile), shade); });
+    // A thread takes a few neighbouring tiles at a time: they mostly show
+    // the same triangles, whose setup and vertices are then still in its
+    // cache (taking tiles one by one, two threads alternate and each misses
+    // what the other loaded).
+    const size_t tiles = static_cast<size_t>(tiles_x_) * tiles_y_;
+    const size_t runs = (tiles + kTilesPerTask - 1) / kTilesPerTask;
+    pool.parallel_for(runs, [&](size_t run) {
+        const size_t last = std::min(tiles, (run + 1) * kTilesPerTask);
+        for (size_t tile = run * kTilesPerTask; tile < last; ++tile)
+            draw_tile(static_cast<int>(tile), shade);
+    });
 }
 
 void Rasterizer::draw_tile(int tile,

@@ -15,10 +15,18 @@ using simd::kLanes;
 using simd::vf;
 using simd::vi;
 
-// A lane's value from one of the batch's triangles: splatted into every
-// lane for the first group, then selected into the group's lanes.
-[[gnu::always_inline]] inline void put(vf& v, vi mask, float value, bool first) {
-    v = first ? simd::splat(value) : (mask ? simd::splat(value) : v);
+// What a style's model reads besides the barycentrics and the albedo.
+struct Needs {
+    bool position, normal, light_terms, vertex_light;
+};
+
+Needs needs_of(const StyleState& style, bool gbuffer_normal) {
+    const ShadingModel m = style.model;
+    const bool lit = m == ShadingModel::flat || m == ShadingModel::phong ||
+                     m == ShadingModel::blinn_phong || m == ShadingModel::palette ||
+                     m == ShadingModel::gooch || m == ShadingModel::toon;
+    return {lit, lit || m == ShadingModel::normal || gbuffer_normal, lit,
+            m == ShadingModel::gouraud};
 }
 
 // The lanes that show the same triangle id: most batches hold one or two
@@ -30,6 +38,10 @@ struct LaneGroup {
 
 [[gnu::always_inline]] inline int group_lanes(const uint32_t (&ids)[kLanes],
                                               LaneGroup (&groups)[kLanes]) {
+    if (std::all_of(ids + 1, ids + kLanes, [&](uint32_t id) { return id == ids[0]; })) {
+        groups[0] = {0, simd::splat_i(-1)};
+        return 1;
+    }
     vi all;
     std::memcpy(&all, ids, sizeof all);
     unsigned covered = 0;
@@ -43,72 +55,109 @@ struct LaneGroup {
     return count;
 }
 
-// Positions, normals, Gouraud light and material terms, group by group,
-// interpolated with the lanes' barycentrics.
-[[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
-                                                   const LaneGroup* groups, int group_count,
-                                                   ShadeBatch& b) {
+// A value from one group's triangle: splatted for the first group, then
+// selected into each further group's lanes. With one group (the usual case)
+// `Single` leaves out the selects.
+template <bool Single>
+[[gnu::always_inline]] inline void put(vf& v, vi mask, float value, bool first) {
+    if (Single || first)
+        v = simd::splat(value);
+    else
+        v = mask ? simd::splat(value) : v;
+}
+
+// The corners' positions, normals and Gouraud light, and the material's
+// terms, of each group's triangle, as lanes.
+struct CornerLanes {
+    vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
+    vf back{};  // every group sets it; zero for the compiler's sake
+};
+
+template <bool Single>
+[[gnu::always_inline]] inline void gather_groups(const ShadeInputs& in, const StyleState& style,
+                                                 const Needs& needs, const LaneGroup* groups,
+                                                 int group_count, ShadeBatch& b, CornerLanes& c) {
     const World& world = in.world;
     const TransformedVertices& v = in.vertices;
     const bool flat = style.model == ShadingModel::flat;
-    const bool gouraud = style.model == ShadingModel::gouraud;
-    vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
-    vf back = simd::splat(0.0f);
     SurfaceBatch& s = b.lanes.surface;
     for (int g = 0; g < group_count; ++g) {
         const bool first = g == 0;
         const vi mask = groups[g].mask;
         const ShadeSetup& setup = *b.setup[groups[g].lane];
         const uint32_t* corners = &world.indices[3 * static_cast<size_t>(setup.source_triangle)];
-        for (int c = 0; c < 3; ++c)
+        for (int k = 0; k < 3; ++k)
             for (int a = 0; a < 3; ++a) {
-                put(p[c][a], mask, v.world_position[corners[c]][a], first);
-                if (!flat) put(n[c][a], mask, v.world_normal[corners[c]][a], first);
-                if (gouraud) {
-                    put(diffuse[c][a], mask, v.lit[corners[c]].diffuse[a], first);
-                    put(specular[c][a], mask, v.lit[corners[c]].specular[a], first);
+                if (needs.position || flat)
+                    put<Single>(c.p[k][a], mask, v.world_position[corners[k]][a], first);
+                if (needs.normal && !flat)
+                    put<Single>(c.n[k][a], mask, v.world_normal[corners[k]][a], first);
+                if (needs.vertex_light) {
+                    put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
+                    put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
                 }
             }
-        put(back, mask, setup.back_facing ? 1.0f : 0.0f, first);
+        put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
         const Draw& draw = world.draws[world.triangle_draw[setup.source_triangle]];
         const Material& m = in.frame.materials[draw.material];
-        put(s.ambient, mask, m.ambient, first);
-        put(s.diffuse, mask, m.diffuse, first);
-        put(s.specular, mask, m.specular, first);
-        put(s.shininess, mask, m.shininess, first);
-        put(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
+        if (needs.light_terms) {
+            put<Single>(s.ambient, mask, m.ambient, first);
+            put<Single>(s.diffuse, mask, m.diffuse, first);
+            put<Single>(s.specular, mask, m.specular, first);
+            put<Single>(s.shininess, mask, m.shininess, first);
+            put<Single>(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
+        }
         for (int a = 0; a < 3; ++a)
-            put(b.lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
-                first);
+            put<Single>(b.lanes.albedo[a], mask,
+                        style.base_color ? (*style.base_color)[a] : m.color[a], first);
+        const unsigned lanes = Single ? 0xffu : simd::movemask(mask);
         for (int lane = 0; lane < kLanes; ++lane)
-            if (mask[lane]) {
+            if ((lanes >> lane) & 1) {
                 b.object[lane] = draw.object;
                 b.material[lane] = &m;
                 b.has_uvs[lane] = draw.has_uvs;
             }
+        b.any_texture = b.any_texture || m.texture != nullptr;
     }
+}
+
+// Positions, normals and Gouraud light interpolated with the lanes'
+// barycentrics; normals turned to the viewer.
+[[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
+                                                   const Needs& needs, const LaneGroup* groups,
+                                                   int group_count, ShadeBatch& b) {
+    CornerLanes c;
+    b.any_texture = false;
+    if (group_count == 1)
+        gather_groups<true>(in, style, needs, groups, group_count, b, c);
+    else
+        gather_groups<false>(in, style, needs, groups, group_count, b, c);
     const vf* bary = b.sample.bary;
     auto interpolate = [&](const vf(&corner)[3][3], int a) {
         return bary[0] * corner[0][a] + bary[1] * corner[1][a] + bary[2] * corner[2][a];
     };
-    if (flat) {  // the face normal: (p1 - p0) x (p2 - p0)
+    SurfaceBatch& s = b.lanes.surface;
+    if (style.model == ShadingModel::flat) {  // the face normal: (p1 - p0) x (p2 - p0)
         vf e1[3], e2[3];
-        for (int a = 0; a < 3; ++a) e1[a] = p[1][a] - p[0][a], e2[a] = p[2][a] - p[0][a];
+        for (int a = 0; a < 3; ++a) e1[a] = c.p[1][a] - c.p[0][a], e2[a] = c.p[2][a] - c.p[0][a];
         b.normal[0] = e1[1] * e2[2] - e2[1] * e1[2];
         b.normal[1] = e1[2] * e2[0] - e2[2] * e1[0];
         b.normal[2] = e1[0] * e2[1] - e2[0] * e1[1];
-    } else {
-        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate(n, a);
+    } else if (needs.normal) {
+        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate(c.n, a);
     }
-    const vi facing_away = back > simd::splat(0.0f);
-    for (int a = 0; a < 3; ++a) b.normal[a] = facing_away ? -b.normal[a] : b.normal[a];
-    s.px = interpolate(p, 0), s.py = interpolate(p, 1), s.pz = interpolate(p, 2);
-    s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
+    if (needs.normal) {
+        const vi facing_away = c.back > simd::splat(0.0f);
+        for (int a = 0; a < 3; ++a) b.normal[a] = facing_away ? -b.normal[a] : b.normal[a];
+        s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
+    }
+    if (needs.position)
+        s.px = interpolate(c.p, 0), s.py = interpolate(c.p, 1), s.pz = interpolate(c.p, 2);
     b.lanes.depth = b.sample.w;
-    if (gouraud)
+    if (needs.vertex_light)
         for (int a = 0; a < 3; ++a) {
-            b.lanes.vertex_diffuse[a] = interpolate(diffuse, a);
-            b.lanes.vertex_specular[a] = interpolate(specular, a);
+            b.lanes.vertex_diffuse[a] = interpolate(c.diffuse, a);
+            b.lanes.vertex_specular[a] = interpolate(c.specular, a);
         }
 }
 
@@ -132,8 +181,7 @@ CornerUvs corner_uvs(const World& world, uint32_t triangle, glm::vec2 scale) {
 }
 
 // Textures, lane by lane: trilinear lookups do not vectorise.
-void apply_textures(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
-    if (style.base_color) return;
+void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
         if (!m.texture) continue;
@@ -197,23 +245,22 @@ void finish_layers(const ShadeInputs& in, const StyleState& style, const Shading
 
 }  // namespace
 
-// Built twice, for AVX2 and for baseline x86-64, which do the same IEEE
-// operations in the same order and so give the same bits.
-__attribute__((target_clones("avx2", "default"))) void shade_batch(const ShadeInputs& in,
-                                                                   const Rasterizer& raster,
-                                                                   uint32_t style_index,
-                                                                   ShadeBatch& b) {
+void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style_index,
+                 ShadeBatch& b) {
     const StyleState& style = in.frame.styles[style_index];
-    for (int i = 0; i < kLanes; ++i) b.setup[i] = &raster.shade_setup(b.id[i]);
     LaneGroup groups[kLanes];
     const int group_count = group_lanes(b.id, groups);
+    if (group_count == 1)
+        std::fill(b.setup, b.setup + kLanes, &raster.shade_setup(b.id[0]));
+    else
+        for (int i = 0; i < kLanes; ++i) b.setup[i] = &raster.shade_setup(b.id[i]);
     SetupLanes setup = splat_setup(*b.setup[0]);
     for (int g = 1; g < group_count; ++g)
         select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
     b.sample = reconstruct_surfaces(setup, b.x, b.y);
     b.lanes.count = b.count;
-    gather_vertices(in, style, groups, group_count, b);
-    apply_textures(in, style, b);
+    gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
+    if (b.any_texture && !style.base_color) apply_textures(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
     if (has_layers(style)) return finish_layers(in, style, context, b);
     ShadedLanes shaded;

@@ -19,6 +19,7 @@ struct ShadeBatch {
     int count = 0;
     uint32_t id[simd::kLanes];  // the rasterizer's triangle id
     simd::vf x, y;              // where each point is, in the rasterizer's sample units
+    bool want_normal = false;   // fill `normal` even if the style's model needs none
 
     // Set by shade_batch.
     const ShadeSetup* setup[simd::kLanes];
@@ -30,6 +31,7 @@ struct ShadeBatch {
     // Scratch.
     const Material* material[simd::kLanes];
     bool has_uvs[simd::kLanes];
+    bool any_texture;
     SurfaceLanes lanes;
 };
 

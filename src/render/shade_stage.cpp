@@ -96,13 +96,16 @@ struct RowChunk {
     ShadeBatch b;
     b.count = chunk.count;
     const int first = __builtin_ctz(mine);
-    for (int i = 0; i < kLanes; ++i) b.id[i] = chunk.id[(mine >> i) & 1 ? i : first];
+    if (mine == 0xffu)
+        std::memcpy(b.id, chunk.id, sizeof b.id);
+    else
+        for (int i = 0; i < kLanes; ++i) b.id[i] = chunk.id[(mine >> i) & 1 ? i : first];
     const vf lane = {0, 1, 2, 3, 4, 5, 6, 7};
     b.x = (lane + static_cast<float>(chunk.px0)) * k + (static_cast<float>(tile.x0) + 0.5f * k);
     b.y = simd::splat(static_cast<float>(tile.y0 + chunk.py * side) + 0.5f * k);
     shade_batch(in, raster, style, b);
-    vi mask;
-    for (int i = 0; i < kLanes; ++i) mask[i] = (mine >> i) & 1 ? -1 : 0;
+    const vi lane_bit = {1, 2, 4, 8, 16, 32, 64, 128};
+    const vi mask = (simd::splat_i(static_cast<int32_t>(mine)) & lane_bit) != simd::splat_i(0);
     for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
     chunk.color[3] = mask ? simd::splat(1.0f) : chunk.color[3];
     if (side == 1) {
@@ -116,14 +119,24 @@ struct RowChunk {
 
 // RGBA planes of eight pixels into eight half-float RGBA pixels in memory.
 [[gnu::always_inline]] inline void store_rgba(const vf (&c)[4], Rgba16F* pixels) {
+#ifdef __F16C__
+    // Halves eight to a register, then interleaved channel by channel.
+    __m128i h[4];
+    for (int a = 0; a < 4; ++a) h[a] = _mm256_cvtps_ph((__m256)c[a], _MM_FROUND_TO_NEAREST_INT);
+    const __m128i rg_lo = _mm_unpacklo_epi16(h[0], h[1]), rg_hi = _mm_unpackhi_epi16(h[0], h[1]);
+    const __m128i ba_lo = _mm_unpacklo_epi16(h[2], h[3]), ba_hi = _mm_unpackhi_epi16(h[2], h[3]);
+    __m128i* out = reinterpret_cast<__m128i*>(pixels);
+    _mm_storeu_si128(out + 0, _mm_unpacklo_epi32(rg_lo, ba_lo));
+    _mm_storeu_si128(out + 1, _mm_unpackhi_epi32(rg_lo, ba_lo));
+    _mm_storeu_si128(out + 2, _mm_unpacklo_epi32(rg_hi, ba_hi));
+    _mm_storeu_si128(out + 3, _mm_unpackhi_epi32(rg_hi, ba_hi));
+#else
     vi h[4];
     for (int a = 0; a < 4; ++a) h[a] = float_to_half(c[a]);
-    // Pack the pairs (r, g) and (b, a) of each pixel into one 32-bit lane,
-    // then interleave the two: pixel i is lanes 2i, 2i + 1 of the result.
-    const vi rg = h[0] | (h[1] << 16), ba = h[2] | (h[3] << 16);
-    const vi lo = {0, 8, 1, 9, 2, 10, 3, 11}, hi = {4, 12, 5, 13, 6, 14, 7, 15};
-    const vi out[2] = {__builtin_shuffle(rg, ba, lo), __builtin_shuffle(rg, ba, hi)};
-    std::memcpy(pixels, out, sizeof out);
+    for (int i = 0; i < kLanes; ++i)
+        pixels[i] = {static_cast<uint16_t>(h[0][i]), static_cast<uint16_t>(h[1][i]),
+                     static_cast<uint16_t>(h[2][i]), static_cast<uint16_t>(h[3][i])};
+#endif
 }
 
 [[gnu::always_inline]] inline void write_chunk(const TileVisibility& tile, const ShadeTarget& out,
@@ -149,20 +162,21 @@ struct RowChunk {
 [[gnu::always_inline]] inline unsigned chunk_ids(const TileVisibility& tile, int side,
                                                  RowChunk& chunk, bool& any_mixed) {
     const uint32_t* row = tile.id + chunk.py * kTileSize + chunk.px0;
+    vi ids;
     if (side == 1 && chunk.count == kLanes) {
-        std::memcpy(chunk.id, row, sizeof chunk.id);
+        std::memcpy(&ids, row, sizeof ids);  // one load, then one store
+        std::memcpy(chunk.id, &ids, sizeof ids);
     } else {
         for (int i = 0; i < kLanes; ++i)
             chunk.id[i] = i >= chunk.count ? kNoTriangle
                           : side == 1      ? row[i]
                                            : pixel_id(tile, side, chunk.px0 + i, chunk.py);
+        std::memcpy(&ids, chunk.id, sizeof ids);
     }
-    unsigned shown = 0;
-    any_mixed = false;
-    for (int i = 0; i < kLanes; ++i) {
-        shown |= (chunk.id[i] < kMixedPixel ? 1u : 0u) << i;
-        any_mixed = any_mixed || chunk.id[i] == kMixedPixel;
-    }
+    // Ids count up from 0; kMixedPixel and kNoTriangle are the two largest.
+    const unsigned shown =
+        simd::movemask(ids + simd::splat_i(2) > simd::splat_i(1));  // wraps the two to 0, 1
+    any_mixed = simd::movemask(ids == simd::splat_i(static_cast<int32_t>(kMixedPixel))) != 0;
     return shown;
 }
 
@@ -212,6 +226,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return style_of[a] < style_of[b]; });
     ShadeBatch b;
+    b.want_normal = in.plan.outlines;  // the G-buffer keeps the normal
     int fragment[kLanes];
     for (int first = 0; first < f.count;) {
         const uint32_t style = style_of[order[first]];
@@ -299,12 +314,8 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
 
 }  // namespace
 
-// Built twice, for AVX2 and for baseline x86-64, which do the same IEEE
-// operations in the same order and so give the same bits.
-__attribute__((target_clones("avx2", "default"))) void shade_tile(const TileVisibility& tile,
-                                                                  const Rasterizer& raster,
-                                                                  const ShadeInputs& in,
-                                                                  const ShadeTarget& out) {
+void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                const ShadeTarget& out) {
     if (out.samples) {
         TileFragments fragments;
         return shade_every_sample(tile, raster, in, out, fragments);

@@ -27,11 +27,8 @@ void pad_batch(SurfaceBatch& s, int count) {
             (*v)[i] = (*v)[0];
 }
 
-// Built twice: for AVX2 and for baseline x86-64. Both do the same IEEE
-// operations in the same order, so they give the same bits.
-__attribute__((target_clones("avx2", "default"))) LightingBatch light_surface_batch(
-    const SurfaceBatch& surface, const glm::vec3& eye, std::span<const ShadeLight> lights,
-    Highlight highlight) {
+LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& eye,
+                                  std::span<const ShadeLight> lights, Highlight highlight) {
     struct Unit {
         vf nx, ny, nz, ex, ey, ez;
     };

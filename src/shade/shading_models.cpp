@@ -1,6 +1,7 @@
 #include "shade/shading_models.hpp"
 
 #include "shade/gooch_style.hpp"
+#include "shade/layers.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/model_depth_view.hpp"
 #include "shade/model_gouraud.hpp"
@@ -30,7 +31,8 @@ void shade_stylised(const SurfaceLanes& in, const ShadingContext& context, Model
 
 void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
                  ShadedLanes& out) {
-    for (int i = 0; i < in.count; ++i) out.palette_tone[i] = -1;
+    if (style.model == ShadingModel::palette || has_layers(style))
+        for (int i = 0; i < in.count; ++i) out.palette_tone[i] = -1;
     const std::span<const ShadeLight> lights = context.lights;
     switch (style.model) {
         case ShadingModel::unlit:
@@ -44,7 +46,7 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
         case ShadingModel::flat:
         case ShadingModel::blinn_phong:
         case ShadingModel::phong:
-            pad_batch(in.surface, in.count);
+            if (in.count < simd::kLanes) pad_batch(in.surface, in.count);
             shade_phong(in, context,
                         style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn,
                         out);

@@ -125,9 +125,7 @@ float shadow_depth_from_raster(const ShadowMap& m, float z) {
 
 // Built for AVX2 and for baseline x86-64, like the lighting batch; both do
 // the same IEEE operations in the same order.
-__attribute__((target_clones("avx2", "default"))) float shadow_visibility(const ShadowMap& m,
-                                                                          const glm::vec3& position,
-                                                                          const glm::vec3& normal) {
+float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
     using simd::vf;
     using simd::vi;
     if (m.size == 0) return 1.0f;
