@@ -1,7 +1,6 @@
 #include "shade/shading_models.hpp"
 
 #include "shade/gooch_style.hpp"
-#include "shade/layers.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/model_depth_view.hpp"
 #include "shade/model_gouraud.hpp"
@@ -31,8 +30,7 @@ void shade_stylised(const SurfaceLanes& in, const ShadingContext& context, Model
 
 void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
                  ShadedLanes& out) {
-    if (style.model == ShadingModel::palette || has_layers(style))
-        for (int i = 0; i < in.count; ++i) out.palette_tone[i] = -1;
+    for (int i = 0; i < in.count; ++i) out.palette_tone[i] = -1;
     const std::span<const ShadeLight> lights = context.lights;
     switch (style.model) {
         case ShadingModel::unlit:
