@@ -13,7 +13,8 @@ build="${FACET_BUILD_DIR:-$root/build}"
 
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
-          libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev)
+          libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
+          libisal-dev libssl-dev)
 for arg in "$@"; do
     case "$arg" in
         --tests) packages+=(assimp-testmodels) ;;

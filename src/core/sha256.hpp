@@ -1,5 +1,5 @@
 #pragma once
-// SHA-256 (FIPS 180-4) for the manifest's file digests.
+// SHA-256 (FIPS 180-4) for the manifest's file digests, as lower-case hex.
 #include <cstddef>
 #include <cstdint>
 #include <string>

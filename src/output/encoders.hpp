@@ -1,6 +1,7 @@
 #pragma once
 // Image encoders: each returns the complete file as bytes, so the caller
-// can hash it and write it atomically. The only libpng and OpenEXR users.
+// can hash it and write it atomically; and readers. The only users of
+// ISA-L (deflate), libpng (reading) and OpenEXR.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,21 +13,50 @@
 
 namespace facet {
 
+// A tEXt chunk of a PNG: keyword (1-79 Latin-1 characters) and text.
+struct PngText {
+    std::string keyword, text;
+};
+
 // 8-bit sRGB PNG from linear colour: RGB when every pixel is opaque, RGBA
-// otherwise. `compression` is zlib's 0..9. The float version converts to
-// half first, so both give the same bytes for the same colour.
-std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression);
+// otherwise. `compression` is 0..9 as zlib counts (0 fastest, 9
+// smallest), mapped onto the deflate library's levels. The float version
+// converts to half first, so both give the same bytes for the same colour.
+std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression,
+                                      const std::vector<PngText>& text = {});
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 
 // 16-bit grey PNG view of linear depth: range.x (near) maps to 65535,
 // range.y (far) to 0, linearly, clamped; background (+inf) is 0.
-std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression);
+std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression,
+                                      const std::vector<PngText>& text = {});
 
-// OpenEXR, half-float linear RGBA, ZIP compression.
-std::vector<uint8_t> encode_exr_color(const HalfColorImage& image);
+// OpenEXR scanline files, ZIP compression (16 scanlines a chunk).
+enum class ExrSample { half, float32, uint32 };
 
-// OpenEXR, one float32 channel "Z" with linear view depth, +inf background.
-std::vector<uint8_t> encode_exr_depth(const DepthImage& depth);
+// One channel: its samples at base + y * row_stride + x * x_stride.
+struct ExrChannel {
+    std::string name;
+    ExrSample type;
+    const uint8_t* base;
+    size_t x_stride, row_stride;
+};
+
+// A string attribute in the header (facet's provenance).
+struct ExrAttribute {
+    std::string name, value;
+};
+
+std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> channels,
+                                const std::vector<ExrAttribute>& attributes = {});
+
+// Half-float linear RGBA: channels R, G, B, A.
+std::vector<uint8_t> encode_exr_color(const HalfColorImage& image,
+                                      const std::vector<ExrAttribute>& attributes = {});
+
+// One float32 channel "Z" with linear view depth, +inf background.
+std::vector<uint8_t> encode_exr_depth(const DepthImage& depth,
+                                      const std::vector<ExrAttribute>& attributes = {});
 
 // A decoded PNG, samples widened to 16 bits (8-bit files keep 0..255).
 struct DecodedPng {

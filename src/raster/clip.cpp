@@ -28,13 +28,6 @@ constexpr int kPlaneCount = 6;
 
 }  // namespace
 
-uint32_t clip_outcode(const glm::vec4& p, float gx, float gy) {
-    uint32_t code = 0;
-    for (int plane = 0; plane < kPlaneCount; ++plane)
-        if (plane_distance(plane, p, gx, gy) < 0) code |= 1u << plane;
-    return code;
-}
-
 int clip_triangle(const ClipVertex in[3], uint32_t planes, float gx, float gy,
                   ClipVertex out[kMaxClippedVertices]) {
     ClipVertex buffer_a[kMaxClippedVertices], buffer_b[kMaxClippedVertices];

@@ -17,9 +17,16 @@ struct ClipVertex {
 // A triangle clipped against six planes has at most 3 + 6 vertices.
 constexpr int kMaxClippedVertices = 9;
 
-// Bit per plane that a clip-space point is outside of. `guard` is the guard
-// band half-size in NDC units for x and y.
-uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y);
+// Bit per plane that a clip-space point is outside of, in the order near,
+// far, left, right, bottom, top. `guard` is the guard band half-size in NDC
+// units for x and y. Reversed-Z clip space: near is z = w, far z = 0.
+inline uint32_t clip_outcode(const glm::vec4& p, float guard_x, float guard_y) {
+    return static_cast<uint32_t>(p.w - p.z < 0) | static_cast<uint32_t>(p.z < 0) << 1 |
+           static_cast<uint32_t>(guard_x * p.w + p.x < 0) << 2 |
+           static_cast<uint32_t>(guard_x * p.w - p.x < 0) << 3 |
+           static_cast<uint32_t>(guard_y * p.w + p.y < 0) << 4 |
+           static_cast<uint32_t>(guard_y * p.w - p.y < 0) << 5;
+}
 
 // Clips the segment a-b to the near plane in place, interpolating from the
 // end in front of it as clip_triangle does. False when nothing is left, or

@@ -33,6 +33,9 @@ constexpr size_t kTilesPerTask = 4;
 // thread count.
 constexpr uint32_t kTrianglesPerChunk = 8192;
 
+// Vertices per chunk of the per-vertex screen pass (any fixed number).
+constexpr size_t kVerticesPerSetupChunk = 16384;
+
 // The largest image side is core/limits.hpp's kMaxImageSide: it keeps
 // tile and pixel indices well inside int32.
 

@@ -7,6 +7,7 @@
 #include <functional>
 #include <vector>
 
+#include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "core/thread_pool.hpp"
@@ -58,6 +59,20 @@ class Rasterizer {
     size_t setup_triangle_count() const;
 
   private:
+    // A vertex on screen, computed once per frame by project_vertices.
+    struct ScreenVertex {
+        int32_t x, y;  // fixed point; valid where outcode is 0
+        float inv_w, z;
+        uint32_t outcode;  // clip planes it is outside of, and kNotFinite
+    };
+
+    // A triangle's corners on screen, as setup takes them.
+    struct ScreenTriangle {
+        int64_t x[3], y[3];  // fixed point
+        float inv_w[3], z[3];
+        glm::vec3 bary[3];  // the source triangle's weights at each corner
+    };
+
     // A triangle id is (chunk << 16) | index in chunk. Clipping turns one
     // source triangle into at most 7, so a chunk produces at most
     // 7 * kTrianglesPerChunk triangles, which must fit in 16 bits.
@@ -65,13 +80,20 @@ class Rasterizer {
     static constexpr uint32_t kLocalIdMask = (1u << kLocalIdBits) - 1;
     static_assert(7 * kTrianglesPerChunk <= (1u << kLocalIdBits));
 
+    void project_vertices(const RasterInput& input, size_t first, size_t last);
     void setup_chunk(const RasterInput& input, size_t chunk);
+    void emit_triangle(const ScreenTriangle& t, uint32_t source, bool cull_back,
+                       ChunkBins& bins) const;
+    void emit_clipped(const RasterInput& input, const uint32_t* idx, uint32_t planes,
+                      uint32_t source, bool cull_back, ChunkBins& bins) const;
+    void bin_chunk(ChunkBins& bins) const;
     void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const;
 
     int width_, height_;
     int tile_size_;
     int tiles_x_, tiles_y_;
     float guard_x_, guard_y_;  // guard band half-size in NDC units
+    BulkVector<ScreenVertex> screen_;  // per input vertex
     std::vector<ChunkBins> chunks_;
     size_t chunk_count_ = 0;
 };

@@ -5,18 +5,25 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/bulk_buffer.hpp"
+
 namespace facet {
 
-// Edge function E(px, py) = dx * px + dy * py + c, evaluated at the centre of
-// pixel (px, py); the pixel is covered when all three are >= 0. The
-// top-left fill rule is folded into c (Pineda 1988; D3D10 fill rules).
+// Edge function E(px, py) = dx * px + dy * py + c with dx = a << 8 and
+// dy = b << 8 (kSubpixelBits), evaluated at the centre of pixel (px, py);
+// the pixel is covered when all three are >= 0. The top-left fill rule is
+// folded into c (Pineda 1988; D3D10 fill rules). a and b are differences of
+// fixed-point coordinates inside the guard band, so 32 bits hold them; c
+// needs 64. Compact records matter: a frame of a million triangles writes
+// and reads every one of them.
 struct EdgeFunction {
-    int64_t dx, dy, c;
+    int32_t a, b;
+    int64_t c;
 };
 
 struct SetupTriangle {
     EdgeFunction edge[3];
-    int32_t min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, on screen
+    int16_t min_x, min_y, max_x, max_y;  // pixel bounding box, inclusive, on screen
     // Reversed-Z depth (1 at the near plane, 0 at the far plane), affine in
     // screen space: z = z0 + dzdx * (x - x0) + dzdy * (y - y0), x and y in pixels.
     float x0, y0, z0, dzdx, dzdy;
@@ -38,11 +45,11 @@ struct ShadeSetup {
 // the triangles touching tile t are tile_items[tile_start[t] .. tile_start[t+1]),
 // in submission order.
 struct ChunkBins {
-    std::vector<SetupTriangle> triangles;
-    std::vector<ShadeSetup> shading;
+    BulkVector<SetupTriangle> triangles;
+    BulkVector<ShadeSetup> shading;
     std::vector<uint32_t> tile_start;
-    std::vector<uint32_t> tile_items;
-    std::vector<uint32_t> scratch_tiles;  // (tile, triangle) pairs before sorting
+    BulkVector<uint32_t> tile_items;
+    BulkVector<uint32_t> scratch_tiles;  // (tile, triangle) pairs before sorting
 };
 
 }  // namespace facet

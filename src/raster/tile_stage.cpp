@@ -12,16 +12,19 @@ namespace {
 
 void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, int tile_x1,
                int tile_y1, float* depth, uint32_t* ids) {
-    const int x_lo = std::max(tri.min_x, tile_x0), x_hi = std::min(tri.max_x, tile_x1);
-    const int y_lo = std::max(tri.min_y, tile_y0), y_hi = std::min(tri.max_y, tile_y1);
+    const int x_lo = std::max<int>(tri.min_x, tile_x0), x_hi = std::min<int>(tri.max_x, tile_x1);
+    const int y_lo = std::max<int>(tri.min_y, tile_y0), y_hi = std::min<int>(tri.max_y, tile_y1);
     if (x_lo > x_hi || y_lo > y_hi) return;
-    const EdgeFunction& e0 = tri.edge[0];
-    const EdgeFunction& e1 = tri.edge[1];
-    const EdgeFunction& e2 = tri.edge[2];
+    const int64_t dx0 = int64_t{tri.edge[0].a} * kSubpixelScale;
+    const int64_t dx1 = int64_t{tri.edge[1].a} * kSubpixelScale;
+    const int64_t dx2 = int64_t{tri.edge[2].a} * kSubpixelScale;
+    const int64_t dy0 = int64_t{tri.edge[0].b} * kSubpixelScale;
+    const int64_t dy1 = int64_t{tri.edge[1].b} * kSubpixelScale;
+    const int64_t dy2 = int64_t{tri.edge[2].b} * kSubpixelScale;
     for (int y = y_lo; y <= y_hi; ++y) {
-        int64_t w0 = e0.dx * x_lo + e0.dy * y + e0.c;
-        int64_t w1 = e1.dx * x_lo + e1.dy * y + e1.c;
-        int64_t w2 = e2.dx * x_lo + e2.dy * y + e2.c;
+        int64_t w0 = dx0 * x_lo + dy0 * y + tri.edge[0].c;
+        int64_t w1 = dx1 * x_lo + dy1 * y + tri.edge[1].c;
+        int64_t w2 = dx2 * x_lo + dy2 * y + tri.edge[2].c;
         const float z_row = tri.z0 + tri.dzdy * ((static_cast<float>(y) + 0.5f) - tri.y0);
         float* depth_row = depth + (y - tile_y0) * kTileSize - tile_x0;
         uint32_t* id_row = ids + (y - tile_y0) * kTileSize - tile_x0;
@@ -35,9 +38,9 @@ void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, 
                     id_row[x] = id;
                 }
             }
-            w0 += e0.dx;
-            w1 += e1.dx;
-            w2 += e2.dx;
+            w0 += dx0;
+            w1 += dx1;
+            w2 += dx2;
         }
     }
 }

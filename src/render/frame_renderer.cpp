@@ -11,7 +11,8 @@ namespace {
 // Shading writes every pixel (background included), so nothing is cleared.
 template <typename Image>
 void fit(Image& image, int width, int height) {
-    if (image.width != width || image.height != height) image = Image(width, height);
+    if (image.width != width || image.height != height)
+        image = Image::uninitialized(width, height);
 }
 
 RasterInput raster_input(const World& world, const TransformedVertices& vertices) {

@@ -198,6 +198,14 @@ struct RowChunk {
             chunk.depth = simd::splat(kInfinity);
             bool any_mixed = false;
             unsigned shown = chunk_ids(tile, side, chunk, any_mixed);
+            // The next chunk's triangles are most likely not in cache yet
+            // (a dense mesh shows a new triangle every pixel or two): ask
+            // for their setup records now, while this chunk shades.
+            if (side == 1 && chunk.px0 + 2 * kLanes <= pixels_x) {
+                const uint32_t* next = tile.id + chunk.py * kTileSize + chunk.px0 + kLanes;
+                for (int i = 0; i < kLanes; i += 2)
+                    if (next[i] < kMixedPixel) __builtin_prefetch(&raster.shade_setup(next[i]));
+            }
             if (one_style && shown) shade_chunk_style(in, raster, tile, 0, shown, chunk);
             while (!one_style && shown) {  // one style at a time
                 const uint32_t style = style_of_id(chunk.id[__builtin_ctz(shown)]);

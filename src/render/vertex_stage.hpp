@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/bulk_buffer.hpp"
 #include "core/thread_pool.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/pose_stage.hpp"
@@ -18,10 +19,10 @@ namespace facet {
 
 // Per-vertex results, in World's vertex order.
 struct TransformedVertices {
-    std::vector<glm::vec4> clip;
-    std::vector<glm::vec3> world_position;
-    std::vector<glm::vec3> world_normal;  // unit, +Y for a zero normal
-    std::vector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
+    BulkVector<glm::vec4> clip;
+    BulkVector<glm::vec3> world_position;
+    BulkVector<glm::vec3> world_normal;  // unit, +Y for a zero normal
+    BulkVector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
 };
 
 class VertexStage {

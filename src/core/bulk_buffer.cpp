@@ -1,4 +1,6 @@
-#include "core/image.hpp"
+#include "core/bulk_buffer.hpp"
+
+#include <new>
 
 #include <sys/mman.h>
 
@@ -10,7 +12,7 @@ constexpr size_t kHugePage = size_t(2) << 20;
 
 }  // namespace
 
-void* allocate_pixels(size_t bytes) {
+void* allocate_bulk(size_t bytes) {
     if (bytes < kHugePage) return ::operator new (bytes, std::align_val_t{kCacheLine});
     // Rounded up to whole huge pages and aligned to one, so that the kernel
     // can back it with huge pages when it allows them for the asking
@@ -21,7 +23,7 @@ void* allocate_pixels(size_t bytes) {
     return p;
 }
 
-void free_pixels(void* p, size_t bytes) {
+void free_bulk(void* p, size_t bytes) {
     ::operator delete (p, std::align_val_t{bytes < kHugePage ? kCacheLine : kHugePage});
 }
 

@@ -1,0 +1,40 @@
+// Reading OpenEXR files (tests, comparisons) through OpenEXR's C++ API.
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+
+#include "core/error.hpp"
+#include "output/encoders.hpp"
+
+namespace facet {
+
+DecodedExr read_exr(const std::string& path) {
+    try {
+        Imf::InputFile file(path.c_str(), 1);
+        const Imath::Box2i window = file.header().dataWindow();
+        DecodedExr out;
+        out.width = window.max.x - window.min.x + 1;
+        out.height = window.max.y - window.min.y + 1;
+        Imf::FrameBuffer fb;
+        const size_t count = static_cast<size_t>(out.width) * out.height;
+        for (auto it = file.header().channels().begin(); it != file.header().channels().end(); ++it)
+            out.channel_names.push_back(it.name());
+        out.channels.resize(out.channel_names.size(), std::vector<float>(count));
+        for (size_t c = 0; c < out.channel_names.size(); ++c) {
+            char* base = reinterpret_cast<char*>(out.channels[c].data()) -
+                         (static_cast<ptrdiff_t>(window.min.x) +
+                          static_cast<ptrdiff_t>(window.min.y) * out.width) *
+                             sizeof(float);
+            fb.insert(out.channel_names[c],
+                      Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * out.width));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(window.min.y, window.max.y);
+        return out;
+    } catch (const std::exception& e) {
+        throw Error(ExitCode::invalid_input, path + ": cannot read EXR: " + e.what());
+    }
+}
+
+}  // namespace facet
