@@ -161,6 +161,21 @@ template <bool Single>
         }
 }
 
+// The depth of the nearest sample of a pixel of side x side samples centred
+// on (x, y): the least of the samples' depths on the lane's triangle, each
+// from its 1/w plane as reconstruct_surfaces computes it.
+[[gnu::always_inline]] inline vf nearest_depth(const SetupLanes& s, vf x, vf y, int side) {
+    vf nearest = simd::splat(INFINITY);
+    const float first = 0.5f - 0.5f * static_cast<float>(side);
+    for (int sy = 0; sy < side; ++sy)
+        for (int sx = 0; sx < side; ++sx) {
+            const vf fx = (x + (first + static_cast<float>(sx))) - s.x0;
+            const vf fy = (y + (first + static_cast<float>(sy))) - s.y0;
+            nearest = simd::vmin(nearest, 1.0f / (s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy));
+        }
+    return nearest;
+}
+
 // One lane's surface sample with derivatives per output pixel (k samples):
 // shading happens once per pixel, so footprints are a pixel's.
 SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
@@ -258,6 +273,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     for (int g = 1; g < group_count; ++g)
         select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
     b.sample = reconstruct_surfaces(setup, b.x, b.y);
+    if (b.pixel_side > 0) b.pixel_depth = nearest_depth(setup, b.x, b.y, b.pixel_side);
     b.lanes.count = b.count;
     gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
     if (b.any_texture && !style.base_color) apply_textures(in, b);

@@ -20,6 +20,9 @@ struct ShadeBatch {
     uint32_t id[simd::kLanes];  // the rasterizer's triangle id
     simd::vf x, y;              // where each point is, in the rasterizer's sample units
     bool want_normal = false;   // fill `normal` even if the style's model needs none
+    // > 0: fill `pixel_depth` with the depth of the nearest of each lane's
+    // pixel_side x pixel_side samples round (x, y), all of the same triangle.
+    int pixel_side = 0;
 
     // Set by shade_batch.
     const ShadeSetup* setup[simd::kLanes];
@@ -27,6 +30,7 @@ struct ShadeBatch {
     SurfaceSamples sample;
     simd::vf normal[3];  // on the viewer's side, any length, as the G-buffer keeps it
     simd::vf color[3];   // linear RGB, the result
+    simd::vf pixel_depth;
 
     // Scratch.
     const Material* material[simd::kLanes];

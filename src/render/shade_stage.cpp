@@ -103,18 +103,13 @@ struct RowChunk {
     const vf lane = {0, 1, 2, 3, 4, 5, 6, 7};
     b.x = (lane + static_cast<float>(chunk.px0)) * k + (static_cast<float>(tile.x0) + 0.5f * k);
     b.y = simd::splat(static_cast<float>(tile.y0 + chunk.py * side) + 0.5f * k);
+    b.pixel_side = side > 1 ? side : 0;
     shade_batch(in, raster, style, b);
     const vi lane_bit = {1, 2, 4, 8, 16, 32, 64, 128};
     const vi mask = (simd::splat_i(static_cast<int32_t>(mine)) & lane_bit) != simd::splat_i(0);
     for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
     chunk.color[3] = mask ? simd::splat(1.0f) : chunk.color[3];
-    if (side == 1) {
-        chunk.depth = mask ? b.sample.w : chunk.depth;
-    } else {
-        for (int i = 0; i < chunk.count; ++i)
-            if ((mine >> i) & 1)
-                chunk.depth[i] = nearest_sample_depth(tile, raster, side, chunk.px0 + i, chunk.py);
-    }
+    chunk.depth = mask ? (side == 1 ? b.sample.w : b.pixel_depth) : chunk.depth;
 }
 
 // RGBA planes of eight pixels into eight half-float RGBA pixels in memory.
@@ -166,6 +161,18 @@ struct RowChunk {
     if (side == 1 && chunk.count == kLanes) {
         std::memcpy(&ids, row, sizeof ids);  // one load, then one store
         std::memcpy(chunk.id, &ids, sizeof ids);
+    } else if (side == 2 && chunk.count == kLanes) {  // 4 samples a pixel: the usual AA
+        const uint32_t* top = tile.id + 2 * chunk.py * kTileSize + 2 * chunk.px0;
+        vi t[2], b[2];
+        std::memcpy(t, top, sizeof t);
+        std::memcpy(b, top + kTileSize, sizeof b);
+        const vi even = {0, 2, 4, 6, 8, 10, 12, 14}, odd = {1, 3, 5, 7, 9, 11, 13, 15};
+        const vi top_left = __builtin_shuffle(t[0], t[1], even);
+        const vi same = (top_left == __builtin_shuffle(t[0], t[1], odd)) &
+                        (top_left == __builtin_shuffle(b[0], b[1], even)) &
+                        (top_left == __builtin_shuffle(b[0], b[1], odd));
+        ids = same ? top_left : simd::splat_i(static_cast<int32_t>(kMixedPixel));
+        std::memcpy(chunk.id, &ids, sizeof ids);
     } else {
         for (int i = 0; i < kLanes; ++i)
             chunk.id[i] = i >= chunk.count ? kNoTriangle
@@ -181,10 +188,12 @@ struct RowChunk {
 }
 
 // Every pixel of the tile that is background or shows one triangle.
+// Pixels with samples of several things go into `mixed` as fragments.
 [[gnu::always_inline]] inline void shade_simple_pixels(const TileVisibility& tile,
                                                        const Rasterizer& raster,
                                                        const ShadeInputs& in,
-                                                       const ShadeTarget& out) {
+                                                       const ShadeTarget& out,
+                                                       TileFragments& mixed) {
     const int side = in.samples_per_side;
     const int pixels_x = tile.width / side, pixels_y = tile.height / side;
     const glm::vec4 bg = in.frame.background;
@@ -216,6 +225,10 @@ struct RowChunk {
                 shown &= ~mine;
             }
             write_chunk(tile, out, side, chunk, any_mixed);
+            if (any_mixed)
+                for (int i = 0; i < chunk.count; ++i)
+                    if (chunk.id[i] == kMixedPixel)
+                        add_pixel_fragments(tile, chunk.px0 + i, chunk.py, mixed);
         }
 }
 
@@ -262,8 +275,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
 // Mixed pixels, resolved here: each the coverage-weighted sum of its
 // fragments and the background, with the nearest sample's depth.
 void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                        const ShadeTarget& out, TileFragments& f) {
-    build_tile_fragments(tile, in.samples_per_side, true, f);
+                        const ShadeTarget& out, const TileFragments& f) {
     if (f.count == 0) return;
     const int side = f.side;
     const float per_sample = 1.0f / static_cast<float>(side * side);
@@ -328,11 +340,10 @@ void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const Shad
         TileFragments fragments;
         return shade_every_sample(tile, raster, in, out, fragments);
     }
-    shade_simple_pixels(tile, raster, in, out);
-    if (in.samples_per_side > 1) {
-        TileFragments fragments;
-        shade_mixed_pixels(tile, raster, in, out, fragments);
-    }
+    TileFragments mixed;
+    begin_tile_fragments(tile, in.samples_per_side, mixed);
+    shade_simple_pixels(tile, raster, in, out, mixed);
+    shade_mixed_pixels(tile, raster, in, out, mixed);
 }
 
 }  // namespace facet

@@ -26,9 +26,12 @@ void single_sample_fragments(const TileVisibility& tile, TileFragments& out) {
     }
 }
 
+}  // namespace
+
 // One pixel's k x k samples into fragments: a short list of distinct ids,
 // each with its sample count and the sum of its sample centres.
-void pixel_fragments(const TileVisibility& tile, int side, int px, int py, TileFragments& out) {
+void add_pixel_fragments(const TileVisibility& tile, int px, int py, TileFragments& out) {
+    const int side = out.side;
     const uint16_t pixel = static_cast<uint16_t>(py * out.pixels_x + px);
     const int first = out.count;
     int empty = 0;
@@ -68,8 +71,6 @@ void pixel_fragments(const TileVisibility& tile, int side, int px, int py, TileF
     out.empty[pixel] = static_cast<uint8_t>(empty);
 }
 
-}  // namespace
-
 uint32_t pixel_id(const TileVisibility& tile, int side, int px, int py) {
     const uint32_t first = tile.id[py * side * kTileSize + px * side];
     for (int sy = 0; sy < side; ++sy) {
@@ -80,18 +81,22 @@ uint32_t pixel_id(const TileVisibility& tile, int side, int px, int py) {
     return first;
 }
 
-void build_tile_fragments(const TileVisibility& tile, int side, bool mixed_only,
-                          TileFragments& out) {
+void begin_tile_fragments(const TileVisibility& tile, int side, TileFragments& out) {
     out.count = 0;
     out.side = side;
     out.pixels_x = tile.width / side;
     out.pixels_y = tile.height / side;
+}
+
+void build_tile_fragments(const TileVisibility& tile, int side, bool mixed_only,
+                          TileFragments& out) {
+    begin_tile_fragments(tile, side, out);
     if (side == 1 && mixed_only) return;
     if (side == 1) return single_sample_fragments(tile, out);
     for (int py = 0; py < out.pixels_y; ++py)
         for (int px = 0; px < out.pixels_x; ++px) {
             if (mixed_only && pixel_id(tile, side, px, py) != kMixedPixel) continue;
-            pixel_fragments(tile, side, px, py, out);
+            add_pixel_fragments(tile, px, py, out);
         }
 }
 

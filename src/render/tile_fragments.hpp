@@ -38,6 +38,11 @@ struct TileFragments {
 void build_tile_fragments(const TileVisibility& tile, int side, bool mixed_only,
                           TileFragments& out);
 
+// Starts a list of fragments for a tile (of k x k sample pixels); then
+// add_pixel_fragments for each pixel that needs them.
+void begin_tile_fragments(const TileVisibility& tile, int side, TileFragments& out);
+void add_pixel_fragments(const TileVisibility& tile, int px, int py, TileFragments& out);
+
 // The triangle id all of a pixel's samples show, kNoTriangle when none
 // covers any, or kMixedPixel.
 constexpr uint32_t kMixedPixel = 0xfffffffeu;
