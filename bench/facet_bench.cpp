@@ -45,6 +45,7 @@ struct Options {
     std::vector<int> threads = {1, 2};
     std::vector<int> lp_threads = {2};
     bool llvmpipe = true;
+    bool jobs = true;         // also time `facet render` writing files
     std::string plot;         // PNG of the ratios, if set
     std::string make_meshes;  // write the blobs into this folder and stop
     uint32_t seed = 1;        // with make_meshes
@@ -86,13 +87,14 @@ std::vector<int> parse_int_list(const std::string& text, const char* option) {
 
 void usage(std::ostream& os) {
     os << "usage: facet_bench [--frames N] [--threads 1,2] [--llvmpipe-threads 2] [--no-llvmpipe]\n"
-          "                   [--plot FILE.png] [scene.yaml ...]\n"
+          "                   [--render-only] [--plot FILE.png] [scene.yaml ...]\n"
           "       facet_bench --make-meshes DIR [--seed N]\n"
           "Renders each scene with facet (render only, then the whole job writing PNGs) and with\n"
           "OpenGL on llvmpipe, and prints markdown tables. Default: the suite "
           "in " FACET_BENCH_SCENES_DIR
           ".\n"
           "  --frames N        N frames spread evenly over the scene's range (default: all)\n"
+          "  --render-only     skip the whole jobs (files written): a quicker check\n"
           "  --make-meshes DIR the blobs (5k, 328k, 1.31M triangles) and the texture the suite\n"
           "                    reads; --seed picks the displacement (a new seed: unseen meshes)\n";
 }
@@ -113,6 +115,8 @@ Options parse_options(int argc, char** argv) {
             o.lp_threads = parse_int_list(value(), "--llvmpipe-threads");
         } else if (a == "--no-llvmpipe") {
             o.llvmpipe = false;
+        } else if (a == "--render-only") {
+            o.jobs = false;
         } else if (a == "--plot") {
             o.plot = value();
         } else if (a == "--make-meshes") {
@@ -294,15 +298,17 @@ SceneResult bench_scene(const std::string& path, const Options& o) {
         std::cerr << "  facet render  " << threads << "T: " << describe(sr.render.back()) << "\n";
     }
     const int job_threads = *std::max_element(o.threads.begin(), o.threads.end());
-    sr.job_png =
-        bench_job(path, frames, job_threads,
-                  {{"output.passes", "[color]", "bench"}, {"output.formats", "[png]", "bench"}});
-    std::cerr << "  facet job PNG " << job_threads << "T: " << describe(sr.job_png) << "\n";
-    sr.job_all = bench_job(
-        path, frames, job_threads,
-        {{"output.passes", "[color, depth]", "bench"}, {"output.formats", "[png, exr]", "bench"}});
-    std::cerr << "  facet job PNG+EXR colour+depth " << job_threads << "T: " << describe(sr.job_all)
-              << "\n";
+    if (o.jobs) {
+        sr.job_png = bench_job(
+            path, frames, job_threads,
+            {{"output.passes", "[color]", "bench"}, {"output.formats", "[png]", "bench"}});
+        std::cerr << "  facet job PNG " << job_threads << "T: " << describe(sr.job_png) << "\n";
+        sr.job_all = bench_job(path, frames, job_threads,
+                               {{"output.passes", "[color, depth]", "bench"},
+                                {"output.formats", "[png, exr]", "bench"}});
+        std::cerr << "  facet job PNG+EXR colour+depth " << job_threads
+                  << "T: " << describe(sr.job_all) << "\n";
+    }
     if (o.llvmpipe)
         for (int lp : o.lp_threads) {
             const GlResult g = run_gl_child(path, o.frames, lp);

@@ -21,11 +21,27 @@ const std::array<float, 256>& srgb8_table() {
     return table;
 }
 
-// Texel address for wrap mode; coordinates are whole texel indices.
-int wrap_index(int i, int size, Wrap wrap) {
-    if (wrap == Wrap::clamp) return i < 0 ? 0 : (i >= size ? size - 1 : i);
-    int m = i % size;
-    return m < 0 ? m + size : m;
+// The texel column (or row) at whole texel index i and the one after it,
+// for the wrap mode. Repeat wraps with a mask when the size is a power of
+// two (the usual texture), else with one remainder: the division is the
+// dearest step of a lookup.
+struct TexelPair {
+    int first, second;
+};
+
+TexelPair wrap_pair(int i, int size, Wrap wrap) {
+    if (wrap == Wrap::clamp) {
+        auto clamp = [size](int v) { return v < 0 ? 0 : (v >= size ? size - 1 : v); };
+        return {clamp(i), clamp(i + 1)};
+    }
+    int first;
+    if ((size & (size - 1)) == 0) {
+        first = i & (size - 1);  // two's complement: right for negative i too
+    } else {
+        first = i % size;
+        if (first < 0) first += size;
+    }
+    return {first, first + 1 == size ? 0 : first + 1};
 }
 
 }  // namespace
@@ -43,14 +59,16 @@ glm::vec4 bilinear(const glm::vec4* texels, int width, int height, Wrap wrap, gl
         x = std::clamp(x, -1.0f, static_cast<float>(width));
         y = std::clamp(y, -1.0f, static_cast<float>(height));
     }
-    // Keep the float->int conversion in range for huge repeat counts.
-    x = std::fmod(x, 16777216.0f);
-    y = std::fmod(y, 16777216.0f);
+    // Keep the float->int conversion in range for huge repeat counts (at
+    // 2^24 and beyond every float is whole, so this keeps x's fraction).
+    constexpr float kWhole = 16777216.0f;
+    if (!(std::fabs(x) < kWhole)) x = std::fmod(x, kWhole);
+    if (!(std::fabs(y) < kWhole)) y = std::fmod(y, kWhole);
     float fx = std::floor(x), fy = std::floor(y);
     float tx = x - fx, ty = y - fy;
-    int x0 = static_cast<int>(fx), y0 = static_cast<int>(fy);
-    int xa = wrap_index(x0, width, wrap), xb = wrap_index(x0 + 1, width, wrap);
-    int ya = wrap_index(y0, height, wrap), yb = wrap_index(y0 + 1, height, wrap);
+    const TexelPair xs = wrap_pair(static_cast<int>(fx), width, wrap);
+    const TexelPair ys = wrap_pair(static_cast<int>(fy), height, wrap);
+    const int xa = xs.first, xb = xs.second, ya = ys.first, yb = ys.second;
     const glm::vec4& a = texels[static_cast<size_t>(ya) * width + xa];
     const glm::vec4& b = texels[static_cast<size_t>(ya) * width + xb];
     const glm::vec4& c = texels[static_cast<size_t>(yb) * width + xa];

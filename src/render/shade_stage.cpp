@@ -121,6 +121,13 @@ struct RowChunk {
     const __m128i rg_lo = _mm_unpacklo_epi16(h[0], h[1]), rg_hi = _mm_unpackhi_epi16(h[0], h[1]);
     const __m128i ba_lo = _mm_unpacklo_epi16(h[2], h[3]), ba_hi = _mm_unpackhi_epi16(h[2], h[3]);
     __m128i* out = reinterpret_cast<__m128i*>(pixels);
+    if ((reinterpret_cast<uintptr_t>(pixels) & 63) == 0) {
+        _mm_stream_si128(out + 0, _mm_unpacklo_epi32(rg_lo, ba_lo));
+        _mm_stream_si128(out + 1, _mm_unpackhi_epi32(rg_lo, ba_lo));
+        _mm_stream_si128(out + 2, _mm_unpacklo_epi32(rg_hi, ba_hi));
+        _mm_stream_si128(out + 3, _mm_unpackhi_epi32(rg_hi, ba_hi));
+        return;
+    }
     _mm_storeu_si128(out + 0, _mm_unpacklo_epi32(rg_lo, ba_lo));
     _mm_storeu_si128(out + 1, _mm_unpackhi_epi32(rg_lo, ba_lo));
     _mm_storeu_si128(out + 2, _mm_unpacklo_epi32(rg_hi, ba_hi));
@@ -141,7 +148,12 @@ struct RowChunk {
     float* depths = &out.depth.at(x, y);
     if (chunk.count == kLanes && !any_mixed) {
         store_rgba(chunk.color, colors);
-        std::memcpy(depths, &chunk.depth, sizeof chunk.depth);
+#ifdef __AVX__
+        if ((reinterpret_cast<uintptr_t>(depths) & 31) == 0)
+            _mm256_stream_ps(depths, (__m256)chunk.depth);
+        else
+#endif
+            std::memcpy(depths, &chunk.depth, sizeof chunk.depth);
         return;
     }
     for (int i = 0; i < chunk.count; ++i) {
@@ -344,6 +356,7 @@ void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const Shad
     begin_tile_fragments(tile, in.samples_per_side, mixed);
     shade_simple_pixels(tile, raster, in, out, mixed);
     shade_mixed_pixels(tile, raster, in, out, mixed);
+    _mm_sfence();
 }
 
 }  // namespace facet
