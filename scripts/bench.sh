@@ -1,14 +1,18 @@
 #!/usr/bin/env bash
-# Builds facet_bench and runs the whole comparison: facet against OpenGL on
-# Mesa's llvmpipe, bench/scenes/{small,medium,large}.yaml, 1920x1080,
-# 48-frame turntable, 1 and 2 threads (docs/performance.md).
-#   scripts/bench.sh                   the full run (a few minutes on 2 cores)
-#   scripts/bench.sh --frames 12       12 frames spread over the turntable
-#   scripts/bench.sh bench/scenes/small.yaml     one scene
+# Builds facet_bench and runs the suite of docs/performance.md: facet against
+# OpenGL on Mesa's llvmpipe doing the same shading, scene by scene, render
+# only and whole job (files written), 1 and 2 threads.
+#   scripts/bench.sh                   the full suite (about 10 minutes on 2 cores)
+#   scripts/bench.sh --frames 12       12 frames spread over each scene's range
+#   scripts/bench.sh bench/scenes/blob-5k.yaml     one scene
+#   FACET_BENCH_SEED=7 scripts/bench.sh            unseen meshes: other blobs
 # Any argument is passed to facet_bench (facet_bench --help lists them).
+# The blob meshes and their texture are generated into bench/meshes/ (not
+# committed) when missing or when FACET_BENCH_SEED differs from the last run.
 # FACET_BUILD_DIR picks the build folder (default: build), FACET_BENCH_JOBS
 # the parallel build jobs (default: 2). Progress goes to stderr; the markdown
-# tables go to stdout and to bench/results/bench-<date>.md (not committed).
+# tables go to stdout and to bench/results/bench-<date>.md, the plot to
+# bench/results/bench-<date>.png (neither committed).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${FACET_BUILD_DIR:-$root/build}"
@@ -23,8 +27,17 @@ if [ "$build_type" != "Release" ]; then
 fi
 cmake --build "$build" -j"$jobs" --target facet_bench
 
+meshes="$root/bench/meshes"
+seed="${FACET_BENCH_SEED:-1}"
+if [ ! -f "$meshes/blob-1m.obj" ] || [ "$(cat "$meshes/seed" 2>/dev/null)" != "$seed" ]; then
+    "$build/bench/facet_bench" --make-meshes "$meshes" --seed "$seed"
+    echo "$seed" > "$meshes/seed"
+fi
+
 mkdir -p "$root/bench/results"
-log="$root/bench/results/bench-$(date +%Y%m%d-%H%M%S).md"
+stamp=$(date +%Y%m%d-%H%M%S)
+log="$root/bench/results/bench-$stamp.md"
+plot="$root/bench/results/bench-$stamp.png"
 {
     echo "# facet_bench $(date -u '+%Y-%m-%d %H:%M UTC')"
     echo
@@ -32,9 +45,9 @@ log="$root/bench/results/bench-$(date +%Y%m%d-%H%M%S).md"
     echo "- CPU: $(sed -n 's/^model name[[:space:]]*: //p' /proc/cpuinfo | head -1), nproc $(nproc)"
     echo "- kernel: $(uname -r); compiler: $(sed -n 's/^CMAKE_CXX_COMPILER:[A-Z]*=//p' "$build/CMakeCache.txt")"
     echo "- load average before the run: $(cut -d' ' -f1-3 /proc/loadavg)"
-    echo "- command: facet_bench $*"
-    "$build/bench/facet_bench" "$@"
+    echo "- command: facet_bench $*; blob seed $seed"
+    "$build/bench/facet_bench" --plot "$plot" "$@"
     echo
     echo "- load average after the run: $(cut -d' ' -f1-3 /proc/loadavg)"
 } | tee "$log"
-echo "(saved to ${log#"$root"/})" >&2
+echo "(saved to ${log#"$root"/} and ${plot#"$root"/})" >&2

@@ -1,5 +1,7 @@
 #include "render/shade_stage.hpp"
 
+#include <immintrin.h>
+
 #include <algorithm>
 #include <cstring>
 #include <limits>
