@@ -248,7 +248,7 @@ void write_report_plot(const std::string& path, const std::vector<SceneResult>& 
     facet::PlotSeries render{"render only", {}, {0.15f, 0.35f, 0.75f}, false};
     facet::PlotSeries job{"whole job (PNG)", {}, {0.85f, 0.35f, 0.1f}, false};
     facet::PlotSeries goal{"goal: 2x", {}, {0.3f, 0.3f, 0.3f}, true};
-    std::string legend;
+    std::vector<std::string> legend(1);  // rows of eight scenes
     for (size_t i = 0; i < results.size(); ++i) {
         const SceneResult& sr = results[i];
         const double x = static_cast<double>(i + 1);
@@ -259,13 +259,16 @@ void write_report_plot(const std::string& path, const std::vector<SceneResult>& 
         if (f && g) render.points.push_back({x, g->render_ms.median / f->ms.median});
         if (g) job.points.push_back({x, g->job_ms.median / sr.job_png.ms.median});
         goal.points.push_back({x, 2.0});
-        legend += std::to_string(i + 1) + " " + sr.name + (i + 1 < results.size() ? "   " : "");
+        if (i > 0 && i % 8 == 0) legend.emplace_back();
+        legend.back() += std::to_string(i + 1) + " " + sr.name + "   ";
     }
     panel.series = {render, job, goal};
     const int width = 1200, height = 560, band = 60;
     facet::ColorImage image(width, height + band, glm::vec4(1, 1, 1, 1));
     facet::draw_plot(image, 0, 0, width, height, panel);
-    facet::draw_label(image, 20, height + 10, legend, glm::vec3(0.1f), 1);
+    for (size_t row = 0; row < legend.size(); ++row)
+        facet::draw_label(image, 20, height + 10 + 20 * static_cast<int>(row), legend[row],
+                          glm::vec3(0.1f), 1);
     facet::write_file_atomically(path, facet::encode_png_color(image, 6));
 }
 
