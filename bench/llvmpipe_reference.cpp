@@ -43,40 +43,46 @@ F gl_proc(const char* name) {
     return reinterpret_cast<F>(p);
 }
 
-#define FACET_GL_FUNCTIONS(X)                                                                      \
-    X(CreateShader, PFNGLCREATESHADERPROC)                                                         \
-    X(ShaderSource, PFNGLSHADERSOURCEPROC)                                                         \
-    X(CompileShader, PFNGLCOMPILESHADERPROC) X(GetShaderiv, PFNGLGETSHADERIVPROC) X(               \
-        GetShaderInfoLog, PFNGLGETSHADERINFOLOGPROC) X(CreateProgram, PFNGLCREATEPROGRAMPROC)      \
-        X(AttachShader, PFNGLATTACHSHADERPROC) X(BindAttribLocation, PFNGLBINDATTRIBLOCATIONPROC)  \
-            X(LinkProgram, PFNGLLINKPROGRAMPROC) X(GetProgramiv, PFNGLGETPROGRAMIVPROC) X(         \
-                GetProgramInfoLog, PFNGLGETPROGRAMINFOLOGPROC) X(UseProgram, PFNGLUSEPROGRAMPROC)  \
-                X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC) X(                              \
-                    UniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC) X(UniformMatrix3fv,               \
-                                                                   PFNGLUNIFORMMATRIX3FVPROC)      \
-                    X(Uniform1i, PFNGLUNIFORM1IPROC) X(Uniform1f, PFNGLUNIFORM1FPROC) X(           \
-                        Uniform2fv, PFNGLUNIFORM2FVPROC) X(Uniform3fv, PFNGLUNIFORM3FVPROC)        \
-                        X(Uniform4fv, PFNGLUNIFORM4FVPROC) X(GenBuffers, PFNGLGENBUFFERSPROC) X(   \
-                            BindBuffer, PFNGLBINDBUFFERPROC) X(BufferData, PFNGLBUFFERDATAPROC)    \
-                            X(BufferSubData, PFNGLBUFFERSUBDATAPROC) X(                            \
-                                VertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC)                 \
-                                X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC) X(    \
-                                    ActiveTexture, PFNGLACTIVETEXTUREPROC)                         \
-                                    X(GenerateMipmap, PFNGLGENERATEMIPMAPPROC) X(                  \
-                                        GenFramebuffers,                                           \
-                                        PFNGLGENFRAMEBUFFERSPROC) X(BindFramebuffer,               \
-                                                                    PFNGLBINDFRAMEBUFFERPROC)      \
-                                        X(FramebufferTexture2D, PFNGLFRAMEBUFFERTEXTURE2DPROC) X(  \
-                                            FramebufferRenderbuffer,                               \
-                                            PFNGLFRAMEBUFFERRENDERBUFFERPROC)                      \
-                                            X(CheckFramebufferStatus,                              \
-                                              PFNGLCHECKFRAMEBUFFERSTATUSPROC)                     \
-                                                X(GenRenderbuffers, PFNGLGENRENDERBUFFERSPROC)     \
-                                                    X(BindRenderbuffer, PFNGLBINDRENDERBUFFERPROC) \
-                                                        X(RenderbufferStorageMultisample,          \
-                                                          PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
-                                                            X(BlitFramebuffer,                     \
-                                                              PFNGLBLITFRAMEBUFFERPROC)
+// clang-format off
+#define FACET_GL_FUNCTIONS(X) \
+    X(CreateShader, PFNGLCREATESHADERPROC) \
+    X(ShaderSource, PFNGLSHADERSOURCEPROC) \
+    X(CompileShader, PFNGLCOMPILESHADERPROC) \
+    X(GetShaderiv, PFNGLGETSHADERIVPROC) \
+    X(GetShaderInfoLog, PFNGLGETSHADERINFOLOGPROC) \
+    X(CreateProgram, PFNGLCREATEPROGRAMPROC) \
+    X(AttachShader, PFNGLATTACHSHADERPROC) \
+    X(BindAttribLocation, PFNGLBINDATTRIBLOCATIONPROC) \
+    X(LinkProgram, PFNGLLINKPROGRAMPROC) \
+    X(GetProgramiv, PFNGLGETPROGRAMIVPROC) \
+    X(GetProgramInfoLog, PFNGLGETPROGRAMINFOLOGPROC) \
+    X(UseProgram, PFNGLUSEPROGRAMPROC) \
+    X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC) \
+    X(UniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC) \
+    X(UniformMatrix3fv, PFNGLUNIFORMMATRIX3FVPROC) \
+    X(Uniform1i, PFNGLUNIFORM1IPROC) \
+    X(Uniform1f, PFNGLUNIFORM1FPROC) \
+    X(Uniform2fv, PFNGLUNIFORM2FVPROC) \
+    X(Uniform3fv, PFNGLUNIFORM3FVPROC) \
+    X(Uniform4fv, PFNGLUNIFORM4FVPROC) \
+    X(GenBuffers, PFNGLGENBUFFERSPROC) \
+    X(BindBuffer, PFNGLBINDBUFFERPROC) \
+    X(BufferData, PFNGLBUFFERDATAPROC) \
+    X(BufferSubData, PFNGLBUFFERSUBDATAPROC) \
+    X(VertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC) \
+    X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC) \
+    X(ActiveTexture, PFNGLACTIVETEXTUREPROC) \
+    X(GenerateMipmap, PFNGLGENERATEMIPMAPPROC) \
+    X(GenFramebuffers, PFNGLGENFRAMEBUFFERSPROC) \
+    X(BindFramebuffer, PFNGLBINDFRAMEBUFFERPROC) \
+    X(FramebufferTexture2D, PFNGLFRAMEBUFFERTEXTURE2DPROC) \
+    X(FramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC) \
+    X(CheckFramebufferStatus, PFNGLCHECKFRAMEBUFFERSTATUSPROC) \
+    X(GenRenderbuffers, PFNGLGENRENDERBUFFERSPROC) \
+    X(BindRenderbuffer, PFNGLBINDRENDERBUFFERPROC) \
+    X(RenderbufferStorageMultisample, PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
+    X(BlitFramebuffer, PFNGLBLITFRAMEBUFFERPROC)
+// clang-format on
 
 struct Gl {
 #define FACET_GL_MEMBER(name, type) type name = nullptr;
