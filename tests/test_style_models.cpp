@@ -118,13 +118,8 @@ TEST_CASE("light samples: directional as given, point lights fall off", "[style]
 TEST_CASE("Gooch: cool at n·l = -1, warm at 1, their mean at 0", "[style][gooch]") {
     // The renderer's Gooch diffuse: the palette blend with the paper's
     // b = y = .4, alpha = .2, beta = .6, no ambient and no cels.
-    PaletteStyle g;
-    g.shadow_color = {0, 0, 0.4f};
-    g.lit_color = {0.4f, 0.4f, 0};
-    g.alpha = 0.2f;
-    g.beta = 0.6f;
+    PaletteStyle g = hand_palette(0);
     g.ambient = 0;
-    g.cels = 0;
     const glm::vec3 kd(0.5f);
     // cool = (0,0,.4) + .2 kd = (.1,.1,.5); warm = (.4,.4,0) + .6 kd = (.7,.7,.3).
     check_color(seed_palette(g, kd, -1.0f).color, {0.1f, 0.1f, 0.5f});
