@@ -473,7 +473,7 @@ class Reference {
             std::vector<uint8_t> bytes(static_cast<size_t>(t.width) * t.height * 4);
             for (int y = 0; y < t.height; ++y)
                 for (int x = 0; x < t.width; ++x) {
-                    const glm::vec4 c = t.texels[static_cast<size_t>(y) * t.width + x];
+                    const glm::vec4 c = t.texel(0, x, y);
                     uint8_t* b = &bytes[(static_cast<size_t>(y) * t.width + x) * 4];
                     for (int k = 0; k < 3; ++k)
                         b[k] = static_cast<uint8_t>(

@@ -6,6 +6,8 @@
 #   scripts/setup.sh            build dependencies, then build
 #   scripts/setup.sh --tests    also the test data (assimp-testmodels)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
+#   scripts/setup.sh --clang    also clang and its sanitizer and libFuzzer
+#                               runtimes (scripts/test.sh --sanitize, fuzz.sh)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -14,12 +16,13 @@ build="${FACET_BUILD_DIR:-$root/build}"
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
-          libisal-dev libssl-dev)
+          libdeflate-dev libssl-dev)
 for arg in "$@"; do
     case "$arg" in
         --tests) packages+=(assimp-testmodels) ;;
         --bench) packages+=(libosmesa6-dev) ;;
-        *) echo "setup.sh: unknown option '$arg' (use --tests or --bench)" >&2; exit 2 ;;
+        --clang) packages+=(clang libclang-rt-dev llvm) ;;
+        *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --clang)" >&2; exit 2 ;;
     esac
 done
 

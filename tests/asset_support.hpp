@@ -95,7 +95,7 @@ inline void check_sane(const Mesh& mesh) {
     }
     for (const auto& m : mesh.materials)
         if (m.texture)
-            REQUIRE(m.texture->texels.size() ==
+            REQUIRE(m.texture->level(0).srgb8.size() + m.texture->level(0).half.size() ==
                     static_cast<size_t>(m.texture->width) * m.texture->height);
     Bounds b = mesh.bounds();
     REQUIRE_FALSE(b.empty());

@@ -98,9 +98,8 @@ struct RunResult {
     std::string output;  // stdout and stderr together
 };
 
-// Runs `facet ARGS` through the shell and captures what it prints.
-inline RunResult run_facet(const std::string& args) {
-    std::string command = std::string("'") + FACET_EXECUTABLE + "' " + args + " 2>&1";
+// Runs a shell command and captures what it prints on stdout.
+inline RunResult run_command(const std::string& command) {
     RunResult result;
     FILE* pipe = ::popen(command.c_str(), "r");
     if (!pipe) return result;
@@ -110,6 +109,37 @@ inline RunResult run_facet(const std::string& args) {
     int status = ::pclose(pipe);
     result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return result;
+}
+
+// Runs `facet ARGS` through the shell and captures what it prints.
+inline RunResult run_facet(const std::string& args) {
+    return run_command(std::string("'") + FACET_EXECUTABLE + "' " + args + " 2>&1");
+}
+
+// Whether this build (and so the facet it runs) has AddressSanitizer.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
+// Runs `facet ARGS` as run_facet does, but killed after `seconds` of wall
+// time (a blocked read uses no CPU) and limited to `megabytes` of address
+// space, so that a regression towards a hang or a runaway allocation fails
+// the test instead of stalling the suite or the machine. Sanitizer builds
+// reserve terabytes of address space up front, so there only time counts.
+inline RunResult run_facet_limited(const std::string& args, int seconds, int megabytes) {
+    std::string limits =
+        kAddressSanitizer ? "" : "ulimit -v " + std::to_string(megabytes * 1024) + "; ";
+    std::string command = "sh -c \"" + limits + "exec timeout -s KILL " + std::to_string(seconds) +
+                          " '" + FACET_EXECUTABLE + "' " + args + " 2>&1\"";
+    return run_command(command);
 }
 
 inline std::string source_path(const std::string& relative) {

@@ -44,7 +44,7 @@ bool near_point(const glm::dvec3& a, const glm::dvec3& b, double eps = 1e-4) {
 
 #define CHECK_POINT(a, b)                                                                       \
     do {                                                                                        \
-        const glm::dvec3 pa(a), pb(b);                                                          \
+        const glm::dvec3 pa{a}, pb{b};                                                          \
         INFO("got (" << pa.x << ", " << pa.y << ", " << pa.z << "), expected (" << pb.x << ", " \
                      << pb.y << ", " << pb.z << ")");                                           \
         CHECK(near_point(pa, pb));                                                              \

@@ -134,7 +134,7 @@ TEST_CASE("render writes the frames and a manifest that describes them", "[cli]"
     // Nothing but the frames and the manifest: no temporary files left over.
     auto written = files_under(r.out_dir);
     CHECK(written.size() == 3);
-    for (const auto& path : written) CHECK_THAT(path, !Contains(".tmp."));
+    for (const auto& path : written) CHECK_THAT(path, !Contains(".facet-tmp."));
 }
 
 TEST_CASE("the same frames come out bit-identical for any thread count", "[cli]") {

@@ -1,4 +1,4 @@
-// The EXR writer (output/exr_writer.cpp: OpenEXR's C core with ISA-L ZIP
+// The EXR writer (output/exr_writer.cpp: OpenEXR's C core with libdeflate ZIP
 // chunks) read back by OpenEXR's C++ reader: every channel's samples come
 // back exactly, for smooth data that compresses and for noise that does not
 // (the chunk is then stored raw), with the header's attributes.

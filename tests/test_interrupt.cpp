@@ -46,7 +46,7 @@ objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
     size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();
-        CHECK(name.find(".tmp") == std::string::npos);
+        CHECK(name.find(".facet-tmp.") == std::string::npos);
         if (name != "manifest.json") ++files;
     }
     CHECK(files == 4 * frames);

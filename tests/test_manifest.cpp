@@ -67,7 +67,7 @@ std::vector<std::string> entries(const std::string& dir) {
 
 bool has_temp_files(const std::string& dir) {
     for (const auto& name : entries(dir))
-        if (name.find(".tmp.") != std::string::npos) return true;
+        if (name.find(".facet-tmp.") != std::string::npos) return true;
     return false;
 }
 

@@ -64,12 +64,13 @@ TEST_CASE("OBJ materials: Kd colour, shininess and map_Kd texture", "[assets][ob
     REQUIRE(textured.texture != nullptr);
     CHECK(textured.texture->width == 2);
     CHECK(textured.texture->height == 2);
-    const auto& texels = textured.texture->texels;
-    REQUIRE(texels.size() == 4);
-    CHECK(texels[0] == glm::vec4(1, 0, 0, 1));  // top-left red
-    CHECK(texels[1] == glm::vec4(0, 1, 0, 1));
-    CHECK(texels[2] == glm::vec4(0, 0, 1, 1));
-    CHECK(texels[3] == glm::vec4(1, 1, 1, 1));
+    const facet::Texture& t = *textured.texture;
+    REQUIRE(t.width == 2);
+    REQUIRE(t.height == 2);
+    CHECK(t.texel(0, 0, 0) == glm::vec4(1, 0, 0, 1));  // top-left red
+    CHECK(t.texel(0, 1, 0) == glm::vec4(0, 1, 0, 1));
+    CHECK(t.texel(0, 0, 1) == glm::vec4(0, 0, 1, 1));
+    CHECK(t.texel(0, 1, 1) == glm::vec4(1, 1, 1, 1));
     // Kd 0 0 0 next to a map means "use the map": the texture must not be blacked out.
     CHECK(textured.color == glm::vec3(1));
 }

@@ -243,7 +243,7 @@ TEST_CASE("OBJ real spider loads with all five textures", "[assets][obj][real]")
         REQUIRE(m.texture != nullptr);
         CHECK(m.texture->width > 0);
         CHECK(m.texture->height > 0);
-        CHECK(m.texture->texels.size() ==
+        CHECK(m.texture->level(0).srgb8.size() + m.texture->level(0).half.size() ==
               static_cast<size_t>(m.texture->width) * m.texture->height);
         ++textured;
     }

@@ -1,4 +1,4 @@
-// The PNG writer (output/png_writer.cpp, ISA-L deflate): what it writes
+// The PNG writer (output/png_writer.cpp, libdeflate): what it writes
 // decodes with libpng to the very bytes it encoded, at every compression
 // level, for colour with and without alpha and for 16-bit depth; and its
 // chunks carry correct CRCs.

@@ -256,7 +256,7 @@ TEST_CASE("mesh and texture files must exist and have a supported format", "[sce
          "objects.0.mesh", "model.stl", 0, "unsupported mesh format '.stl'"},
         {"missing texture",
          "objects:\n  - primitive: cube\n    material:\n      texture: wood.png\n",
-         "objects.0.material.texture", "wood.png", 0, "not found"},
+         "objects.0.material.texture", "wood.png", 0, "no such file"},
     });
 }
 

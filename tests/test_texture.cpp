@@ -108,6 +108,10 @@ std::vector<uint8_t> make_png(int width, int height, int color_type, int bit_dep
     return png;
 }
 
+// 16-bit images are kept as half floats: 11 significant bits, so values up
+// to 1 come back within 2^-12 of what was decoded.
+constexpr float kHalfStep = 1.0f / 4096;
+
 void require_texel(const glm::vec4& got, const glm::vec4& want, float eps = 1e-5f) {
     INFO("got (" << got.r << ", " << got.g << ", " << got.b << ", " << got.a << ") want (" << want.r
                  << ", " << want.g << ", " << want.b << ", " << want.a << ")");
@@ -116,12 +120,21 @@ void require_texel(const glm::vec4& got, const glm::vec4& want, float eps = 1e-5
 
 // A texture made directly from linear values, for sampling tests.
 facet::Texture grey_row(const std::vector<float>& values, facet::Wrap wrap, bool vertical = false) {
-    facet::Texture t;
-    t.width = vertical ? 1 : static_cast<int>(values.size());
-    t.height = vertical ? static_cast<int>(values.size()) : 1;
-    for (float v : values) t.texels.push_back({v, v, v, 1});
+    std::vector<glm::vec4> texels;
+    for (float v : values) texels.push_back({v, v, v, 1});
+    const int n = static_cast<int>(values.size());
+    facet::Texture t = facet::Texture::from_linear(vertical ? 1 : n, vertical ? n : 1, texels,
+                                                   facet::Texture::Format::half);
     t.wrap = wrap;
     return t;
+}
+
+// Level 0 as linear RGBA, row by row.
+std::vector<glm::vec4> texels_of(const facet::Texture& t) {
+    std::vector<glm::vec4> out;
+    for (int y = 0; y < t.height; ++y)
+        for (int x = 0; x < t.width; ++x) out.push_back(t.texel(0, x, y));
+    return out;
 }
 
 }  // namespace
@@ -132,18 +145,18 @@ TEST_CASE("sRGB bytes become linear values", "[assets][texture]") {
     CHECK(srgb8(10) == Approx(10 / 255.0 / 12.92).epsilon(1e-6));
     const std::vector<uint8_t> grey = {0, 10, 128, 255};
     facet::Texture t = facet::texture_from_pixels(4, 1, 1, 8, grey.data());
-    REQUIRE(t.texels.size() == 4);
-    require_texel(t.texels[0], {0, 0, 0, 1});
-    require_texel(t.texels[1], glm::vec4(glm::vec3(srgb8(10)), 1), 1e-7f);
-    require_texel(t.texels[2], glm::vec4(glm::vec3(0.21586f), 1), 1e-4f);
-    require_texel(t.texels[3], {1, 1, 1, 1});
+    REQUIRE(texels_of(t).size() == 4);
+    require_texel(texels_of(t)[0], {0, 0, 0, 1});
+    require_texel(texels_of(t)[1], glm::vec4(glm::vec3(srgb8(10)), 1), 1e-7f);
+    require_texel(texels_of(t)[2], glm::vec4(glm::vec3(0.21586f), 1), 1e-4f);
+    require_texel(texels_of(t)[3], {1, 1, 1, 1});
     // Every byte: monotonic, and matches the double-precision curve.
     std::vector<uint8_t> all(256);
     for (int i = 0; i < 256; ++i) all[i] = static_cast<uint8_t>(i);
     facet::Texture ramp = facet::texture_from_pixels(256, 1, 1, 8, all.data());
     for (int i = 0; i < 256; ++i) {
-        CHECK(ramp.texels[i].r == Approx(srgb8(i)).margin(1e-6));
-        if (i > 0) CHECK(ramp.texels[i].r > ramp.texels[i - 1].r);
+        CHECK(texels_of(ramp)[i].r == Approx(srgb8(i)).margin(1e-6));
+        if (i > 0) CHECK(texels_of(ramp)[i].r > texels_of(ramp)[i - 1].r);
     }
 }
 
@@ -151,26 +164,26 @@ TEST_CASE("texture_from_pixels: alpha stays linear, channels expand", "[assets][
     SECTION("grey + alpha") {
         const std::vector<uint8_t> px = {128, 128, 255, 0};
         facet::Texture t = facet::texture_from_pixels(2, 1, 2, 8, px.data());
-        require_texel(t.texels[0], {srgb8(128), srgb8(128), srgb8(128), 128 / 255.0f});
-        require_texel(t.texels[1], {1, 1, 1, 0});
+        require_texel(texels_of(t)[0], {srgb8(128), srgb8(128), srgb8(128), 128 / 255.0f});
+        require_texel(texels_of(t)[1], {1, 1, 1, 0});
     }
     SECTION("RGB gets opaque alpha") {
         const std::vector<uint8_t> px = {255, 128, 0};
         facet::Texture t = facet::texture_from_pixels(1, 1, 3, 8, px.data());
-        require_texel(t.texels[0], {1, srgb8(128), 0, 1});
+        require_texel(texels_of(t)[0], {1, srgb8(128), 0, 1});
     }
     SECTION("RGBA") {
         const std::vector<uint8_t> px = {10, 20, 30, 64};
         facet::Texture t = facet::texture_from_pixels(1, 1, 4, 8, px.data());
-        require_texel(t.texels[0], {srgb8(10), srgb8(20), srgb8(30), 64 / 255.0f}, 1e-6f);
+        require_texel(texels_of(t)[0], {srgb8(10), srgb8(20), srgb8(30), 64 / 255.0f}, 1e-6f);
     }
     SECTION("16 bit, native byte order") {
         const std::vector<uint16_t> px = {65535, 0, 32768, 32768};
         facet::Texture t =
             facet::texture_from_pixels(2, 1, 2, 16, reinterpret_cast<const uint8_t*>(px.data()));
-        require_texel(t.texels[0], {1, 1, 1, 0});
+        require_texel(texels_of(t)[0], {1, 1, 1, 0});
         float c = static_cast<float>(srgb_to_linear(32768 / 65535.0));
-        require_texel(t.texels[1], {c, c, c, 32768 / 65535.0f});
+        require_texel(texels_of(t)[1], {c, c, c, 32768 / 65535.0f}, kHalfStep);
     }
 }
 
@@ -197,41 +210,41 @@ TEST_CASE("load_texture reads PNG colour types and bit depths", "[assets][textur
         facet::Texture t = facet::load_texture(path);
         REQUIRE(t.width == 2);
         REQUIRE(t.height == 2);
-        REQUIRE(t.texels.size() == 4);
-        require_texel(t.texels[0], {0, 0, 0, 1});
-        require_texel(t.texels[1], glm::vec4(glm::vec3(srgb8(128)), 1));
-        require_texel(t.texels[2], {1, 1, 1, 1});
-        require_texel(t.texels[3], glm::vec4(glm::vec3(srgb8(10)), 1));
+        REQUIRE(texels_of(t).size() == 4);
+        require_texel(texels_of(t)[0], {0, 0, 0, 1});
+        require_texel(texels_of(t)[1], glm::vec4(glm::vec3(srgb8(128)), 1));
+        require_texel(texels_of(t)[2], {1, 1, 1, 1});
+        require_texel(texels_of(t)[3], glm::vec4(glm::vec3(srgb8(10)), 1));
     }
     SECTION("grey + alpha 8 bit") {
         std::string path =
             write_bytes(dir.file("ga.png"), make_png(2, 1, 4, 8, {128, 128, 255, 0}));
         facet::Texture t = facet::load_texture(path);
-        REQUIRE(t.texels.size() == 2);
-        require_texel(t.texels[0], {srgb8(128), srgb8(128), srgb8(128), 128 / 255.0f});
-        require_texel(t.texels[1], {1, 1, 1, 0});
+        REQUIRE(texels_of(t).size() == 2);
+        require_texel(texels_of(t)[0], {srgb8(128), srgb8(128), srgb8(128), 128 / 255.0f});
+        require_texel(texels_of(t)[1], {1, 1, 1, 0});
     }
     SECTION("RGB 8 bit") {
         std::string path = write_bytes(dir.file("rgb.png"), make_png(1, 1, 2, 8, {255, 128, 0}));
         facet::Texture t = facet::load_texture(path);
-        require_texel(t.texels.at(0), {1, srgb8(128), 0, 1});
+        require_texel(texels_of(t).at(0), {1, srgb8(128), 0, 1});
     }
     SECTION("RGBA 8 bit") {
         std::string path =
             write_bytes(dir.file("rgba.png"), make_png(1, 1, 6, 8, {10, 20, 30, 64}));
         facet::Texture t = facet::load_texture(path);
-        require_texel(t.texels.at(0), {srgb8(10), srgb8(20), srgb8(30), 64 / 255.0f}, 1e-6f);
+        require_texel(texels_of(t).at(0), {srgb8(10), srgb8(20), srgb8(30), 64 / 255.0f}, 1e-6f);
     }
     SECTION("grey 16 bit") {
         // Big-endian samples: 65535, 0, 32768.
         std::string path = write_bytes(dir.file("grey16.png"),
                                        make_png(3, 1, 0, 16, {0xFF, 0xFF, 0, 0, 0x80, 0x00}));
         facet::Texture t = facet::load_texture(path);
-        REQUIRE(t.texels.size() == 3);
-        require_texel(t.texels[0], {1, 1, 1, 1});
-        require_texel(t.texels[1], {0, 0, 0, 1});
+        REQUIRE(texels_of(t).size() == 3);
+        require_texel(texels_of(t)[0], {1, 1, 1, 1});
+        require_texel(texels_of(t)[1], {0, 0, 0, 1});
         float c = static_cast<float>(srgb_to_linear(32768 / 65535.0));
-        require_texel(t.texels[2], {c, c, c, 1});
+        require_texel(texels_of(t)[2], {c, c, c, 1}, kHalfStep);
     }
     SECTION("RGBA 16 bit") {
         std::string path =
@@ -239,13 +252,13 @@ TEST_CASE("load_texture reads PNG colour types and bit depths", "[assets][textur
                         make_png(1, 1, 6, 16, {0xFF, 0xFF, 0x00, 0x00, 0x80, 0x00, 0x80, 0x00}));
         facet::Texture t = facet::load_texture(path);
         float c = static_cast<float>(srgb_to_linear(32768 / 65535.0));
-        require_texel(t.texels.at(0), {1, 0, c, 32768 / 65535.0f});
+        require_texel(texels_of(t).at(0), {1, 0, c, 32768 / 65535.0f}, kHalfStep);
     }
     SECTION("rows run top to bottom") {
         std::string path = write_bytes(dir.file("rows.png"), make_png(1, 2, 0, 8, {255, 0}));
         facet::Texture t = facet::load_texture(path);
-        require_texel(t.texels.at(0), {1, 1, 1, 1});
-        require_texel(t.texels.at(1), {0, 0, 0, 1});
+        require_texel(texels_of(t).at(0), {1, 1, 1, 1});
+        require_texel(texels_of(t).at(1), {0, 0, 0, 1});
         require_texel(t.sample({0.5f, 0.25f}), {1, 1, 1, 1});  // centre of the top texel
         require_texel(t.sample({0.5f, 0.75f}), {0, 0, 0, 1});
     }
@@ -255,8 +268,8 @@ TEST_CASE("load_texture reads PNG colour types and bit depths", "[assets][textur
         auto bytes = facet::encode_png_color(img, 9);
         std::string path = write_bytes(dir.file("own.png"), bytes);
         facet::Texture t = facet::load_texture(path);
-        require_texel(t.texels.at(0), {0, 0, 0, 1});
-        require_texel(t.texels.at(1), {1, 0, 1, 1});
+        require_texel(texels_of(t).at(0), {0, 0, 0, 1});
+        require_texel(texels_of(t).at(1), {1, 0, 1, 1});
     }
     SECTION("a larger PNG spanning several deflate blocks") {
         const int w = 300, h = 300;  // 90 000 grey bytes + filters > one 64 KiB block
@@ -269,7 +282,7 @@ TEST_CASE("load_texture reads PNG colour types and bit depths", "[assets][textur
         REQUIRE(t.height == h);
         for (int y : {0, 150, 299})
             for (int x : {0, 7, 299})
-                CHECK(t.texels[y * w + x].g == Approx(srgb8((x + 3 * y) & 255)).margin(1e-6));
+                CHECK(t.texel(0, x, y).g == Approx(srgb8((x + 3 * y) & 255)).margin(1e-6));
     }
 }
 
@@ -284,7 +297,7 @@ TEST_CASE("load_texture reads JPEG", "[assets][texture]") {
         REQUIRE(t.width == 16);
         REQUIRE(t.height == 16);
         // JPEG is lossy: allow a few levels either way around each byte.
-        for (const auto& texel : t.texels) {
+        for (const auto& texel : texels_of(t)) {
             CHECK(texel.r >= srgb8(196));
             CHECK(texel.r <= srgb8(204));
             CHECK(texel.g >= srgb8(96));
@@ -299,8 +312,8 @@ TEST_CASE("load_texture reads JPEG", "[assets][texture]") {
         std::string path = dir.file("grey.jpg");
         REQUIRE(stbi_write_jpg(path.c_str(), 8, 8, 1, px.data(), 100) != 0);
         facet::Texture t = facet::load_texture(path);
-        REQUIRE(t.texels.size() == 64);
-        for (const auto& texel : t.texels) {
+        REQUIRE(texels_of(t).size() == 64);
+        for (const auto& texel : texels_of(t)) {
             CHECK(texel.r == texel.g);
             CHECK(texel.g == texel.b);
             CHECK(texel.r == Approx(srgb8(128)).margin(srgb8(130) - srgb8(128)));
@@ -310,11 +323,12 @@ TEST_CASE("load_texture reads JPEG", "[assets][texture]") {
         facet::Texture t = facet::load_texture("/usr/share/assimp/models/OBJ/SpiderTex.jpg");
         CHECK(t.width > 0);
         CHECK(t.height > 0);
-        CHECK(t.texels.size() == static_cast<size_t>(t.width) * t.height);
-        for (size_t i = 0; i < t.texels.size(); i += 97) {
+        const std::vector<glm::vec4> texels = texels_of(t);
+        CHECK(texels.size() == static_cast<size_t>(t.width) * t.height);
+        for (size_t i = 0; i < texels.size(); i += 97) {
             for (int c = 0; c < 4; ++c) {
-                CHECK(t.texels[i][c] >= 0.0f);
-                CHECK(t.texels[i][c] <= 1.0f);
+                CHECK(texels[i][c] >= 0.0f);
+                CHECK(texels[i][c] <= 1.0f);
             }
         }
     }
@@ -334,9 +348,9 @@ TEST_CASE("bilinear sampling between texel centres", "[assets][texture]") {
     CHECK(v.sample({0.5f, 0.5f}).r == Approx(0.5f));
     CHECK(v.sample({0.5f, 0.6875f}).r == Approx(0.875f));
     // Both axes at once: a 2x2 with one white texel (bottom right).
-    facet::Texture q;
-    q.width = q.height = 2;
-    q.texels = {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {1, 1, 1, 1}};
+    facet::Texture q =
+        facet::Texture::from_linear(2, 2, {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {1, 1, 1, 1}},
+                                    facet::Texture::Format::srgb8);
     q.wrap = facet::Wrap::clamp;
     CHECK(q.sample({0.5f, 0.5f}).r == Approx(0.25f));
     CHECK(q.sample({0.625f, 0.625f}).r == Approx(0.5625f));  // 0.75 * 0.75
@@ -399,7 +413,7 @@ TEST_CASE("repeat and clamp wrapping at the edges", "[assets][texture]") {
     SECTION("a 1x1 texture is the same everywhere") {
         facet::Texture one = grey_row({0.3f}, facet::Wrap::repeat);
         for (float u : {-5.5f, 0.0f, 0.37f, 1.0f, 12.25f})
-            CHECK(one.sample({u, u * 0.5f}).r == Approx(0.3f));
+            CHECK(one.sample({u, u * 0.5f}).r == Approx(0.3f).margin(kHalfStep));
     }
 }
 

@@ -109,6 +109,18 @@ const uint8_t* accessor_bytes(const tinygltf::Model& model, const tinygltf::Acce
 
 }  // namespace
 
+void check_accessor_data(const tinygltf::Model& model, int index, const std::string& path,
+                         const std::string& what) {
+    const auto& acc = accessor_at(model, index, path, what);
+    const int components = tinygltf::GetNumComponentsInType(static_cast<uint32_t>(acc.type));
+    const int comp_size =
+        tinygltf::GetComponentSizeInBytes(static_cast<uint32_t>(acc.componentType));
+    if (components <= 0 || comp_size <= 0)
+        bad(path, what + " has an unknown type or component type");
+    size_t stride = 0;
+    accessor_bytes(model, acc, static_cast<size_t>(comp_size) * components, stride, path, what);
+}
+
 // Reads an accessor as floats, `components` per element, applying sparse substitution.
 std::vector<float> read_floats(const tinygltf::Model& model, int index, int components,
                                const std::string& path, const std::string& what) {

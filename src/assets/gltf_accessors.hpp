@@ -17,6 +17,12 @@ namespace facet::gltf_detail {
 const tinygltf::Accessor& accessor_at(const tinygltf::Model& model, int index,
                                       const std::string& path, const std::string& what);
 
+// Checks that the accessor's count fits its data (or the limit for an
+// accessor without data) without reading or allocating anything, so that a
+// count can be trusted in memory estimates.
+void check_accessor_data(const tinygltf::Model& model, int index, const std::string& path,
+                         const std::string& what);
+
 // Reads an accessor as floats, `components` per element, applying sparse
 // substitution and normalisation; every value is checked to be finite.
 std::vector<float> read_floats(const tinygltf::Model& model, int index, int components,

@@ -11,6 +11,9 @@
 #include <map>
 #include <set>
 
+#include <optional>
+
+#include <stb/stb_image.h>
 #include <tiny_gltf.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -23,6 +26,9 @@
 #include "assets/gltf_rig_loader.hpp"
 #include "assets/mesh.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
+#include "core/limits.hpp"
+#include "core/memory.hpp"
 
 namespace facet {
 namespace {
@@ -76,11 +82,117 @@ std::vector<uint32_t> triangle_list(int mode, const std::vector<uint32_t>& idx) 
     return tris;
 }
 
+// What tinygltf's callbacks need: the file's own path and folder, the
+// policy for the URIs inside it, the texture budget, and the first refusal
+// (kept, and thrown once tinygltf has returned, so that no exception
+// crosses it).
+struct LoadContext {
+    std::string path;    // the .gltf or .glb, as given
+    std::string prefix;  // how tinygltf spells the paths it builds from the file's folder
+    const AssetContext* assets;
+    std::optional<Error> refusal;
+
+    void refuse(const Error& e) {
+        if (!refusal) refusal = e;
+    }
+};
+
+// tinygltf looks for a URI in the file's folder and then in the current
+// directory; only the first is the glTF specification's meaning (§2.8), so
+// the second is not found. The first always "exists": reading it then says
+// precisely why it cannot be read (missing, a FIFO, outside the folder...).
+bool file_exists(const std::string& candidate, void* user) {
+    const auto& c = *static_cast<const LoadContext*>(user);
+    return candidate.compare(0, c.prefix.size(), c.prefix) == 0;
+}
+
+// No `~` or variable expansion (tinygltf's default runs wordexp on URIs).
+std::string expand_file_path(const std::string& path, void*) {
+    return path;
+}
+
+bool read_whole_file(std::vector<unsigned char>* out, std::string* err,
+                     const std::string& candidate, void* user) {
+    auto& c = *static_cast<LoadContext*>(user);
+    try {
+        const std::string reference = candidate.substr(c.prefix.size());
+        const std::string file =
+            resolve_asset_reference(c.path, "buffer or image URI", reference, c.assets->paths);
+        *out = read_input_file(file, "glTF resource", c.assets->paths.max_file_bytes);
+        return true;
+    } catch (const Error& e) {
+        c.refuse(e);
+        if (err) *err += e.what();
+        return false;
+    }
+}
+
+bool write_whole_file(std::string* err, const std::string&, const std::vector<unsigned char>&,
+                      void*) {
+    if (err) *err += "facet never writes glTF resources";
+    return false;
+}
+
+// Images: the size is read first and charged to the texture budget, so a
+// small file that would decode to gigabytes is stopped before it is.
+bool load_image(tinygltf::Image* image, const int index, std::string* err, std::string*, int, int,
+                const unsigned char* bytes, int size, void* user) {
+    auto& c = *static_cast<LoadContext*>(user);
+    const std::string name = c.path + " image " + std::to_string(index) +
+                             (image->uri.empty() ? "" : " '" + image->uri + "'");
+    int w = 0, h = 0, channels = 0;
+    if (!stbi_info_from_memory(bytes, size, &w, &h, &channels)) {
+        if (err) *err += name + ": cannot decode (" + stbi_failure_reason() + ")\n";
+        return false;
+    }
+    const bool is16 = stbi_is_16_bit_from_memory(bytes, size);
+    try {
+        if (w <= 0 || h <= 0 || w > kMaxImageSide || h > kMaxImageSide)
+            throw Error(ExitCode::invalid_input, name + ": " + std::to_string(w) + "x" +
+                                                     std::to_string(h) +
+                                                     " pixels (each side must be 1 to " +
+                                                     std::to_string(kMaxImageSide) + ")");
+        if (c.assets->textures)
+            c.assets->textures->charge(name, w, h, texture_bytes(w, h, is16 ? 16 : 8));
+    } catch (const Error& e) {
+        c.refuse(e);
+        if (err) *err += e.what();
+        return false;
+    }
+    void* data =
+        is16 ? static_cast<void*>(stbi_load_16_from_memory(bytes, size, &w, &h, &channels, 0))
+             : static_cast<void*>(stbi_load_from_memory(bytes, size, &w, &h, &channels, 0));
+    if (!data) {
+        if (err) *err += name + ": cannot decode (" + stbi_failure_reason() + ")\n";
+        return false;
+    }
+    const size_t n = static_cast<size_t>(w) * h * channels * (is16 ? 2 : 1);
+    image->image.assign(static_cast<const unsigned char*>(data),
+                        static_cast<const unsigned char*>(data) + n);
+    stbi_image_free(data);
+    image->width = w;
+    image->height = h;
+    image->component = channels;
+    image->bits = is16 ? 16 : 8;
+    image->pixel_type =
+        is16 ? TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT : TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE;
+    return true;
+}
+
 }  // namespace
 
-Mesh load_gltf(const std::string& path) {
+Mesh load_gltf(const std::string& path, const AssetContext& context) {
+    require_input_file(path, "glTF");
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
+    LoadContext load{path, "", &context, std::nullopt};
+    // tinygltf joins its folder (the path up to the last slash) and a URI with a slash.
+    const size_t slash = path.find_last_of("/\\");
+    load.prefix = slash == std::string::npos ? "" : path.substr(0, slash) + "/";
+    tinygltf::FsCallbacks fs{&file_exists, &expand_file_path, &read_whole_file, &write_whole_file,
+                             &load};
+    loader.SetFsCallbacks(fs);
+    loader.SetImageLoader(&load_image, &load);
     std::string err, warn;
     bool binary = std::filesystem::path(path).extension() == ".glb" ||
                   std::filesystem::path(path).extension() == ".GLB";
@@ -91,6 +203,7 @@ Mesh load_gltf(const std::string& path) {
     } catch (const std::exception& e) {
         err = e.what();
     }
+    if (load.refusal) throw *load.refusal;
     auto trim = [](std::string s) {
         while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
         return s;
@@ -166,6 +279,24 @@ Mesh load_gltf(const std::string& path) {
     fallback.color = glm::vec3(1);
     mesh.materials.push_back(fallback);
 
+    // Every mesh instance is baked into parts of its own, so a small file
+    // whose nodes repeat a large mesh, or whose primitives share one large
+    // accessor, asks for far more than its size: each primitive's share is
+    // checked against the memory there is before it is read.
+    const uint64_t memory = memory_available();
+    uint64_t planned = 0;
+    auto plan_primitive = [&](const tinygltf::Primitive& prim, int position_accessor,
+                              const std::string& what) {
+        constexpr uint64_t kPerVertex = 64, kPerIndex = 16;  // the part and what builds it
+        // Counts the data cannot back are the file's error, not a lack of memory.
+        gltf_detail::check_accessor_data(model, position_accessor, path, what + " POSITION");
+        planned += static_cast<uint64_t>(model.accessors[position_accessor].count) * kPerVertex;
+        if (prim.indices >= 0) {
+            gltf_detail::check_accessor_data(model, prim.indices, path, what + " indices");
+            planned += static_cast<uint64_t>(model.accessors[prim.indices].count) * kPerIndex;
+        }
+        check_memory("loading " + path, {{"mesh instances", planned}}, memory);
+    };
     auto add_mesh = [&](int mesh_index, const glm::mat4& world, int node_index) {
         if (mesh_index < 0 || static_cast<size_t>(mesh_index) >= model.meshes.size())
             bad(path, "node refers to missing mesh " + std::to_string(mesh_index));
@@ -188,6 +319,7 @@ Mesh load_gltf(const std::string& path) {
                 continue;
             }
             MeshPart part;
+            plan_primitive(prim, pos_it->second, what);
             auto pos = read_floats(model, pos_it->second, 3, path, what + " POSITION");
             size_t count = pos.size() / 3;
             for (size_t i = 0; i < count; ++i)

@@ -1,9 +1,12 @@
 // Wavefront OBJ + MTL through tinyobjloader.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <sstream>
 #include <tuple>
 
@@ -55,15 +58,8 @@ void append_utf8(std::string& out, uint32_t u) {
 // (assimp's box_UTF16BE.obj); tinyobjloader only reads bytes, so such a file
 // would silently come out empty.
 std::string read_obj_text(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(ExitCode::invalid_input, path + ": cannot read OBJ: no such file");
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    if (!in && !in.eof())
-        throw Error(ExitCode::invalid_input, path + ": cannot read OBJ: read failed");
-    std::string raw = ss.str();
+    const std::vector<uint8_t> bytes = read_input_file(path, "OBJ");
+    const std::string raw(bytes.begin(), bytes.end());
     auto byte = [&](size_t i) { return static_cast<unsigned char>(raw[i]); };
     if (raw.size() >= 3 && byte(0) == 0xEF && byte(1) == 0xBB && byte(2) == 0xBF)
         return raw.substr(3);
@@ -142,19 +138,58 @@ std::string normalise_obj_lines(const std::string& text) {
     return out;
 }
 
-// .mtl files next to the .obj. tinyobjloader's own reader splits its search
-// path at ':', so models in a folder whose name has a colon lost their materials.
+// The line of each file named by an mtllib line, for messages.
+std::map<std::string, int> mtllib_lines(const std::string& text) {
+    std::map<std::string, int> lines;
+    int line = 1;
+    size_t start = 0;
+    while (start < text.size()) {
+        size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::istringstream words(text.substr(start, end - start));
+        std::string word;
+        if (words >> word && word == "mtllib")
+            while (words >> word) lines.emplace(word, line);
+        ++line;
+        start = end + 1;
+    }
+    return lines;
+}
+
+// .mtl files named by mtllib, resolved and checked by the asset path policy
+// (core/input_file.hpp). tinyobjloader's own reader splits its search path
+// at ':', so models in a folder whose name has a colon lost their materials;
+// and it opens whatever it is given. A refusal is kept and thrown after
+// parsing, so that no exception crosses tinyobjloader.
 class MtlReader : public tinyobj::MaterialReader {
   public:
-    explicit MtlReader(std::filesystem::path dir) : dir_(std::move(dir)) {}
+    MtlReader(std::string obj_path, const AssetPathPolicy& policy, std::map<std::string, int> lines)
+        : obj_path_(std::move(obj_path)), policy_(policy), lines_(std::move(lines)) {}
     bool operator()(const std::string& name, std::vector<tinyobj::material_t>* materials,
                     std::map<std::string, int>* names, std::string* warn,
                     std::string* err) override {
-        std::ifstream in(dir_ / name);
-        if (!in) {
-            if (warn) *warn += "material library '" + name + "' not found\n";
+        const auto line = lines_.find(name);
+        const std::string where =
+            line == lines_.end() ? "mtllib" : "line " + std::to_string(line->second) + ": mtllib";
+        std::string text;
+        try {
+            const std::string mtl = resolve_asset_reference(obj_path_, where, name, policy_);
+            const std::vector<uint8_t> bytes = read_input_file(mtl, "MTL", policy_.max_file_bytes);
+            text.assign(bytes.begin(), bytes.end());
+        } catch (const Error& e) {
+            // A missing library is common in downloaded models: the faces
+            // keep a default material. Anything else is refused.
+            const bool missing =
+                std::string(e.what()).find("no such file") != std::string::npos &&
+                std::string(e.what()).find("outside the asset's folder") == std::string::npos;
+            if (missing) {
+                if (warn) *warn += "material library '" + name + "' not found\n";
+            } else if (!refusal_) {
+                refusal_ = e;
+            }
             return false;
         }
+        std::istringstream in(text);
         const size_t first = materials->size();
         tinyobj::LoadMtl(names, materials, &in, warn, err);
         for (size_t i = first; i < materials->size(); ++i) {
@@ -168,9 +203,14 @@ class MtlReader : public tinyobj::MaterialReader {
         }
         return true;
     }
+    // The first library refused by the policy, if any.
+    const std::optional<Error>& refusal() const { return refusal_; }
 
   private:
-    std::filesystem::path dir_;
+    std::string obj_path_;
+    AssetPathPolicy policy_;
+    std::map<std::string, int> lines_;
+    std::optional<Error> refusal_;
 };
 
 // Splits a planar polygon into corners.size() - 2 triangles wound like the
@@ -214,18 +254,42 @@ std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dv
         if (via13) return {{0, 1, 3}, {1, 2, 3}};
     }
 
+    auto turn = [&](size_t a, size_t b, size_t c) {
+        return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x);
+    };
+    // A convex outline (every corner turns left, once round) is a fan: most
+    // n-gons exporters write are caps of this kind, and it takes O(n).
+    double angle = 0;
+    bool convex = true;
+    for (size_t i = 0; i < n && convex; ++i) {
+        const size_t a = (i + n - 1) % n, c = (i + 1) % n;
+        convex = turn(a, i, c) > 0;
+        const glm::dvec2 d0 = p[i] - p[a], d1 = p[c] - p[i];
+        angle += std::atan2(d0.x * d1.y - d0.y * d1.x, glm::dot(d0, d1));
+    }
+    if (convex && std::abs(angle - 2 * std::numbers::pi) < 1e-6) {
+        // The fan round the last corner: what ear clipping gives a convex
+        // outline, so files render as they did before this shortcut.
+        for (size_t i = 0; i + 2 < n; ++i) tris.push_back({n - 1, i, i + 1});
+        return tris;
+    }
+
     std::vector<size_t> prev(n), next(n);
     for (size_t i = 0; i < n; ++i) {
         prev[i] = (i + n - 1) % n;
         next[i] = (i + 1) % n;
     }
-    auto turn = [&](size_t a, size_t b, size_t c) {
-        return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x);
-    };
+    // Ear clipping is O(n^2) for a fair outline but O(n^3) for a hostile
+    // one (few ears, each found after many misses). Past a budget of
+    // 8 n^2 corner tests the rest is clipped at the most convex corner,
+    // O(n) a triangle, so no face costs more than O(n^2).
+    size_t tests = 0;
+    const size_t budget = 8 * n * n;
     auto is_ear = [&](size_t b) {
         size_t a = prev[b], c = next[b];
         if (!(turn(a, b, c) > 0)) return false;  // reflex or straight corner
         for (size_t j = next[c]; j != a; j = next[j]) {
+            ++tests;
             // Corners repeated by a bridge to a hole coincide with the ear's own.
             if (p[j] == p[a] || p[j] == p[b] || p[j] == p[c]) continue;
             if (turn(a, b, j) >= 0 && turn(b, c, j) >= 0 && turn(c, a, j) >= 0) return false;
@@ -240,14 +304,14 @@ std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dv
     };
     size_t remaining = n, at = 0, misses = 0;
     while (remaining > 3) {
-        if (is_ear(at)) {
+        if (tests < budget && is_ear(at)) {
             at = clip(at);
             --remaining;
             misses = 0;
             continue;
         }
         at = next[at];
-        if (++misses >= remaining) {
+        if (++misses >= remaining || tests >= budget) {
             // No clean ear: the outline crosses itself or is degenerate. Clip
             // the most convex corner so the face still gives n - 2 triangles.
             size_t best = at;
@@ -268,9 +332,9 @@ std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dv
 
 }  // namespace
 
-Mesh load_obj(const std::string& path) {
+Mesh load_obj(const std::string& path, const AssetContext& context) {
     const std::string text = normalise_obj_lines(read_obj_text(path));
-    const std::string dir = std::filesystem::path(path).parent_path().string();
+    const std::map<std::string, int> libraries = mtllib_lines(text);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
     std::vector<tinyobj::material_t> obj_materials;
@@ -282,9 +346,11 @@ Mesh load_obj(const std::string& path) {
         warn.clear();
         err.clear();
         std::istringstream in(text);
-        MtlReader mtl(dir);
-        return tinyobj::LoadObj(&attrib, &shapes, &obj_materials, &warn, &err, &in, &mtl,
-                                triangulate, false);
+        MtlReader mtl(path, context.paths, libraries);
+        const bool parsed = tinyobj::LoadObj(&attrib, &shapes, &obj_materials, &warn, &err, &in,
+                                             &mtl, triangulate, false);
+        if (mtl.refusal()) throw *mtl.refusal();
+        return parsed;
     };
     // Polygons are triangulated here (see triangulate_polygon), so ask for them whole.
     bool ok = parse(false);
@@ -328,14 +394,14 @@ Mesh load_obj(const std::string& path) {
             // Files written on Windows often name textures with backslashes.
             std::string name = m.diffuse_texname;
             std::replace(name.begin(), name.end(), '\\', '/');
-            std::string tex_path = (std::filesystem::path(dir) / name).lexically_normal().string();
+            const std::string where = "material '" + mat.name + "': map_Kd";
+            const std::string tex_path = resolve_asset_reference(path, where, name, context.paths);
             auto& slot = textures[tex_path];
             if (!slot) {
                 try {
-                    slot = std::make_shared<Texture>(load_texture(tex_path));
+                    slot = std::make_shared<Texture>(load_texture(tex_path, context.textures));
                 } catch (const Error& e) {
-                    throw Error(ExitCode::invalid_input,
-                                path + ": material '" + m.name + "': map_Kd: " + e.what());
+                    throw Error(ExitCode::invalid_input, path + ": " + where + ": " + e.what());
                 }
             }
             mat.texture = slot;

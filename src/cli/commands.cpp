@@ -1,11 +1,13 @@
 #include "cli/commands.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <iostream>
+#include <thread>
 
 #include <CLI/CLI.hpp>
 
@@ -18,6 +20,7 @@
 #include "raster/raster_limits.hpp"
 #include "render/contact_sheet.hpp"
 #include "render/render_job.hpp"
+#include "render/render_memory.hpp"
 #include "render/thread_study.hpp"
 #include "render/world.hpp"
 
@@ -48,6 +51,7 @@ struct RenderArgs {
     std::string cameras;  // comma-separated names, or "all"
     std::vector<std::string> defines;
     bool quiet = false;
+    bool allow_asset_paths_outside = false;
 };
 
 SourceLocation command_line(const std::string& what) {
@@ -81,6 +85,9 @@ SceneOptions scene_options(const RenderArgs& args) {
     if (!args.formats.empty())
         options.overrides.push_back(
             {"output.formats", "[" + args.formats + "]", "command line --formats " + args.formats});
+    if (args.allow_asset_paths_outside)
+        options.overrides.push_back(
+            {"assets.allow_paths_outside", "true", "command line --allow-asset-paths-outside"});
     for (const auto& d : args.defines) options.overrides.push_back(parse_define(d));
     return options;
 }
@@ -149,6 +156,7 @@ int validate_command(const RenderArgs& args) {
     options.cameras = split_list(args.cameras);
     check_outputs(scene, options);
     World world = build_world(scene);
+    check_render_memory(scene, world, std::max(1u, std::thread::hardware_concurrency()));
     if (!args.quiet) {
         print_warnings(scene, world);
         std::printf(
@@ -161,11 +169,13 @@ int validate_command(const RenderArgs& args) {
     return 0;
 }
 
-int info_command(const std::string& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw Error(ExitCode::invalid_input, path + ": file not found");
-    Mesh mesh = load_mesh(path);
+int info_command(const std::string& path, bool allow_outside) {
+    require_input_file(path, "mesh");
+    TextureBudget textures(kDefaultTextureBudget);
+    AssetContext assets;
+    assets.paths.allow_outside = allow_outside;
+    assets.textures = &textures;
+    Mesh mesh = load_mesh(path, assets);
     Bounds b = mesh.bounds();
     std::printf("file:       %s\n", path.c_str());
     std::printf("triangles:  %zu\n", mesh.triangle_count());
@@ -336,6 +346,13 @@ void add_define_option(CLI::App* cmd, std::vector<std::string>& defines) {
         ->allow_extra_args(false);
 }
 
+// Paths named inside meshes (mtllib, map_Kd, glTF URIs) stay inside the
+// mesh's folder unless this is given (core/input_file.hpp).
+void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
+    cmd->add_flag("--allow-asset-paths-outside", allow,
+                  "Let meshes name files outside their own folder (trusted assets only)");
+}
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
@@ -347,6 +364,7 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("--camera", args.cameras,
                     "Camera(s) to render by name, comma-separated, or 'all'");
     cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
+    add_asset_paths_flag(cmd, args.allow_asset_paths_outside);
 }
 
 }  // namespace
@@ -432,9 +450,11 @@ int run_command_line(int argc, char** argv) {
                       "Folder for SCENE-threads.md and .png (default out/bench)");
 
     std::string mesh_path;
+    bool info_allow_outside = false;
     CLI::App* info = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
     info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
+    add_asset_paths_flag(info, info_allow_outside);
 
     try {
         app.parse(argc, argv);
@@ -445,7 +465,7 @@ int run_command_line(int argc, char** argv) {
     try {
         if (render->parsed()) return render_command(render_args);
         if (validate->parsed()) return validate_command(validate_args);
-        if (info->parsed()) return info_command(mesh_path);
+        if (info->parsed()) return info_command(mesh_path, info_allow_outside);
         if (styles->parsed()) return styles_command();
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);

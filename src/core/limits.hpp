@@ -12,4 +12,14 @@ constexpr int kMaxImageSide = 16384;
 // float range, so products of two of them stay finite.
 constexpr double kMaxCoordinate = 1e7;
 
+// Largest image file facet decodes (compressed bytes); the decoded size is
+// bounded separately, by kMaxImageSide and the texture budget.
+constexpr uint64_t kMaxImageFileBytes = uint64_t(1) << 30;
+
+// Scene and style files: far beyond any hand-written scene.
+constexpr uint64_t kMaxYamlFileBytes = uint64_t(64) << 20;
+// How deep yaml-cpp lets a document nest before it stops (its parser counts
+// 2000 recursive calls, about four a level).
+constexpr int kMaxYamlNesting = 500;
+
 }  // namespace facet

@@ -1,16 +1,20 @@
 #pragma once
-// zlib streams and CRC-32 through Intel's ISA-L (igzip), the fastest deflate
-// Debian packages: a 1080p frame in a few milliseconds where zlib takes tens.
-// The only ISA-L user; PNG and EXR writers call it.
+// zlib streams and CRC-32 through libdeflate: whole-buffer compression, two
+// to three times faster than zlib at the same size, and the same bytes for
+// the same input every time. (ISA-L's igzip is faster still, but on the
+// machine this was measured on it now and then wrote different bytes for
+// the same input when other threads were busy; docs/performance.md.)
+// The only libdeflate user; PNG and EXR writers call it.
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
 namespace facet {
 
-// ISA-L's levels: 0 (fastest) to 3 (smallest). Every level writes a valid
-// zlib stream that any inflater reads back to the same bytes.
-constexpr int kMaxDeflateLevel = 3;
+// zlib's scale: 0 (stored) to 9 (smallest); libdeflate goes on to 12, which
+// facet does not offer. Every level writes a valid zlib stream that any
+// inflater reads back to the same bytes.
+constexpr int kMaxDeflateLevel = 9;
 
 // Appends the zlib stream (header, deflate data, Adler-32) of `data` to `out`.
 void zlib_compress(const uint8_t* data, size_t size, int level, std::vector<uint8_t>& out);

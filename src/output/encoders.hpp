@@ -1,7 +1,7 @@
 #pragma once
 // Image encoders: each returns the complete file as bytes, so the caller
 // can hash it and write it atomically; and readers. The only users of
-// ISA-L (deflate), libpng (reading) and OpenEXR.
+// libdeflate (deflate), libpng (reading) and OpenEXR.
 #include <cstdint>
 #include <string>
 #include <vector>

@@ -1,6 +1,6 @@
 // OpenEXR files written through OpenEXR's C core (the header, the chunk
 // offset table and the file layout are the library's), with the ZIP
-// compression of each chunk done here by ISA-L: OpenEXR 3.1 compresses
+// compression of each chunk done here by libdeflate: OpenEXR 3.1 compresses
 // with zlib, several times slower. The chunk data follows the OpenEXR file
 // layout: 16 scanlines per chunk, within each scanline the channels in name
 // order, little-endian samples; ZIP splits the bytes into two halves (even
@@ -19,8 +19,8 @@ namespace facet {
 namespace {
 
 constexpr int kScanlinesPerChunk = 16;  // ZIP
-// ISA-L level for EXR chunks: level 1 is as fast as storing and about as
-// small as zlib's 6 on rendered half and float data.
+// libdeflate level for EXR chunks: its fastest, level 1, is about as small
+// as zlib's 6 on rendered half and float data.
 constexpr int kExrDeflateLevel = 1;
 
 // The file grows in memory: OpenEXR writes the header, the chunks, then
@@ -59,7 +59,8 @@ exr_pixel_type_t pixel_type(ExrSample type) {
 void pack_chunk(const std::vector<ExrChannel>& channels, int width, int y0, int y1,
                 std::vector<uint8_t>& raw) {
     size_t row_bytes = 0;
-    for (const ExrChannel& c : channels) row_bytes += sample_bytes(c.type) * static_cast<size_t>(width);
+    for (const ExrChannel& c : channels)
+        row_bytes += sample_bytes(c.type) * static_cast<size_t>(width);
     raw.resize(row_bytes * static_cast<size_t>(y1 - y0));
     uint8_t* out = raw.data();
     for (int y = y0; y < y1; ++y)
@@ -126,8 +127,8 @@ std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> c
         check(exr_initialize_required_attr_simple(ctxt, part, width, height, EXR_COMPRESSION_ZIP),
               "attributes");
         for (const ExrChannel& c : channels)
-            check(exr_add_channel(ctxt, part, c.name.c_str(), pixel_type(c.type), EXR_PERCEPTUALLY_LINEAR,
-                                  1, 1),
+            check(exr_add_channel(ctxt, part, c.name.c_str(), pixel_type(c.type),
+                                  EXR_PERCEPTUALLY_LINEAR, 1, 1),
                   "channel");
         for (const ExrAttribute& a : attributes)
             check(exr_attr_set_string(ctxt, part, a.name.c_str(), a.value.c_str()), "attribute");

@@ -34,12 +34,6 @@ void put_chunk(std::vector<uint8_t>& out, const char type[4], const uint8_t* dat
     put_u32(out, crc32(0, out.data() + start, out.size() - start));
 }
 
-// zlib levels 0..9 (the scene's output.png_compression) onto ISA-L's 0..3.
-int deflate_level(int png_compression) {
-    if (png_compression <= 0) return 0;
-    return std::min(kMaxDeflateLevel, (png_compression + 2) / 3);
-}
-
 // A whole PNG from filtered scanlines (each a filter byte and the row).
 std::vector<uint8_t> png_file(int width, int height, int bit_depth, uint8_t color_type,
                               const std::vector<uint8_t>& scanlines,
@@ -66,7 +60,8 @@ std::vector<uint8_t> png_file(int width, int height, int bit_depth, uint8_t colo
         put_chunk(out, "tEXt", data.data(), data.size());
     }
     std::vector<uint8_t> idat;
-    zlib_compress(scanlines.data(), scanlines.size(), deflate_level(compression), idat);
+    zlib_compress(scanlines.data(), scanlines.size(), std::clamp(compression, 0, kMaxDeflateLevel),
+                  idat);
     put_chunk(out, "IDAT", idat.data(), idat.size());
     put_chunk(out, "IEND", nullptr, 0);
     return out;

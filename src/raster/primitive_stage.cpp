@@ -75,8 +75,9 @@ void Rasterizer::set_geometry(const RasterInput& input, ThreadPool& pool) {
     // Every vertex once on screen first: a vertex is shared by about six
     // triangles, which then only look it up.
     screen_.resize(input.vertex_count);
-    pool.parallel_for_chunks(input.vertex_count, kVerticesPerSetupChunk,
-                             [&](size_t first, size_t last) { project_vertices(input, first, last); });
+    pool.parallel_for_chunks(
+        input.vertex_count, kVerticesPerSetupChunk,
+        [&](size_t first, size_t last) { project_vertices(input, first, last); });
     chunk_count_ = (input.triangle_count + kTrianglesPerChunk - 1) / kTrianglesPerChunk;
     if (chunks_.size() < chunk_count_) chunks_.resize(chunk_count_);
     pool.parallel_for(chunk_count_, [&](size_t chunk) { setup_chunk(input, chunk); });
@@ -95,6 +96,13 @@ void Rasterizer::project_vertices(const RasterInput& input, size_t first, size_t
         }
         s.outcode = clip_outcode(v, guard_x_, guard_y_);
         if (s.outcode != 0) continue;  // its triangles are clipped from clip space
+        // Inside every plane with w <= 0 means x = y = z = w = 0: a vertex no
+        // triangle of this pass uses (stages leave those zero) or one at the
+        // eye itself. It has no screen position; 1/w would make one of NaN.
+        if (!(v.w > 0.0f)) {
+            s.outcode = kNotFinite;
+            continue;
+        }
         s.inv_w = 1.0f / v.w;
         const glm::vec2 screen = clip_to_screen(v, half_w, half_h);
         s.x = to_fixed(screen.x);

@@ -7,6 +7,7 @@
 #include <exception>
 #include <filesystem>
 #include <mutex>
+#include <set>
 #include <thread>
 
 #include "core/error.hpp"
@@ -17,6 +18,7 @@
 #include "output/manifest.hpp"
 #include "output/output_path.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/render_memory.hpp"
 
 namespace facet {
 namespace {
@@ -124,6 +126,17 @@ class Encoder {
         }
     }
 
+    // Creates a folder the first time a file goes into it, and removes what
+    // an interrupted earlier run on this host left there half-written.
+    void prepare_folder(const std::string& folder) const {
+        {
+            std::lock_guard lock(folders_mutex_);
+            if (!prepared_folders_.insert(folder).second) return;
+        }
+        make_directories(folder);
+        remove_stale_temporaries(folder);
+    }
+
     // Encodes one frame's passes and writes its files; returns their manifest lines.
     Manifest encode(const EncodeJob& job) const {
         const auto start = Clock::now();
@@ -134,7 +147,7 @@ class Encoder {
             const std::string name =
                 expand(layout_.names, {scene_.name, job.camera, pass, job.frame, format});
             const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
-            make_directories(file.parent_path().string());
+            prepare_folder(file.parent_path().string());
             write_file_atomically(file.string(), bytes);
             written.files.push_back({job.frame, job.camera, pass, format,
                                      path_relative_to_manifest(name, layout_.manifest_dir),
@@ -161,6 +174,8 @@ class Encoder {
     std::condition_variable ready_, space_;
     std::deque<EncodeJob> queue_;
     std::vector<FrameImages> spare_;
+    mutable std::mutex folders_mutex_;
+    mutable std::set<std::string> prepared_folders_;
     bool closed_ = false;
     std::exception_ptr failure_;
     Manifest manifest_;  // guarded by mutex_ until the workers have stopped
@@ -236,9 +251,9 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
     RenderResult result;
     result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    make_directories(result.output_dir);
-
     ThreadPool pool(options.threads);
+    check_render_memory(scene, world, static_cast<unsigned>(pool.size()));
+    make_directories(result.output_dir);
     FrameRenderer renderer(scene, world, pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.

@@ -180,11 +180,15 @@ struct RowChunk {
         vi t[2], b[2];
         std::memcpy(t, top, sizeof t);
         std::memcpy(b, top + kTileSize, sizeof b);
-        const vi even = {0, 2, 4, 6, 8, 10, 12, 14}, odd = {1, 3, 5, 7, 9, 11, 13, 15};
-        const vi top_left = __builtin_shuffle(t[0], t[1], even);
-        const vi same = (top_left == __builtin_shuffle(t[0], t[1], odd)) &
-                        (top_left == __builtin_shuffle(b[0], b[1], even)) &
-                        (top_left == __builtin_shuffle(b[0], b[1], odd));
+        auto even = [](vi lo, vi hi) {
+            return __builtin_shufflevector(lo, hi, 0, 2, 4, 6, 8, 10, 12, 14);
+        };
+        auto odd = [](vi lo, vi hi) {
+            return __builtin_shufflevector(lo, hi, 1, 3, 5, 7, 9, 11, 13, 15);
+        };
+        const vi top_left = even(t[0], t[1]);
+        const vi same = (top_left == odd(t[0], t[1])) & (top_left == even(b[0], b[1])) &
+                        (top_left == odd(b[0], b[1]));
         ids = same ? top_left : simd::splat_i(static_cast<int32_t>(kMixedPixel));
         std::memcpy(chunk.id, &ids, sizeof ids);
     } else {

@@ -14,7 +14,8 @@ namespace facet {
 namespace {
 
 Material resolve_material(const Material& base, const MaterialDesc& desc,
-                          std::map<std::string, std::shared_ptr<const Texture>>& textures) {
+                          std::map<std::string, std::shared_ptr<const Texture>>& textures,
+                          TextureBudget& budget) {
     Material m = base;
     // Animated values start at their first key; frames update them.
     if (desc.color) m.color = desc.color->value;
@@ -28,7 +29,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
         auto& slot = textures[*desc.texture];
         if (!slot) {
             try {
-                slot = std::make_shared<Texture>(load_texture(*desc.texture));
+                slot = std::make_shared<Texture>(load_texture(*desc.texture, &budget));
             } catch (const Error& e) {
                 fail_input(desc.texture_at, "", e.what());
             }
@@ -106,6 +107,11 @@ World build_world(const SceneDesc& scene) {
         wireframes = wireframes || (obj.style && obj.style->wireframe.enabled);
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
+    TextureBudget texture_budget(scene.assets.texture_budget_bytes);
+    AssetContext assets;
+    assets.paths.allow_outside = scene.assets.allow_paths_outside;
+    assets.paths.max_file_bytes = scene.assets.max_file_bytes;
+    assets.textures = &texture_budget;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
         std::shared_ptr<const Mesh> mesh;
@@ -113,7 +119,7 @@ World build_world(const SceneDesc& scene) {
             auto& slot = meshes[obj.mesh];
             if (!slot) {
                 try {
-                    slot = std::make_shared<Mesh>(load_mesh(obj.mesh));
+                    slot = std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
                 } catch (const Error& e) {
                     fail_input(obj.mesh_at, "objects." + std::to_string(o) + ".mesh", e.what());
                 }
@@ -145,7 +151,7 @@ World build_world(const SceneDesc& scene) {
 
         const uint32_t material_base = static_cast<uint32_t>(world.materials.size());
         for (const Material& m : mesh->materials) {
-            world.materials.push_back(resolve_material(m, obj.material, textures));
+            world.materials.push_back(resolve_material(m, obj.material, textures, texture_budget));
             world.material_object.push_back(o);
         }
 

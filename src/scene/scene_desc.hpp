@@ -196,6 +196,14 @@ struct ObjectDesc {
     SourceLocation where;
 };
 
+// How far facet trusts the files a scene loads (docs/scene-format.md,
+// `assets`): paths named inside meshes, per-file size, texture memory.
+struct AssetSettings {
+    bool allow_paths_outside = false;
+    uint64_t max_file_bytes = uint64_t(2) << 30;
+    uint64_t texture_budget_bytes = uint64_t(1) << 30;
+};
+
 struct SceneDesc {
     std::string path;       // the scene file as given
     std::string name;       // its stem, used in output paths
@@ -205,6 +213,7 @@ struct SceneDesc {
     std::vector<CameraDesc> cameras;  // at least one; names unique
     std::vector<LightDesc> lights;
     std::vector<ObjectDesc> objects;
+    AssetSettings assets;
     // Values read but without effect, with where they are (printed by the CLI).
     Warnings warnings;
 };

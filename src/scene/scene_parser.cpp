@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/frame_range.hpp"
+#include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
@@ -15,7 +16,6 @@ namespace fs = std::filesystem;
 LightDesc parse_light(const Field& f);  // light_parser.cpp
 
 namespace {
-
 
 std::string format_number(double value) {
     std::ostringstream s;
@@ -31,8 +31,8 @@ std::string resolve_path(const std::string& base_dir, const std::string& relativ
 
 std::string existing_file(const Field& field, const std::string& base_dir) {
     std::string path = resolve_path(base_dir, field.text());
-    std::error_code ec;
-    if (!fs::is_regular_file(path, ec)) field.fail("file not found: " + path);
+    const std::string problem = input_file_problem(path);
+    if (!problem.empty()) field.fail(path + ": " + problem);
     return path;
 }
 
@@ -92,6 +92,19 @@ OutputDesc parse_output(const Field& f) {
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;
+}
+
+AssetSettings parse_assets(const Field& f) {
+    f.check_keys({"allow_paths_outside", "max_file_mb", "texture_budget_mb"});
+    AssetSettings a;
+    constexpr uint64_t kMb = uint64_t(1) << 20;
+    if (f.has("allow_paths_outside")) a.allow_paths_outside = f["allow_paths_outside"].boolean();
+    if (f.has("max_file_mb"))
+        a.max_file_bytes = static_cast<uint64_t>(f["max_file_mb"].integer(1, 1 << 20)) * kMb;
+    if (f.has("texture_budget_mb"))
+        a.texture_budget_bytes =
+            static_cast<uint64_t>(f["texture_budget_mb"].integer(1, 1 << 20)) * kMb;
+    return a;
 }
 
 // `target:` is a point, a keyed point, or the name of an object to follow.
@@ -396,7 +409,8 @@ ClothDesc parse_cloth(const Field& f) {
         }
     }
     auto number = [&](const char* key, auto& out, double lo, double hi) {
-        if (f.has(key)) out = static_cast<std::remove_reference_t<decltype(out)>>(f[key].number(lo, hi));
+        if (f.has(key))
+            out = static_cast<std::remove_reference_t<decltype(out)>>(f[key].number(lo, hi));
     };
     number("mass", p.mass, 1e-6, 1e6);
     number("stiffness", p.stiffness, 1e-6, 1e9);
@@ -553,8 +567,9 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     scene.directory = fs::path(path).parent_path().string();
     if (scene.directory.empty()) scene.directory = ".";
 
-    root.check_keys({"output", "style", "camera", "cameras", "lights", "objects"});
+    root.check_keys({"output", "style", "camera", "cameras", "lights", "objects", "assets"});
     if (root.has("output")) scene.output = parse_output(root["output"]);
+    if (root.has("assets")) scene.assets = parse_assets(root["assets"]);
     StyleContext style_context{options.style_dirs, scene.directory};
     style_context.style_dirs.push_back((fs::path(scene.directory) / "styles").string());
     if (root.has("style"))

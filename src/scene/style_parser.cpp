@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 
+#include "core/input_file.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
@@ -166,8 +167,8 @@ std::string find_style(const Field& field, const std::string& base_dir,
     std::string text = field.text();
     if (looks_like_path(text)) {
         fs::path p = fs::path(text).is_absolute() ? fs::path(text) : fs::path(base_dir) / text;
-        std::error_code ec;
-        if (!fs::is_regular_file(p, ec)) field.fail("style file not found: " + p.string());
+        const std::string problem = input_file_problem(p.string());
+        if (!problem.empty()) field.fail("style file " + p.string() + ": " + problem);
         return p.lexically_normal().string();
     }
     auto presets = list_style_presets(style_dirs);

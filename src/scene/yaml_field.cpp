@@ -4,9 +4,13 @@
 #include <cmath>
 #include <fstream>
 #include <set>
+
+#include <yaml-cpp/depthguard.h>
 #include <sstream>
 
 #include "core/color.hpp"
+#include "core/input_file.hpp"
+#include "core/limits.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -39,6 +43,12 @@ std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& 
     doc->file = name;
     try {
         doc->root = YAML::Load(text);
+    } catch (const YAML::DeepRecursion& e) {
+        // yaml-cpp stops at 2000 nested parser calls, several per level.
+        SourceLocation where{name, e.mark.line + 1, e.mark.column + 1, ""};
+        throw Error(ExitCode::invalid_input, where, "",
+                    "nested too deeply (limit about " + std::to_string(kMaxYamlNesting) +
+                        " levels of [ ], { } or indented blocks)");
     } catch (const YAML::Exception& e) {
         SourceLocation where{name, e.mark.line + 1, e.mark.column + 1, ""};
         throw Error(ExitCode::invalid_input, where, "", "YAML syntax error: " + e.msg);
@@ -49,12 +59,8 @@ std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& 
 }  // namespace
 
 std::shared_ptr<YamlDocument> read_yaml_file(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw Error(ExitCode::invalid_input, path + ": cannot open file");
-    std::stringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw Error(ExitCode::io_failure, path + ": read error");
-    return parse(buffer.str(), path);
+    const std::vector<uint8_t> bytes = read_input_file(path, "YAML", kMaxYamlFileBytes);
+    return parse(std::string(bytes.begin(), bytes.end()), path);
 }
 
 std::shared_ptr<YamlDocument> read_yaml_text(const std::string& text, const std::string& name) {

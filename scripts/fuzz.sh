@@ -1,0 +1,76 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (tests/fuzz/) with clang, AddressSanitizer
+# and UndefinedBehaviorSanitizer in build-sanitize/, and runs each for a while.
+#
+#   scripts/fuzz.sh                    each harness for 60 s
+#   scripts/fuzz.sh --seconds 600 obj  one harness, longer
+#
+# Harnesses: scene (scene and style loader), obj, gltf, texture. Seeds: the
+# checked-in corpus tests/fuzz/corpus/TARGET, the regression inputs, and
+# scenes/, styles/ and assimp's test models. New finds go to
+# build-sanitize/corpus/TARGET and stay there: the checked-in corpus is the
+# small hand-made one (tests/fuzz/make_corpus.py). A crash, a hang (over
+# 10 s) or a runaway allocation (over 2 GB) stops the run: its input is
+# saved under
+# build-sanitize/findings/, and once fixed it belongs in
+# tests/fuzz/regressions/TARGET/, which the normal suite replays.
+set -euo pipefail
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+seconds=60
+targets=()
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --seconds) seconds="${2:?--seconds needs a number}"; shift 2 ;;
+        scene|obj|gltf|texture) targets+=("$1"); shift ;;
+        *) echo "fuzz.sh: unknown argument '$1' (harnesses: scene obj gltf texture)" >&2; exit 2 ;;
+    esac
+done
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture)
+case "$seconds" in ''|*[!0-9]*) echo "fuzz.sh: --seconds needs a whole number" >&2; exit 2 ;; esac
+
+# The sanitizer build of scripts/test.sh --sanitize has the harnesses too.
+build="${FACET_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+"$root/scripts/setup.sh" --tests --clang
+if [ ! -f "$build/CMakeCache.txt" ]; then
+    echo "fuzz: configuring the clang sanitizer build in $build" >&2
+    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Sanitize \
+        -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" -DFACET_SANITIZE=ON -DFACET_FUZZ=ON \
+        -DFACET_WERROR=ON -DFACET_BUILD_BENCH=OFF >/dev/null
+fi
+if ! cmake --build "$build" -j2 --target "${targets[@]/#/fuzz_}" >"$build/fuzz-build.log" 2>&1; then
+    tail -n 40 "$build/fuzz-build.log" >&2
+    echo "fuzz: build failed (full log: $build/fuzz-build.log)" >&2
+    exit 1
+fi
+
+models=/usr/share/assimp/models
+seeds_for() {
+    case "$1" in
+        scene) echo "$root/scenes $root/styles $root/tests/scenes" ;;
+        obj) echo "$models/OBJ" ;;
+        gltf) echo "$models/glTF2 $models/glTF" ;;
+        texture) echo "$models/OBJ $models/glTF2/BoxTextured-glTF" ;;
+    esac
+}
+
+export ASAN_OPTIONS=detect_leaks=1
+export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+status=0
+for t in "${targets[@]}"; do
+    found="$build/corpus/$t"
+    mkdir -p "$found" "$build/findings"
+    seeds=()
+    for s in $(seeds_for "$t"); do [ -e "$s" ] && seeds+=("$s"); done
+    echo "fuzz: $t for ${seconds}s" >&2
+    if ! "$build/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
+            -max_len=262144 -print_final_stats=1 -artifact_prefix="$build/findings/$t-" \
+            "$found" "$root/tests/fuzz/corpus/$t" "$root/tests/fuzz/regressions/$t" \
+            "${seeds[@]}" >"$build/fuzz-$t.log" 2>&1; then
+        tail -n 60 "$build/fuzz-$t.log" >&2
+        echo "fuzz: $t found a problem; its input is in $build/findings/ (log: $build/fuzz-$t.log)" >&2
+        status=1
+        continue
+    fi
+    grep -E "stat::number_of_executed_units|cov:" "$build/fuzz-$t.log" | tail -n 2 >&2 || true
+done
+exit $status

@@ -1,0 +1,52 @@
+#include "render/render_memory.hpp"
+
+#include "render/frame_inputs.hpp"
+
+namespace facet {
+namespace {
+
+// Bytes per item of the working records, rounded up from the structures
+// they stand for (raster/setup_bins.hpp, render/vertex_stage.hpp).
+constexpr uint64_t kPerTriangle = 160;  // set-up, shading planes, bin entries, source indices
+constexpr uint64_t kPerVertex = 96;     // model, clip, world position and normal, screen, lighting
+constexpr uint64_t kPerOutputPixel = 8 + 4;         // half-float RGBA colour, float depth
+constexpr uint64_t kPerSample = 16 + 4;             // float colour and depth per sample
+constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
+
+}  // namespace
+
+MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned threads) {
+    const OutputDesc& out = scene.output;
+    const uint64_t pixels = static_cast<uint64_t>(out.width) * out.height;
+    const uint64_t side = static_cast<uint64_t>(out.samples_per_side());
+    const uint64_t samples = pixels * side * side;
+    // The frame being rendered, two queued, and one or two being encoded
+    // (render/render_job.cpp).
+    const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
+    const StylePlan plan = plan_styles(scene);
+    MemoryParts parts;
+    parts.push_back({"output images", pixels * kPerOutputPixel * frames_in_flight});
+    if (plan.outlines || plan.hidden_edges)
+        parts.push_back({"sample buffers",
+                         samples * kPerSample + (plan.outlines ? samples * kPerGbufferSample : 0)});
+    parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
+    parts.push_back({"vertices", static_cast<uint64_t>(world.positions.size()) * kPerVertex});
+    uint64_t shadows = 0;
+    for (const LightDesc& light : scene.lights) {
+        if (!light.shadows) continue;
+        const uint64_t faces = light.type == LightType::point ? 6 : 1;
+        const uint64_t side_texels = static_cast<uint64_t>(light.shadow_resolution);
+        shadows += side_texels * side_texels * faces * (4 + 4);  // depth map and its raster buffer
+    }
+    parts.push_back({"shadow maps", shadows});
+    return parts;
+}
+
+void check_render_memory(const SceneDesc& scene, const World& world, unsigned threads) {
+    check_memory("rendering " + scene.path, render_memory(scene, world, threads),
+                 memory_available(),
+                 "a smaller output.size or output.samples, or --threads 1 (fewer frames in "
+                 "flight), needs less");
+}
+
+}  // namespace facet

@@ -1,0 +1,85 @@
+#!/usr/bin/env python3
+"""Writes the small hand-made seed files of tests/fuzz/corpus (OBJ, glTF,
+PNG). The scene seeds are copies of scenes/ and styles/ files; fuzz.sh adds
+the installed assimp test models as further seeds at run time."""
+import base64, json, os, struct, zlib
+
+here = os.path.dirname(os.path.abspath(__file__))
+
+
+def out(target, name, data):
+    path = os.path.join(here, 'corpus', target, name)
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, 'wb') as f:
+        f.write(data if isinstance(data, bytes) else data.encode())
+
+
+def png(width, height, colour_type, bit_depth, rows, palette=None):
+    def chunk(kind, body):
+        return struct.pack('>I', len(body)) + kind + body + struct.pack('>I', zlib.crc32(kind + body))
+    head = struct.pack('>IIBBBBB', width, height, bit_depth, colour_type, 0, 0, 0)
+    raw = b''.join(b'\0' + r for r in rows)
+    extra = chunk(b'PLTE', palette) if palette else b''
+    return (b'\x89PNG\r\n\x1a\n' + chunk(b'IHDR', head) + extra +
+            chunk(b'IDAT', zlib.compress(raw)) + chunk(b'IEND', b''))
+
+
+rgba = png(4, 4, 6, 8, [b''.join(bytes([x * 60, y * 60, 128, 255 - 20 * x]) for x in range(4))
+                        for y in range(4)])
+out('texture', 'rgba8-4x4.png', rgba)
+out('texture', 'grey16-3x2.png', png(3, 2, 0, 16, [struct.pack('>3H', 0, 30000, 65535)] * 2))
+out('texture', 'palette-2x2.png', png(2, 2, 3, 8, [b'\0\1', b'\1\0'], palette=b'\xff\0\0\0\0\xff'))
+out('texture', 'grey-alpha-1x1.png', png(1, 1, 4, 8, [b'\x80\x40']))
+
+cube = ''.join('v %d %d %d\n' % (x, y, z) for x in (0, 1) for y in (0, 1) for z in (0, 1))
+cube += 'vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n'
+cube += 'mtllib input.mtl\nusemtl red\ng side\ns 1\n'
+cube += 'f 1/1/1 2/2/1 4/3/1 3/4/1\nf 5/1 7/2 8/3 6/4\nf 1 5 6 2\nf 3 4 8 7\no top\nf 2 6 8 4\nf -8 -6 -2 -4\n'
+out('obj', 'cube-quads.obj', cube)
+out('obj', 'triangle-negative-indices.obj', 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf -3 -2 -1\nl 1 2\np 3\n')
+out('obj', 'textured-material.obj',
+    'mtllib input.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nvt 0 0\nvt 2 0\nvt 2 2\nvt 0 2\n'
+    'usemtl m\nf 1/1 2/2 3/3 4/4\n')
+
+
+def gltf_doc(binary_buffer):
+    positions = struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0)
+    normals = struct.pack('<9f', 0, 0, 1, 0, 0, 1, 0, 0, 1)
+    uvs = struct.pack('<6f', 0, 0, 1, 0, 0, 1)
+    indices = struct.pack('<3H', 0, 1, 2) + b'\0\0'
+    blob = positions + normals + uvs + indices
+    doc = {
+        'asset': {'version': '2.0'},
+        'buffers': [{'byteLength': len(blob)}],
+        'bufferViews': [{'buffer': 0, 'byteOffset': 0, 'byteLength': 36},
+                        {'buffer': 0, 'byteOffset': 36, 'byteLength': 36},
+                        {'buffer': 0, 'byteOffset': 72, 'byteLength': 24},
+                        {'buffer': 0, 'byteOffset': 96, 'byteLength': 6}],
+        'accessors': [{'bufferView': 0, 'componentType': 5126, 'count': 3, 'type': 'VEC3',
+                       'min': [0, 0, 0], 'max': [1, 1, 0]},
+                      {'bufferView': 1, 'componentType': 5126, 'count': 3, 'type': 'VEC3'},
+                      {'bufferView': 2, 'componentType': 5126, 'count': 3, 'type': 'VEC2'},
+                      {'bufferView': 3, 'componentType': 5123, 'count': 3, 'type': 'SCALAR'}],
+        'images': [{'uri': 'data:image/png;base64,' + base64.b64encode(rgba).decode()}],
+        'textures': [{'source': 0}],
+        'materials': [{'pbrMetallicRoughness': {'baseColorFactor': [1, 0.5, 0.2, 1],
+                                                'baseColorTexture': {'index': 0}}}],
+        'meshes': [{'primitives': [{'attributes': {'POSITION': 0, 'NORMAL': 1, 'TEXCOORD_0': 2},
+                                    'indices': 3, 'material': 0}]}],
+        'nodes': [{'mesh': 0, 'translation': [0, 1, 0]}, {'children': [0], 'scale': [2, 2, 2]}],
+        'scenes': [{'nodes': [1]}],
+        'scene': 0,
+    }
+    if not binary_buffer:
+        doc['buffers'][0]['uri'] = 'data:application/octet-stream;base64,' + \
+            base64.b64encode(blob).decode()
+    return doc, blob
+
+
+doc, _ = gltf_doc(False)
+out('gltf', 'triangle-embedded.gltf', json.dumps(doc, indent=1))
+doc, blob = gltf_doc(True)
+text = json.dumps(doc).encode()
+text += b' ' * (-len(text) % 4)
+glb = (struct.pack('<I', len(text)) + b'JSON' + text + struct.pack('<I', len(blob)) + b'BIN\0' + blob)
+out('gltf', 'triangle.glb', b'glTF' + struct.pack('<II', 2, 12 + len(glb)) + glb)
