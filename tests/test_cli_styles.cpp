@@ -184,9 +184,11 @@ TEST_CASE("facet sheet --vary renders one cell per value", "[cli][style]") {
     facet::DecodedPng png = facet::read_png(row);
     CHECK(png.width == 3 * 64);
     CHECK(png.height == 48 + label_band());
-    // Each number of cels gives a different picture.
-    CHECK(cell_difference(png, 0, 0, 64, 0, 64, 48) > 0.5);
-    CHECK(cell_difference(png, 64, 0, 128, 0, 64, 48) > 0.5);
+    // Each number of cels gives a different picture (mean difference in
+    // 8-bit levels; identical cells give 0). With the seed's c' = c·q the
+    // bright cels of 2 and 4 differ less than with keep_hue.
+    CHECK(cell_difference(png, 0, 0, 64, 0, 64, 48) > 0.3);
+    CHECK(cell_difference(png, 64, 0, 128, 0, 64, 48) > 0.3);
 
     // Without --columns, three cells make a 2 x 2 grid.
     r = facet_shipped("sheet " + quoted(scene) + " --vary style.cels=2,4,6 --cell 64x48 -o " +

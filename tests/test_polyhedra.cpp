@@ -5,6 +5,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -437,6 +438,76 @@ std::string scene_with(const std::string& primitive) {
 }
 
 }  // namespace
+
+TEST_CASE("frustums: prism and pyramid with a top radius (seed 001)",
+          "[assets][primitives][polyhedra]") {
+    const float bottom = 1.0f, top = 0.4f, height = 2.0f;
+    for (int n : {3, 4, 7}) {
+        const size_t sides = static_cast<size_t>(n);
+        for (const std::string type : {"prism", "pyramid"}) {
+            DYNAMIC_SECTION(type << " " << n) {
+                facet::PrimitiveSpec s;
+                s.type = type;
+                s.sides = n;
+                s.radius = bottom;
+                s.top_radius = top;
+                s.height = height;
+                facet::Mesh mesh = facet::make_primitive(s);
+                const auto& part = only_part(mesh);
+                check_outward(part);
+                check_flat(part);  // the trapezoid sides are planar
+                // A truncated n-gonal pyramid: V = 2n, E = 3n, F = n + 2, so V - E + F = 2.
+                const Polyhedron p = check_closed_polyhedron(mesh, 2 * sides, 3 * sides, sides + 2);
+                CHECK(std::count(p.face_triangles.begin(), p.face_triangles.end(), sides - 2) >= 2);
+                for (const auto& pos : part.positions) {
+                    const float r = glm::length(glm::vec2(pos.x, pos.z));
+                    CHECK(r == Approx(pos.y > 0 ? top : bottom));
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("prisms and pyramids by base edge length and top radius from a scene",
+          "[scene][polyhedra]") {
+    TempDir dir("polyhedra");
+    const std::string path = facet::test::write_text(dir.file("s.yaml"), R"(objects:
+  - primitive: { type: prism, sides: 6, edge: 0.5, height: 1 }
+  - primitive: { type: pyramid, sides: 4, edge: 2, top_radius: 0.5, height: 1 }
+  - primitive: { type: pyramid, sides: 3, edge: 1, height: 1 }
+)");
+    const facet::SceneDesc scene = facet::test::load(path);
+    // A hexagon's circumradius is its edge; a square's is edge / sqrt 2.
+    CHECK(scene.objects[0].primitive->spec.radius == Approx(0.5f));
+    CHECK(scene.objects[1].primitive->spec.radius == Approx(2 / std::sqrt(2.0f)));
+    CHECK(*scene.objects[1].primitive->spec.top_radius == 0.5f);
+    CHECK(scene.objects[2].primitive->spec.radius == Approx(1 / std::sqrt(3.0f)));
+    const facet::World world = facet::build_world(scene);
+    CHECK(world.draws[1].triangle_count == 2 * 4 + 2 * 2);  // four trapezoids, two square caps
+    CHECK(world.draws[2].triangle_count == 3 + 1);          // an apex: no top cap
+
+    for (const auto& [primitive, key, says] : std::vector<std::array<std::string, 3>>{
+             {"{ type: prism, radius: 1, edge: 1 }", "objects.0.primitive.edge",
+              "either 'radius' or 'edge'"},
+             {"{ type: cube, top_radius: 1 }", "objects.0.primitive.top_radius",
+              "does not apply to a cube"},
+             {"{ type: antiprism, top_radius: 1 }", "objects.0.primitive.top_radius",
+              "does not apply to a antiprism"},
+             {"{ type: prism, top_radius: 0 }", "objects.0.primitive.top_radius", "top_radius"},
+             {"{ type: pyramid, top_radius: -1 }", "objects.0.primitive.top_radius",
+              "between 0"}}) {
+        INFO(primitive);
+        const std::string bad = facet::test::write_text(
+            dir.file("bad.yaml"), "objects:\n  - primitive: " + primitive + "\n");
+        try {
+            facet::build_world(facet::test::load(bad));
+            FAIL("expected an error");
+        } catch (const facet::Error& e) {
+            CHECK(e.code() == facet::ExitCode::invalid_input);
+            CHECK_THAT(e.what(), Catch::Contains(says));
+        }
+    }
+}
 
 TEST_CASE("scene keys of the new primitives reach the meshes", "[scene][polyhedra]") {
     TempDir dir("polyhedra");

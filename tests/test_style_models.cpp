@@ -50,20 +50,45 @@ TEST_CASE("seed palette: ambient plus the cool-to-warm blend, unquantised", "[st
     check_color(seed_palette(s, kOrange, 3.0f).color, {1.2f, 0.8f, 0.0f});
 }
 
-TEST_CASE("seed palette: cels snap |c| to k/N and keep the hue", "[style][palette]") {
+TEST_CASE("seed palette: cels give the seed's c' = c·q", "[style][palette]") {
     // c = (.8,.5,.2), |c| = sqrt(.93) = .96437: 4 cels round 3.857 to 4, so
-    // |c'| = 1 (the seed's truncation would give 3/4).
+    // q = 1 (the seed's truncation would give 3/4) and c' = c.
     const PaletteShading p = seed_palette(hand_palette(4), kOrange, 0.0f);
-    const float len = std::sqrt(0.93f);
-    check_color(p.color, glm::vec3(0.8f, 0.5f, 0.2f) / len);
-    CHECK(color_length(p.color) == Approx(1.0f));
+    check_color(p.color, {0.8f, 0.5f, 0.2f});
     CHECK(p.tone == Approx(1.0f / std::sqrt(3.0f)));
+    // t = 0: c = (.4,.2,.4), |c| = .6: 4 cels give q = 2/4 (2.4 rounds to 2).
+    const PaletteShading cool = seed_palette(hand_palette(4), kOrange, -1.0f);
+    check_color(cool.color, {0.2f, 0.1f, 0.2f});
+    CHECK(cool.tone == Approx(0.5f / std::sqrt(3.0f)));
 
     const std::vector<glm::vec3> colors{
         {0.8f, 0.5f, 0.2f}, {0.13f, 0.02f, 0.4f}, {1.7f, 0.9f, 1.1f}, {0.05f, 0.05f, 0.05f}};
     for (int cels : {1, 3, 4, 7}) {
         for (const glm::vec3& c : colors) {
-            const glm::vec3 q = quantise_cels(c, cels);
+            const float q = std::floor(color_length(c) * cels + 0.5f) / cels;
+            INFO("cels " << cels << ", colour " << c.x << " " << c.y << " " << c.z);
+            check_color(quantise_cels(c, cels), c * q, 1e-6);
+            CHECK(cel_level(c, cels) == Approx(q).margin(1e-6));
+        }
+    }
+    check_color(quantise_cels(glm::vec3(0.0f), 4), glm::vec3(0.0f));
+    check_color(quantise_cels({0.3f, 0.2f, 0.1f}, 0), {0.3f, 0.2f, 0.1f});
+}
+
+TEST_CASE("seed palette: keep_hue cels snap |c| to k/N and keep the hue", "[style][palette]") {
+    PaletteStyle s = hand_palette(4);
+    s.cels_keep_hue = true;
+    const PaletteShading p = seed_palette(s, kOrange, 0.0f);
+    const float len = std::sqrt(0.93f);
+    check_color(p.color, glm::vec3(0.8f, 0.5f, 0.2f) / len);
+    CHECK(color_length(p.color) == Approx(1.0f));
+    CHECK(p.tone == Approx(1.0f / std::sqrt(3.0f)));  // the same tone in both modes
+
+    const std::vector<glm::vec3> colors{
+        {0.8f, 0.5f, 0.2f}, {0.13f, 0.02f, 0.4f}, {1.7f, 0.9f, 1.1f}, {0.05f, 0.05f, 0.05f}};
+    for (int cels : {1, 3, 4, 7}) {
+        for (const glm::vec3& c : colors) {
+            const glm::vec3 q = quantise_cels(c, cels, true);
             const float steps = std::floor(color_length(c) * cels + 0.5f);
             INFO("cels " << cels << ", colour " << c.x << " " << c.y << " " << c.z);
             CHECK(color_length(q) == Approx(steps / cels).margin(1e-6));
@@ -73,8 +98,7 @@ TEST_CASE("seed palette: cels snap |c| to k/N and keep the hue", "[style][palett
             }
         }
     }
-    check_color(quantise_cels(glm::vec3(0.0f), 4), glm::vec3(0.0f));  // no division by zero
-    check_color(quantise_cels({0.3f, 0.2f, 0.1f}, 0), {0.3f, 0.2f, 0.1f});
+    check_color(quantise_cels(glm::vec3(0.0f), 4, true), glm::vec3(0.0f));  // no division by zero
 }
 
 TEST_CASE("seed palette: hatching tone, ink and highlight", "[style][palette]") {
@@ -88,6 +112,10 @@ TEST_CASE("seed palette: hatching tone, ink and highlight", "[style][palette]") 
     check_color(palette_ink(s, kOrange), {0.25f, 0.125f, 0.0f});
     check_color(apply_hatching({1, 1, 1}, {0.25f, 0, 0}, 0.5f), {0.625f, 0.5f, 0.5f});
     check_color(apply_hatching({1, 1, 1}, {0.25f, 0, 0}, 0.0f), {1, 1, 1});
+    // The seed's additive strokes: ink x coverage added, nothing where there is no stroke.
+    check_color(add_hatching({0.5f, 0.5f, 0.5f}, {0.25f, 0.125f, 0}, 0.5f),
+                {0.625f, 0.5625f, 0.5f});
+    check_color(add_hatching({0.5f, 0.5f, 0.5f}, {0.25f, 0.125f, 0}, 0.0f), {0.5f, 0.5f, 0.5f});
 
     s.shininess = 16;
     s.specular = 0.5f;

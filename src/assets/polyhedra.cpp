@@ -152,18 +152,28 @@ void add_platonic(Builder& b, const std::string& type, float radius) {
     faces_of(b, v, faces);
 }
 
-void add_prism(Builder& b, int sides, float radius, float height) {
+void add_frustum(Builder& b, int sides, float bottom, float top, float height) {
     const float h = height / 2;
     for (int k = 0; k < sides; ++k) {
-        float u0 = fraction(static_cast<float>(k), sides);
-        float u1 = fraction(static_cast<float>(k + 1), sides);
-        float p0 = angle(k, sides), p1 = angle(k + 1, sides);
-        b.face({on_circle(radius, p0, -h), on_circle(radius, p1, -h), on_circle(radius, p1, h),
-                on_circle(radius, p0, h)},
-               {{u0, 1}, {u1, 1}, {u1, 0}, {u0, 0}});
+        const float fk = static_cast<float>(k);
+        const float p0 = angle(k, sides), p1 = angle(k + 1, sides);
+        const glm::vec3 b0 = on_circle(bottom, p0, -h), b1 = on_circle(bottom, p1, -h);
+        if (top > 0) {
+            // Both ends' corners sit at the same angles, so each side is a
+            // planar trapezoid (a rectangle for a prism).
+            b.face({b0, b1, on_circle(top, p1, h), on_circle(top, p0, h)},
+                   {{fraction(fk, sides), 1},
+                    {fraction(fk + 1, sides), 1},
+                    {fraction(fk + 1, sides), 0},
+                    {fraction(fk, sides), 0}});
+        } else {
+            b.face({b0, b1, glm::vec3(0, h, 0)}, {{fraction(fk, sides), 1},
+                                                  {fraction(fk + 1, sides), 1},
+                                                  {fraction(fk + 0.5f, sides), 0}});
+        }
     }
-    add_cap(b, sides, radius, h);
-    add_cap(b, sides, radius, -h);
+    if (top > 0) add_cap(b, sides, top, h);
+    add_cap(b, sides, bottom, -h);
 }
 
 void add_antiprism(Builder& b, int sides, float radius, float height) {
@@ -184,20 +194,6 @@ void add_antiprism(Builder& b, int sides, float radius, float height) {
                               {fraction(fk + 1.5f, sides), 0}});
     }
     add_cap(b, sides, radius, h, 0.5f);
-    add_cap(b, sides, radius, -h);
-}
-
-void add_pyramid(Builder& b, int sides, float radius, float height) {
-    const float h = height / 2;
-    const glm::vec3 apex(0, h, 0);
-    for (int k = 0; k < sides; ++k) {
-        float fk = static_cast<float>(k);
-        b.face({on_circle(radius, angle(k, sides), -h), on_circle(radius, angle(k + 1, sides), -h),
-                apex},
-               {{fraction(fk, sides), 1},
-                {fraction(fk + 1, sides), 1},
-                {fraction(fk + 0.5f, sides), 0}});
-    }
     add_cap(b, sides, radius, -h);
 }
 

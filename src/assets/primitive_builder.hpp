@@ -36,9 +36,11 @@ struct Builder {
 void add_box(Builder& b, glm::vec3 size);
 // tetrahedron, octahedron, icosahedron or dodecahedron of circumradius `radius`.
 void add_platonic(Builder& b, const std::string& type, float radius);
-void add_prism(Builder& b, int sides, float radius, float height);
+// A prism (top == bottom), a pyramid (top == 0) or a frustum between them:
+// `sides` planar side faces between two regular polygons of circumradii
+// `bottom` and `top`, lined up corner over corner.
+void add_frustum(Builder& b, int sides, float bottom, float top, float height);
 void add_antiprism(Builder& b, int sides, float radius, float height);
-void add_pyramid(Builder& b, int sides, float radius, float height);
 // Geodesic sphere: the icosahedron with each triangle split in four
 // `subdivisions` times, corners pushed onto the sphere; smooth normals.
 void add_icosphere(Builder& b, float radius, int subdivisions);

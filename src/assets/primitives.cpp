@@ -198,6 +198,11 @@ void validate(const PrimitiveSpec& spec) {
         reject(spec, "segments and rings are too large (at most " +
                          std::to_string(kMaxGridVertices) + " grid vertices)");
     require_range(spec, "sides", spec.sides, 3, kMaxPrimitiveSides);
+    if (spec.top_radius) {
+        if (spec.type == "prism") require_size(spec, "top_radius", *spec.top_radius);
+        if (!(*spec.top_radius >= 0 && *spec.top_radius <= 1e7f))
+            reject(spec, "top_radius must be 0 or more");
+    }
     require_range(spec, "subdivisions", spec.subdivisions, 0, kMaxIcosphereSubdivisions);
     if (spec.type == "torus" && !(spec.tube < spec.radius)) {
         std::ostringstream s;
@@ -252,11 +257,13 @@ Mesh make_primitive(const PrimitiveSpec& spec) {
         add_side(b, spec.radius, 0, spec.height, spec.segments);
         add_disc(b, spec.radius, -spec.height / 2, spec.segments, false);
     } else if (t == "prism")
-        detail::add_prism(b, spec.sides, spec.radius, spec.height);
+        detail::add_frustum(b, spec.sides, spec.radius, spec.top_radius.value_or(spec.radius),
+                            spec.height);
     else if (t == "antiprism")
         detail::add_antiprism(b, spec.sides, spec.radius, spec.height);
     else if (t == "pyramid")
-        detail::add_pyramid(b, spec.sides, spec.radius, spec.height);
+        detail::add_frustum(b, spec.sides, spec.radius, spec.top_radius.value_or(0.0f),
+                            spec.height);
     else if (t == "flagpole")
         detail::add_flagpole(b, spec.radius, spec.height, spec.segments, spec.rings);
     else if (t == "platform")

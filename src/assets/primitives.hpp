@@ -27,10 +27,14 @@ struct PrimitiveSpec {
     int rings = 16;                  // sphere latitude bands; divisions around a torus's tube
     glm::vec3 box_size = {1, 1, 1};  // box extents along x, y, z
     int sides = 6;                   // prism, antiprism and pyramid base polygon
-    float tube = 0.25f;              // torus minor radius, less than `radius`
-    int subdivisions = 2;            // icosphere: 0 is the icosahedron
-    float thickness = 0.1f;          // platform: the slab's height
-    float hole_radius = 0.1f;        // platform: the pole's hole, less than size / 2
+    // Prism and pyramid: the circumradius of the top polygon, which makes a
+    // frustum (seed 001's "upper circumradius"). Unset: `radius` for a prism,
+    // 0 (an apex) for a pyramid.
+    std::optional<float> top_radius;
+    float tube = 0.25f;        // torus minor radius, less than `radius`
+    int subdivisions = 2;      // icosphere: 0 is the icosahedron
+    float thickness = 0.1f;    // platform: the slab's height
+    float hole_radius = 0.1f;  // platform: the pole's hole, less than size / 2
     // Round primitives (sphere, icosphere, torus, cylinder, cone, flagpole,
     // and the platform's hole) are smooth unless this is false; the faceted
     // ones accept only false (or unset).

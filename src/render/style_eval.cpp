@@ -35,6 +35,7 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
     // Keyed cel counts move through whole numbers (a fade from 2 to 6 cels
     // steps 2, 3, 4, 5, 6).
     p.cels = static_cast<int>(std::lround(evaluate(d.cels, at)));
+    p.cels_keep_hue = d.cels_keep_hue;
     p.specular = evaluate(d.specular, at);
     p.shininess = evaluate(d.shininess, at);
 
@@ -62,6 +63,7 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         h.scale = d.hatching->scale;
         h.tile_pixels = d.hatching->tile_pixels;
         h.pencil = d.hatching->pencil;
+        h.additive = d.hatching->additive;
         s.hatching = h;
     }
     if (d.wireframe.enabled) {

@@ -1,6 +1,8 @@
 // YAML scene file -> SceneDesc records (docs/scene-format.md).
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
+#include <numbers>
 #include <sstream>
 
 #include "core/frame_range.hpp"
@@ -286,9 +288,9 @@ const std::vector<PrimitiveKeys> kPrimitiveKeys = {
     {"octahedron", {"radius"}},
     {"icosahedron", {"radius"}},
     {"dodecahedron", {"radius"}},
-    {"prism", {"sides", "radius", "height"}},
-    {"antiprism", {"sides", "radius", "height"}},
-    {"pyramid", {"sides", "radius", "height"}},
+    {"prism", {"sides", "radius", "edge", "top_radius", "height"}},
+    {"antiprism", {"sides", "radius", "edge", "height"}},
+    {"pyramid", {"sides", "radius", "edge", "top_radius", "height"}},
     {"icosphere", {"radius", "subdivisions", "smooth"}},
     {"torus", {"radius", "tube", "segments", "rings", "smooth"}},
     {"flagpole", {"radius", "height", "segments", "rings", "smooth"}},
@@ -321,7 +323,7 @@ PrimitiveDesc parse_primitive(const Field& f) {
         return desc;
     }
     f.check_keys({"type", "size", "radius", "height", "segments", "rings", "sides", "tube",
-                  "subdivisions", "smooth", "thickness", "hole_radius"});
+                  "subdivisions", "smooth", "thickness", "hole_radius", "edge", "top_radius"});
     const PrimitiveKeys& type = primitive_type(f.require("type"));
     p.type = type.type;
     for (const std::string& key : f.keys()) {
@@ -352,6 +354,15 @@ PrimitiveDesc parse_primitive(const Field& f) {
     if (f.has("thickness")) p.thickness = length_value(f["thickness"]);
     if (f.has("hole_radius")) p.hole_radius = length_value(f["hole_radius"]);
     if (f.has("smooth")) p.smooth = f["smooth"].boolean();
+    if (f.has("top_radius"))
+        p.top_radius = static_cast<float>(f["top_radius"].number(0, kMaxCoordinate));
+    if (f.has("edge")) {
+        // Seed 001 gives a base by its edge length: a regular n-gon of edge
+        // a has circumradius a / (2 sin(pi/n)).
+        if (f.has("radius")) f["edge"].fail("give either 'radius' or 'edge', not both");
+        const double edge = f["edge"].number(1e-6, kMaxCoordinate);
+        p.radius = static_cast<float>(edge / (2 * std::sin(std::numbers::pi / p.sides)));
+    }
     p.tube = p.radius / 2;
     if (f.has("tube")) {
         p.tube = length_value(f["tube"]);

@@ -59,6 +59,10 @@ struct HatchingDesc {
     Animated<float> strength = 1.0f;         // 0 no strokes .. 1 full
     bool pencil = false;                     // pencil strokes over paper grain
     int seed = 1;
+    // How strokes meet the colour: `ink` blends towards the ink by the
+    // stroke coverage; `add` adds ink x coverage, as seed 000's listing adds
+    // its stroke texture (docs/references.md, seed 000).
+    bool additive = false;
 };
 
 struct LineDesc {
@@ -108,6 +112,9 @@ struct StyleDesc {
     Animated<float> alpha = 0.2f, beta = 0.6f;
     Animated<float> ambient = 0.2f;  // a in ambient = a.k (palette)
     Animated<float> cels = 4.0f;     // 0: no quantisation; rounded to a whole number
+    // Seed 000's c' = c.q (false), or c' = c.q/|c|, which keeps |c'| = q
+    // and the hue (true; `cel_color: keep_hue`).
+    bool cels_keep_hue = false;
     Animated<float> specular = 1.0f;
     Animated<float> shininess = 32.0f;
 

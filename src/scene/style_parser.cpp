@@ -89,7 +89,7 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
         return;
     }
     f.check_keys({"levels", "scale", "tile_pixels", "space", "angle", "stroke_width", "ink",
-                  "strength", "pencil", "seed"});
+                  "strength", "pencil", "seed", "blend"});
     if (!hatching) hatching = HatchingDesc{};
     HatchingDesc& h = *hatching;
     if (f.has("levels")) h.levels = f["levels"].integer(2, 12);
@@ -103,6 +103,7 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
     if (f.has("strength")) h.strength = f["strength"].animated_number(0, 1);
     if (f.has("pencil")) h.pencil = f["pencil"].boolean();
     if (f.has("seed")) h.seed = f["seed"].integer(0, 1000000);
+    if (f.has("blend")) h.additive = f["blend"].choice({"ink", "add"}) == "add";
 }
 
 void apply_line(const Field& f, LineDesc& line) {
@@ -193,10 +194,10 @@ const char* shading_model_name(ShadingModel model) {
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,
                        std::vector<std::string>& visiting) {
-    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range", "base_color",
-                  "background", "shadows",     "palette",  "cool",     "warm",        "alpha",
-                  "beta",       "ambient",     "cels",     "specular", "shininess",   "toon",
-                  "hatching",   "outlines",    "wireframe"});
+    f.check_keys({"name",       "description", "extends",   "shading",  "depth_range", "base_color",
+                  "background", "shadows",     "palette",   "cool",     "warm",        "alpha",
+                  "beta",       "ambient",     "cels",      "specular", "shininess",   "toon",
+                  "hatching",   "outlines",    "wireframe", "cel_color"});
     if (f.has("extends")) {
         const std::string path = find_style(f["extends"], context.base_dir, context.style_dirs);
         if (std::find(visiting.begin(), visiting.end(), path) != visiting.end())
@@ -241,6 +242,8 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
     if (f.has("beta")) style.beta = f["beta"].animated_number(0, 10);
     if (f.has("ambient")) style.ambient = f["ambient"].animated_number(0, 10);
     if (f.has("cels")) style.cels = f["cels"].animated_number(0, 64);
+    if (f.has("cel_color"))
+        style.cels_keep_hue = f["cel_color"].choice({"seed", "keep_hue"}) == "keep_hue";
     if (f.has("specular")) style.specular = f["specular"].animated_number(0, 100);
     if (f.has("shininess")) style.shininess = f["shininess"].animated_number(1, 100000);
     if (f.has("toon")) apply_toon(f["toon"], style.toon);

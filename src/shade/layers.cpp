@@ -24,7 +24,8 @@ glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInpu
         const float coverage = tam_coverage(*h.tam, tone, in.hatch_uv, in.hatch_lod) * h.strength;
         if (h.pencil) color *= tam_paper_shade(*h.tam, in.hatch_uv, in.hatch_lod);
         const glm::vec3 ink = h.ink ? *h.ink : palette_ink(style.palette, in.albedo);
-        color = apply_hatching(color, ink, coverage);
+        color =
+            h.additive ? add_hatching(color, ink, coverage) : apply_hatching(color, ink, coverage);
     }
     if (in.wire > 0) color += (style.wire.color - color) * in.wire;
     return color;

@@ -7,18 +7,23 @@
 // Where facet departs from the seed's text or listing, and why:
 //  - |c| is the Euclidean length of the RGB vector (the listing's
 //    vec3_length), so white (1,1,1) has |c| = sqrt(3).
-//  - q = round(L·N)/N and c' = c·q/L (the seed: c·q). The listing truncates
-//    (an int cast) and multiplies by q without dividing by L, which scales
-//    the colour by roughly L twice; dividing keeps |c'| = q exactly.
+//  - q = round(L·N)/N and c' = c·q, as the seed's text and listing both
+//    say (the listing truncates L·N with an int cast; facet rounds, as the
+//    text does). `cel_color: keep_hue` gives c' = c·q/L instead, which keeps
+//    |c'| = q exactly and the hue: the seed's c·q scales the colour by about
+//    L·q, so a bright colour brightens further and a dark one darkens.
 //  - The listing weights the shadow colour by (1 + n·l)/2, as Gooch 1998
 //    prints its formula for a light vector pointing away from the light;
 //    with l pointing towards the light, as here, the lit colour gets
 //    t = (1 + n·l)/2, which is what the seed's text describes ("the closer
 //    to the light, the warmer").
 //  - The listing's intensity() for the hatching thresholds is not given.
-//    facet uses tone = |c'| / sqrt(3), clamped to 1: a grey (g,g,g) has
-//    tone g, and the tone is constant over a cel, so hatching bands line up
-//    with the cels.
+//    facet uses tone = q / sqrt(3), clamped to 1 (q = |c| unquantised):
+//    for a grey (g,g,g) this is g, and it is constant over a cel in both
+//    cel modes, so hatching bands line up with the cels.
+//  - The listing adds the stroke texture to the colour; `hatching.blend:
+//    add` does that (add_hatching), and the palette preset uses it. The
+//    default, `ink`, blends towards the ink instead (apply_hatching).
 //
 // Several lights: the palette term uses the key light, lights[0], only.
 // The method maps one direction to a two-colour palette: summing t over
@@ -52,6 +57,7 @@ struct PaletteStyle {
     float beta = 0.6f;                         // share of the object colour in the lit colour
     float ambient = 0.2f;                      // a (the seed's 0.2)
     int cels = 4;                              // N; 0 or less keeps the colour unquantised
+    bool cels_keep_hue = false;                // c' = c·q/L instead of the seed's c·q
     float specular = 1.0f;                     // highlight scale (the seed: 1)
     float shininess = 32.0f;                   // the seed's per-material exponent
     float hatch_below = 0.5f;                  // tone under which strokes appear (the seed: 0.5)
@@ -61,22 +67,29 @@ struct PaletteStyle {
 // The colour before hatching and highlights, and its tone for hatching.
 struct PaletteShading {
     glm::vec3 color{0.0f};  // c'
-    float tone = 0.0f;      // |c'| / sqrt(3), clamped to [0, 1]
+    float tone = 0.0f;      // q / sqrt(3), clamped to [0, 1]
 };
 
 inline float color_length(const glm::vec3& c) {
     return std::sqrt(c.x * c.x + c.y * c.y + c.z * c.z);
 }
 
-// c' = c · q / L with L = |c| and q = round(L·N)/N: the length snaps to a
-// multiple of 1/N and the hue (the ratios r:g:b) stays. Black stays black;
-// N <= 0 returns c unchanged.
-inline glm::vec3 quantise_cels(const glm::vec3& c, int cels) {
+// q = round(L·N)/N for L = |c|: the cel's level, a multiple of 1/N; L
+// itself when N <= 0 (no quantisation).
+inline float cel_level(const glm::vec3& c, int cels) {
+    const float length = color_length(c);
+    if (cels <= 0) return length;
+    const float n = static_cast<float>(cels);
+    return std::floor(length * n + 0.5f) / n;
+}
+
+// The seed's c' = c·q; with `keep_hue`, c' = c·q/L, whose length is q and
+// whose hue (the ratios r:g:b) is c's. Black stays black; N <= 0 returns c.
+inline glm::vec3 quantise_cels(const glm::vec3& c, int cels, bool keep_hue = false) {
     const float length = color_length(c);
     if (cels <= 0 || !(length > 0.0f)) return c;
-    const float n = static_cast<float>(cels);
-    const float q = std::floor(length * n + 0.5f) / n;
-    return c * (q / length);
+    const float q = cel_level(c, cels);
+    return keep_hue ? c * (q / length) : c * q;
 }
 
 // Seed 000 §3.2.4: ambient a·k plus the palette blend by t = (1 + n·l)/2,
@@ -86,8 +99,8 @@ inline PaletteShading seed_palette(const PaletteStyle& style, const glm::vec3& k
     const glm::vec3 cool = style.shadow_color + style.alpha * k;
     const glm::vec3 warm = style.lit_color + style.beta * k;
     const glm::vec3 c = style.ambient * k + (t * warm + (1.0f - t) * cool);
-    const glm::vec3 celled = quantise_cels(c, style.cels);
-    return {celled, std::min(color_length(celled) * (1.0f / std::sqrt(3.0f)), 1.0f)};
+    const glm::vec3 celled = quantise_cels(c, style.cels, style.cels_keep_hue);
+    return {celled, std::min(cel_level(c, style.cels) * (1.0f / std::sqrt(3.0f)), 1.0f)};
 }
 
 // The seed hatches below intensity 0.5 (lighter strokes) and below 0.25
@@ -106,6 +119,11 @@ inline glm::vec3 palette_ink(const PaletteStyle& style, const glm::vec3& k) {
 // Strokes laid over the colour: `coverage` in [0, 1] from a tonal art map.
 inline glm::vec3 apply_hatching(const glm::vec3& color, const glm::vec3& ink, float coverage) {
     return color + (ink - color) * coverage;
+}
+
+// Seed 000's way: the strokes' colour (ink x coverage) added to the colour.
+inline glm::vec3 add_hatching(const glm::vec3& color, const glm::vec3& ink, float coverage) {
+    return color + ink * coverage;
 }
 
 // Blinn's half vector h = normalise(l + v); highlight k·(n·h)^shininess

@@ -23,6 +23,7 @@ struct HatchingState {
     float scale = 8;          // tiles per UV unit
     float tile_pixels = 128;  // screen space: output pixels per tile
     bool pencil = false;
+    bool additive = false;  // strokes add ink x coverage instead of blending to it
 };
 
 struct StyleState {
