@@ -44,7 +44,9 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     CHECK(scene.style.name == "default");
     CHECK(scene.cameras[0].fov.value == 45);
     CHECK_FALSE(scene.cameras[0].orbit.has_value());
-    CHECK(scene.lights.empty());
+    REQUIRE(scene.lights.size() == 1);  // the default key light
+    CHECK(scene.lights[0].camera_relative);
+    CHECK(scene.lights[0].type == facet::LightType::directional);
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0].name == "object0");
     REQUIRE(scene.objects[0].primitive.has_value());

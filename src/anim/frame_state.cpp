@@ -189,6 +189,15 @@ CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
     return state;
 }
 
+// A direction in the camera's frame (x right, y up, z towards the viewer)
+// in world space.
+glm::vec3 camera_to_world(const CameraState& camera, const glm::vec3& d) {
+    const glm::vec3 forward = glm::normalize(camera.target - camera.position);
+    const glm::vec3 right = glm::normalize(glm::cross(forward, camera.up));
+    const glm::vec3 up = glm::cross(right, forward);
+    return glm::normalize(d.x * right + d.y * up - d.z * forward);
+}
+
 }  // namespace
 
 glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
@@ -232,6 +241,9 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
     const double path_fraction = cam.path && cam.path->closed ? state.progress : open_fraction;
     state.camera = evaluate_camera(scene, cam, object_bounds, state.objects, at, state.progress,
                                    path_fraction);
+    for (size_t i = 0; i < scene.lights.size(); ++i)
+        if (scene.lights[i].camera_relative)
+            state.lights[i].direction = camera_to_world(state.camera, state.lights[i].direction);
     return state;
 }
 

@@ -4,6 +4,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "core/color_temperature.hpp"
 #include "core/limits.hpp"
 #include "scene/scene_desc.hpp"
@@ -128,6 +130,16 @@ LightDesc parse_light(const Field& f) {
         light.shadow_softness = f["shadow_softness"].animated_number(0, kMaxShadowSoftness);
     if (f.has("shadow_bias"))
         light.shadow_bias = f["shadow_bias"].animated_number(0, kMaxShadowBias);
+    return light;
+}
+
+LightDesc default_key_light() {
+    LightDesc light;
+    light.type = LightType::directional;
+    // About 27 degrees left of and 35 degrees above the line of sight: the
+    // usual key light, so that no face turned to the camera is left unlit.
+    light.direction = glm::normalize(glm::vec3(0.5f, -0.7f, -1.0f));
+    light.camera_relative = true;
     return light;
 }
 

@@ -121,8 +121,17 @@ struct LightDesc {
     int shadow_resolution = 0;  // texels per side (per cube face); 0 picks the type's default
     Animated<float> shadow_softness = 1.0f;  // percentage-closer filter radius, in texels
     Animated<float> shadow_bias = 1.0f;      // scales the automatic depth bias and normal offset
+    // `direction` is in the camera's frame (x right, y up, z towards the
+    // viewer) at every frame: the default key light of a scene without
+    // `lights:` follows the camera.
+    bool camera_relative = false;
     SourceLocation where;
 };
+
+// The light a scene without a `lights:` key gets (seed 001 starts with one
+// light; docs/references.md): directional, white, intensity 1, travelling
+// from above and to the left of the camera towards the scene.
+LightDesc default_key_light();
 
 enum class TextureWrap { repeat, clamp };
 

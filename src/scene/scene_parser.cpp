@@ -610,9 +610,11 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
                                     ? parse_camera(root["camera"], false, scene.warnings)
                                     : CameraDesc{});
     }
-    if (root.has("lights")) {
+    if (root.has("lights")) {  // `lights: []` is a scene without lights, on purpose
         Field lights = root["lights"];
         for (size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(parse_light(lights[i]));
+    } else {
+        scene.lights.push_back(default_key_light());
     }
     if (scene.style.shadows)
         for (LightDesc& light : scene.lights)
