@@ -15,6 +15,8 @@
 #include "asset_support.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
+#include "scene/scene_desc.hpp"
+#include "scene_support.hpp"
 #include "support.hpp"
 
 using facet::test::face_cross;
@@ -83,7 +85,8 @@ double polygon_area(double r, int n) {
 
 }  // namespace
 
-TEST_CASE("flagpole is a closed, outward cylinder with a hemispherical tip", "[primitives]") {
+TEST_CASE("flagpole is a closed, outward cylinder with a tip of the pole's diameter",
+          "[primitives]") {
     const float r = 0.05f, h = 6;
     const int segments = GENERATE(3, 8, 32);
     const int rings = GENERATE(2, 16);
@@ -96,46 +99,60 @@ TEST_CASE("flagpole is a closed, outward cylinder with a hemispherical tip", "[p
     const Topology t = require_closed_and_oriented(mesh, 1e-6f);
     CHECK(euler(t) == 2);
     require_normals_agree_with_winding(part);
-    // Centred, `height` in all with the tip, as wide as the radius (exactly
-    // when the polygon has corners on both axes).
+    // Centred, `height` in all with the tip. Seed 004: the tip's radius is
+    // the pole's diameter, so the pole is as wide as 2r at the tip (exactly
+    // when the polygon has corners on both axes) and r below it.
+    const float tip = 2 * r, centre = h / 2 - tip;
     const facet::Bounds b = mesh.bounds();
     CHECK(b.min.y == Approx(-h / 2).margin(1e-6));
     CHECK(b.max.y == Approx(h / 2).margin(1e-6));
-    for (const auto& q : part.positions) CHECK(q.x * q.x + q.z * q.z <= r * r * 1.00001f);
-    if (segments % 4 == 0) require_bounds(mesh, {-r, -h / 2, -r}, {r, h / 2, r}, 1e-6f);
+    for (const auto& q : part.positions) {
+        const float limit = q.y < centre - 1e-6f ? r : tip;
+        CHECK(q.x * q.x + q.z * q.z <= limit * limit * 1.00001f);
+    }
+    if (segments % 4 == 0) require_bounds(mesh, {-tip, -h / 2, -tip}, {tip, h / 2, tip}, 1e-6f);
     // Outward, and the volume of the prism plus the tip it approximates: a
     // cylinder of the polygon's area below the tip's centre, and at most a
-    // hemisphere above it.
+    // hemisphere of radius 2r above it.
     const double volume = signed_volume(part);
-    const double cylinder = polygon_area(r, segments) * (h - r);
+    const double cylinder = polygon_area(r, segments) * (h / 2 - tip + h / 2);
+    const double hemisphere = 2.0 / 3.0 * kPi * tip * tip * tip;
     CHECK(volume > cylinder);
-    CHECK(volume < cylinder + 2.0 / 3.0 * kPi * r * r * r);
+    CHECK(volume < cylinder + hemisphere);
     if (segments == 32 && rings == 16)
-        CHECK(volume == Approx(kPi * r * r * (h - r) + 2.0 / 3.0 * kPi * r * r * r).epsilon(0.01));
+        CHECK(volume == Approx(kPi * r * r * (h - tip) + hemisphere).epsilon(0.01));
 }
 
-TEST_CASE("flagpole shading is smooth from the side over the tip", "[primitives]") {
-    const float r = 0.5f, h = 4;
+TEST_CASE("flagpole normals: a smooth side, a flat shoulder, a round tip", "[primitives]") {
+    const float r = 0.5f, h = 4, tip = 2 * r;
     const facet::Mesh mesh = pole(r, h);
     const facet::MeshPart& part = mesh.parts[0];
-    const float centre = h / 2 - r;
+    const float centre = h / 2 - tip;
+    int shoulder = 0;
     for (size_t i = 0; i < part.positions.size(); ++i) {
         const glm::vec3 p = part.positions[i], n = part.normals[i];
+        const float out_radius = std::sqrt(p.x * p.x + p.z * p.z);
         INFO("vertex " << i << " at (" << p.x << ", " << p.y << ", " << p.z << ")");
         if (p.y <= -h / 2 + 1e-6f && n.y < -0.5f) {
             CHECK(n == glm::vec3(0, -1, 0));  // the foot is flat
-        } else if (p.y <= centre + 1e-6f) {
-            // The side: horizontal normals straight out, up to and including
-            // the tip's equator, so side and tip meet without a crease.
+        } else if (std::abs(p.y - centre) < 1e-6f && n.y < -0.5f) {
+            // The shoulder under the tip faces down, from r out to 2r.
+            CHECK(n == glm::vec3(0, -1, 0));
+            CHECK(out_radius >= r * 0.99999f);
+            CHECK(out_radius <= tip * 1.00001f);
+            ++shoulder;
+        } else if (p.y <= centre + 1e-6f && out_radius < r * 1.00001f) {
+            // The side: horizontal normals straight out.
             const glm::vec3 out = glm::normalize(glm::vec3(p.x, 0, p.z));
             CHECK(glm::length(n - out) < 1e-5f);
         } else {
-            // The tip: the sphere's normal about its centre.
+            // The tip: the sphere's normal about its centre, radius 2r.
             const glm::vec3 out = glm::normalize(p - glm::vec3(0, centre, 0));
             CHECK(glm::length(n - out) < 1e-5f);
-            CHECK(glm::length(p - glm::vec3(0, centre, 0)) == Approx(r).margin(1e-5));
+            CHECK(glm::length(p - glm::vec3(0, centre, 0)) == Approx(tip).margin(1e-5));
         }
     }
+    CHECK(shoulder > 0);
 }
 
 TEST_CASE("platform is a closed slab with a through-hole: a torus's topology", "[primitives]") {
@@ -212,6 +229,7 @@ TEST_CASE("flagpole and platform can be faceted and stay closed", "[primitives]"
         s.type = type;
         s.smooth = false;
         s.segments = 12;
+        s.radius = 0.05f;  // the scene's default for a flagpole (a platform ignores it)
         const facet::Mesh mesh = facet::make_primitive(s);
         const Topology t = require_closed_and_oriented(mesh, 1e-6f);
         CHECK(euler(t) == (std::string(type) == "flagpole" ? 2 : 0));
@@ -224,9 +242,11 @@ TEST_CASE("flagpole and platform reject sizes that cannot be built", "[primitive
     facet::PrimitiveSpec s;
     s.type = "flagpole";
     s.radius = 1;
-    s.height = 1;
-    require_input_error([&] { facet::make_primitive(s); },
-                        "primitive 'flagpole': height (1) must be greater than radius (1)");
+    s.height = 2;
+    require_input_error(
+        [&] { facet::make_primitive(s); },
+        "primitive 'flagpole': height (2) must be greater than the tip's radius (2, "
+        "the pole's diameter)");
     s.height = 0;
     require_input_error([&] { facet::make_primitive(s); },
                         "height must be finite and greater than 0");
@@ -251,5 +271,41 @@ TEST_CASE("flagpole and platform reject sizes that cannot be built", "[primitive
     require_input_error([&] { facet::make_primitive(s); }, "segments must be between 3 and 65536");
     // The defaults build.
     CHECK_NOTHROW(facet::make_primitive(facet::PrimitiveSpec{"platform"}));
-    CHECK_NOTHROW(facet::make_primitive(facet::PrimitiveSpec{"flagpole"}));
+    facet::PrimitiveSpec pole_spec{"flagpole"};
+    pole_spec.radius = 0.05f;  // the scene's default for a flagpole
+    CHECK_NOTHROW(facet::make_primitive(pole_spec));
+}
+
+TEST_CASE("the shipped flag scene's pole fits its platform's hole exactly", "[primitives][flag]") {
+    // Seed 004: the hole's radius is the pole's, and the pole's foot is the
+    // centre of the platform's bottom face. Same radius and segments make
+    // every corner of the hole's rim a corner of the pole's side: no gap.
+    const facet::SceneDesc scene = facet::test::load(facet::test::source_path("scenes/flag.yaml"));
+    const facet::ObjectDesc* pole_obj = nullptr;
+    const facet::ObjectDesc* slab_obj = nullptr;
+    for (const auto& o : scene.objects) {
+        if (o.name == "pole") pole_obj = &o;
+        if (o.name == "platform") slab_obj = &o;
+    }
+    REQUIRE(pole_obj);
+    REQUIRE(slab_obj);
+    const facet::PrimitiveSpec& ps = pole_obj->primitive->spec;
+    const facet::PrimitiveSpec& ss = slab_obj->primitive->spec;
+    CHECK(ss.hole_radius == ps.radius);
+    CHECK(ss.segments == ps.segments);
+    const float pole_foot = pole_obj->translate.value.y - ps.height / 2;
+    const float slab_bottom = slab_obj->translate.value.y - ss.thickness / 2;
+    CHECK(pole_foot == Approx(slab_bottom).margin(1e-6));
+
+    const facet::Mesh pole_mesh = facet::make_primitive(ps), slab_mesh = facet::make_primitive(ss);
+    size_t rim = 0;
+    for (const glm::vec3& q : slab_mesh.parts[0].positions) {
+        if (std::sqrt(q.x * q.x + q.z * q.z) > ss.hole_radius * 1.00001f) continue;
+        bool on_pole = false;
+        for (const glm::vec3& p : pole_mesh.parts[0].positions)
+            on_pole = on_pole || (p.x == q.x && p.z == q.z);
+        CHECK(on_pole);
+        ++rim;
+    }
+    CHECK(rim >= 2 * static_cast<size_t>(ss.segments));
 }

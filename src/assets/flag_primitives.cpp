@@ -1,5 +1,6 @@
 // The flag scene's primitives (docs/references.md, seed 004 §1.2): the flagpole, a
-// cylinder with a hemispherical tip of its own radius, and the platform, a
+// cylinder with a hemispherical tip whose radius is the pole's diameter (as
+// the seed says), on a flat shoulder, and the platform, a
 // square slab with a round hole through its centre for the pole. Both are
 // closed, outward-facing meshes; the types are registered in primitives.cpp.
 #include <algorithm>
@@ -73,24 +74,42 @@ void add_bottom_cap(Builder& b, float radius, float y, int segments) {
 
 void add_flagpole(Builder& b, float radius, float height, int segments, int rings) {
     // `height` is the whole pole, tip included, centred on the origin like
-    // every primitive: the cylinder runs from -height/2 to the tip's centre.
+    // every primitive. Seed 004: the tip's radius equals the pole's
+    // diameter, so the hemisphere overhangs the pole and a flat, downward
+    // shoulder (an annulus) closes it underneath.
+    const float tip = 2 * radius;
     const float top = height / 2, bottom = -height / 2;
-    const float centre = top - radius;
+    const float centre = top - tip;
     const int bands = std::max(2, rings / 2);  // a hemisphere is half a sphere's rings
     // v runs along the surface from the tip (0) to the foot (1).
-    const float arc = kPi / 2 * radius, length = arc + (centre - bottom);
-    std::vector<ProfilePoint> profile;
+    const float arc = kPi / 2 * tip, shoulder = tip - radius, side = centre - bottom;
+    const float length = arc + shoulder + side;
+    std::vector<ProfilePoint> dome;
     for (int k = 0; k < bands; ++k) {
         const float theta = kPi / 2 * static_cast<float>(k) / static_cast<float>(bands);
         const float out = std::sin(theta), up = std::cos(theta);
-        profile.push_back(
-            {k == 0 ? 0.0f : radius * out, centre + radius * up, out, up, radius * theta / length});
+        dome.push_back(
+            {k == 0 ? 0.0f : tip * out, centre + tip * up, out, up, tip * theta / length});
     }
-    // The equator is exact so its ring is the cylinder's top ring, shared:
-    // the normals are horizontal on both sides, so the shading is smooth.
-    profile.push_back({radius, centre, 1, 0, arc / length});
-    profile.push_back({radius, bottom, 1, 0, 1});
-    add_revolved(b, profile, segments);
+    dome.push_back({tip, centre, 1, 0, arc / length});  // the equator, exact
+    add_revolved(b, dome, segments);
+    // Three pieces, each with its own normals: the crease at the equator and
+    // at the shoulder's inner edge stays sharp.
+    add_revolved(
+        b, {{tip, centre, 0, -1, arc / length}, {radius, centre, 0, -1, (arc + shoulder) / length}},
+        segments);
+    // The side in rows about a tip's diameter apart: per-vertex (Gouraud)
+    // lighting and shadows are only as fine as the rows, and with only the
+    // two end rings the shadow of the tip at the top and of the platform at
+    // the foot would spread over the whole pole.
+    const int rows = std::clamp(static_cast<int>(std::ceil(side / (2 * tip))), 1, 256);
+    std::vector<ProfilePoint> column;
+    for (int k = 0; k <= rows; ++k) {
+        const float f = static_cast<float>(k) / static_cast<float>(rows);
+        column.push_back({radius, k == rows ? bottom : centre - f * side, 1, 0,
+                          (arc + shoulder + f * side) / length});
+    }
+    add_revolved(b, column, segments);
     add_bottom_cap(b, radius, bottom, segments);
 }
 

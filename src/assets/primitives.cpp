@@ -209,10 +209,10 @@ void validate(const PrimitiveSpec& spec) {
         s << "tube (" << spec.tube << ") must be less than radius (" << spec.radius << ")";
         reject(spec, s.str());
     }
-    if (spec.type == "flagpole" && !(spec.height > spec.radius)) {
+    if (spec.type == "flagpole" && !(spec.height > 2 * spec.radius)) {
         std::ostringstream s;
-        s << "height (" << spec.height << ") must be greater than radius (" << spec.radius
-          << "): the height includes the hemispherical tip";
+        s << "height (" << spec.height << ") must be greater than the tip's radius ("
+          << 2 * spec.radius << ", the pole's diameter): the height includes the tip";
         reject(spec, s.str());
     }
     if (spec.type == "platform" && !(spec.hole_radius < spec.size / 2)) {

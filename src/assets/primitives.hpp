@@ -13,8 +13,8 @@ namespace facet {
 struct PrimitiveSpec {
     // plane, cube, box, sphere, cylinder, cone, tetrahedron, octahedron,
     // icosahedron, dodecahedron, prism, antiprism, pyramid, icosphere, torus,
-    // flagpole (radius, height: the whole pole, its hemispherical tip
-    // included; height > radius), platform (size, thickness, hole_radius <
+    // flagpole (radius, height: the whole pole, its hemispherical tip of
+    // radius 2 x radius included; height > 2 x radius), platform (size, thickness, hole_radius <
     // size / 2, segments)
     std::string type;
     float size = 1;  // plane and cube edge length

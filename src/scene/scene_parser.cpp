@@ -320,6 +320,7 @@ PrimitiveDesc parse_primitive(const Field& f) {
     PrimitiveSpec& p = desc.spec;
     if (f.is_scalar()) {  // shorthand: `primitive: sphere`
         p.type = primitive_type(f).type;
+        if (p.type == "flagpole") p.radius = 0.05f;  // see below
         return desc;
     }
     f.check_keys({"type", "size", "radius", "height", "segments", "rings", "sides", "tube",
@@ -345,6 +346,9 @@ PrimitiveDesc parse_primitive(const Field& f) {
             for (int k = 0; k < 3; ++k) p.box_size[k] = length_value(size[static_cast<size_t>(k)]);
         }
     }
+    // A flagpole's tip has twice its radius, so the shared default of 0.5
+    // would not fit its default height of 1; its own default is 0.05.
+    if (p.type == "flagpole") p.radius = 0.05f;
     if (f.has("radius")) p.radius = length_value(f["radius"]);
     if (f.has("height")) p.height = length_value(f["height"]);
     if (f.has("segments")) p.segments = f["segments"].integer(3, kMaxDivisions);
