@@ -20,7 +20,8 @@ void plot_pixel(ColorImage& image, int x, int y, const glm::vec3& color) {
 }
 
 // A line `thickness` pixels wide by stepping along its longer axis
-// (the DDA form of Bresenham's algorithm), optionally dashed.
+// (a DDA: one step per pixel along that axis, the other coordinate
+// rounded), optionally dashed.
 void draw_line(ColorImage& image, glm::dvec2 a, glm::dvec2 b, const glm::vec3& color, int thickness,
                bool dashed = false) {
     const double steps = std::max({std::abs(b.x - a.x), std::abs(b.y - a.y), 1.0});
