@@ -10,16 +10,23 @@
 namespace facet {
 
 // The simulation parameters of a scene's cloth, in the object's local space
-// (gravity turned by the inverse of the object's rotation at `first_frame`).
-ClothParams cloth_params(const ObjectDesc& object, double fps, int first_frame);
+// (gravity turned by the inverse of the object's rotation at `first_frame`),
+// with the keyable values (mass, stiffness, friction, damping) at simulation
+// frame `frame`.
+ClothParams cloth_params(const ObjectDesc& object, double fps, int first_frame, int frame = 0);
+
+// Whether any of the cloth's mass, stiffness, friction or damping is keyed.
+bool cloth_values_keyed(const ObjectDesc& object);
 
 // The keyed wind of a cloth object at simulation frame `frame` (scene frame
 // first_frame + frame), turned into the object's local space.
 WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, double fps);
 
-// The cloth model of a cloth object, built once per run, after checking
-// the wind of every frame of the scene against it. Throws facet::Error
-// (invalid_input) naming the frame of a bad key.
+// The cloth model of a cloth object, built once per run with enough
+// substeps for every frame's keyed values, after checking those values
+// (stability, stretch under weight) and the wind of every frame of the
+// scene against it. Throws facet::Error (invalid_input) naming the frame of
+// a bad key.
 std::shared_ptr<const ClothModel> build_scene_cloth(const ObjectDesc& object,
                                                     const OutputDesc& output);
 

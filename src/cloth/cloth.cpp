@@ -131,12 +131,10 @@ struct SpringFamily {
     double rest, k, c;
 };
 
-std::vector<SpringFamily> spring_families(const ClothModel& m) {
-    const ClothParams& p = m.params;
+std::vector<SpringFamily> spring_families(const ClothParams& p, double mass) {
     const Grid g = grid_of(p);
     const int C = g.columns, R = g.rows;
     const SpringConstants k = spring_constants(p, g);
-    const double mass = m.particle_mass;
     const double diagonal = std::sqrt(g.dx * g.dx + g.dy * g.dy);
     auto family = [&](int offset, int rows, int first, int last, double rest, double stiffness) {
         return SpringFamily{
@@ -155,6 +153,10 @@ std::vector<SpringFamily> spring_families(const ClothModel& m) {
 }
 
 struct Scratch {
+    // This frame's constants: the model's, with the keyed values of the
+    // frame (mass, stiffness, friction, damping) when there are any.
+    ClothParams params;
+    double particle_mass = 0;
     std::vector<SpringFamily> families;
     Soa position, velocity, force, part;  // `part`: one force per spring or cell of a row
     std::vector<glm::dvec3> predicted;
@@ -260,8 +262,8 @@ void add_wind(const ClothModel& model, Scratch& s) {
 // Seed 1.11: F = m g + springs + friction + wind, friction read as air
 // friction on the vertex's motion, -friction m v (docs/cloth.md).
 void accumulate_forces(const ClothModel& model, const ClothState& state, Scratch& s) {
-    const ClothParams& p = model.params;
-    const double m = model.particle_mass;
+    const ClothParams& p = s.params;
+    const double m = s.particle_mass;
     const glm::dvec3 weight = m * glm::dvec3(p.gravity);
     const double friction = static_cast<double>(p.friction) * m;
     to_soa(state.positions, s.position);
@@ -322,7 +324,7 @@ void limit_stretch(const ClothModel& model, std::vector<glm::dvec3>& x) {
 
 void substep(const ClothModel& model, ClothState& state, Scratch& s) {
     const double h = model.step_seconds;
-    const double inv_m = 1.0 / model.particle_mass;
+    const double inv_m = 1.0 / s.particle_mass;
     accumulate_forces(model, state, s);
     const size_t n = state.positions.size();
     // Semi-implicit Euler (seed 1.9-1.10 with the step h): v += h F/m, then
@@ -477,15 +479,31 @@ glm::dvec3 wind_at_step(const ClothModel& model, const WindState& from, const Wi
     return winds.at(static_cast<size_t>(column));
 }
 
+ClothParams with_keyed_values(const ClothParams& model, const ClothParams& keyed) {
+    ClothParams p = model;
+    p.mass = keyed.mass;
+    p.stiffness = keyed.stiffness;
+    p.friction = keyed.friction;
+    p.damping = keyed.damping;
+    return p;
+}
+
 void advance_cloth_frame(const ClothModel& model, ClothState& state, const WindState& from,
-                         const WindState& to) {
+                         const WindState& to, const ClothParams* keyed) {
+    Scratch s;
+    s.params = keyed ? with_keyed_values(model.params, *keyed) : model.params;
     try {
-        for (const WindState* w : {&from, &to}) check_wind(*w, model.params);
+        if (keyed) {
+            ClothParams at_model_steps = s.params;
+            at_model_steps.substeps = model.substeps;
+            check_cloth_params(at_model_steps);
+        }
+        for (const WindState* w : {&from, &to}) check_wind(*w, s.params);
     } catch (const Error& e) {
         throw Error(ExitCode::invalid_input, "cloth: " + e.detail());
     }
-    Scratch s;
-    s.families = spring_families(model);
+    s.particle_mass = keyed ? particle_mass(s.params) : model.particle_mass;
+    s.families = spring_families(s.params, s.particle_mass);
     const size_t n = state.positions.size();
     for (Soa* a : {&s.position, &s.velocity, &s.force}) a->resize(n);
     s.part.resize(static_cast<size_t>(model.params.columns));
@@ -534,12 +552,21 @@ ClothFrame cloth_frame(const ClothModel& model, const ClothState& state) {
 
 // --- Driver --------------------------------------------------------------------
 
-ClothSimulation::ClothSimulation(std::shared_ptr<const ClothModel> model, WindAt wind_at)
-    : model_(std::move(model)), wind_at_(std::move(wind_at)) {
+ClothSimulation::ClothSimulation(std::shared_ptr<const ClothModel> model, WindAt wind_at,
+                                 ParamsAt params_at)
+    : model_(std::move(model)), wind_at_(std::move(wind_at)), params_at_(std::move(params_at)) {
     current_ = start_state(*model_);
     const WindState first = wind(0);
-    while (current_.frame < 0) advance_cloth_frame(*model_, current_, first, first);
+    const std::optional<ClothParams> first_params = keyed(0);
+    while (current_.frame < 0)
+        advance_cloth_frame(*model_, current_, first, first,
+                            first_params ? &*first_params : nullptr);
     checkpoints_.push_back(current_);
+}
+
+std::optional<ClothParams> ClothSimulation::keyed(int frame) const {
+    if (!params_at_) return std::nullopt;
+    return params_at_(frame);
 }
 
 WindState ClothSimulation::wind(int frame) const {
@@ -557,7 +584,9 @@ const ClothState& ClothSimulation::simulate_to(int frame) {
     if (current_.frame > frame || checkpoints_[index].frame > current_.frame)
         current_ = checkpoints_[index];
     while (current_.frame < frame) {
-        advance_cloth_frame(*model_, current_, wind(current_.frame), wind(current_.frame + 1));
+        const std::optional<ClothParams> params = keyed(current_.frame);
+        advance_cloth_frame(*model_, current_, wind(current_.frame), wind(current_.frame + 1),
+                            params ? &*params : nullptr);
         if (current_.frame % kCheckpointInterval == 0 &&
             static_cast<size_t>(current_.frame / kCheckpointInterval) == checkpoints_.size())
             checkpoints_.push_back(current_);

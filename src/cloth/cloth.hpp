@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -102,9 +103,14 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins);
 // most 1e-4 x height (so a cloth hanging in its own plane can buckle).
 ClothState start_state(const ClothModel& model);
 // Advances one frame (model.substeps steps), with the wind interpolated from
-// `from` (this frame) to `to` (the next). Throws if a wind is invalid.
+// `from` (this frame) to `to` (the next). `keyed`, when given, holds this
+// frame's keyed values: its mass, stiffness, friction and damping replace
+// the model's for the frame (its other fields are not read). Throws if a
+// wind or a keyed value is invalid, or unstable at model.substeps.
 void advance_cloth_frame(const ClothModel& model, ClothState& state, const WindState& from,
-                         const WindState& to);
+                         const WindState& to, const ClothParams* keyed = nullptr);
+// `model` with the keyed values (mass, stiffness, friction, damping) of `keyed`.
+ClothParams with_keyed_values(const ClothParams& model, const ClothParams& keyed);
 ClothFrame cloth_frame(const ClothModel& model, const ClothState& state);
 double kinetic_energy(const ClothModel& model, const ClothState& state);
 // The wind vector the cells in `column` (0 .. columns - 2) feel at `step`,
@@ -123,11 +129,15 @@ class ClothSimulation {
     // `wind_at(frame)` must be a pure function of the frame (frame >= 0);
     // without one the wind is WindState{}.
     using WindAt = std::function<WindState(int frame)>;
+    // `params_at(frame)`, when given, the keyed values at a frame (see
+    // advance_cloth_frame); a pure function of the frame too.
+    using ParamsAt = std::function<ClothParams(int frame)>;
     static constexpr int kCheckpointInterval = 32;
 
     // The model is built once (build_cloth_model) and shared with whoever
     // else needs it. Throws facet::Error (invalid_input) for an invalid wind.
-    ClothSimulation(std::shared_ptr<const ClothModel> model, WindAt wind_at);
+    ClothSimulation(std::shared_ptr<const ClothModel> model, WindAt wind_at,
+                    ParamsAt params_at = {});
 
     const ClothModel& model() const { return *model_; }
     // Indices, UVs and the rest pose, the same at every frame.
@@ -138,9 +148,11 @@ class ClothSimulation {
 
   private:
     WindState wind(int frame) const;
+    std::optional<ClothParams> keyed(int frame) const;
 
     std::shared_ptr<const ClothModel> model_;
     WindAt wind_at_;
+    ParamsAt params_at_;
     ClothState current_;
     std::vector<ClothState> checkpoints_;  // [i] is frame i * kCheckpointInterval
 };

@@ -13,7 +13,12 @@ PoseStage::PoseStage(const SceneDesc& scene, const World& world) : scene_(scene)
     for (const ClothObject& c : world.cloths) {
         const ObjectDesc& obj = scene.objects[c.object];
         auto wind_at = [&obj, first, fps](int frame) { return cloth_wind(obj, frame, first, fps); };
-        cloths_.push_back(std::make_unique<ClothSimulation>(c.model, wind_at));
+        ClothSimulation::ParamsAt params_at;
+        if (cloth_values_keyed(obj))
+            params_at = [&obj, first, fps](int frame) {
+                return cloth_params(obj, fps, first, frame);
+            };
+        cloths_.push_back(std::make_unique<ClothSimulation>(c.model, wind_at, params_at));
     }
 }
 

@@ -167,6 +167,9 @@ struct SpinDesc {
 struct ClothDesc {
     ClothParams params;
     ClothPins pins;
+    // Keyable values (seed 004 keys "the wind and the parameters"); `params`
+    // holds their values at the first key.
+    Animated<float> mass = 0.3f, stiffness = 100.0f, friction = 0.1f, damping = 0.05f;
     // The wind, in world space; keyable: the key frames of seed 004.
     Animated<glm::vec3> wind_direction = glm::vec3(1, 0, 0);
     Animated<float> wind_strength = 5.0f;  // m/s

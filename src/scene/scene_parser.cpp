@@ -427,13 +427,20 @@ ClothDesc parse_cloth(const Field& f) {
         if (f.has(key))
             out = static_cast<std::remove_reference_t<decltype(out)>>(f[key].number(lo, hi));
     };
-    number("mass", p.mass, 1e-6, 1e6);
-    number("stiffness", p.stiffness, 1e-6, 1e9);
+    // Keyable, checked for stability at every frame (anim/cloth_scene.cpp).
+    auto keyable = [&](const char* key, Animated<float>& out, float& first, double lo, double hi) {
+        out = first;
+        if (!f.has(key)) return;
+        out = f[key].animated_number(lo, hi);
+        first = out.value;
+    };
+    keyable("mass", c.mass, p.mass, 1e-6, 1e6);
+    keyable("stiffness", c.stiffness, p.stiffness, 1e-6, 1e9);
+    keyable("friction", c.friction, p.friction, 0, kMaxFriction);
+    keyable("damping", c.damping, p.damping, 0, 1);
     number("shear", p.shear_stiffness, 0, 1);
     number("bend", p.bend_stiffness, 0, 1);
     number("max_stretch", p.max_stretch, 0.01, 1);
-    number("friction", p.friction, 0, kMaxFriction);
-    number("damping", p.damping, 0, 1);
     number("wind_drag", p.wind_drag, 0, kMaxWindDrag);
     number("wind_tangential_drag", p.wind_tangential_drag, 0, kMaxWindDrag);
     number("preroll", p.preroll_seconds, 0, 60);
