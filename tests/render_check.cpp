@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
@@ -16,6 +17,23 @@
 namespace facet::test {
 namespace fs = std::filesystem;
 
+namespace {
+
+FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
+    const World world = build_world(scene);
+    ThreadPool pool(threads);
+    FrameRenderer renderer(scene, world, pool);
+    FrameImages images;
+    renderer.render(frame, 0, images);
+    return images;
+}
+
+}  // namespace
+
+ColorImage render_color(const SceneDesc& scene, int frame, unsigned threads) {
+    return to_float_image(render_images(scene, frame, threads).color);
+}
+
 void check_render(const RenderCase& c) {
     SceneOptions options;
     options.style_dirs = {FACET_STYLES_DIR};
@@ -25,11 +43,7 @@ void check_render(const RenderCase& c) {
         options.overrides.push_back({d.substr(0, eq), d.substr(eq + 1), "test -D " + d});
     }
     SceneDesc scene = load_scene(source_path(c.scene), options);
-    World world = build_world(scene);
-    ThreadPool pool(2);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(c.frame, 0, images);
+    const FrameImages images = render_images(scene, c.frame, 2);
 
     const fs::path out_dir = fs::path("render-test-output");
     fs::create_directories(out_dir);

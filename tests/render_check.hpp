@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "core/image.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet::test {
@@ -25,5 +26,9 @@ struct RenderCase {
 // Renders the case and compares. A missing reference (or FACET_UPDATE_BASELINES=1)
 // writes the rendered image into tests/baselines for review and fails.
 void check_render(const RenderCase& c);
+
+// One frame of a loaded scene, rendered on `threads` threads, as linear
+// float colour (for tests that compute what each pixel must be).
+ColorImage render_color(const SceneDesc& scene, int frame = 1, unsigned threads = 1);
 
 }  // namespace facet::test

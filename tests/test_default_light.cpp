@@ -5,10 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "anim/frame_state.hpp"
-#include "core/half.hpp"
-#include "core/thread_pool.hpp"
-#include "render/frame_renderer.hpp"
-#include "render/world.hpp"
+#include "render_check.hpp"
 #include "scene_support.hpp"
 #include "support.hpp"
 
@@ -25,12 +22,7 @@ const std::string kSphere =
     "    material: { color: [0.8, 0.8, 0.8], ambient: 0.1 }\n";
 
 float mean_red(const SceneDesc& scene) {
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(1, 0, images);
-    const ColorImage c = to_float_image(images.color);
+    const ColorImage c = render_color(scene);
     // The sphere's middle third, where only the sphere is.
     double sum = 0;
     int n = 0;

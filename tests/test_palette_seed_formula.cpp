@@ -7,10 +7,7 @@
 
 #include <cmath>
 
-#include "core/half.hpp"
-#include "core/thread_pool.hpp"
-#include "render/frame_renderer.hpp"
-#include "render/world.hpp"
+#include "render_check.hpp"
 #include "scene_support.hpp"
 #include "support.hpp"
 
@@ -56,12 +53,7 @@ template <typename Expected>
 Comparison compare(const std::string& cel_color, Expected expected) {
     TempDir dir("palette-seed");
     const SceneDesc scene = load(write_text(dir.file("s.yaml"), sphere_scene(cel_color)));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(1, 0, images);
-    const ColorImage image = to_float_image(images.color);
+    const ColorImage image = render_color(scene);
 
     const float tan_half = std::tan(glm::radians(kFovDegrees) / 2);
     const float aspect = static_cast<float>(kWidth) / kHeight;
