@@ -4,7 +4,8 @@
 # with nothing to do takes about a second.
 #
 #   scripts/setup.sh            build dependencies, then build
-#   scripts/setup.sh --tests    also the test data (assimp-testmodels)
+#   scripts/setup.sh --tests    also the test data (assimp-testmodels) and
+#                               scikit-image (checks facet's SSIM)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
 #   scripts/setup.sh --clang    also clang and its sanitizer and libFuzzer
 #                               runtimes (scripts/test.sh --sanitize, fuzz.sh)
@@ -19,7 +20,7 @@ packages=(g++ cmake make pkg-config
           libdeflate-dev libssl-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) packages+=(assimp-testmodels) ;;
+        --tests) packages+=(assimp-testmodels python3-skimage) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --clang) packages+=(clang libclang-rt-dev llvm) ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --clang)" >&2; exit 2 ;;
