@@ -179,11 +179,16 @@ bool load_image(tinygltf::Image* image, const int index, std::string* err, std::
     return true;
 }
 
-}  // namespace
-
-Mesh load_gltf(const std::string& path, const AssetContext& context) {
-    require_input_file(path, "glTF");
+// The file read by tinygltf through facet's callbacks (path policy,
+// texture budget), refusals rethrown, and compressed geometry refused.
+struct ReadModel {
     tinygltf::Model model;
+    std::string warnings;  // tinygltf's, trimmed
+};
+
+ReadModel read_model(const std::string& path, const AssetContext& context) {
+    ReadModel read;
+    tinygltf::Model& model = read.model;
     tinygltf::TinyGLTF loader;
     LoadContext load{path, "", &context, std::nullopt};
     // tinygltf joins its folder (the path up to the last slash) and a URI with a slash.
@@ -210,6 +215,7 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     };
     if (!ok)
         bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
+    read.warnings = trim(warn);
 
     // Geometry compressed by these extensions is not in the accessors read
     // below: they have no bufferView and would load as a heap of zeros.
@@ -217,18 +223,12 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
         if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
             bad(path, "needs the " + ext + " extension, which facet cannot decode");
 
-    Mesh mesh;
-    mesh.source = path;
-    if (!warn.empty()) mesh.warnings.push_back(file_warning(path, trim(warn)));
-    // The rest pose below is baked as always; a file that can move also
-    // keeps what moves it (gltf_rig_loader.cpp).
-    std::shared_ptr<MeshRig> rig;
-    if (gltf_detail::has_rig_data(model)) {
-        rig = std::make_shared<MeshRig>();
-        gltf_detail::read_rig_nodes_and_animations(model, path, *rig, mesh.warnings);
-    }
+    return read;
+}
 
-    // Materials, with textures decoded once each.
+// The file's materials, with textures decoded once each.
+std::vector<Material> read_materials(const tinygltf::Model& model, const std::string& path) {
+    std::vector<Material> materials;
     std::map<int, std::shared_ptr<const Texture>> textures;
     auto texture_for = [&](int tex_index) -> std::shared_ptr<const Texture> {
         if (tex_index < 0) return nullptr;
@@ -271,8 +271,29 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
         mat.shininess = std::max(mat.shininess, 1.0f);
         mat.specular = 0.15f + 0.6f * (1.0f - roughness);
         mat.double_sided = m.doubleSided;
-        mesh.materials.push_back(mat);
+        materials.push_back(mat);
     }
+    return materials;
+}
+
+}  // namespace
+
+Mesh load_gltf(const std::string& path, const AssetContext& context) {
+    require_input_file(path, "glTF");
+    ReadModel read = read_model(path, context);
+    const tinygltf::Model& model = read.model;
+    Mesh mesh;
+    mesh.source = path;
+    if (!read.warnings.empty()) mesh.warnings.push_back(file_warning(path, read.warnings));
+    // The rest pose below is baked as always; a file that can move also
+    // keeps what moves it (gltf_rig_loader.cpp).
+    std::shared_ptr<MeshRig> rig;
+    if (gltf_detail::has_rig_data(model)) {
+        rig = std::make_shared<MeshRig>();
+        gltf_detail::read_rig_nodes_and_animations(model, path, *rig, mesh.warnings);
+    }
+
+    mesh.materials = read_materials(model, path);
     const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
     Material fallback;
     fallback.name = "default";
