@@ -28,20 +28,9 @@ done
 [ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture)
 case "$seconds" in ''|*[!0-9]*) echo "fuzz.sh: --seconds needs a whole number" >&2; exit 2 ;; esac
 
-# The sanitizer build of scripts/test.sh --sanitize has the harnesses too.
+# The sanitizer build (scripts/setup.sh --sanitize) has the harnesses.
 build="${FACET_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
-"$root/scripts/setup.sh" --tests --clang
-if [ ! -f "$build/CMakeCache.txt" ]; then
-    echo "fuzz: configuring the clang sanitizer build in $build" >&2
-    CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Sanitize \
-        -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" -DFACET_SANITIZE=ON -DFACET_FUZZ=ON \
-        -DFACET_WERROR=ON -DFACET_BUILD_BENCH=OFF >/dev/null
-fi
-if ! cmake --build "$build" -j2 --target "${targets[@]/#/fuzz_}" >"$build/fuzz-build.log" 2>&1; then
-    tail -n 40 "$build/fuzz-build.log" >&2
-    echo "fuzz: build failed (full log: $build/fuzz-build.log)" >&2
-    exit 1
-fi
+"$root/scripts/setup.sh" --tests --sanitize
 
 models=/usr/share/assimp/models
 seeds_for() {

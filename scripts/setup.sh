@@ -7,12 +7,16 @@
 #   scripts/setup.sh --tests    also the test data (assimp-testmodels) and
 #                               scikit-image (checks facet's SSIM)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
-#   scripts/setup.sh --clang    also clang and its sanitizer and libFuzzer
-#                               runtimes (scripts/test.sh --sanitize, fuzz.sh)
+#   scripts/setup.sh --sanitize also clang and its sanitizer and libFuzzer
+#                               runtimes, and a second build by clang with
+#                               ASan, UBSan, -Werror and the fuzz harnesses
+#                               in build-sanitize/ (scripts/test.sh
+#                               --sanitize, scripts/fuzz.sh)
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${FACET_BUILD_DIR:-$root/build}"
+sanitize=0
 
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
@@ -22,8 +26,8 @@ for arg in "$@"; do
     case "$arg" in
         --tests) packages+=(assimp-testmodels python3-skimage) ;;
         --bench) packages+=(libosmesa6-dev) ;;
-        --clang) packages+=(clang libclang-rt-dev llvm) ;;
-        *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --clang)" >&2; exit 2 ;;
+        --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
+        *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;
     esac
 done
 
@@ -50,4 +54,19 @@ if ! cmake --build "$build" -j2 >"$log" 2>&1; then
     tail -n 40 "$log" >&2
     echo "setup: build failed (full log: $log)" >&2
     exit 1
+fi
+
+if [ "$sanitize" = 1 ]; then
+    sbuild="${FACET_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
+    if [ ! -f "$sbuild/CMakeCache.txt" ]; then
+        echo "setup: configuring the clang sanitizer build in $sbuild" >&2
+        CC=clang CXX=clang++ cmake -S "$root" -B "$sbuild" -DCMAKE_BUILD_TYPE=Sanitize \
+            -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" -DFACET_SANITIZE=ON -DFACET_FUZZ=ON \
+            -DFACET_WERROR=ON -DFACET_BUILD_BENCH=OFF >/dev/null
+    fi
+    if ! cmake --build "$sbuild" -j2 >"$sbuild/build.log" 2>&1; then
+        tail -n 40 "$sbuild/build.log" >&2
+        echo "setup: sanitizer build failed (full log: $sbuild/build.log)" >&2
+        exit 1
+    fi
 fi

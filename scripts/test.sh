@@ -17,17 +17,7 @@ esac
 
 if [ "$mode" = "--sanitize" ]; then
     build="${FACET_SANITIZE_BUILD_DIR:-$root/build-sanitize}"
-    "$root/scripts/setup.sh" --tests --clang
-    if [ ! -f "$build/CMakeCache.txt" ]; then
-        echo "test: configuring the clang sanitizer build in $build" >&2
-        CC=clang CXX=clang++ cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Sanitize -DCMAKE_CXX_FLAGS="-O1 -gline-tables-only" \
-            -DFACET_SANITIZE=ON -DFACET_FUZZ=ON -DFACET_WERROR=ON -DFACET_BUILD_BENCH=OFF >/dev/null
-    fi
-    if ! cmake --build "$build" -j2 >"$build/build.log" 2>&1; then
-        tail -n 40 "$build/build.log" >&2
-        echo "test: sanitizer build failed (full log: $build/build.log)" >&2
-        exit 1
-    fi
+    "$root/scripts/setup.sh" --tests --sanitize
     cd "$build"
     # Leaks count as failures too; a report names the file and line.
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1

@@ -33,13 +33,8 @@ Run simulate(const SceneDesc& scene) {
     const OutputDesc& out = scene.output;
     Run run;
     run.model = build_scene_cloth(obj, out);
-    const int first = out.frames.front();
-    ClothSimulation::ParamsAt params_at;
-    if (cloth_values_keyed(obj))
-        params_at = [&](int f) { return cloth_params(obj, out.fps, first, f); };
-    ClothSimulation sim(
-        run.model, [&](int f) { return cloth_wind(obj, f, first, out.fps); }, params_at);
-    for (int f = 0; f < 40; ++f) run.positions.push_back(sim.simulate_to(f).positions);
+    const auto sim = scene_cloth_simulation(obj, out, run.model);
+    for (int f = 0; f < 40; ++f) run.positions.push_back(sim->simulate_to(f).positions);
     return run;
 }
 
@@ -88,11 +83,9 @@ TEST_CASE("automatic substeps cover the stiffest keyed frame", "[cloth]") {
     // depend on which frames are simulated).
     const Run run = simulate(keyed);
     const ObjectDesc& obj = keyed.objects[0];
-    ClothSimulation alone(
-        build_scene_cloth(obj, keyed.output),
-        [&](int f) { return cloth_wind(obj, f, 1, keyed.output.fps); },
-        [&](int f) { return cloth_params(obj, keyed.output.fps, 1, f); });
-    CHECK(alone.simulate_to(37).positions == run.positions[37]);
+    const auto alone =
+        scene_cloth_simulation(obj, keyed.output, build_scene_cloth(obj, keyed.output));
+    CHECK(alone->simulate_to(37).positions == run.positions[37]);
 }
 
 TEST_CASE("a keyed value no step can hold names its frame and key", "[cloth]") {

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -227,18 +228,29 @@ TEST_CASE("box has the three given sizes", "[assets][primitives][polyhedra]") {
     }
 }
 
+namespace {
+
+// A prism, antiprism or pyramid of `sides` sides, with a top radius when given.
+facet::PrimitiveSpec polygon_solid(const std::string& type, int sides, float radius, float height,
+                                   std::optional<float> top_radius = std::nullopt) {
+    facet::PrimitiveSpec s;
+    s.type = type;
+    s.sides = sides;
+    s.radius = radius;
+    s.height = height;
+    s.top_radius = top_radius;
+    return s;
+}
+
+}  // namespace
+
 TEST_CASE("prism, antiprism and pyramid over n sides", "[assets][primitives][polyhedra]") {
     const float radius = 0.8f, height = 1.5f;
     for (int n : {3, 4, 5, 12}) {
         const size_t sides = static_cast<size_t>(n);
         for (const std::string type : {"prism", "antiprism", "pyramid"}) {
             DYNAMIC_SECTION(type << " " << n) {
-                facet::PrimitiveSpec s;
-                s.type = type;
-                s.sides = n;
-                s.radius = radius;
-                s.height = height;
-                facet::Mesh mesh = facet::make_primitive(s);
+                facet::Mesh mesh = facet::make_primitive(polygon_solid(type, n, radius, height));
                 const auto& part = only_part(mesh);
                 // The antiprism's band of triangles reaches half a step past u = 1.
                 check_attributes(part, type == "antiprism" ? 1.0f + 0.5f / n : 1.0f);
@@ -446,13 +458,8 @@ TEST_CASE("frustums: prism and pyramid with a top radius (seed 001)",
         const size_t sides = static_cast<size_t>(n);
         for (const std::string type : {"prism", "pyramid"}) {
             DYNAMIC_SECTION(type << " " << n) {
-                facet::PrimitiveSpec s;
-                s.type = type;
-                s.sides = n;
-                s.radius = bottom;
-                s.top_radius = top;
-                s.height = height;
-                facet::Mesh mesh = facet::make_primitive(s);
+                facet::Mesh mesh =
+                    facet::make_primitive(polygon_solid(type, n, bottom, height, top));
                 const auto& part = only_part(mesh);
                 check_outward(part);
                 check_flat(part);  // the trapezoid sides are planar

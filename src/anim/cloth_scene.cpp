@@ -84,4 +84,20 @@ std::shared_ptr<const ClothModel> build_scene_cloth(const ObjectDesc& object,
     return model;
 }
 
+std::unique_ptr<ClothSimulation> scene_cloth_simulation(const ObjectDesc& object,
+                                                        const OutputDesc& output,
+                                                        std::shared_ptr<const ClothModel> model) {
+    const int first = output.frames.front();
+    const double fps = output.fps;
+    auto wind_at = [&object, first, fps](int frame) {
+        return cloth_wind(object, frame, first, fps);
+    };
+    ClothSimulation::ParamsAt params_at;
+    if (cloth_values_keyed(object))
+        params_at = [&object, first, fps](int frame) {
+            return cloth_params(object, fps, first, frame);
+        };
+    return std::make_unique<ClothSimulation>(std::move(model), wind_at, params_at);
+}
+
 }  // namespace facet

@@ -30,4 +30,10 @@ WindState cloth_wind(const ObjectDesc& object, int frame, int first_frame, doubl
 std::shared_ptr<const ClothModel> build_scene_cloth(const ObjectDesc& object,
                                                     const OutputDesc& output);
 
+// The simulation of a cloth object with its keyed wind and, when any are
+// keyed, its keyed values; `object` must outlive it.
+std::unique_ptr<ClothSimulation> scene_cloth_simulation(const ObjectDesc& object,
+                                                        const OutputDesc& output,
+                                                        std::shared_ptr<const ClothModel> model);
+
 }  // namespace facet

@@ -8,18 +8,8 @@
 namespace facet {
 
 PoseStage::PoseStage(const SceneDesc& scene, const World& world) : scene_(scene), world_(world) {
-    const int first = scene.output.frames.front();
-    const double fps = scene.output.fps;
-    for (const ClothObject& c : world.cloths) {
-        const ObjectDesc& obj = scene.objects[c.object];
-        auto wind_at = [&obj, first, fps](int frame) { return cloth_wind(obj, frame, first, fps); };
-        ClothSimulation::ParamsAt params_at;
-        if (cloth_values_keyed(obj))
-            params_at = [&obj, first, fps](int frame) {
-                return cloth_params(obj, fps, first, frame);
-            };
-        cloths_.push_back(std::make_unique<ClothSimulation>(c.model, wind_at, params_at));
-    }
+    for (const ClothObject& c : world.cloths)
+        cloths_.push_back(scene_cloth_simulation(scene.objects[c.object], scene.output, c.model));
 }
 
 void PoseStage::write_part(uint32_t draw, std::span<const glm::vec3> positions,
