@@ -4,8 +4,9 @@
 # with nothing to do takes about a second.
 #
 #   scripts/setup.sh            build dependencies, then build
-#   scripts/setup.sh --tests    also the test data (assimp-testmodels) and
-#                               scikit-image (checks facet's SSIM)
+#   scripts/setup.sh --tests    also the test data (assimp-testmodels),
+#                               scikit-image (checks facet's SSIM) and
+#                               chromium (opens compare's HTML report headless)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
 #   scripts/setup.sh --sanitize also clang and its sanitizer and libFuzzer
 #                               runtimes, and a second build by clang with
@@ -24,7 +25,7 @@ packages=(g++ cmake make pkg-config
           libdeflate-dev libssl-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) packages+=(assimp-testmodels python3-skimage) ;;
+        --tests) packages+=(assimp-testmodels python3-skimage chromium) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;

@@ -12,7 +12,9 @@
 #include <CLI/CLI.hpp>
 
 #include "assets/mesh.hpp"
+#include "cli/compare_command.hpp"
 #include "cli/progress.hpp"
+#include "compare/thresholds.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
 #include "output/atomic_file.hpp"
@@ -52,6 +54,7 @@ struct RenderArgs {
     std::vector<std::string> defines;
     bool quiet = false;
     bool allow_asset_paths_outside = false;
+    CompareArgs comparison;  // render --reference DIR
 };
 
 SourceLocation command_line(const std::string& what) {
@@ -130,6 +133,13 @@ int render_command(const RenderArgs& args) {
     sigaction(SIGTERM, &action, nullptr);
     SceneDesc scene = load_scene(args.scene, scene_options(args));
     std::vector<int> frames = selected_frames(args);
+    const bool compare = !args.comparison.ref.empty();
+    if (!compare && !args.comparison.update_reference.empty())
+        fail_input(command_line("--update-reference"), "",
+                   "give the reference folder with --reference DIR");
+    // Thresholds are checked before the long part, as the scene is.
+    const CompareThresholds thresholds =
+        compare ? comparison_thresholds(args.comparison) : CompareThresholds{};
     RenderOptions options;
     options.frames = frames;
     options.cameras = split_list(args.cameras);
@@ -146,6 +156,11 @@ int render_command(const RenderArgs& args) {
     if (!args.quiet)
         std::printf("wrote %zu files to %s (manifest: %s)\n", result.files_written,
                     result.output_dir.c_str(), result.manifest_path.c_str());
+    if (compare) {
+        CompareArgs comparison = args.comparison;
+        comparison.quiet = args.quiet;
+        return compare_render_output(comparison, thresholds, result.output_dir);
+    }
     return 0;
 }
 
@@ -416,6 +431,20 @@ int run_command_line(int argc, char** argv) {
     render->add_option("--out", render_args.out, "Output folder (files go to OUT/SCENE/)");
     render->add_option("--threads", render_args.threads, "Worker threads (0: one per core)")
         ->check(CLI::Range(0u, 256u));
+    render->add_option("--reference", render_args.comparison.ref,
+                       "Compare the output with this reference folder (facet compare)");
+    add_comparison_options(render, render_args.comparison);
+
+    CompareArgs compare_args;
+    CLI::App* compare = app.add_subcommand(
+        "compare", "Compare two runs' outputs (or two images) against thresholds; write a report");
+    compare->add_option("ref", compare_args.ref, "Reference output folder or image")->required();
+    compare->add_option("new", compare_args.candidate, "New output folder or image");
+    compare->add_flag(
+        "--self-test", compare_args.self_test,
+        "Judge each reference frame against the next: can the thresholds tell them apart?");
+    compare->add_flag("-q,--quiet", compare_args.quiet, "Print nothing but errors");
+    add_comparison_options(compare, compare_args);
 
     RenderArgs validate_args;
     CLI::App* validate =
@@ -465,6 +494,7 @@ int run_command_line(int argc, char** argv) {
     try {
         if (render->parsed()) return render_command(render_args);
         if (validate->parsed()) return validate_command(validate_args);
+        if (compare->parsed()) return compare_command(compare_args);
         if (info->parsed()) return info_command(mesh_path, info_allow_outside);
         if (styles->parsed()) return styles_command();
         if (bench->parsed()) return bench_command(bench_args);

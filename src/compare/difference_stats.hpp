@@ -27,6 +27,22 @@ struct DifferenceStats {
     double percent_over() const { return pixels ? 100.0 * pixels_over / pixels : 0.0; }
 };
 
+// Builds DifferenceStats one sample at a time, for judges whose
+// differences are not plain subtractions (relative, angles, ids).
+class DifferenceAccumulator {
+  public:
+    // One sample's absolute difference, at pixel (x, y), channel c.
+    void add(double difference, int x, int y, int channel);
+    // Ends a compared pixel; `over`: it counts among pixels_over.
+    void end_pixel(bool over);
+    DifferenceStats result() const;
+
+  private:
+    DifferenceStats stats_;
+    double sum_ = 0, sum_squares_ = 0;
+    uint64_t samples_ = 0;
+};
+
 // Throws std::invalid_argument when the images differ in size or channels,
 // or the mask (one value per pixel, when not empty) in size.
 DifferenceStats difference_stats(const SampleImage& a, const SampleImage& b, double threshold,

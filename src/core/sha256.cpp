@@ -1,6 +1,5 @@
 // SHA-256 through OpenSSL's libcrypto, which uses the processor's SHA
 // instructions where it has them (several times faster than portable code).
-// The only libcrypto user.
 #include "core/sha256.hpp"
 
 #include <openssl/evp.h>

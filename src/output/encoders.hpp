@@ -3,6 +3,7 @@
 // can hash it and write it atomically; and readers. The only users of
 // libdeflate (deflate), libpng (reading) and OpenEXR.
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -30,6 +31,12 @@ std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 // range.y (far) to 0, linearly, clamped; background (+inf) is 0.
 std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression,
                                       const std::vector<PngText>& text = {});
+
+// An 8-bit PNG of samples already encoded (sRGB colour, as displays show
+// them): `channels` 1 (grey), 3 (RGB) or 4 (RGBA), row by row. For
+// pictures made for people, such as comparison reports.
+std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
+                                      std::span<const uint8_t> samples, int compression);
 
 // OpenEXR scanline files, ZIP compression (16 scanlines a chunk).
 enum class ExrSample { half, float32, uint32 };

@@ -150,4 +150,18 @@ std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, 
     return png_file(depth.width, depth.height, 16, kColorGrey, scanlines, text, compression);
 }
 
+std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
+                                      std::span<const uint8_t> samples, int compression) {
+    const size_t bpp = static_cast<size_t>(channels);
+    const size_t row_bytes = static_cast<size_t>(width) * bpp;
+    std::vector<uint8_t> scanlines((row_bytes + 1) * static_cast<size_t>(height));
+    for (int y = 0; y < height; ++y) {
+        uint8_t* row = &scanlines[(row_bytes + 1) * static_cast<size_t>(y) + 1];
+        std::copy_n(samples.data() + row_bytes * static_cast<size_t>(y), row_bytes, row);
+        filter_sub(row, row_bytes, bpp);
+    }
+    const uint8_t type = channels == 4 ? kColorRgba : channels == 3 ? kColorRgb : kColorGrey;
+    return png_file(width, height, 8, type, scanlines, {}, compression);
+}
+
 }  // namespace facet
