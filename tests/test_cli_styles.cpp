@@ -226,8 +226,9 @@ TEST_CASE("facet sheet errors exit with code 2 and write nothing", "[cli][style]
         {"vary with an unknown key", "--vary style.cells=2,3", "did you mean 'cels'"},
         {"an unknown style", "--styles flat,nosuch", "no style preset named 'nosuch'"},
         {"neither --styles nor --vary", "", "--styles"},
-        // The message must name the option the user gave (--cell), not --size.
-        {"a bad cell size", "--styles flat --cell 64by48", "--cell 64by48"},
+        // --size, as for every command (--cell is an alias).
+        {"a bad cell size", "--styles flat --size 64by48", "--size 64by48"},
+        {"a frame outside the scene", "--styles flat -f 400", "outside the scene's frames"},
     };
     for (const Case& c : cases) {
         DYNAMIC_SECTION(c.name) {

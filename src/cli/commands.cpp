@@ -13,6 +13,7 @@
 
 #include "assets/mesh.hpp"
 #include "cli/compare_command.hpp"
+#include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
@@ -43,7 +44,7 @@ extern "C" void on_interrupt(int) {
 
 struct RenderArgs {
     std::string scene;
-    std::string frames;
+    FrameSelection frames;
     std::string size;
     std::string passes;   // e.g. "color,depth"
     std::string formats;  // e.g. "png,exr"
@@ -107,15 +108,6 @@ std::vector<std::string> split_list(const std::string& text) {
     return items;
 }
 
-std::vector<int> selected_frames(const RenderArgs& args) {
-    if (args.frames.empty()) return {};
-    try {
-        return parse_frame_ranges(args.frames);
-    } catch (const Error& e) {
-        fail_input(command_line("--frames " + args.frames), "", e.detail());
-    }
-}
-
 void print_warnings(const SceneDesc& scene, const World& world) {
     for (const Warnings* list : {&scene.warnings, &world.warnings})
         for (const Warning& w : *list)
@@ -132,7 +124,7 @@ int render_command(const RenderArgs& args) {
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
     SceneDesc scene = load_scene(args.scene, scene_options(args));
-    std::vector<int> frames = selected_frames(args);
+    std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
     if (!compare && !args.comparison.update_reference.empty())
         fail_input(command_line("--update-reference"), "",
@@ -154,7 +146,8 @@ int render_command(const RenderArgs& args) {
                                        [&](const FrameProgress& p) { progress.frame_done(p); });
     progress.finish();
     if (!args.quiet)
-        std::printf("wrote %zu files to %s (manifest: %s)\n", result.files_written,
+        std::printf("wrote %s to %s (manifest: %s)\n",
+                    count_of(result.files_written, "file", "files").c_str(),
                     result.output_dir.c_str(), result.manifest_path.c_str());
     if (compare) {
         CompareArgs comparison = args.comparison;
@@ -167,19 +160,29 @@ int render_command(const RenderArgs& args) {
 int validate_command(const RenderArgs& args) {
     SceneDesc scene = load_scene(args.scene, scene_options(args));
     RenderOptions options;
-    options.frames = selected_frames(args);
+    options.frames = resolve_frames(args.frames, scene.output);
     options.cameras = split_list(args.cameras);
     check_outputs(scene, options);
     World world = build_world(scene);
     check_render_memory(scene, world, std::max(1u, std::thread::hardware_concurrency()));
     if (!args.quiet) {
         print_warnings(scene, world);
-        std::printf(
-            "%s: ok: %zu objects, %zu triangles, %zu lights, style '%s' (%s), %dx%d, frames %s "
-            "(%zu)\n",
-            scene.path.c_str(), scene.objects.size(), world.triangle_count(), scene.lights.size(),
-            scene.style.name.c_str(), shading_model_name(scene.style.shading), scene.output.width,
-            scene.output.height, scene.output.frames_text.c_str(), scene.output.frames.size());
+        // The frames a render with these options would render.
+        const std::vector<int>& frames =
+            options.frames.empty() ? scene.output.frames : options.frames;
+        const std::string asked =
+            options.frames.empty()
+                ? scene.output.frames_text
+                : std::to_string(frames.front()) +
+                      (frames.size() > 1 ? ".." + std::to_string(frames.back()) : "") +
+                      " of the scene's " + scene.output.frames_text;
+        std::printf("%s: ok: %s, %s, %s, style '%s' (%s), %dx%d, frames %s (%s)\n",
+                    scene.path.c_str(), count_of(scene.objects.size(), "object", "objects").c_str(),
+                    count_of(world.triangle_count(), "triangle", "triangles").c_str(),
+                    count_of(scene.lights.size(), "light", "lights").c_str(),
+                    scene.style.name.c_str(), shading_model_name(scene.style.shading),
+                    scene.output.width, scene.output.height, asked.c_str(),
+                    count_of(frames.size(), "frame", "frames").c_str());
     }
     return 0;
 }
@@ -245,14 +248,15 @@ int styles_command() {
 
 struct SheetArgs {
     std::string scene;
-    std::string styles;  // comma-separated, or "all"
-    std::string vary;    // key=v1,v2,...
-    int frame = 0;
-    std::string cell = "320x240";
+    std::string styles;            // comma-separated, or "all"
+    std::string vary;              // key=v1,v2,...
+    FrameSelection frames;         // one frame
+    std::string size = "320x240";  // of a cell
     int columns = 0;
     std::string output;
     unsigned threads = 0;
     std::vector<std::string> defines;
+    bool quiet = false;
 };
 
 int sheet_command(const SheetArgs& args) {
@@ -260,8 +264,23 @@ int sheet_command(const SheetArgs& args) {
     request.scene = args.scene;
     request.options.style_dirs = default_style_dirs();
     for (const auto& d : args.defines) request.options.overrides.push_back(parse_define(d));
-    std::tie(request.cell_width, request.cell_height) = parse_size(args.cell, "--cell");
-    request.frame = args.frame;
+    std::tie(request.cell_width, request.cell_height) = parse_size(args.size, "--size");
+    std::string output = args.output;
+    if (output.empty())
+        output = (std::filesystem::path("out") /
+                  (std::filesystem::path(args.scene).stem().string() + "-sheet.png"))
+                     .string();
+    // The file is written in the format its name says; the sheet writes PNG only.
+    std::string extension = std::filesystem::path(output).extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension != ".png")
+        fail_input(command_line("-o " + output), "",
+                   "a contact sheet is written as PNG; name the file *.png");
+    const std::vector<int> frames =
+        resolve_frames(args.frames, load_scene(args.scene, request.options).output);
+    if (frames.size() > 1)
+        fail_input(command_line("--frames"), "", "a contact sheet shows one frame; give -f N");
+    request.frame = frames.empty() ? 0 : frames.front();
     request.columns = args.columns;
     request.threads = args.threads;
 
@@ -302,15 +321,12 @@ int sheet_command(const SheetArgs& args) {
         }
 
     const ColorImage sheet = render_contact_sheet(request);
-    std::string output = args.output;
-    if (output.empty())
-        output = (std::filesystem::path("out") /
-                  (std::filesystem::path(args.scene).stem().string() + "-sheet.png"))
-                     .string();
     const auto parent = std::filesystem::path(output).parent_path();
     if (!parent.empty()) make_directories(parent.string());
     write_file_atomically(output, encode_png_color(sheet, 6));
-    std::printf("wrote %s (%zu cells)\n", output.c_str(), request.cells.size());
+    if (!args.quiet)
+        std::printf("wrote %s (%s)\n", output.c_str(),
+                    count_of(request.cells.size(), "cell", "cells").c_str());
     return 0;
 }
 
@@ -322,16 +338,18 @@ struct BenchArgs {
 
 int bench_command(const BenchArgs& args) {
     SceneDesc scene = load_scene(args.scene.scene, scene_options(args.scene));
-    std::vector<int> frames = selected_frames(args.scene);
+    std::vector<int> frames = resolve_frames(args.scene.frames, scene.output);
     if (frames.empty()) frames = scene.output.frames;
     std::vector<unsigned> threads;
     for (const std::string& item : split_list(args.threads)) {
         char* end = nullptr;
         const long n = std::strtol(item.c_str(), &end, 10);
-        if (end != item.c_str() + item.size() || n < 1 || n > 256)
+        if (end != item.c_str() + item.size() || n < 0 || n > 256)
             fail_input(command_line("--threads " + args.threads), "",
-                       "expected thread counts from 1 to 256, e.g. 1,2,4");
-        threads.push_back(static_cast<unsigned>(n));
+                       "expected thread counts from 0 (one per core) to 256, e.g. 1,2,4");
+        // 0 means one per core, as everywhere else.
+        threads.push_back(n == 0 ? std::max(1u, std::thread::hardware_concurrency())
+                                 : static_cast<unsigned>(n));
     }
     if (threads.empty())
         fail_input(command_line("--threads " + args.threads), "", "give at least one thread count");
@@ -352,15 +370,6 @@ int bench_command(const BenchArgs& args) {
     return 0;
 }
 
-// -D, the same wherever a command takes a scene. One value per -D: a vector
-// option would otherwise also swallow the words after it, so
-// `render -D camera.fov=30 scene.yaml` lost its scene.
-void add_define_option(CLI::App* cmd, std::vector<std::string>& defines) {
-    cmd->add_option("-D,--define", defines, "Override a scene value: key.path=value (repeatable)")
-        ->take_all()
-        ->allow_extra_args(false);
-}
-
 // Paths named inside meshes (mtllib, map_Kd, glTF URIs) stay inside the
 // mesh's folder unless this is given (core/input_file.hpp).
 void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
@@ -375,10 +384,10 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("--formats", args.formats, "File formats: png, exr or png,exr");
     cmd->add_option("--style", args.style, "Style preset name or file");
     add_define_option(cmd, args.defines);
-    cmd->add_option("--frames", args.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
+    add_frame_options(cmd, args.frames);
     cmd->add_option("--camera", args.cameras,
                     "Camera(s) to render by name, comma-separated, or 'all'");
-    cmd->add_flag("-q,--quiet", args.quiet, "Print nothing but errors");
+    add_quiet_flag(cmd, args.quiet);
     add_asset_paths_flag(cmd, args.allow_asset_paths_outside);
 }
 
@@ -420,6 +429,37 @@ Override parse_define(const std::string& text) {
     return {text.substr(0, eq), text.substr(eq + 1), "command line -D " + text};
 }
 
+namespace {
+
+// Prints an error as every command does and returns its exit code.
+int report_error(const std::exception& error) {
+    std::fprintf(stderr, "facet: error: %s\n", error.what());
+    if (const auto* e = dynamic_cast<const Error*>(&error)) return static_cast<int>(e->code());
+    return static_cast<int>(ExitCode::runtime_failure);
+}
+
+// `facet help [COMMAND]`: the same text as --help.
+int help_command(const CLI::App& app, const std::string& topic) {
+    if (topic.empty()) {
+        // app.help() would describe the parsed subcommand (help) instead.
+        std::printf(
+            "%s",
+            app.get_formatter()->make_help(&app, "facet", CLI::AppFormatMode::Normal).c_str());
+        return 0;
+    }
+    for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+        if (sub->get_name() == topic) {
+            std::printf("%s", sub->help().c_str());
+            return 0;
+        }
+    char name[] = "facet";
+    char* argv[] = {name, const_cast<char*>(topic.c_str())};
+    check_subcommand_name(app, 2, argv);  // throws with a did-you-mean
+    return 0;
+}
+
+}  // namespace
+
 int run_command_line(int argc, char** argv) {
     CLI::App app{"facet: scene-file driven offline renderer"};
     app.require_subcommand(1);
@@ -428,12 +468,11 @@ int run_command_line(int argc, char** argv) {
     RenderArgs render_args;
     CLI::App* render = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
     add_scene_options(render, render_args);
-    render->add_option("--out", render_args.out, "Output folder (files go to OUT/SCENE/)");
-    render->add_option("--threads", render_args.threads, "Worker threads (0: one per core)")
-        ->check(CLI::Range(0u, 256u));
+    add_output_option(render, render_args.out, "Output folder (files go to OUTPUT/SCENE/)");
+    add_threads_option(render, render_args.threads);
     render->add_option("--reference", render_args.comparison.ref,
                        "Compare the output with this reference folder (facet compare)");
-    add_comparison_options(render, render_args.comparison);
+    add_comparison_options(render, render_args.comparison, false);
 
     CompareArgs compare_args;
     CLI::App* compare = app.add_subcommand(
@@ -443,8 +482,8 @@ int run_command_line(int argc, char** argv) {
     compare->add_flag(
         "--self-test", compare_args.self_test,
         "Judge each reference frame against the next: can the thresholds tell them apart?");
-    compare->add_flag("-q,--quiet", compare_args.quiet, "Print nothing but errors");
-    add_comparison_options(compare, compare_args);
+    add_quiet_flag(compare, compare_args.quiet);
+    add_comparison_options(compare, compare_args, true);
 
     RenderArgs validate_args;
     CLI::App* validate =
@@ -460,22 +499,22 @@ int run_command_line(int argc, char** argv) {
     sheet->add_option("--styles", sheet_args.styles, "Presets, comma-separated, or 'all'");
     sheet->add_option("--vary", sheet_args.vary,
                       "One value per cell: key.path=v1,v2,... (e.g. style.cels=2,3,4,6)");
-    sheet->add_option("--frame", sheet_args.frame, "Frame to render (default: the scene's first)");
-    sheet->add_option("--cell", sheet_args.cell, "Cell size WIDTHxHEIGHT (default 320x240)");
+    add_frame_options(sheet, sheet_args.frames);
+    sheet->add_option("--size,--cell", sheet_args.size, "Cell size WIDTHxHEIGHT (default 320x240)");
     sheet->add_option("--columns", sheet_args.columns, "Cells per row (default: about square)")
         ->check(CLI::Range(0, 64));
-    sheet->add_option("-o,--output", sheet_args.output,
-                      "PNG to write (default out/SCENE-sheet.png)");
-    sheet->add_option("--threads", sheet_args.threads, "Worker threads (0: one per core)")
-        ->check(CLI::Range(0u, 256u));
+    add_output_option(sheet, sheet_args.output, "PNG to write (default out/SCENE-sheet.png)");
+    add_threads_option(sheet, sheet_args.threads);
     add_define_option(sheet, sheet_args.defines);
+    add_quiet_flag(sheet, sheet_args.quiet);
 
     BenchArgs bench_args;
     CLI::App* bench = app.add_subcommand(
         "bench", "Thread study: render a scene's frames at several thread counts; table and plot");
     add_scene_options(bench, bench_args.scene);
-    bench->add_option("--threads", bench_args.threads, "Thread counts, e.g. 1,2,4 (default 1,2)");
-    bench->add_option("-o,--output", bench_args.output,
+    bench->add_option("--threads", bench_args.threads,
+                      "Thread counts, e.g. 1,2,4 (0: one per core; default 1,2)");
+    add_output_option(bench, bench_args.output,
                       "Folder for SCENE-threads.md and .png (default out/bench)");
 
     std::string mesh_path;
@@ -485,29 +524,37 @@ int run_command_line(int argc, char** argv) {
     info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
     add_asset_paths_flag(info, info_allow_outside);
 
+    std::string help_topic;
+    CLI::App* help = app.add_subcommand("help", "Show the help of facet or of one command");
+    help->add_option("command", help_topic, "Command to describe");
+
+    // Unknown words are reported by facet with a did-you-mean, not by CLI11.
+    for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+        sub->allow_extras();
     try {
+        check_subcommand_name(app, argc, argv);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);
         return code == 0 ? 0 : static_cast<int>(ExitCode::invalid_input);
+    } catch (const Error& e) {
+        return report_error(e);
     }
     try {
+        for (CLI::App* sub : app.get_subcommands()) reject_unknown_arguments(sub);
         if (render->parsed()) return render_command(render_args);
-        if (validate->parsed()) return validate_command(validate_args);
         if (compare->parsed()) return compare_command(compare_args);
+        if (validate->parsed()) return validate_command(validate_args);
         if (info->parsed()) return info_command(mesh_path, info_allow_outside);
         if (styles->parsed()) return styles_command();
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
-    } catch (const Error& e) {
-        std::fprintf(stderr, "facet: error: %s\n", e.what());
-        return static_cast<int>(e.code());
+        if (help->parsed()) return help_command(app, help_topic);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "facet: error: out of memory\n");
         return static_cast<int>(ExitCode::runtime_failure);
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "facet: error: %s\n", e.what());
-        return static_cast<int>(ExitCode::runtime_failure);
+        return report_error(e);
     }
     return static_cast<int>(ExitCode::invalid_input);
 }

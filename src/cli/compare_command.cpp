@@ -150,7 +150,7 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds)
 
 }  // namespace
 
-void add_comparison_options(CLI::App* cmd, CompareArgs& args) {
+void add_comparison_options(CLI::App* cmd, CompareArgs& args, bool report_is_output) {
     cmd->add_option("--thresholds", args.thresholds_file, "Thresholds file (YAML)");
     cmd->add_option("-t,--threshold", args.thresholds,
                     "Override one threshold: [camera.]kind.key=value, e.g. color.hard_fail=0.1")
@@ -163,7 +163,9 @@ void add_comparison_options(CLI::App* cmd, CompareArgs& args) {
                     "Leave out the non-black pixels of a PNG of the images' size")
         ->take_all()
         ->allow_extra_args(false);
-    cmd->add_option("--report", args.report_dir,
+    // In `compare` the report is the output, so it is also -o/--output;
+    // in `render` that name is the render's.
+    cmd->add_option(report_is_output ? "-o,--output,--out,--report" : "--report", args.report_dir,
                     "Report folder (default: compare/ beside NEW's manifest)");
     cmd->add_flag("--no-report", args.no_report, "Write no report folder");
     cmd->add_option("--update-reference", args.update_reference,

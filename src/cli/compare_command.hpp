@@ -25,7 +25,7 @@ struct CompareArgs {
 
 // The options `compare` and `render --reference` share: thresholds,
 // masks, report folder, update mode.
-void add_comparison_options(CLI::App* command, CompareArgs& args);
+void add_comparison_options(CLI::App* command, CompareArgs& args, bool report_is_output);
 
 // `facet compare REF NEW` or `facet compare --self-test REFDIR`.
 int compare_command(const CompareArgs& args);

@@ -50,12 +50,12 @@ const std::vector<LightKeys> kLightKeys = {
 
 const LightKeys& light_type(const Field& f) {
     const std::string type = f.text();
-    std::string list;
+    std::vector<std::string_view> names;
     for (const LightKeys& entry : kLightKeys) {
         if (type == entry.type) return entry;
-        list += std::string(list.empty() ? "" : ", ") + entry.type;
+        names.push_back(entry.type);
     }
-    f.fail("must be one of: " + list + "; got '" + type + "'");
+    f.fail_not_one_of(type, names);
 }
 
 std::string format_number(double value) {

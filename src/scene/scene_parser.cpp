@@ -302,12 +302,12 @@ constexpr int kMaxSubdivisions = 7;  // 327680 triangles
 
 const PrimitiveKeys& primitive_type(const Field& f) {
     std::string type = f.text();
-    std::string list;
+    std::vector<std::string_view> names;
     for (const auto& entry : kPrimitiveKeys) {
         if (type == entry.type) return entry;
-        list += std::string(list.empty() ? "" : ", ") + entry.type;
+        names.push_back(entry.type);
     }
-    f.fail("must be one of: " + list + "; got '" + type + "'");
+    f.fail_not_one_of(type, names);
 }
 
 float length_value(const Field& f) {

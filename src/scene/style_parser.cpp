@@ -6,6 +6,7 @@
 #include <filesystem>
 
 #include "core/input_file.hpp"
+#include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
@@ -34,12 +35,12 @@ constexpr ShadingName kShadingNames[] = {
 ShadingModel parse_shading(const Field& f) {
     std::string name = f.text();
     if (name == "blinn-phong") return ShadingModel::blinn_phong;  // the preset's spelling
-    std::string list;
+    std::vector<std::string_view> names;
     for (const ShadingName& entry : kShadingNames) {
         if (name == entry.name) return entry.model;
-        list += std::string(list.empty() ? "" : ", ") + entry.name;
+        names.push_back(entry.name);
     }
-    f.fail("must be one of: " + list + "; got '" + name + "'");
+    f.fail_not_one_of(name, names);
 }
 
 void apply_toon(const Field& f, ToonDesc& toon) {
@@ -176,9 +177,13 @@ std::string find_style(const Field& field, const std::string& base_dir,
     for (const auto& [name, path] : presets)
         if (name == text) return path;
     std::string names;
-    for (const auto& preset : presets) names += (names.empty() ? "" : ", ") + preset.first;
-    field.fail("no style preset named '" + text +
-               "' (available: " + (names.empty() ? "none found" : names) + ")");
+    std::vector<std::string_view> known;
+    for (const auto& preset : presets) {
+        names += (names.empty() ? "" : ", ") + preset.first;
+        known.push_back(preset.first);
+    }
+    field.fail("no style preset named '" + text + "'" + did_you_mean(text, known) +
+               " (available: " + (names.empty() ? "none found" : names) + ")");
 }
 
 StyleDesc load_style_chain(const std::string& path, const StyleContext& context,

@@ -252,12 +252,16 @@ glm::vec3 Field::color3() const {
 
 std::string Field::choice(std::initializer_list<const char*> words) const {
     std::string value = text();
-    std::string list;
-    for (const char* word : words) {
+    for (const char* word : words)
         if (value == word) return value;
-        list += std::string(list.empty() ? "" : ", ") + word;
-    }
-    fail("must be one of: " + list + "; got '" + value + "'");
+    fail_not_one_of(value, std::vector<std::string_view>(words.begin(), words.end()));
+}
+
+void Field::fail_not_one_of(const std::string& value,
+                            const std::vector<std::string_view>& words) const {
+    std::string list;
+    for (std::string_view word : words) list += (list.empty() ? "" : ", ") + std::string(word);
+    fail("got '" + value + "'" + did_you_mean(value, words) + " (must be one of: " + list + ")");
 }
 
 std::vector<std::string> Field::choices(std::initializer_list<const char*> words) const {
@@ -266,6 +270,38 @@ std::vector<std::string> Field::choices(std::initializer_list<const char*> words
     for (size_t i = 0; i < size(); ++i) out.push_back((*this)[i].choice(words));
     return out;
 }
+
+namespace {
+
+// The item of a list that a -D path part names: by index ("0"), or by the
+// value of the items' `name` key ("knot"), so paths survive reordering.
+long list_item_index(const YAML::Node& list, const std::string& part, const SourceLocation& origin,
+                     const std::string& parent, const std::string& walked) {
+    char* end = nullptr;
+    const long index = std::strtol(part.c_str(), &end, 10);
+    const bool numeric = !part.empty() && end == part.c_str() + part.size();
+    if (numeric && index >= 0 && static_cast<size_t>(index) < list.size()) return index;
+    std::vector<std::string> names;
+    for (size_t i = 0; i < list.size(); ++i) {
+        const YAML::Node item = list[i];
+        if (!item.IsMap() || !item["name"] || !item["name"].IsScalar()) continue;
+        if (!numeric && item["name"].Scalar() == part) return static_cast<long>(i);
+        names.push_back(item["name"].Scalar());
+    }
+    std::string message = "'" + parent + "' is a list of " + std::to_string(list.size()) +
+                          " items; use an index from 0 to " + std::to_string(list.size() - 1);
+    if (!names.empty()) {
+        std::vector<std::string_view> views(names.begin(), names.end());
+        std::string list_text;
+        for (const std::string& n : names) list_text += (list_text.empty() ? "" : ", ") + n;
+        message = "'" + parent + "' has no item " + (numeric ? part : "named '" + part + "'") +
+                  (numeric ? "" : did_you_mean(part, views)) + " (use an index from 0 to " +
+                  std::to_string(list.size() - 1) + " or a name: " + list_text + ")";
+    }
+    fail_input(origin, walked, message);
+}
+
+}  // namespace
 
 void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) {
     for (const Override& ov : overrides) {
@@ -281,7 +317,22 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
             else
                 value = YAML::Load(ov.value);
         } catch (const YAML::Exception& e) {
-            fail_input(origin, ov.path, "value is not valid YAML: " + e.msg);
+            fail_input(origin, ov.path,
+                       "value is not valid YAML: " + e.msg +
+                           " (a list or mapping must reach facet as one word: quote the whole "
+                           "-D, e.g. -D 'objects.0.material={color: [1, 0, 0]}', since a shell "
+                           "splits {a,b} into words)");
+        }
+        {
+            // "a: b" is a YAML mapping; a user who typed it almost always meant text.
+            const size_t first = ov.value.find_first_not_of(' ');
+            if (value.IsMap() && (first == std::string::npos || ov.value[first] != '{'))
+                fail_input(origin, ov.path,
+                           "YAML reads '" + ov.value +
+                               "' as a mapping (a colon followed by a space); for text, quote "
+                               "it: -D '" +
+                               ov.path + "=\"" + ov.value +
+                               "\"'; for a mapping, write it in braces: {key: value}");
         }
         if (!doc.root || doc.root.IsNull()) doc.root = YAML::Node(YAML::NodeType::Map);
         YAML::Node current = doc.root;
@@ -296,17 +347,10 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
             if (part.empty()) fail_input(origin, ov.path, "the key path has an empty part");
             bool last = dot == std::string::npos;
             if (current.IsSequence()) {
-                char* end = nullptr;
-                long index = std::strtol(part.c_str(), &end, 10);
                 if (current.size() == 0)
                     fail_input(origin, walked,
                                "'" + parent + "' is an empty list; there is no item " + part);
-                if (end != part.c_str() + part.size() || index < 0 ||
-                    static_cast<size_t>(index) >= current.size())
-                    fail_input(origin, walked,
-                               "'" + walked + "' is a list of " + std::to_string(current.size()) +
-                                   " items; use an index from 0 to " +
-                                   std::to_string(current.size() - 1));
+                const long index = list_item_index(current, part, origin, parent, walked);
                 if (last) {
                     current[static_cast<size_t>(index)] = value;
                     break;

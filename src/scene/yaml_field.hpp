@@ -6,6 +6,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <yaml-cpp/yaml.h>
@@ -68,6 +69,10 @@ class Field {
     glm::vec4 color4() const;          // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
     // One of the given words.
     std::string choice(std::initializer_list<const char*> words) const;
+    // "got 'x'; did you mean 'y'? (one of: ...)": the one message for a
+    // word outside its set.
+    [[noreturn]] void fail_not_one_of(const std::string& value,
+                                      const std::vector<std::string_view>& words) const;
     // A list of words from the given set.
     std::vector<std::string> choices(std::initializer_list<const char*> words) const;
 

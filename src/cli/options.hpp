@@ -1,0 +1,55 @@
+#pragma once
+// The one vocabulary of the command line (README, "Command-line options"):
+// options that mean the same in every subcommand are declared here once,
+// and so are the checks that follow parsing (frames against the scene's
+// range, unknown words with a did-you-mean).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "scene/scene_desc.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace facet {
+
+// --frames LIST, -f N, -s/--start N, -e/--end N, --allow-outside.
+struct FrameSelection {
+    std::string frames;
+    std::optional<int> single, start, end;
+    bool allow_outside = false;
+};
+void add_frame_options(CLI::App* command, FrameSelection& selection);
+
+// The frames asked for, in order; empty when none was asked for (the
+// scene's own). Checks that only one way was used, and that every frame
+// lies within the scene's range unless allow_outside (exit code 2, naming
+// the option and the range).
+std::vector<int> resolve_frames(const FrameSelection& selection, const OutputDesc& output);
+
+// -o/--output PATH (alias --out).
+void add_output_option(CLI::App* command, std::string& output, const std::string& description);
+
+// --threads N, 0 = one per core.
+void add_threads_option(CLI::App* command, unsigned& threads);
+
+// -q/--quiet.
+void add_quiet_flag(CLI::App* command, bool& quiet);
+
+// -D key.path=value, repeatable.
+void add_define_option(CLI::App* command, std::vector<std::string>& defines);
+
+// After parsing with extras allowed: the first word the command did not
+// take becomes an error with a did-you-mean among its options (exit 2).
+void reject_unknown_arguments(CLI::App* command);
+
+// argv[1] when it names no subcommand: an error with a did-you-mean and the
+// list of subcommands. Does nothing for options (-h, --version).
+void check_subcommand_name(const CLI::App& app, int argc, char** argv);
+
+// "1 file", "3 files".
+std::string count_of(size_t n, const char* singular, const char* plural);
+
+}  // namespace facet
