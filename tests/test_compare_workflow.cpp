@@ -102,7 +102,9 @@ TEST_CASE("compare workflow: render --reference compares, and creates a first re
     CHECK(same.exit_code == 0);
     CHECK(same.output.find("2 identical") != std::string::npos);
     // A changed camera fails, with the report beside NEW's manifest.
-    const RunResult changed = run_facet(render + " -D camera.fov=46");
+    // (Other settings into the same folder need --overwrite: the manifest
+    // must not mix runs.)
+    const RunResult changed = run_facet(render + " -D camera.fov=46 --overwrite");
     INFO(changed.output);
     CHECK(changed.exit_code == 3);
     CHECK(std::filesystem::exists(dir.file("out/shapes/compare/report.json")));

@@ -128,8 +128,10 @@ TEST_CASE("the manifest file has the documented JSON layout", "[manifest]") {
     // Entries are written in frame order whatever order they came in.
     CHECK(j["frames"][0].at("frame") == 1);
     CHECK(j["frames"][1].at("frame") == 2);
-    CHECK(j["frames"][0].at("render_ms") == 11.0);
-    CHECK(j["frames"][0].at("encode_ms") == 2.0);
+    CHECK(j.at("manifest_version") == 2);
+    CHECK(j["timings"]["frames"][0].at("render_ms") == 11.0);
+    CHECK(j["timings"]["frames"][0].at("encode_ms") == 2.0);
+    CHECK(j["timings"].at("threads") == 2);
     REQUIRE(j.at("files").size() == 2);
     for (const auto& f : j["files"]) {
         CHECK(f.at("frame").is_number_integer());

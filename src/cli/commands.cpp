@@ -18,6 +18,7 @@
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/version.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "raster/raster_limits.hpp"
@@ -55,7 +56,9 @@ struct RenderArgs {
     std::vector<std::string> defines;
     bool quiet = false;
     bool allow_asset_paths_outside = false;
-    CompareArgs comparison;  // render --reference DIR
+    bool overwrite = false;
+    std::vector<std::string> command_line;  // as typed, for the manifest
+    CompareArgs comparison;                 // render --reference DIR
 };
 
 SourceLocation command_line(const std::string& what) {
@@ -123,7 +126,8 @@ int render_command(const RenderArgs& args) {
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
-    SceneDesc scene = load_scene(args.scene, scene_options(args));
+    const SceneOptions scene_opts = scene_options(args);
+    SceneDesc scene = load_scene(args.scene, scene_opts);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
     if (!compare && !args.comparison.update_reference.empty())
@@ -135,12 +139,14 @@ int render_command(const RenderArgs& args) {
     RenderOptions options;
     options.frames = frames;
     options.cameras = split_list(args.cameras);
-    check_outputs(scene, options);  // before the slow part: loading meshes
-    World world = build_world(scene);
-    if (!args.quiet) print_warnings(scene, world);
     options.threads = args.threads;
     options.out_dir = args.out;
     options.cancel = &g_interrupted;
+    options.overwrite = args.overwrite;
+    options.provenance = {args.command_line, scene_opts.overrides};
+    check_outputs(scene, options);  // before the slow part: loading meshes
+    World world = build_world(scene);
+    if (!args.quiet) print_warnings(scene, world);
     ProgressReporter progress(stderr, args.quiet);
     RenderResult result = render_scene(scene, world, options,
                                        [&](const FrameProgress& p) { progress.frame_done(p); });
@@ -463,13 +469,15 @@ int help_command(const CLI::App& app, const std::string& topic) {
 int run_command_line(int argc, char** argv) {
     CLI::App app{"facet: scene-file driven offline renderer"};
     app.require_subcommand(1);
-    app.set_version_flag("--version", "facet 0.1.0");
+    app.set_version_flag("--version", version_line());
 
     RenderArgs render_args;
     CLI::App* render = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
     add_scene_options(render, render_args);
     add_output_option(render, render_args.out, "Output folder (files go to OUTPUT/SCENE/)");
     add_threads_option(render, render_args.threads);
+    render->add_flag("--overwrite", render_args.overwrite,
+                     "Start a new manifest when the output folder holds one of other settings");
     render->add_option("--reference", render_args.comparison.ref,
                        "Compare the output with this reference folder (facet compare)");
     add_comparison_options(render, render_args.comparison, false);
@@ -531,6 +539,7 @@ int run_command_line(int argc, char** argv) {
     // Unknown words are reported by facet with a did-you-mean, not by CLI11.
     for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
         sub->allow_extras();
+    render_args.command_line.assign(argv, argv + argc);
     try {
         check_subcommand_name(app, argc, argv);
         app.parse(argc, argv);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <set>
 #include <tuple>
 
@@ -12,6 +13,26 @@
 #include "output/atomic_file.hpp"
 
 namespace facet {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+// Version 1 kept timings in each frame entry and had no provenance;
+// version 2 moved timings to their own block so identical runs list
+// identical frames and files.
+constexpr int kManifestVersion = 2;
+
+void read_timings(const nlohmann::json& list, Manifest& m) {
+    std::map<std::pair<std::string, int>, std::pair<double, double>> timings;
+    for (const auto& t : list)
+        timings[{t.value("camera", ""), t.at("frame").get<int>()}] = {t.value("render_ms", 0.0),
+                                                                      t.value("encode_ms", 0.0)};
+    for (ManifestFrame& f : m.frames)
+        if (auto it = timings.find({f.camera, f.frame}); it != timings.end())
+            std::tie(f.render_ms, f.encode_ms) = it->second;
+}
+
+}  // namespace
 
 Manifest read_manifest(const std::string& path) {
     std::ifstream in(path);
@@ -19,31 +40,67 @@ Manifest read_manifest(const std::string& path) {
     try {
         nlohmann::json j = nlohmann::json::parse(in);
         Manifest m;
+        if (j.contains("facet")) {
+            m.facet_version = j["facet"].value("version", "");
+            m.facet_commit = j["facet"].value("commit", "");
+            m.facet_build = j["facet"].value("build", "");
+        }
         m.scene = j.at("scene").get<std::string>();
         m.style = j.at("style").get<std::string>();
         m.width = j.at("size").at(0).get<int>();
         m.height = j.at("size").at(1).get<int>();
-        m.threads = j.value("threads", 0);
+        m.output_template = j.value("output_template", "");
+        for (const auto& o : j.value("overrides", nlohmann::json::array()))
+            m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
+                                   o.value("origin", "")});
         for (const auto& f : j.at("frames"))
             m.frames.push_back({f.at("frame").get<int>(), f.value("camera", ""),
-                                f.at("render_ms").get<double>(), f.at("encode_ms").get<double>()});
+                                f.value("render_ms", 0.0), f.value("encode_ms", 0.0)});
         for (const auto& f : j.at("files"))
             m.files.push_back({f.at("frame").get<int>(), f.value("camera", ""),
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
-                               f.at("path").get<std::string>(), f.at("sha256").get<std::string>()});
+                               f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
+                               f.value("style", m.style)});
+        m.threads = j.value("threads", 0);
+        if (j.contains("timings")) {
+            const auto& t = j["timings"];
+            m.threads = t.value("threads", 0);
+            m.command_line = t.value("command_line", std::vector<std::string>{});
+            read_timings(t.at("frames"), m);
+        }
         return m;
     } catch (const nlohmann::json::exception& e) {
         throw Error(ExitCode::invalid_input, path + ": not a facet manifest: " + e.what());
     }
 }
 
-void write_manifest(const std::string& path, Manifest manifest) {
+std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
+    auto differ = [](const std::string& what, const std::string& there, const std::string& now) {
+        return what + ": '" + there + "' there, '" + now + "' now";
+    };
+    if (a.scene != b.scene) return differ("scene", a.scene, b.scene);
+    if (a.style != b.style) return differ("style", a.style, b.style);
+    if (a.width != b.width || a.height != b.height)
+        return differ("size", std::to_string(a.width) + "x" + std::to_string(a.height),
+                      std::to_string(b.width) + "x" + std::to_string(b.height));
+    if (a.output_template != b.output_template)
+        return differ("output template", a.output_template, b.output_template);
+    auto overrides = [](const Manifest& m) {
+        std::string text;
+        for (const ManifestOverride& o : m.overrides)
+            text += (text.empty() ? "" : " ") + o.key + "=" + o.value;
+        return text.empty() ? std::string("none") : text;
+    };
+    if (overrides(a) != overrides(b)) return differ("overrides", overrides(a), overrides(b));
+    return "";
+}
+
+void write_manifest(const std::string& path, Manifest manifest, bool merge) {
     std::error_code ec;
-    if (std::filesystem::exists(path, ec)) {
+    if (merge && std::filesystem::exists(path, ec)) {
         try {
             Manifest old = read_manifest(path);
-            if (old.scene == manifest.scene && old.width == manifest.width &&
-                old.height == manifest.height) {
+            if (manifest_settings_difference(old, manifest).empty()) {
                 std::set<std::pair<std::string, int>> rendered;
                 for (const auto& f : manifest.frames) rendered.insert({f.camera, f.frame});
                 for (const auto& f : old.frames)
@@ -65,25 +122,40 @@ void write_manifest(const std::string& path, Manifest manifest) {
                                 std::tie(b.frame, b.camera, b.pass, b.format);
                      });
 
-    nlohmann::ordered_json j;
+    Json j;
+    j["manifest_version"] = kManifestVersion;
+    j["facet"] = {{"version", manifest.facet_version},
+                  {"commit", manifest.facet_commit},
+                  {"build", manifest.facet_build}};
     j["scene"] = manifest.scene;
     j["style"] = manifest.style;
     j["size"] = {manifest.width, manifest.height};
-    j["threads"] = manifest.threads;
-    j["frames"] = nlohmann::ordered_json::array();
+    j["output_template"] = manifest.output_template;
+    j["overrides"] = Json::array();
+    for (const ManifestOverride& o : manifest.overrides)
+        j["overrides"].push_back({{"key", o.key}, {"value", o.value}, {"origin", o.origin}});
+    j["frames"] = Json::array();
     for (const auto& f : manifest.frames)
-        j["frames"].push_back({{"frame", f.frame},
-                               {"camera", f.camera},
-                               {"render_ms", f.render_ms},
-                               {"encode_ms", f.encode_ms}});
-    j["files"] = nlohmann::ordered_json::array();
+        j["frames"].push_back({{"frame", f.frame}, {"camera", f.camera}});
+    j["files"] = Json::array();
     for (const auto& f : manifest.files)
         j["files"].push_back({{"frame", f.frame},
                               {"camera", f.camera},
                               {"pass", f.pass},
                               {"format", f.format},
+                              {"style", f.style},
                               {"path", f.path},
                               {"sha256", f.sha256}});
+    Json timings;
+    timings["threads"] = manifest.threads;
+    timings["command_line"] = manifest.command_line;
+    timings["frames"] = Json::array();
+    for (const auto& f : manifest.frames)
+        timings["frames"].push_back({{"frame", f.frame},
+                                     {"camera", f.camera},
+                                     {"render_ms", f.render_ms},
+                                     {"encode_ms", f.encode_ms}});
+    j["timings"] = timings;
     write_file_atomically(path, j.dump(2) + "\n");
 }
 

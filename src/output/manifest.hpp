@@ -20,22 +20,41 @@ struct ManifestFile {
     std::string format;  // png, exr
     std::string path;    // relative to the manifest
     std::string sha256;
+    std::string style;  // the style the file was rendered with
+};
+
+// A command-line override as the run resolved it.
+struct ManifestOverride {
+    std::string key, value, origin;
 };
 
 struct Manifest {
-    std::string scene;
+    // Provenance: the build that wrote it (core/version.hpp).
+    std::string facet_version, facet_commit, facet_build;
+    std::string scene;  // relative to the manifest's folder
     std::string style;
     int width = 0, height = 0;
-    int threads = 0;
+    std::string output_template;
+    std::vector<ManifestOverride> overrides;
     std::vector<ManifestFrame> frames;
     std::vector<ManifestFile> files;
+    // The timings block: what differs between identical runs.
+    int threads = 0;
+    std::vector<std::string> command_line;  // of the run that wrote the manifest last
 };
 
-// Writes the manifest atomically. Entries of an existing manifest for the
-// same scene and size, for (camera, frame) pairs this run did not render, are kept, so a
-// sequence rendered in pieces (e.g. on several machines in turn) ends with
-// one complete manifest.
-void write_manifest(const std::string& path, Manifest manifest);
+// What must be equal for two runs to share a manifest: scene, style, size,
+// output template and overrides. "" when they are; else the first
+// difference, e.g. "style: 'toon' there, 'wireframe' now".
+std::string manifest_settings_difference(const Manifest& existing, const Manifest& run);
+
+// Writes the manifest atomically. With `merge`, entries of an existing
+// manifest with the same settings, for (camera, frame) pairs this run did
+// not render, are kept, so a sequence rendered in pieces (e.g. on several
+// machines in turn) ends with one complete manifest. An existing manifest
+// with other settings is never merged (render refuses first, unless told
+// to overwrite).
+void write_manifest(const std::string& path, Manifest manifest, bool merge = true);
 
 Manifest read_manifest(const std::string& path);
 

@@ -59,6 +59,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     fit(out.color, scene_.output.width, scene_.output.height);
     fit(out.depth, scene_.output.width, scene_.output.height);
     out.depth_view_range = inputs.depth_view_range;
+    out.view = inputs.camera.view;
+    out.projection = inputs.camera.projection;
     const bool per_sample = plan.outlines || plan.hidden_edges;
     if (per_sample) {
         fit(sample_color_, rasterizer_.width(), rasterizer_.height());

@@ -5,6 +5,7 @@
 // to frame.
 #include <vector>
 
+#include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 
 #include "core/half.hpp"
@@ -25,6 +26,7 @@ struct FrameImages {
     HalfColorImage color;        // linear RGBA, half floats (core/half.hpp)
     DepthImage depth;            // linear view depth, +inf where nothing was hit
     glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
+    glm::mat4 view{1.0f}, projection{1.0f};  // the camera, for the files' metadata
 };
 
 class FrameRenderer {

@@ -13,10 +13,12 @@
 #include "core/error.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
+#include "core/version.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "output/output_path.hpp"
+#include "render/file_metadata.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/render_memory.hpp"
 
@@ -37,6 +39,7 @@ constexpr size_t kMaxQueuedFrames = 2;
 // folder (relative to the output folder) that holds manifest.json.
 struct OutputLayout {
     std::string root;
+    std::string template_text;
     OutputTemplate names;
     std::string manifest_dir;
 };
@@ -47,6 +50,49 @@ struct EncodeJob {
     double render_ms;
     FrameImages images;
 };
+
+// The manifest's header for this run: everything but the frames and files.
+Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
+                         const RenderOptions& options, const std::string& output_dir) {
+    Manifest m;
+    const BuildInfo& build = build_info();
+    m.facet_version = build.version;
+    m.facet_commit = build.commit;
+    m.facet_build = build.build_type + ", " + build.simd + ", " + build.compiler;
+    // Relative to the manifest, so the record does not depend on where facet ran.
+    std::error_code ec;
+    const auto scene_path = std::filesystem::absolute(scene.path, ec);
+    const auto folder = std::filesystem::absolute(output_dir, ec);
+    m.scene = scene_path.lexically_relative(folder).generic_string();
+    if (m.scene.empty()) m.scene = scene.path;
+    m.style = scene.style.name;
+    m.width = scene.output.width;
+    m.height = scene.output.height;
+    m.output_template = layout.template_text;
+    for (const Override& o : options.provenance.overrides)
+        m.overrides.push_back({o.path, o.value, o.origin});
+    m.command_line = options.provenance.command_line;
+    return m;
+}
+
+// Refuses to add this run to a manifest made with other settings.
+void check_existing_manifest(const Manifest& header, const std::string& output_dir,
+                             bool overwrite) {
+    const std::string path = (std::filesystem::path(output_dir) / "manifest.json").string();
+    std::error_code ec;
+    if (overwrite || !std::filesystem::exists(path, ec)) return;
+    Manifest existing;
+    try {
+        existing = read_manifest(path);
+    } catch (const Error&) {
+        return;  // not a manifest facet can read: replaced
+    }
+    const std::string difference = manifest_settings_difference(existing, header);
+    if (!difference.empty())
+        throw Error(ExitCode::invalid_input,
+                    path + " was written by a run with other settings (" + difference +
+                        "); give --overwrite to start a new manifest there, or another -o");
+}
 
 // Encodes and writes finished frames on worker threads of its own, while the
 // caller renders the next frame. Each frame is encoded by one worker; the
@@ -151,18 +197,24 @@ class Encoder {
             write_file_atomically(file.string(), bytes);
             written.files.push_back({job.frame, job.camera, pass, format,
                                      path_relative_to_manifest(name, layout_.manifest_dir),
-                                     sha256_hex(bytes)});
+                                     sha256_hex(bytes), scene_.style.name});
         };
+        const FileFacts facts{scene_.name,       job.camera,      job.frame,
+                              scene_.style.name, job.images.view, job.images.projection};
+        const std::vector<PngText> png_text = png_metadata(facts);
+        const std::vector<ExrAttribute> exr_attributes = exr_metadata(facts);
         if (out.write_color && out.write_png)
-            write("color", "png", encode_png_color(job.images.color, out.png_compression));
+            write("color", "png",
+                  encode_png_color(job.images.color, out.png_compression, png_text));
         if (out.write_color && out.write_exr)
-            write("color", "exr", encode_exr_color(job.images.color));
+            write("color", "exr", encode_exr_color(job.images.color, exr_attributes));
         if (out.write_depth && out.write_png) {
             glm::vec2 range = out.depth_range.value_or(job.images.depth_view_range);
-            write("depth", "png", encode_png_depth(job.images.depth, range, out.png_compression));
+            write("depth", "png",
+                  encode_png_depth(job.images.depth, range, out.png_compression, png_text));
         }
         if (out.write_depth && out.write_exr)
-            write("depth", "exr", encode_exr_depth(job.images.depth));
+            write("depth", "exr", encode_exr_depth(job.images.depth, exr_attributes));
         written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start)});
         return written;
     }
@@ -219,6 +271,7 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
         out.path.value_or(cameras.size() > 1 ? kMultiCameraOutputTemplate : kDefaultOutputTemplate);
     OutputLayout layout;
     layout.root = root;
+    layout.template_text = text;
     std::vector<std::string> camera_names, passes, exts;
     for (size_t c : cameras) camera_names.push_back(scene.cameras[c].name);
     if (out.write_color) passes.push_back("color");
@@ -241,7 +294,12 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
 
 void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
     const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
-    plan_outputs(scene, select_cameras(scene, options.cameras), frames, options.out_dir);
+    const OutputLayout layout =
+        plan_outputs(scene, select_cameras(scene, options.cameras), frames, options.out_dir);
+    const std::string output_dir =
+        (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
+    check_existing_manifest(manifest_header(scene, layout, options, output_dir), output_dir,
+                            options.overwrite);
 }
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
@@ -251,6 +309,8 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
     RenderResult result;
     result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
+    Manifest header = manifest_header(scene, layout, options, result.output_dir);
+    check_existing_manifest(header, result.output_dir, options.overwrite);
     ThreadPool pool(options.threads);
     check_render_memory(scene, world, static_cast<unsigned>(pool.size()));
     make_directories(result.output_dir);
@@ -274,15 +334,14 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
             if (on_frame) on_frame({frames[i], rendered, total, render_ms});
         }
     }
-    Manifest manifest = encoder.finish();
-    manifest.scene = scene.path;
-    manifest.style = scene.style.name;
-    manifest.width = scene.output.width;
-    manifest.height = scene.output.height;
+    Manifest written = encoder.finish();
+    Manifest& manifest = header;
+    manifest.frames = std::move(written.frames);
+    manifest.files = std::move(written.files);
     manifest.threads = static_cast<int>(pool.size());
     result.files_written = manifest.files.size();
     result.manifest_path = (std::filesystem::path(result.output_dir) / "manifest.json").string();
-    write_manifest(result.manifest_path, manifest);
+    write_manifest(result.manifest_path, manifest, !options.overwrite);
     if (rendered < total)
         throw Error(ExitCode::runtime_failure,
                     "interrupted: " + std::to_string(rendered) + " of " + std::to_string(total) +

@@ -12,6 +12,12 @@
 
 namespace facet {
 
+// What the manifest records about how the run was asked for.
+struct RunProvenance {
+    std::vector<std::string> command_line;
+    std::vector<Override> overrides;  // as resolved, in order
+};
+
 struct RenderOptions {
     std::vector<int> frames;  // frames to render; empty means the scene's output.frames
     unsigned threads = 0;     // 0: one per core
@@ -22,6 +28,10 @@ struct RenderOptions {
     // When set (e.g. by Ctrl-C), no new frame starts; frames already rendered
     // are still written, with the manifest, and render_scene then throws.
     const std::atomic<bool>* cancel = nullptr;
+    RunProvenance provenance;
+    // An output folder whose manifest was made with other settings is
+    // refused (exit code 2) unless this is set; then a new manifest starts.
+    bool overwrite = false;
 };
 
 struct FrameProgress {
@@ -41,8 +51,10 @@ struct RenderResult {
 // Throws facet::Error (invalid_input) for an unknown name.
 std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std::string>& names);
 
-// Checks the camera choice and the output names (template syntax, two
-// images to one file) without rendering; render_scene does the same first.
+// Checks the camera choice, the output names (template syntax, two images
+// to one file) and that an existing manifest in the output folder has the
+// same settings (or options.overwrite), without rendering; render_scene
+// does the same first.
 void check_outputs(const SceneDesc& scene, const RenderOptions& options);
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
