@@ -370,7 +370,10 @@ TEST_CASE("what render prints", "[cli]") {
         std::vector<int> frames;
         for (const auto& line : lines_of(r.run.output)) {
             CHECK(line.find('\r') == std::string::npos);  // no in-place redraws
-            if (line.rfind("frame ", 0) == 0) frames.push_back(std::stoi(line.substr(6)));
+            // "[0:00:00] frame 1 (1/2, 50%) ...": elapsed time first.
+            const size_t at = line.find("] frame ");
+            if (line.rfind("[", 0) == 0 && at != std::string::npos)
+                frames.push_back(std::stoi(line.substr(at + 8)));
         }
         CHECK(frames == std::vector<int>{1, 2});
     }

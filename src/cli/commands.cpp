@@ -148,6 +148,9 @@ int render_command(const RenderArgs& args) {
     World world = build_world(scene);
     if (!args.quiet) print_warnings(scene, world);
     ProgressReporter progress(stderr, args.quiet);
+    const size_t images = (frames.empty() ? scene.output.frames.size() : frames.size()) *
+                          select_cameras(scene, options.cameras).size();
+    progress.start(images, "'" + scene.name + "' to " + args.out);
     RenderResult result = render_scene(scene, world, options,
                                        [&](const FrameProgress& p) { progress.frame_done(p); });
     progress.finish();

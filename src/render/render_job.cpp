@@ -331,7 +331,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
             const std::string& name = scene.cameras[camera].name;
             encoder.push({frames[i], name, render_ms, std::move(images)});
             ++rendered;
-            if (on_frame) on_frame({frames[i], rendered, total, render_ms});
+            if (on_frame) on_frame({frames[i], rendered, total, render_ms, name, cameras.size()});
         }
     }
     Manifest written = encoder.finish();

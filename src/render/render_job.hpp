@@ -36,9 +36,11 @@ struct RenderOptions {
 
 struct FrameProgress {
     int frame;
-    size_t done;  // frames rendered so far, this one included
+    size_t done;  // images rendered so far (frames x cameras), this one included
     size_t total;
     double render_ms;
+    std::string camera;
+    size_t cameras;  // cameras in the run
 };
 
 struct RenderResult {
