@@ -13,6 +13,7 @@
 
 #include "assets/mesh.hpp"
 #include "cli/compare_command.hpp"
+#include "cli/inspect_commands.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
 #include "compare/thresholds.hpp"
@@ -57,6 +58,8 @@ struct RenderArgs {
     bool quiet = false;
     bool allow_asset_paths_outside = false;
     bool overwrite = false;
+    bool dry_run = false;                   // render: list the files, write none
+    bool json = false;                      // validate: the report as JSON
     std::vector<std::string> command_line;  // as typed, for the manifest
     CompareArgs comparison;                 // render --reference DIR
 };
@@ -117,6 +120,15 @@ void print_warnings(const SceneDesc& scene, const World& world) {
             std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
 }
 
+int dry_run(const RenderArgs& args, const SceneDesc& scene, const RenderOptions& options) {
+    const std::vector<std::string> files = planned_files(scene, options);
+    for (const std::string& file : files) std::printf("%s\n", file.c_str());
+    if (!args.quiet)
+        std::fprintf(stderr, "dry run: %s and the manifest would be written; nothing was\n",
+                     count_of(files.size() - 1, "file", "files").c_str());
+    return 0;
+}
+
 int render_command(const RenderArgs& args) {
     // Ctrl-C finishes the frames already rendered instead of leaving files
     // half written; a second Ctrl-C is not caught and ends facet at once.
@@ -144,6 +156,7 @@ int render_command(const RenderArgs& args) {
     options.cancel = &g_interrupted;
     options.overwrite = args.overwrite;
     options.provenance = {args.command_line, scene_opts.overrides};
+    if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
     World world = build_world(scene);
     if (!args.quiet) print_warnings(scene, world);
@@ -166,91 +179,55 @@ int render_command(const RenderArgs& args) {
     return 0;
 }
 
+void print_validation(const SceneDesc& scene, const World& world, const RenderOptions& options) {
+    // The frames a render with these options would render.
+    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::string asked =
+        options.frames.empty()
+            ? scene.output.frames_text
+            : std::to_string(frames.front()) +
+                  (frames.size() > 1 ? ".." + std::to_string(frames.back()) : "") +
+                  " of the scene's " + scene.output.frames_text;
+    std::printf("%s: ok: %s, %s, %s, style '%s' (%s), %dx%d, frames %s (%s)\n", scene.path.c_str(),
+                count_of(scene.objects.size(), "object", "objects").c_str(),
+                count_of(world.triangle_count(), "triangle", "triangles").c_str(),
+                count_of(scene.lights.size(), "light", "lights").c_str(), scene.style.name.c_str(),
+                shading_model_name(scene.style.shading), scene.output.width, scene.output.height,
+                asked.c_str(), count_of(frames.size(), "frame", "frames").c_str());
+}
+
 int validate_command(const RenderArgs& args) {
-    SceneDesc scene = load_scene(args.scene, scene_options(args));
-    RenderOptions options;
-    options.frames = resolve_frames(args.frames, scene.output);
-    options.cameras = split_list(args.cameras);
-    check_outputs(scene, options);
-    World world = build_world(scene);
-    check_render_memory(scene, world, std::max(1u, std::thread::hardware_concurrency()));
-    if (!args.quiet) {
-        print_warnings(scene, world);
-        // The frames a render with these options would render.
-        const std::vector<int>& frames =
-            options.frames.empty() ? scene.output.frames : options.frames;
-        const std::string asked =
-            options.frames.empty()
-                ? scene.output.frames_text
-                : std::to_string(frames.front()) +
-                      (frames.size() > 1 ? ".." + std::to_string(frames.back()) : "") +
-                      " of the scene's " + scene.output.frames_text;
-        std::printf("%s: ok: %s, %s, %s, style '%s' (%s), %dx%d, frames %s (%s)\n",
-                    scene.path.c_str(), count_of(scene.objects.size(), "object", "objects").c_str(),
-                    count_of(world.triangle_count(), "triangle", "triangles").c_str(),
-                    count_of(scene.lights.size(), "light", "lights").c_str(),
-                    scene.style.name.c_str(), shading_model_name(scene.style.shading),
-                    scene.output.width, scene.output.height, asked.c_str(),
-                    count_of(frames.size(), "frame", "frames").c_str());
-    }
-    return 0;
-}
-
-int info_command(const std::string& path, bool allow_outside) {
-    require_input_file(path, "mesh");
-    TextureBudget textures(kDefaultTextureBudget);
-    AssetContext assets;
-    assets.paths.allow_outside = allow_outside;
-    assets.textures = &textures;
-    Mesh mesh = load_mesh(path, assets);
-    Bounds b = mesh.bounds();
-    std::printf("file:       %s\n", path.c_str());
-    std::printf("triangles:  %zu\n", mesh.triangle_count());
-    std::printf("vertices:   %zu\n", mesh.vertex_count());
-    std::printf("parts:      %zu\n", mesh.parts.size());
-    std::printf("bounds:     [%g, %g, %g] .. [%g, %g, %g]\n", b.min.x, b.min.y, b.min.z, b.max.x,
-                b.max.y, b.max.z);
-    std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y,
-                b.max.z - b.min.z);
-    std::printf("materials:  %zu\n", mesh.materials.size());
-    for (const auto& m : mesh.materials)
-        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n",
-                    m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
-                    m.texture ? ", textured" : "", m.double_sided ? ", double-sided" : "");
-    const MeshRig* rig = mesh.rig.get();
-    std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
-    if (rig)
-        for (const auto& a : rig->animations)
-            std::printf("  - %s: %g s, %zu %s\n", a.name.c_str(), a.duration, a.channels.size(),
-                        a.channels.size() == 1 ? "channel" : "channels");
-    size_t morphed_parts = 0, most_targets = 0;
-    if (rig)
-        for (const auto& part : rig->parts)
-            if (!part.morph_targets.empty()) {
-                ++morphed_parts;
-                most_targets = std::max(most_targets, part.morph_targets.size());
-            }
-    std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
-    std::printf("morphed:    %zu of %zu parts, up to %zu targets\n", morphed_parts,
-                mesh.parts.size(), most_targets);
-    for (const Warning& w : mesh.warnings) std::printf("warning: %s\n", w.describe().c_str());
-    return 0;
-}
-
-int styles_command() {
-    const auto presets = list_style_presets(default_style_dirs());
-    size_t widest = 0;
-    for (const auto& [name, path] : presets) widest = std::max(widest, name.size());
-    for (const auto& [name, path] : presets) {
-        std::string description;
-        try {
-            StyleDesc style = load_style_file(path, default_style_dirs());
-            description = style.description;
-            if (!style.chain.empty()) description += " (extends " + style.chain.back() + ")";
-        } catch (const Error& e) {
-            description = std::string("error: ") + e.what();
+    Warnings warnings;
+    try {
+        SceneDesc scene = load_scene(args.scene, scene_options(args));
+        warnings = scene.warnings;
+        RenderOptions options;
+        options.frames = resolve_frames(args.frames, scene.output);
+        options.cameras = split_list(args.cameras);
+        options.out_dir = args.out;
+        check_outputs(scene, options);
+        World world = build_world(scene);
+        warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
+        check_render_memory(scene, world, std::max(1u, std::thread::hardware_concurrency()));
+        if (args.json) {
+            ValidateFacts facts{scene.path,
+                                scene.style.name,
+                                shading_model_name(scene.style.shading),
+                                scene.objects.size(),
+                                world.triangle_count(),
+                                scene.lights.size(),
+                                scene.output.width,
+                                scene.output.height,
+                                options.frames.empty() ? scene.output.frames : options.frames};
+            std::printf("%s", validate_json(facts, warnings).c_str());
+        } else if (!args.quiet) {
+            print_warnings(scene, world);
+            print_validation(scene, world, options);
         }
-        std::printf("%-*s  %s\n", static_cast<int>(widest), name.c_str(), description.c_str());
+    } catch (const Error& e) {
+        if (!args.json) throw;
+        std::printf("%s", validate_error_json(e, warnings).c_str());
+        return static_cast<int>(e.code());
     }
     return 0;
 }
@@ -479,6 +456,8 @@ int run_command_line(int argc, char** argv) {
     add_scene_options(render, render_args);
     add_output_option(render, render_args.out, "Output folder (files go to OUTPUT/SCENE/)");
     add_threads_option(render, render_args.threads);
+    render->add_flag("--dry-run", render_args.dry_run,
+                     "List the files the render would write (then the manifest); write nothing");
     render->add_flag("--overwrite", render_args.overwrite,
                      "Start a new manifest when the output folder holds one of other settings");
     render->add_option("--reference", render_args.comparison.ref,
@@ -500,8 +479,17 @@ int run_command_line(int argc, char** argv) {
     CLI::App* validate =
         app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
     add_scene_options(validate, validate_args);
+    validate->add_flag("--json", validate_args.json,
+                       "Print the result, every warning and the error as JSON");
+    add_output_option(validate, validate_args.out,
+                      "Output folder a render would use (checks its manifest's settings)");
 
-    CLI::App* styles = app.add_subcommand("styles", "List the style presets with a description");
+    std::string style_name;
+    bool styles_json = false;
+    CLI::App* styles = app.add_subcommand(
+        "styles", "List the style presets, or print one with its extends chain applied");
+    styles->add_option("name", style_name, "Preset to print, resolved");
+    styles->add_flag("--json", styles_json, "The list as JSON");
 
     SheetArgs sheet_args;
     CLI::App* sheet = app.add_subcommand(
@@ -533,6 +521,8 @@ int run_command_line(int argc, char** argv) {
     CLI::App* info = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
     info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
+    bool info_json = false;
+    info->add_flag("--json", info_json, "Print the description as JSON");
     add_asset_paths_flag(info, info_allow_outside);
 
     std::string help_topic;
@@ -557,8 +547,8 @@ int run_command_line(int argc, char** argv) {
         if (render->parsed()) return render_command(render_args);
         if (compare->parsed()) return compare_command(compare_args);
         if (validate->parsed()) return validate_command(validate_args);
-        if (info->parsed()) return info_command(mesh_path, info_allow_outside);
-        if (styles->parsed()) return styles_command();
+        if (info->parsed()) return info_command(mesh_path, info_allow_outside, info_json);
+        if (styles->parsed()) return styles_command(style_name, styles_json);
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
         if (help->parsed()) return help_command(app, help_topic);

@@ -302,6 +302,33 @@ void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
                             options.overwrite);
 }
 
+std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options) {
+    check_outputs(scene, options);
+    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
+    const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
+    const OutputDesc& out = scene.output;
+    std::vector<std::string> files;
+    for (int frame : frames)
+        for (size_t camera : cameras)
+            for (const char* pass : {"color", "depth"}) {
+                if ((pass[0] == 'c' && !out.write_color) || (pass[0] == 'd' && !out.write_depth))
+                    continue;
+                for (const char* format : {"png", "exr"}) {
+                    if ((format[0] == 'p' && !out.write_png) ||
+                        (format[0] == 'e' && !out.write_exr))
+                        continue;
+                    const std::string name =
+                        expand(layout.names,
+                               {scene.name, scene.cameras[camera].name, pass, frame, format});
+                    files.push_back((std::filesystem::path(options.out_dir) / name).string());
+                }
+            }
+    files.push_back(
+        (std::filesystem::path(options.out_dir) / layout.manifest_dir / "manifest.json").string());
+    return files;
+}
+
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame) {
     const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;

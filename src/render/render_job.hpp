@@ -59,6 +59,11 @@ std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std
 // does the same first.
 void check_outputs(const SceneDesc& scene, const RenderOptions& options);
 
+// The files a render with these options would write, in the order it
+// writes them (frame, camera, pass, format), then the manifest: paths
+// under options.out_dir. For --dry-run; checks as check_outputs does.
+std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options);
+
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame);
 

@@ -250,6 +250,11 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options);
 // Reads a style preset file.
 StyleDesc load_style_file(const std::string& path, const std::vector<std::string>& style_dirs);
 
+// The preset as one YAML mapping with its `extends` chain applied (each
+// layer's keys over its parent's, mappings merged key by key), for `facet
+// styles NAME`. Checks the preset as load_style_file does.
+std::string resolved_style_yaml(const std::string& path, const std::vector<std::string>& style_dirs);
+
 // The preset files found in the given folders: name -> path, first folder wins.
 std::vector<std::pair<std::string, std::string>> list_style_presets(
     const std::vector<std::string>& style_dirs);

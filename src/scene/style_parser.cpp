@@ -314,4 +314,46 @@ StyleDesc parse_style_field(const Field& field, const StyleContext& context) {
                             visiting);
 }
 
+namespace {
+
+// Keys of `top` over those of `base`; mappings merge key by key, as the
+// style layers apply (a child's `toon: {bands: 3}` keeps the parent's
+// other toon keys), and anything else is replaced whole.
+YAML::Node merged(const YAML::Node& base, const YAML::Node& top) {
+    if (!base.IsMap() || !top.IsMap()) return YAML::Clone(top);
+    YAML::Node out = YAML::Clone(base);
+    for (auto it = top.begin(); it != top.end(); ++it) {
+        const std::string key = it->first.Scalar();
+        out[key] = out[key] ? merged(out[key], it->second) : YAML::Clone(it->second);
+    }
+    return out;
+}
+
+}  // namespace
+
+std::string resolved_style_yaml(const std::string& path,
+                                const std::vector<std::string>& style_dirs) {
+    const StyleDesc checked = load_style_file(path, style_dirs);  // every error, with its place
+    std::vector<std::shared_ptr<YamlDocument>> layers;
+    std::vector<std::string> names;
+    for (std::string file = path;;) {
+        auto doc = read_yaml_file(file);
+        layers.push_back(doc);
+        names.push_back(fs::path(file).stem().string());
+        const Field root = root_field(doc);
+        if (!root.has("extends")) break;
+        file = find_style(root["extends"], fs::path(file).parent_path().string(), style_dirs);
+    }
+    YAML::Node result(YAML::NodeType::Map);
+    for (auto it = layers.rbegin(); it != layers.rend(); ++it) result = merged(result, (*it)->root);
+    result.remove("extends");
+    YAML::Emitter out;
+    out << result;
+    std::string chain;
+    for (const std::string& n : names) chain += (chain.empty() ? "" : " <- ") + n;
+    return "# " + checked.name + ": " + chain +
+           "\n# every layer applied; keys not listed take the defaults of docs/styles.md\n" +
+           out.c_str() + "\n";
+}
+
 }  // namespace facet

@@ -1,0 +1,186 @@
+#include "cli/inspect_commands.hpp"
+
+#include <algorithm>
+#include <cstdio>
+
+#include <nlohmann/json.hpp>
+
+#include "assets/mesh.hpp"
+#include "cli/commands.hpp"
+#include "core/error.hpp"
+#include "core/input_file.hpp"
+#include "core/suggest.hpp"
+
+namespace facet {
+namespace {
+
+using Json = nlohmann::ordered_json;
+
+Json place_json(const SourceLocation& where, const std::string& key, const std::string& message) {
+    Json j = {{"file", where.file},
+              {"line", where.line},
+              {"column", where.column},
+              {"key", key},
+              {"message", message}};
+    if (!where.origin.empty()) j["origin"] = where.origin;
+    return j;
+}
+
+Json warnings_json(const Warnings& warnings) {
+    Json list = Json::array();
+    for (const Warning& w : warnings) list.push_back(place_json(w.where, w.key, w.message));
+    return list;
+}
+
+struct MeshFacts {
+    size_t morphed_parts = 0, most_targets = 0;
+};
+
+MeshFacts mesh_facts(const Mesh& mesh) {
+    MeshFacts f;
+    if (const MeshRig* rig = mesh.rig.get())
+        for (const auto& part : rig->parts)
+            if (!part.morph_targets.empty()) {
+                ++f.morphed_parts;
+                f.most_targets = std::max(f.most_targets, part.morph_targets.size());
+            }
+    return f;
+}
+
+void print_mesh_json(const std::string& path, const Mesh& mesh) {
+    const Bounds b = mesh.bounds();
+    const MeshRig* rig = mesh.rig.get();
+    const MeshFacts facts = mesh_facts(mesh);
+    Json j = {
+        {"file", path},
+        {"triangles", mesh.triangle_count()},
+        {"vertices", mesh.vertex_count()},
+        {"parts", mesh.parts.size()},
+        {"bounds", {{"min", {b.min.x, b.min.y, b.min.z}}, {"max", {b.max.x, b.max.y, b.max.z}}}}};
+    j["materials"] = Json::array();
+    for (const auto& m : mesh.materials)
+        j["materials"].push_back({{"name", m.name},
+                                  {"color", {m.color.r, m.color.g, m.color.b}},
+                                  {"textured", m.texture != nullptr},
+                                  {"double_sided", m.double_sided}});
+    j["animations"] = Json::array();
+    if (rig)
+        for (const auto& a : rig->animations)
+            j["animations"].push_back(
+                {{"name", a.name}, {"duration", a.duration}, {"channels", a.channels.size()}});
+    j["skins"] = rig ? rig->skins.size() : 0;
+    j["morphed_parts"] = facts.morphed_parts;
+    j["most_morph_targets"] = facts.most_targets;
+    j["warnings"] = warnings_json(mesh.warnings);
+    std::printf("%s\n", j.dump(2).c_str());
+}
+
+void print_mesh_text(const std::string& path, const Mesh& mesh) {
+    const Bounds b = mesh.bounds();
+    const MeshFacts facts = mesh_facts(mesh);
+    std::printf("file:       %s\n", path.c_str());
+    std::printf("triangles:  %zu\n", mesh.triangle_count());
+    std::printf("vertices:   %zu\n", mesh.vertex_count());
+    std::printf("parts:      %zu\n", mesh.parts.size());
+    std::printf("bounds:     [%g, %g, %g] .. [%g, %g, %g]\n", b.min.x, b.min.y, b.min.z, b.max.x,
+                b.max.y, b.max.z);
+    std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y,
+                b.max.z - b.min.z);
+    std::printf("materials:  %zu\n", mesh.materials.size());
+    for (const auto& m : mesh.materials)
+        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n",
+                    m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
+                    m.texture ? ", textured" : "", m.double_sided ? ", double-sided" : "");
+    const MeshRig* rig = mesh.rig.get();
+    std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
+    if (rig)
+        for (const auto& a : rig->animations)
+            std::printf("  - %s: %g s, %zu %s\n", a.name.c_str(), a.duration, a.channels.size(),
+                        a.channels.size() == 1 ? "channel" : "channels");
+    std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
+    std::printf("morphed:    %zu of %zu parts, up to %zu targets\n", facts.morphed_parts,
+                mesh.parts.size(), facts.most_targets);
+    for (const Warning& w : mesh.warnings) std::printf("warning: %s\n", w.describe().c_str());
+}
+
+}  // namespace
+
+int info_command(const std::string& path, bool allow_outside, bool json) {
+    require_input_file(path, "mesh");
+    TextureBudget textures(kDefaultTextureBudget);
+    AssetContext assets;
+    assets.paths.allow_outside = allow_outside;
+    assets.textures = &textures;
+    const Mesh mesh = load_mesh(path, assets);
+    if (json)
+        print_mesh_json(path, mesh);
+    else
+        print_mesh_text(path, mesh);
+    return 0;
+}
+
+int styles_command(const std::string& name, bool json) {
+    const auto presets = list_style_presets(default_style_dirs());
+    if (!name.empty()) {
+        for (const auto& [preset, path] : presets)
+            if (preset == name) {
+                std::printf("%s", resolved_style_yaml(path, default_style_dirs()).c_str());
+                return 0;
+            }
+        std::vector<std::string_view> known;
+        std::string list;
+        for (const auto& [preset, path] : presets) {
+            known.push_back(preset);
+            list += (list.empty() ? "" : ", ") + preset;
+        }
+        fail_input({"", 0, 0, "command line styles " + name}, "",
+                   "no style preset named '" + name + "'" + did_you_mean(name, known) +
+                       " (available: " + list + ")");
+    }
+    Json list = Json::array();
+    size_t widest = 0;
+    for (const auto& [preset, path] : presets) widest = std::max(widest, preset.size());
+    for (const auto& [preset, path] : presets) {
+        std::string description, extends, error;
+        try {
+            const StyleDesc style = load_style_file(path, default_style_dirs());
+            description = style.description;
+            if (!style.chain.empty()) extends = style.chain.back();
+        } catch (const Error& e) {
+            error = e.what();
+        }
+        if (json) {
+            Json entry = {{"name", preset}, {"path", path}, {"description", description}};
+            entry["extends"] = extends.empty() ? Json(nullptr) : Json(extends);
+            if (!error.empty()) entry["error"] = error;
+            list.push_back(entry);
+            continue;
+        }
+        std::string line = error.empty() ? description : "error: " + error;
+        if (!extends.empty()) line += " (extends " + extends + ")";
+        std::printf("%-*s  %s\n", static_cast<int>(widest), preset.c_str(), line.c_str());
+    }
+    if (json) std::printf("%s\n", list.dump(2).c_str());
+    return 0;
+}
+
+std::string validate_json(const ValidateFacts& f, const Warnings& warnings) {
+    Json j = {{"ok", true},           {"scene", f.scene},
+              {"objects", f.objects}, {"triangles", f.triangles},
+              {"lights", f.lights},   {"style", f.style},
+              {"shading", f.shading}, {"size", {f.width, f.height}},
+              {"frames", f.frames}};
+    j["warnings"] = warnings_json(warnings);
+    return j.dump(2) + "\n";
+}
+
+std::string validate_error_json(const Error& error, const Warnings& warnings) {
+    Json j = {{"ok", false}, {"exit_code", static_cast<int>(error.code())}};
+    j["errors"] = Json::array({place_json(error.where(), error.key(),
+                                          error.detail().empty() ? error.what() : error.detail())});
+    j["errors"][0]["text"] = error.what();
+    j["warnings"] = warnings_json(warnings);
+    return j.dump(2) + "\n";
+}
+
+}  // namespace facet
