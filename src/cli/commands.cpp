@@ -16,6 +16,7 @@
 #include "cli/inspect_commands.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
+#include "cli/video_command.hpp"
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
@@ -59,6 +60,7 @@ struct RenderArgs {
     bool allow_asset_paths_outside = false;
     bool overwrite = false;
     bool dry_run = false;                   // render: list the files, write none
+    std::string video;                      // render: a movie of the colour frames too
     bool json = false;                      // validate: the report as JSON
     std::vector<std::string> command_line;  // as typed, for the manifest
     CompareArgs comparison;                 // render --reference DIR
@@ -156,6 +158,12 @@ int render_command(const RenderArgs& args) {
     options.cancel = &g_interrupted;
     options.overwrite = args.overwrite;
     options.provenance = {args.command_line, scene_opts.overrides};
+    if (!args.video.empty()) {
+        check_movie_name(args.video);
+        if (!scene.output.write_color)
+            fail_input(command_line("--video " + args.video), "",
+                       "a movie needs the colour pass (--passes color)");
+    }
     if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
     World world = build_world(scene);
@@ -171,6 +179,12 @@ int render_command(const RenderArgs& args) {
         std::printf("wrote %s to %s (manifest: %s)\n",
                     count_of(result.files_written, "file", "files").c_str(),
                     result.output_dir.c_str(), result.manifest_path.c_str());
+    if (!args.video.empty()) {
+        VideoArgs video{result.output_dir, args.video, "", 0, args.quiet};
+        const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
+        video.camera = scene.cameras[cameras.front()].name;
+        video_command(video);
+    }
     if (compare) {
         CompareArgs comparison = args.comparison;
         comparison.quiet = args.quiet;
@@ -456,6 +470,8 @@ int run_command_line(int argc, char** argv) {
     add_scene_options(render, render_args);
     add_output_option(render, render_args.out, "Output folder (files go to OUTPUT/SCENE/)");
     add_threads_option(render, render_args.threads);
+    render->add_option("--video", render_args.video,
+                       "Also make a movie of the colour frames: .mp4 (H.264), .webm (VP9), .gif");
     render->add_flag("--dry-run", render_args.dry_run,
                      "List the files the render would write (then the manifest); write nothing");
     render->add_flag("--overwrite", render_args.overwrite,
@@ -525,6 +541,17 @@ int run_command_line(int argc, char** argv) {
     info->add_flag("--json", info_json, "Print the description as JSON");
     add_asset_paths_flag(info, info_allow_outside);
 
+    VideoArgs video_args;
+    CLI::App* video = app.add_subcommand(
+        "video", "Make a movie (.mp4, .webm, .gif) of a run's colour frames, through its manifest");
+    video->add_option("output", video_args.output_dir, "A run's folder (holds manifest.json)")
+        ->required();
+    video->add_option("movie", video_args.movie, "Movie to write: .mp4, .webm or .gif")->required();
+    video->add_option("--camera", video_args.camera, "Camera, when the run has several");
+    video->add_option("--fps", video_args.fps, "Frames per second (default: the scene's)")
+        ->check(CLI::Range(0.01, 1000.0));
+    add_quiet_flag(video, video_args.quiet);
+
     std::string help_topic;
     CLI::App* help = app.add_subcommand("help", "Show the help of facet or of one command");
     help->add_option("command", help_topic, "Command to describe");
@@ -551,6 +578,7 @@ int run_command_line(int argc, char** argv) {
         if (styles->parsed()) return styles_command(style_name, styles_json);
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
+        if (video->parsed()) return video_command(video_args);
         if (help->parsed()) return help_command(app, help_topic);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "facet: error: out of memory\n");

@@ -50,6 +50,7 @@ Manifest read_manifest(const std::string& path) {
         m.width = j.at("size").at(0).get<int>();
         m.height = j.at("size").at(1).get<int>();
         m.output_template = j.value("output_template", "");
+        m.fps = j.value("fps", 24.0);
         for (const auto& o : j.value("overrides", nlohmann::json::array()))
             m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
                                    o.value("origin", "")});
@@ -130,6 +131,7 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge) {
     j["scene"] = manifest.scene;
     j["style"] = manifest.style;
     j["size"] = {manifest.width, manifest.height};
+    j["fps"] = manifest.fps;
     j["output_template"] = manifest.output_template;
     j["overrides"] = Json::array();
     for (const ManifestOverride& o : manifest.overrides)

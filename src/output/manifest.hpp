@@ -34,6 +34,7 @@ struct Manifest {
     std::string scene;  // relative to the manifest's folder
     std::string style;
     int width = 0, height = 0;
+    double fps = 24;  // the scene's, for movies made from the files
     std::string output_template;
     std::vector<ManifestOverride> overrides;
     std::vector<ManifestFrame> frames;

@@ -68,6 +68,7 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
     m.style = scene.style.name;
     m.width = scene.output.width;
     m.height = scene.output.height;
+    m.fps = scene.output.fps;
     m.output_template = layout.template_text;
     for (const Override& o : options.provenance.overrides)
         m.overrides.push_back({o.path, o.value, o.origin});

@@ -1,0 +1,146 @@
+#include "cli/video_command.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <set>
+
+#include "cli/options.hpp"
+#include "core/color.hpp"
+#include "core/error.hpp"
+#include "output/atomic_file.hpp"
+#include "output/encoders.hpp"
+#include "output/manifest.hpp"
+#include "video/video_encoder.hpp"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+SourceLocation command_line(const std::string& what) {
+    return {"", 0, 0, "command line " + what};
+}
+
+// The colour frames of one camera, PNG where the run wrote PNG.
+std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& folder,
+                                       const std::string& camera_asked) {
+    std::set<std::string> cameras;
+    for (const ManifestFile& f : m.files)
+        if (f.pass == "color") cameras.insert(f.camera);
+    if (cameras.empty())
+        throw Error(ExitCode::invalid_input,
+                    folder + ": the run wrote no colour pass (give --passes color)");
+    std::string camera = camera_asked;
+    if (camera.empty()) {
+        if (cameras.size() > 1) {
+            std::string list;
+            for (const auto& c : cameras) list += (list.empty() ? "" : ", ") + c;
+            fail_input(command_line("video"), "",
+                       "the run has several cameras (" + list + "); choose one with --camera");
+        }
+        camera = *cameras.begin();
+    } else if (!cameras.count(camera)) {
+        fail_input(command_line("--camera " + camera), "",
+                   "the run has no colour frames of camera '" + camera + "'");
+    }
+    const bool has_png = std::any_of(m.files.begin(), m.files.end(), [&](const ManifestFile& f) {
+        return f.pass == "color" && f.camera == camera && f.format == "png";
+    });
+    std::vector<ManifestFile> files;
+    for (const ManifestFile& f : m.files)
+        if (f.pass == "color" && f.camera == camera && f.format == (has_png ? "png" : "exr"))
+            files.push_back(f);
+    std::sort(files.begin(), files.end(),
+              [](const ManifestFile& a, const ManifestFile& b) { return a.frame < b.frame; });
+    return files;
+}
+
+// 8-bit sRGB RGB of a colour file: PNG values as they are (alpha left
+// out), EXR colour clamped and encoded as sRGB, as the PNG writer does.
+std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& format, int& width,
+                               int& height) {
+    std::vector<uint8_t> rgb;
+    if (format == "png") {
+        const DecodedPng png = read_png(path);
+        width = png.width;
+        height = png.height;
+        const int colour = png.channels >= 3 ? 3 : 1;
+        const float scale = png.bit_depth == 16 ? 1.0f / 257.0f : 1.0f;
+        rgb.resize(static_cast<size_t>(width) * height * 3);
+        for (size_t p = 0; p < rgb.size() / 3; ++p)
+            for (int c = 0; c < 3; ++c)
+                rgb[p * 3 + c] = static_cast<uint8_t>(
+                    std::lround(png.samples[p * png.channels + (colour == 3 ? c : 0)] * scale));
+        return rgb;
+    }
+    const DecodedExr exr = read_exr(path);
+    width = exr.width;
+    height = exr.height;
+    rgb.resize(static_cast<size_t>(width) * height * 3);
+    for (int c = 0; c < 3; ++c) {
+        const char* name[] = {"R", "G", "B"};
+        const auto it = std::find(exr.channel_names.begin(), exr.channel_names.end(), name[c]);
+        if (it == exr.channel_names.end())
+            throw Error(ExitCode::io_failure, path + ": no " + name[c] + " channel");
+        const auto& values = exr.channels[static_cast<size_t>(it - exr.channel_names.begin())];
+        for (size_t p = 0; p < values.size(); ++p) {
+            const double v = std::isfinite(values[p]) ? std::clamp<double>(values[p], 0, 1) : 0;
+            rgb[p * 3 + static_cast<size_t>(c)] =
+                static_cast<uint8_t>(std::lround(linear_to_srgb(v) * 255));
+        }
+    }
+    return rgb;
+}
+
+const char* codec_name(VideoFormat f) {
+    return f == VideoFormat::mp4 ? "H.264" : f == VideoFormat::webm ? "VP9" : "GIF";
+}
+
+}  // namespace
+
+void check_movie_name(const std::string& movie) {
+    if (!video_format_for(movie))
+        fail_input(command_line(movie), "", "a movie is named .mp4, .webm or .gif");
+}
+
+int video_command(const VideoArgs& args) {
+    check_movie_name(args.movie);
+    const VideoFormat format = *video_format_for(args.movie);
+    const std::string manifest_path = (fs::path(args.output_dir) / "manifest.json").string();
+    std::error_code ec;
+    if (!fs::is_regular_file(manifest_path, ec))
+        throw Error(ExitCode::io_failure, args.output_dir +
+                                              ": no manifest.json (facet render -o OUT writes "
+                                              "into OUT/SCENE/)");
+    const Manifest m = read_manifest(manifest_path);
+    const std::vector<ManifestFile> files = colour_files(m, args.output_dir, args.camera);
+    const double fps = args.fps > 0 ? args.fps : m.fps;
+    std::unique_ptr<VideoEncoder> encoder;
+    int width = 0, height = 0;
+    for (const ManifestFile& f : files) {
+        int w = 0, h = 0;
+        const std::vector<uint8_t> rgb =
+            frame_rgb((fs::path(args.output_dir) / f.path).string(), f.format, w, h);
+        if (!encoder) {
+            width = w;
+            height = h;
+            encoder = std::make_unique<VideoEncoder>(format, w, h, fps);
+        } else if (w != width || h != height) {
+            throw Error(ExitCode::invalid_input, f.path + ": frame of another size");
+        }
+        encoder->add_frame(rgb);
+    }
+    const std::vector<uint8_t> bytes = encoder->finish();
+    const auto parent = fs::path(args.movie).parent_path();
+    if (!parent.empty()) make_directories(parent.string());
+    write_file_atomically(args.movie, bytes);
+    if (!args.quiet)
+        std::printf("wrote %s (%s, %dx%d, %g fps, %s)\n", args.movie.c_str(),
+                    count_of(files.size(), "frame", "frames").c_str(), width, height, fps,
+                    codec_name(format));
+    return 0;
+}
+
+}  // namespace facet

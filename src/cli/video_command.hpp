@@ -1,0 +1,21 @@
+#pragma once
+// `facet video OUTDIR MOVIE` and `render --video MOVIE`: a movie of a run's
+// colour frames, found through its manifest (docs/video.md).
+#include <string>
+
+namespace facet {
+
+struct VideoArgs {
+    std::string output_dir;  // holds manifest.json
+    std::string movie;       // .mp4, .webm or .gif
+    std::string camera;      // needed when the run has several cameras
+    double fps = 0;          // 0: the scene's
+    bool quiet = false;
+};
+
+// Checks the movie's name (its format) before any work: exit code 2.
+void check_movie_name(const std::string& movie);
+
+int video_command(const VideoArgs& args);
+
+}  // namespace facet
