@@ -267,3 +267,34 @@ diff_scale: 4
     CHECK(o.exit_code == 2);
     CHECK(o.output.find("did you mean 'hard_fail'") != std::string::npos);
 }
+
+TEST_CASE("compare kinds: masked pixels play no part in SSIM; NaN colour fails", "[compare]") {
+    CompareImage ref = plane(64, 64, 3, 0.5f), candidate = plane(64, 64, 3, 0.5f);
+    for (int y = 20; y < 30; ++y)
+        for (int x = 20; x < 30; ++x)
+            for (int c = 0; c < 3; ++c) candidate.samples[(y * 64 + x) * 3 + c] = 1.0f;
+    std::vector<uint8_t> mask(64 * 64, 1);
+    for (int y = 20; y < 30; ++y)
+        for (int x = 20; x < 30; ++x) mask[y * 64 + x] = 0;
+    JudgeInputs in;
+    in.tolerance = default_thresholds().defaults.at(ImageKind::color);
+    in.alpha_tolerance = default_thresholds().defaults.at(ImageKind::alpha);
+    CHECK(judge_images(ref, candidate, in).outcome == Outcome::fail);
+    in.mask = mask;
+    const Judgement masked = judge_images(ref, candidate, in);
+    CHECK(masked.outcome == Outcome::pass);
+    REQUIRE(masked.ssim);
+    CHECK(*masked.ssim == 1.0);
+
+    // One NaN pixel among 4096 is under fail_percent as a difference, but a
+    // colour that is not a number is a broken render.
+    CompareImage broken = plane(64, 64, 3, 0.5f);
+    broken.samples[100] = std::nanf("");
+    JudgeInputs exr;
+    exr.kind = ImageKind::color_float;
+    exr.tolerance = default_thresholds().defaults.at(ImageKind::color_float);
+    exr.tolerance.fail_percent = 1;
+    const Judgement nan = judge_images(plane(64, 64, 3, 0.5f), broken, exr);
+    CHECK(nan.outcome == Outcome::fail);
+    CHECK(nan.pixels.reason.find("not finite") != std::string::npos);
+}

@@ -12,6 +12,7 @@
 
 using namespace facet;
 using namespace facet::test;
+using Catch::Matchers::Contains;
 
 namespace {
 
@@ -148,6 +149,7 @@ TEST_CASE("compare workflow: JUnit XML and the HTML report in headless chromium"
         std::filesystem::copy_file(changed + "/" + name, b + "/" + name,
                                    std::filesystem::copy_options::overwrite_existing);
     }
+    refresh_manifest_hashes(b);
     const RunResult r = run_facet("compare " + shell_quote(a) + " " + shell_quote(b));
     INFO(r.output);
     REQUIRE(r.exit_code == 3);
@@ -179,4 +181,48 @@ TEST_CASE("compare workflow: JUnit XML and the HTML report in headless chromium"
     CHECK(dom.output.compare(first_card, 18, "data-status=\"fail\"") == 0);
     CHECK(dom.output.find("<svg") != std::string::npos);  // the per-frame plot
     CHECK(dom.output.find("https://") == std::string::npos);
+}
+
+TEST_CASE("compare workflow: manifests cannot point outside their folder, nor lie", "[compare]") {
+    TempDir dir("compare-hostile");
+    const std::string a = render_shapes(dir.file("a"), "--frames 1", "color", "png");
+    const std::string b = dir.file("b");
+    copy_folder(a, b);
+    write_text(dir.file("secret.txt"), "SECRET123");
+    nlohmann::json m = read_json(b + "/manifest.json");
+    m["files"][0]["path"] = "../secret.txt";
+    write_text(b + "/manifest.json", m.dump(2));
+    const RunResult outside = run_facet("compare " + shell_quote(a) + " " + shell_quote(b));
+    CHECK(outside.exit_code == 4);
+    CHECK_THAT(outside.output, Contains("leaves the manifest's folder"));
+    CHECK(read_file(dir.file("secret.txt")) == "SECRET123");
+
+    // A file changed after the run no longer matches its manifest.
+    const std::string c = dir.file("c");
+    copy_folder(a, c);
+    edit_png(c + "/color.0001.png", c + "/color.0001.png",
+             [](std::vector<uint8_t>& s, int, int) { s[0] ^= 1; });
+    const RunResult lie = run_facet("compare " + shell_quote(a) + " " + shell_quote(c));
+    CHECK(lie.exit_code == 4);
+    CHECK_THAT(lie.output, Contains("does not match the SHA-256 its manifest records"));
+}
+
+TEST_CASE("compare workflow: references with subfolders, and renders of some frames", "[compare]") {
+    TempDir dir("compare-subfolders");
+    const std::string scene = source_path("tests/scenes/shapes.yaml");
+    const std::string render = "render " + shell_quote(scene) +
+                               " --size 48x32 --passes color,depth --formats png "
+                               "-D 'output.path=\"{scene}/{pass}/{frame}.{ext}\"' -o " +
+                               shell_quote(dir.file("out")) + " --reference " +
+                               shell_quote(dir.file("ref"));
+    const RunResult first = run_facet(render + " --frames 1-3 --update-reference missing");
+    INFO(first.output);
+    REQUIRE(first.exit_code == 0);
+    CHECK(std::filesystem::exists(dir.file("ref/depth/0002.png")));
+    check_manifest_hashes(dir.file("ref"), 6);
+    // Frame 2 alone: the reference's frames 1 and 3 are not missing.
+    const RunResult one = run_facet(render + " -f 2");
+    INFO(one.output);
+    CHECK(one.exit_code == 0);
+    CHECK_THAT(one.output, Contains("2 identical"));
 }

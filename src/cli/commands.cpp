@@ -188,7 +188,11 @@ int render_command(const RenderArgs& args) {
     if (compare) {
         CompareArgs comparison = args.comparison;
         comparison.quiet = args.quiet;
-        return compare_render_output(comparison, thresholds, result.output_dir);
+        std::set<std::pair<std::string, int>> rendered;
+        for (size_t camera : select_cameras(scene, options.cameras))
+            for (int frame : frames.empty() ? scene.output.frames : frames)
+                rendered.insert({scene.cameras[camera].name, frame});
+        return compare_render_output(comparison, thresholds, result.output_dir, rendered);
     }
     return 0;
 }

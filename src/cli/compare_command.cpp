@@ -5,12 +5,14 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/options.hpp"
 #include "compare/compare_run.hpp"
 #include "compare/reference_update.hpp"
 #include "compare/reports.hpp"
 #include "compare/self_test.hpp"
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
+#include "output/encoders.hpp"
 #include "scene/thresholds_file.hpp"
 
 namespace facet {
@@ -31,20 +33,30 @@ CompareThresholds comparison_thresholds(const CompareArgs& args) {
     for (const std::string& text : args.masks) {
         CompareMask m;
         char extra = 0;
+        constexpr int kMost = 1 << 20;  // as the thresholds file allows
         if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &m.x, &m.y, &m.width, &m.height, &extra) !=
                 4 ||
-            m.x < 0 || m.y < 0 || m.width < 1 || m.height < 1)
+            m.x < 0 || m.y < 0 || m.width < 1 || m.height < 1 || m.x > kMost || m.y > kMost ||
+            m.width > kMost || m.height > kMost)
             fail_input(option_location("--mask " + text), "",
                        "expected x,y,width,height in pixels, e.g. 0,0,120,40");
         t.masks.push_back(m);
     }
     for (const std::string& path : args.mask_images) {
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(path, ec))
-            fail_input(option_location("--mask-image " + path), "", "no such file");
         CompareMask m;
         m.image = path;
         t.masks.push_back(m);
+    }
+    // Every mask image is read now, so a bad one stops the command before
+    // any work (render --reference: before rendering).
+    for (const CompareMask& m : t.masks) {
+        if (m.image.empty()) continue;
+        try {
+            read_png(m.image);
+        } catch (const Error& e) {
+            fail_input(option_location("mask image " + m.image), "",
+                       "cannot be read as a PNG: " + e.detail());
+        }
     }
     return t;
 }
@@ -57,16 +69,24 @@ const char* line_tag(const FileResult& r) {
     return r.status == FileStatus::unreadable ? "ERROR" : "FAIL";
 }
 
+std::string short_number(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.4g", v);
+    return text;
+}
+
 void print_summary(const CompareReport& report, bool quiet) {
     const CompareCounts& c = report.counts;
     if (quiet) return;
     for (const SequenceResult& s : report.sequences)
-        if (s.frames > 1 && (s.worst_frame || s.flicker > 0))
+        if (s.frames > 1 && (s.worst_frame || s.flicker_frame))
             std::printf(
-                "sequence %s%s%s (%s): worst frame %d (%.4g%% failing), flicker %.4g%s\n",
-                s.camera.c_str(), s.camera.empty() ? "" : "/", s.pass.c_str(), s.format.c_str(),
-                s.worst_frame, s.worst_percent, s.flicker,
-                s.flicker_frame ? (" at frame " + std::to_string(s.flicker_frame)).c_str() : "");
+                "sequence %s%s%s (%s): %s, flicker %.4g%s\n", s.camera.c_str(),
+                s.camera.empty() ? "" : "/", s.pass.c_str(), s.format.c_str(),
+                s.worst_frame ? ("worst frame " + std::to_string(*s.worst_frame) + " (" + short_number(s.worst_percent) + "% failing)").c_str()
+                              : "no failing pixels",
+                s.flicker,
+                s.flicker_frame ? (" at frame " + std::to_string(*s.flicker_frame)).c_str() : "");
     std::printf("compare: %zu files: %d identical, %d passed, %d warned, %d failed",
                 report.files.size(), c.identical, c.passed, c.warned, c.failed);
     for (auto [count, word] : {std::pair{c.missing, "missing"},
@@ -105,7 +125,8 @@ int self_test_command(const CompareArgs& args, const CompareThresholds& threshol
     return report.not_told_apart ? static_cast<int>(ExitCode::comparison_failed) : 0;
 }
 
-int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds) {
+int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
+                   const std::optional<std::set<std::pair<std::string, int>>>& only) {
     std::optional<UpdateMode> mode;
     if (!args.update_reference.empty()) {
         mode = update_mode_from_name(args.update_reference);
@@ -122,6 +143,7 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds)
     request.ref = args.ref;
     request.candidate = args.candidate;
     request.thresholds = thresholds;
+    request.only = only;
     if (!args.no_report)
         request.report_dir =
             args.report_dir.empty() ? default_report_dir(args.candidate) : args.report_dir;
@@ -129,22 +151,32 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds)
         if (args.quiet || r.outcome == Outcome::pass) return;
         std::printf("%-5s %s: %s\n", line_tag(r), r.key.label().c_str(), r.reason.c_str());
     };
-    const CompareReport report = run_compare(request);
-    if (!request.report_dir.empty()) write_reports(report);
+    CompareReport report = run_compare(request);
     print_summary(report, args.quiet);
     int code = compare_exit_code(report);
     if (mode) {
-        const UpdateResult updated = update_reference(report, args.ref, args.candidate, *mode);
+        // The reports are written after the update, with the exit code it leaves.
+        UpdateResult updated;
+        try {
+            updated = update_reference(report, args.ref, args.candidate, *mode);
+        } catch (const Error&) {
+            if (!request.report_dir.empty()) write_reports(report);
+            throw;
+        }
         if (!args.quiet) {
             for (const std::string& label : updated.written)
                 std::printf("updated %s\n", label.c_str());
-            std::printf("reference %s: %zu files updated (%s)\n", args.ref.c_str(),
-                        updated.written.size(), args.update_reference.c_str());
+            std::printf("reference %s: %s updated (%s)\n", args.ref.c_str(),
+                        count_of(updated.written.size(), "file", "files").c_str(),
+                        args.update_reference.c_str());
         }
         if (code == static_cast<int>(ExitCode::comparison_failed) &&
             updated.unresolved_failures == 0)
             code = 0;
+        report.updated = updated.written;
+        report.exit_code_after_update = code;
     }
+    if (!request.report_dir.empty()) write_reports(report);
     return code;
 }
 
@@ -183,13 +215,14 @@ int compare_command(const CompareArgs& args) {
     }
     if (args.candidate.empty())
         fail_input(option_location("compare"), "", "give REF and NEW (or --self-test REFDIR)");
-    return run_comparison(args, thresholds);
+    return run_comparison(args, thresholds, std::nullopt);
 }
 
 int compare_render_output(CompareArgs args, const CompareThresholds& thresholds,
-                          const std::string& output_dir) {
+                          const std::string& output_dir,
+                          const std::set<std::pair<std::string, int>>& rendered) {
     args.candidate = output_dir;
-    return run_comparison(args, thresholds);
+    return run_comparison(args, thresholds, rendered);
 }
 
 }  // namespace facet

@@ -1,7 +1,9 @@
 #pragma once
 // `facet compare` and the comparison half of `facet render --reference`
 // (docs/regression.md).
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CLI {
@@ -37,7 +39,9 @@ CompareThresholds comparison_thresholds(const CompareArgs& args);
 
 // Compares a finished render's output folder with args.ref (render
 // --reference); prints the summary and returns the exit code.
+// Only the (camera, frame) pairs this render made are compared.
 int compare_render_output(CompareArgs args, const CompareThresholds& thresholds,
-                          const std::string& output_dir);
+                          const std::string& output_dir,
+                          const std::set<std::pair<std::string, int>>& rendered);
 
 }  // namespace facet

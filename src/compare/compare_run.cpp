@@ -87,7 +87,9 @@ class SequenceRun {
                 r.change_ref = frame_change(previous.ref, current.ref, seq.kind, white_);
                 r.change_new =
                     frame_change(previous.candidate, current.candidate, seq.kind, white_);
-                const double flicker = std::abs(*r.change_new - *r.change_ref);
+                r.flicker = change_difference(previous.ref, current.ref, previous.candidate,
+                                              current.candidate, seq.kind, white_);
+                const double flicker = *r.flicker;
                 if (flicker > seq.flicker) {
                     seq.flicker = flicker;
                     seq.flicker_frame = pairs_[i].key.frame;
@@ -132,6 +134,16 @@ class SequenceRun {
             return fail(r, FileStatus::unreadable, pair.ref_path + ": " + ref_problem);
         if (!new_problem.empty())
             return fail(r, FileStatus::unreadable, pair.new_path + ": " + new_problem);
+        // A file that is not what its manifest says was damaged or replaced
+        // after the run: neither passing nor failing it would be honest.
+        for (const auto& [path, actual, recorded] :
+             {std::tuple{pair.ref_path, ref_hash, pair.ref_sha256},
+              std::tuple{pair.new_path, new_hash, pair.new_sha256}})
+            if (!recorded.empty() && actual != recorded)
+                return fail(r, FileStatus::unreadable,
+                            path +
+                                ": does not match the SHA-256 its manifest records (damaged "
+                                "or replaced after the run)");
         if (ref_hash == new_hash) {
             r.status = FileStatus::identical;
             return false;
@@ -259,8 +271,10 @@ CompareReport run_compare(const CompareRequest& request) {
     report.report_dir = request.report_dir;
     report.thresholds = request.thresholds;
     std::map<std::tuple<std::string, std::string, std::string>, std::vector<FilePair>> sequences;
-    for (FilePair& pair : pair_files(request.ref, request.candidate))
+    for (FilePair& pair : pair_files(request.ref, request.candidate)) {
+        if (request.only && !request.only->count({pair.key.camera, pair.key.frame})) continue;
         sequences[{pair.key.camera, pair.key.pass, pair.key.format}].push_back(std::move(pair));
+    }
     MaskBuilder masks(request.thresholds);
     for (auto& [key, pairs] : sequences) {
         std::sort(pairs.begin(), pairs.end(),
@@ -309,6 +323,7 @@ std::vector<std::pair<const char*, int>> named_counts(const CompareCounts& c) {
 }
 
 int compare_exit_code(const CompareReport& report) {
+    if (report.exit_code_after_update) return *report.exit_code_after_update;
     if (report.counts.unreadable) return static_cast<int>(ExitCode::io_failure);
     if (report.outcome == Outcome::fail) return static_cast<int>(ExitCode::comparison_failed);
     return 0;

@@ -6,6 +6,7 @@
 // result by compare/report_*.hpp.
 #include <functional>
 #include <optional>
+#include <set>
 #include <string>
 #include <utility>
 #include <vector>
@@ -41,6 +42,9 @@ struct FileResult {
     // Frame-to-frame change from the previous frame of the sequence, in
     // each run (compare/judge.hpp, frame_change); only where computed.
     std::optional<double> change_ref, change_new;
+    // The mean, over samples, of |(NEW's change) - (REF's change)| from the
+    // previous frame: 0 when NEW moves exactly as REF does.
+    std::optional<double> flicker;
     // The report's pictures, relative to the report folder ("" when none).
     std::string diff_image, heat_image, ref_preview, new_preview;
 };
@@ -51,12 +55,13 @@ struct SequenceResult {
     ImageKind kind = ImageKind::color;
     double white = 1;  // colour EXR: the exposure held for the whole sequence
     int frames = 0;
-    int worst_frame = 0;  // the frame with the most failing pixels (0: none differs)
+    std::optional<int>
+        worst_frame;  // the frame with the most failing pixels (none: no pixel fails)
     double worst_percent = 0;
     // The largest difference, over neighbouring frames, between NEW's
     // frame-to-frame change and REF's: 0 when NEW moves as REF does.
     double flicker = 0;
-    int flicker_frame = 0;
+    std::optional<int> flicker_frame;
 };
 
 struct CompareCounts {
@@ -76,12 +81,19 @@ struct CompareReport {
     std::vector<SequenceResult> sequences;
     CompareCounts counts;
     Outcome outcome = Outcome::pass;
+    // After --update-reference: the files written and the exit code that
+    // follows (compare_exit_code returns it).
+    std::vector<std::string> updated;
+    std::optional<int> exit_code_after_update;
 };
 
 struct CompareRequest {
     std::string ref, candidate;  // two folders with manifest.json, or two image files
     CompareThresholds thresholds = default_thresholds();
     std::string report_dir;  // where images go ("" = write none)
+    // When set, only these (camera, frame) pairs are compared (render
+    // --reference of some frames: the others were not rendered this time).
+    std::optional<std::set<std::pair<std::string, int>>> only;
     // Called as each file is judged (progress, terminal summary).
     std::function<void(const FileResult&)> on_file;
 };

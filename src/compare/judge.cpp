@@ -70,7 +70,8 @@ bool visit_pixel(ImageKind kind, const Tolerance& t, const float* r, const float
         double difference = std::abs(nv - rv);
         double fail = t.fail, warn = t.warn;
         if (kind == ImageKind::color_float) {
-            difference /= std::max(std::abs(rv), t.floor * white);
+            // A tiny minimum keeps 0 / 0 (black on black with floor 0) finite.
+            difference /= std::max({std::abs(rv), t.floor * white, 1e-12});
         } else if (kind == ImageKind::depth || kind == ImageKind::float_data) {
             fail += t.relative * std::abs(rv);
             warn += t.relative * std::abs(rv);
@@ -253,6 +254,15 @@ Judgement judge_images(const CompareImage& ref, const CompareImage& candidate,
     }
     j.pixels = judge_group(in.kind, in.tolerance, ref, candidate, compared, in.white, &j);
     decide(j.pixels, in.tolerance, image_kind_name(in.kind));
+    // A colour that is NaN or infinite in one image only is a broken
+    // render, not a small difference: it fails whatever the share.
+    const bool colour = in.kind == ImageKind::color || in.kind == ImageKind::color_float;
+    if (colour && j.pixels.background_mismatch > 0) {
+        j.pixels.outcome = Outcome::fail;
+        j.pixels.reason = std::string(image_kind_name(in.kind)) + ": " +
+                          std::to_string(j.pixels.background_mismatch) +
+                          " pixels are not finite (NaN or infinite) in one image only";
+    }
     j.outcome = j.pixels.outcome;
 
     if (!ref.alpha.empty() || !candidate.alpha.empty()) {
@@ -269,7 +279,13 @@ Judgement judge_images(const CompareImage& ref, const CompareImage& candidate,
 
     if (in.kind == ImageKind::color || in.kind == ImageKind::color_float) {
         const std::vector<float> rd = display_values(ref, in.kind, in.white);
-        const std::vector<float> nd = display_values(candidate, in.kind, in.white);
+        std::vector<float> nd = display_values(candidate, in.kind, in.white);
+        // Left-out pixels (masked, or transparent in both) take REF's value
+        // in both images, so no SSIM window sees a difference there.
+        for (size_t p = 0; p < pixels; ++p)
+            if (!compared[p])
+                for (int c = 0; c < ref.channels; ++c)
+                    nd[p * ref.channels + c] = rd[p * ref.channels + c];
         std::vector<float> rp(pixels), np(pixels);
         j.ssim_map.assign(pixels, 0.0f);
         for (int c = 0; c < ref.channels; ++c) {
@@ -319,6 +335,29 @@ double frame_change(const CompareImage& a, const CompareImage& b, ImageKind kind
             sum += 1;
     }
     return sum / static_cast<double>(da.size());
+}
+
+double change_difference(const CompareImage& ref_prev, const CompareImage& ref,
+                         const CompareImage& candidate_prev, const CompareImage& candidate,
+                         ImageKind kind, double white) {
+    const size_t n = ref.samples.size();
+    if (n == 0 || ref_prev.samples.size() != n || candidate.samples.size() != n ||
+        candidate_prev.samples.size() != n)
+        return 0;
+    const std::vector<float> rp = display_values(ref_prev, kind, white);
+    const std::vector<float> r = display_values(ref, kind, white);
+    const std::vector<float> cp = display_values(candidate_prev, kind, white);
+    const std::vector<float> c = display_values(candidate, kind, white);
+    double sum = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const double ref_change = double(r[i]) - rp[i];
+        const double new_change = double(c[i]) - cp[i];
+        if (std::isfinite(ref_change) && std::isfinite(new_change))
+            sum += std::abs(new_change - ref_change);
+        else if (!(r[i] == c[i] && rp[i] == cp[i]))
+            sum += 1;
+    }
+    return sum / static_cast<double>(n);
 }
 
 }  // namespace facet

@@ -66,4 +66,12 @@ std::vector<float> display_values(const CompareImage& image, ImageKind kind, dou
 // samples (depth background) count when they change, as 1.
 double frame_change(const CompareImage& a, const CompareImage& b, ImageKind kind, double white);
 
+// The flicker of one frame: the mean, over samples, of
+// |(candidate - candidate_prev) - (ref - ref_prev)|, in display values for
+// colour and the kind's unit otherwise; a sample whose change is not
+// finite in one run only counts 1.
+double change_difference(const CompareImage& ref_prev, const CompareImage& ref,
+                         const CompareImage& candidate_prev, const CompareImage& candidate,
+                         ImageKind kind, double white);
+
 }  // namespace facet

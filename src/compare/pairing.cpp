@@ -36,7 +36,14 @@ std::map<KeyTuple, ManifestFile> manifest_files(const std::string& dir) {
     }
     std::map<KeyTuple, ManifestFile> files;
     for (ManifestFile& f : m.files) {
-        f.path = (fs::path(dir) / f.path).lexically_normal().string();
+        // A manifest is a file someone may have edited: its paths must stay
+        // inside its folder, or compare would read (and an update write or
+        // delete) files elsewhere.
+        const fs::path relative = fs::path(f.path).lexically_normal();
+        if (relative.empty() || relative.is_absolute() || *relative.begin() == "..")
+            throw Error(ExitCode::io_failure, manifest.string() + ": file path '" + f.path +
+                                                  "' leaves the manifest's folder");
+        f.path = (fs::path(dir) / relative).string();
         files[{f.camera, f.pass, f.frame, f.format}] = f;
     }
     return files;
@@ -64,6 +71,12 @@ std::vector<FilePair> pair_files(const std::string& ref, const std::string& cand
     if (!ref_dir) {
         FilePair pair;
         pair.kind = guess_image_kind(ref);
+        const ImageKind other = guess_image_kind(candidate);
+        if (other != pair.kind)
+            throw Error(ExitCode::comparison_failed,
+                        "the files hold different kinds of image: " + ref + " is " +
+                            image_kind_name(pair.kind) + ", " + candidate + " is " +
+                            image_kind_name(other));
         pair.key = {"", image_kind_name(pair.kind), 0, format_of(candidate)};
         pair.ref_path = ref;
         pair.new_path = candidate;
@@ -76,11 +89,13 @@ std::vector<FilePair> pair_files(const std::string& ref, const std::string& cand
         FilePair& pair = joined[key];
         pair.key = {f.camera, f.pass, f.frame, f.format};
         pair.ref_path = f.path;
+        pair.ref_sha256 = f.sha256;
     }
     for (const auto& [key, f] : new_files) {
         FilePair& pair = joined[key];
         pair.key = {f.camera, f.pass, f.frame, f.format};
         pair.new_path = f.path;
+        pair.new_sha256 = f.sha256;
     }
     for (auto& [key, pair] : joined) {
         pair.kind = kind_for_pass(pair.key.pass, pair.key.format);

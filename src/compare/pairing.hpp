@@ -11,7 +11,8 @@ namespace facet {
 struct FilePair {
     FileKey key;
     ImageKind kind = ImageKind::color;
-    std::string ref_path, new_path;  // "" when that run has no such file
+    std::string ref_path, new_path;      // "" when that run has no such file
+    std::string ref_sha256, new_sha256;  // as the manifests record them ("" for lone files)
 };
 
 // Pairs in key order. Throws Error: io_failure when a folder has no

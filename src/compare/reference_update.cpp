@@ -23,8 +23,10 @@ bool named_by(UpdateMode mode, const FileResult& r) {
                    r.status == FileStatus::size_mismatch;
         case UpdateMode::missing:
             return r.status == FileStatus::extra;
+        // A NEW file that cannot be decoded never becomes a reference.
         case UpdateMode::all:
-            return !r.new_path.empty() && r.status != FileStatus::identical;
+            return !r.new_path.empty() && r.status != FileStatus::identical &&
+                   r.status != FileStatus::unreadable;
     }
     return false;
 }
@@ -64,6 +66,9 @@ UpdateResult update_reference(const CompareReport& report, const std::string& re
     std::set<std::pair<std::string, int>> known_frames;
     for (const ManifestFrame& f : reference.frames) known_frames.insert({f.camera, f.frame});
 
+    // Each file is written atomically; if one fails, the manifest is still
+    // written for those already copied, so it always states what is on disk.
+    std::exception_ptr failure;
     for (const FileResult& r : report.files) {
         if (!named_by(mode, r)) {
             if (r.outcome == Outcome::fail && r.status != FileStatus::missing)
@@ -74,17 +79,23 @@ UpdateResult update_reference(const CompareReport& report, const std::string& re
         const auto found = produced_files.find(key);
         if (found == produced_files.end()) continue;
         ManifestFile entry = *found->second;
-        // The bytes are hashed as copied, so the manifest states what is on disk.
-        const std::vector<uint8_t> bytes = read_input_file(r.new_path, "new image");
-        write_file_atomically((fs::path(ref_dir) / entry.path).string(), bytes);
-        entry.sha256 = sha256_hex(bytes);
+        try {
+            // The bytes are hashed as copied, so the manifest states what is on disk.
+            const std::vector<uint8_t> bytes = read_input_file(r.new_path, "new image");
+            const fs::path target = fs::path(ref_dir) / entry.path;
+            make_directories(target.parent_path().string());
+            write_file_atomically(target.string(), bytes);
+            entry.sha256 = sha256_hex(bytes);
+        } catch (...) {
+            failure = std::current_exception();
+            break;
+        }
         bool replaced = false;
         for (ManifestFile& old : reference.files)
             if (std::tie(old.camera, old.pass, old.frame, old.format) ==
                 std::tie(entry.camera, entry.pass, entry.frame, entry.format)) {
-                const fs::path stale = fs::path(ref_dir) / old.path;
                 std::error_code ignored;  // a stale file left behind is harmless
-                if (old.path != entry.path) fs::remove(stale, ignored);
+                if (old.path != entry.path) fs::remove(fs::path(ref_dir) / old.path, ignored);
                 old = entry;
                 replaced = true;
             }
@@ -99,7 +110,15 @@ UpdateResult update_reference(const CompareReport& report, const std::string& re
     // no mode deletes a reference, so it stays a failure.
     for (const FileResult& r : report.files)
         if (r.status == FileStatus::missing) ++result.unresolved_failures;
-    write_manifest(manifest_path(ref_dir), reference);
+    // Rewritten files now come from NEW's settings: the header says so.
+    if (mode != UpdateMode::missing && !result.written.empty()) {
+        Manifest header = produced;
+        header.frames = std::move(reference.frames);
+        header.files = std::move(reference.files);
+        reference = std::move(header);
+    }
+    write_manifest(manifest_path(ref_dir), reference, false);
+    if (failure) std::rethrow_exception(failure);
     return result;
 }
 

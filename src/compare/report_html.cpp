@@ -113,7 +113,7 @@ std::string thresholds_table(const CompareThresholds& t) {
         for (const auto& [kind, values] : kinds)
             for (const auto& [key, value] : values)
                 html += "<p>camera <b>" + escape_markup(camera) + "</b>: " + image_kind_name(kind) +
-                        "." + key + " = " + number(value) + "</p>\n";
+                        "." + escape_markup(key) + " = " + number(value) + "</p>\n";
     for (const CompareMask& m : t.masks)
         html +=
             "<p>mask: " +
@@ -165,9 +165,9 @@ std::string sequences_section(const CompareReport& report) {
     for (const SequenceResult& s : report.sequences)
         html += "<tr><td>" + escape_markup(s.camera) + "</td><td>" + escape_markup(s.pass) +
                 "</td><td>" + escape_markup(s.format) + "</td><td>" + std::to_string(s.frames) +
-                "</td><td>" + (s.worst_frame ? std::to_string(s.worst_frame) : "-") + "</td><td>" +
+                "</td><td>" + (s.worst_frame ? std::to_string(*s.worst_frame) : "-") + "</td><td>" +
                 number(s.worst_percent) + "</td><td>" + number(s.flicker) +
-                (s.flicker_frame ? " (frame " + std::to_string(s.flicker_frame) + ")" : "") +
+                (s.flicker_frame ? " (frame " + std::to_string(*s.flicker_frame) + ")" : "") +
                 "</td><td>" + (s.kind == ImageKind::color_float ? number(s.white) : "-") +
                 "</td></tr>\n";
     html += "</table>\n";
@@ -175,7 +175,7 @@ std::string sequences_section(const CompareReport& report) {
         const std::string plot = sequence_plot(report, s);
         if (!plot.empty())
             html += "<h3>" + escape_markup(s.camera.empty() ? s.pass : s.camera + " / " + s.pass) +
-                    " (" + s.format +
+                    " (" + escape_markup(s.format) +
                     "): % of pixels failing per frame; dashed: fail_percent</h3>\n" + plot + "\n";
     }
     return html;

@@ -63,6 +63,7 @@ Json file_json(const FileResult& r) {
     if (r.ssim) j["ssim"] = *r.ssim;
     if (r.change_ref) j["change_ref"] = *r.change_ref;
     if (r.change_new) j["change_new"] = *r.change_new;
+    if (r.flicker) j["flicker"] = *r.flicker;
     Json images = Json::object();
     for (auto [name, path] : {std::pair{"diff", &r.diff_image}, std::pair{"heat", &r.heat_image},
                               std::pair{"ref", &r.ref_preview}, std::pair{"new", &r.new_preview}})
@@ -105,21 +106,24 @@ std::string report_json(const CompareReport& report) {
     j["thresholds"] = thresholds;
     Json sequences = Json::array();
     for (const SequenceResult& s : report.sequences)
-        sequences.push_back({{"camera", s.camera},
-                             {"pass", s.pass},
-                             {"format", s.format},
-                             {"kind", image_kind_name(s.kind)},
-                             {"frames", s.frames},
-                             {"white", s.white},
-                             {"worst_frame", s.worst_frame},
-                             {"worst_percent_failed", s.worst_percent},
-                             {"flicker", s.flicker},
-                             {"flicker_frame", s.flicker_frame}});
+        sequences.push_back(
+            {{"camera", s.camera},
+             {"pass", s.pass},
+             {"format", s.format},
+             {"kind", image_kind_name(s.kind)},
+             {"frames", s.frames},
+             {"white", s.white},
+             {"worst_frame", s.worst_frame ? Json(*s.worst_frame) : Json(nullptr)},
+             {"worst_percent_failed", s.worst_percent},
+             {"flicker", s.flicker},
+             {"flicker_frame", s.flicker_frame ? Json(*s.flicker_frame) : Json(nullptr)}});
     j["sequences"] = sequences;
     Json files = Json::array();
     for (const FileResult& r : report.files) files.push_back(file_json(r));
     j["files"] = files;
-    return j.dump(2) + "\n";
+    j["updated"] = report.updated;
+    // Paths need not be UTF-8; JSON must be: invalid bytes become U+FFFD.
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 void write_reports(const CompareReport& report) {

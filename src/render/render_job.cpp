@@ -175,13 +175,14 @@ class Encoder {
 
     // Creates a folder the first time a file goes into it, and removes what
     // an interrupted earlier run on this host left there half-written.
+    // Under the lock throughout: a second worker must not find the folder
+    // marked as prepared before it exists (it would write into nothing).
     void prepare_folder(const std::string& folder) const {
-        {
-            std::lock_guard lock(folders_mutex_);
-            if (!prepared_folders_.insert(folder).second) return;
-        }
+        std::lock_guard lock(folders_mutex_);
+        if (prepared_folders_.count(folder)) return;
         make_directories(folder);
         remove_stale_temporaries(folder);
+        prepared_folders_.insert(folder);
     }
 
     // Encodes one frame's passes and writes its files; returns their manifest lines.
