@@ -16,6 +16,7 @@
 #include "cli/inspect_commands.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
+#include "cli/shell_docs.hpp"
 #include "cli/video_command.hpp"
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
@@ -30,9 +31,6 @@
 #include "render/thread_study.hpp"
 #include "render/world.hpp"
 
-#ifndef FACET_STYLES_DIR
-#define FACET_STYLES_DIR "styles"
-#endif
 
 namespace facet {
 namespace {
@@ -411,7 +409,21 @@ std::vector<std::string> default_style_dirs() {
             start = colon + 1;
         }
     }
-    dirs.push_back(FACET_STYLES_DIR);
+    // The presets that come with facet, found from the executable, so an
+    // installed or moved facet needs no source tree: PREFIX/bin/facet reads
+    // PREFIX/share/facet/styles; in a build folder, BUILD/share/facet/styles
+    // (a link to the sources' styles/, made by CMake).
+    std::error_code ec;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const std::filesystem::path bin = exe.parent_path();
+        for (const auto& dir : {bin / ".." / "share" / "facet" / "styles",
+                                bin / "share" / "facet" / "styles"})
+            if (std::filesystem::is_directory(dir, ec)) {
+                dirs.push_back(dir.lexically_normal().string());
+                break;
+            }
+    }
     return dirs;
 }
 
@@ -556,6 +568,12 @@ int run_command_line(int argc, char** argv) {
         ->check(CLI::Range(0.01, 1000.0));
     add_quiet_flag(video, video_args.quiet);
 
+    std::string shell;
+    CLI::App* completion =
+        app.add_subcommand("completion", "Print a shell completion script (bash)");
+    completion->add_option("shell", shell, "Shell: bash")->required()->check(CLI::IsMember({"bash"}));
+    CLI::App* man = app.add_subcommand("man", "Print facet's man page (roff), facet(1)");
+
     std::string help_topic;
     CLI::App* help = app.add_subcommand("help", "Show the help of facet or of one command");
     help->add_option("command", help_topic, "Command to describe");
@@ -584,6 +602,17 @@ int run_command_line(int argc, char** argv) {
         if (sheet->parsed()) return sheet_command(sheet_args);
         if (video->parsed()) return video_command(video_args);
         if (help->parsed()) return help_command(app, help_topic);
+        if (completion->parsed()) {
+            std::vector<std::string> names;
+            for (const auto& preset : list_style_presets(default_style_dirs()))
+                names.push_back(preset.first);
+            std::printf("%s", bash_completion(app, names).c_str());
+            return 0;
+        }
+        if (man->parsed()) {
+            std::printf("%s", man_page(app, version_line()).c_str());
+            return 0;
+        }
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "facet: error: out of memory\n");
         return static_cast<int>(ExitCode::runtime_failure);
