@@ -125,7 +125,7 @@ TEST_CASE("cli: -D reaches list items by name, and explains YAML mappings", "[cl
     CHECK_THAT(split.output, Contains("a -D value that the shell split"));
 }
 
-TEST_CASE("cli: totals use correct plurals, and a sheet is only PNG", "[cli]") {
+TEST_CASE("cli: totals use correct plurals, and a sheet is PNG or JPEG", "[cli]") {
     TempDir dir("cli-plurals");
     const RunResult one =
         run_facet("render " + scene() + " -f 1 --size 32x24 --passes color --formats png -o '" +
@@ -134,9 +134,18 @@ TEST_CASE("cli: totals use correct plurals, and a sheet is only PNG", "[cli]") {
     const RunResult sheet = run_facet("sheet " + scene() + " --styles flat --size 32x24 -o '" +
                                       dir.file("s.png") + "'");
     CHECK_THAT(sheet.output, Contains("(1 cell)"));
-    const RunResult jpeg = run_facet("sheet " + scene() + " --styles flat --size 32x24 -o '" +
-                                     dir.file("s.jpg") + "'");
-    CHECK(jpeg.exit_code == 2);
-    CHECK_THAT(jpeg.output, Contains("name the file *.png"));
-    CHECK_FALSE(std::filesystem::exists(dir.file("s.jpg")));
+    // A sheet is written in the format its name says: PNG or JPEG.
+    const std::string jpg = dir.file("s.jpg");
+    const RunResult jpeg =
+        run_facet("sheet " + scene() + " --styles flat --size 32x24 -q -o '" + jpg + "'");
+    CHECK(jpeg.exit_code == 0);
+    const std::string bytes = read_file(jpg);
+    REQUIRE(bytes.size() > 4);
+    CHECK(static_cast<unsigned char>(bytes[0]) == 0xff);  // JPEG's SOI marker
+    CHECK(static_cast<unsigned char>(bytes[1]) == 0xd8);
+    const RunResult tiff = run_facet("sheet " + scene() + " --styles flat --size 32x24 -o '" +
+                                     dir.file("s.tiff") + "'");
+    CHECK(tiff.exit_code == 2);
+    CHECK_THAT(tiff.output, Contains("*.png, *.jpg or *.jpeg"));
+    CHECK_FALSE(std::filesystem::exists(dir.file("s.tiff")));
 }

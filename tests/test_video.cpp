@@ -102,3 +102,22 @@ TEST_CASE("video: bad names and missing runs fail without touching an old movie"
     CHECK(render.exit_code == 2);
     CHECK_FALSE(std::filesystem::exists(dir.file("out")));
 }
+
+TEST_CASE("video: --video-only keeps the movie and no images", "[video]") {
+    TempDir dir("video-only");
+    const std::string movie = dir.file("movies/shapes.gif");
+    const RunResult r = run_facet("render '" + source_path("tests/scenes/shapes.yaml") +
+                                  "' --size 40x30 --frames 1-2 -q --video '" + movie +
+                                  "' --video-only -o '" + dir.file("out") + "'");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    CHECK(facet::read_video(movie).frames == 2);
+    CHECK_FALSE(std::filesystem::exists(dir.file("out")));
+    // Nothing but the movie is left beside it.
+    int entries = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir.file("movies"))) {
+        INFO(e.path());
+        ++entries;
+    }
+    CHECK(entries == 1);
+}

@@ -1,5 +1,7 @@
 #include "cli/commands.hpp"
 
+#include <unistd.h>
+
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -19,6 +21,7 @@
 #include "cli/shell_docs.hpp"
 #include "cli/video_command.hpp"
 #include "compare/thresholds.hpp"
+#include "core/color.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
 #include "core/version.hpp"
@@ -30,7 +33,7 @@
 #include "render/render_memory.hpp"
 #include "render/thread_study.hpp"
 #include "render/world.hpp"
-
+#include "video/video_encoder.hpp"
 
 namespace facet {
 namespace {
@@ -59,6 +62,7 @@ struct RenderArgs {
     bool overwrite = false;
     bool dry_run = false;                   // render: list the files, write none
     std::string video;                      // render: a movie of the colour frames too
+    bool video_only = false;                // render: the movie instead of the images
     bool json = false;                      // validate: the report as JSON
     std::vector<std::string> command_line;  // as typed, for the manifest
     CompareArgs comparison;                 // render --reference DIR
@@ -129,6 +133,17 @@ int dry_run(const RenderArgs& args, const SceneDesc& scene, const RenderOptions&
     return 0;
 }
 
+// A folder removed with everything in it when this goes out of scope.
+struct TemporaryFolder {
+    std::string path;  // "" for none
+    explicit TemporaryFolder(std::string p) : path(std::move(p)) {}
+    TemporaryFolder(const TemporaryFolder&) = delete;
+    ~TemporaryFolder() {
+        std::error_code ignored;
+        if (!path.empty()) std::filesystem::remove_all(path, ignored);
+    }
+};
+
 int render_command(const RenderArgs& args) {
     // Ctrl-C finishes the frames already rendered instead of leaving files
     // half written; a second Ctrl-C is not caught and ends facet at once.
@@ -162,6 +177,17 @@ int render_command(const RenderArgs& args) {
             fail_input(command_line("--video " + args.video), "",
                        "a movie needs the colour pass (--passes color)");
     }
+    if (args.video_only && (args.video.empty() || compare))
+        fail_input(command_line("--video-only"), "",
+                   "give --video MOVIE, and no --reference (there are no images to compare)");
+    // --video-only: the frames go to a hidden folder beside the movie,
+    // removed when the movie is written (or the run fails).
+    const TemporaryFolder frames_folder(args.video_only
+                                            ? (std::filesystem::path(args.video).parent_path() /
+                                               (".facet-frames-" + std::to_string(::getpid())))
+                                                  .string()
+                                            : "");
+    if (args.video_only) options.out_dir = frames_folder.path;
     if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
     World world = build_world(scene);
@@ -173,7 +199,7 @@ int render_command(const RenderArgs& args) {
     RenderResult result = render_scene(scene, world, options,
                                        [&](const FrameProgress& p) { progress.frame_done(p); });
     progress.finish();
-    if (!args.quiet)
+    if (!args.quiet && !args.video_only)
         std::printf("wrote %s to %s (manifest: %s)\n",
                     count_of(result.files_written, "file", "files").c_str(),
                     result.output_dir.c_str(), result.manifest_path.c_str());
@@ -261,6 +287,20 @@ struct SheetArgs {
     bool quiet = false;
 };
 
+// The sheet as a JPEG, from the 8-bit sRGB values its PNG would hold
+// (through half floats, as the PNG writer rounds).
+std::vector<uint8_t> sheet_jpeg(const ColorImage& sheet) {
+    std::vector<uint8_t> rgb(static_cast<size_t>(sheet.width) * sheet.height * 3);
+    for (size_t p = 0; p < sheet.pixels.size(); ++p) {
+        const glm::vec4 c = to_float(to_half(sheet.pixels[p]));
+        for (int i = 0; i < 3; ++i) {
+            const double unit = c[i] > 0.0f ? std::min(static_cast<double>(c[i]), 1.0) : 0.0;
+            rgb[p * 3 + i] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+        }
+    }
+    return encode_jpeg(sheet.width, sheet.height, rgb);
+}
+
 int sheet_command(const SheetArgs& args) {
     SheetRequest request;
     request.scene = args.scene;
@@ -275,9 +315,11 @@ int sheet_command(const SheetArgs& args) {
     // The file is written in the format its name says; the sheet writes PNG only.
     std::string extension = std::filesystem::path(output).extension().string();
     for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (extension != ".png")
+    const bool jpeg = extension == ".jpg" || extension == ".jpeg";
+    if (extension != ".png" && !jpeg)
         fail_input(command_line("-o " + output), "",
-                   "a contact sheet is written as PNG; name the file *.png");
+                   "a contact sheet is written as PNG or JPEG; name the file *.png, *.jpg or "
+                   "*.jpeg");
     const std::vector<int> frames =
         resolve_frames(args.frames, load_scene(args.scene, request.options).output);
     if (frames.size() > 1)
@@ -325,7 +367,7 @@ int sheet_command(const SheetArgs& args) {
     const ColorImage sheet = render_contact_sheet(request);
     const auto parent = std::filesystem::path(output).parent_path();
     if (!parent.empty()) make_directories(parent.string());
-    write_file_atomically(output, encode_png_color(sheet, 6));
+    write_file_atomically(output, jpeg ? sheet_jpeg(sheet) : encode_png_color(sheet, 6));
     if (!args.quiet)
         std::printf("wrote %s (%s)\n", output.c_str(),
                     count_of(request.cells.size(), "cell", "cells").c_str());
@@ -417,8 +459,8 @@ std::vector<std::string> default_style_dirs() {
     const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", ec);
     if (!ec) {
         const std::filesystem::path bin = exe.parent_path();
-        for (const auto& dir : {bin / ".." / "share" / "facet" / "styles",
-                                bin / "share" / "facet" / "styles"})
+        for (const auto& dir :
+             {bin / ".." / "share" / "facet" / "styles", bin / "share" / "facet" / "styles"})
             if (std::filesystem::is_directory(dir, ec)) {
                 dirs.push_back(dir.lexically_normal().string());
                 break;
@@ -488,6 +530,8 @@ int run_command_line(int argc, char** argv) {
     add_threads_option(render, render_args.threads);
     render->add_option("--video", render_args.video,
                        "Also make a movie of the colour frames: .mp4 (H.264), .webm (VP9), .gif");
+    render->add_flag("--video-only", render_args.video_only,
+                     "Keep only the movie: the frames are written to a temporary folder");
     render->add_flag("--dry-run", render_args.dry_run,
                      "List the files the render would write (then the manifest); write nothing");
     render->add_flag("--overwrite", render_args.overwrite,
@@ -571,7 +615,9 @@ int run_command_line(int argc, char** argv) {
     std::string shell;
     CLI::App* completion =
         app.add_subcommand("completion", "Print a shell completion script (bash)");
-    completion->add_option("shell", shell, "Shell: bash")->required()->check(CLI::IsMember({"bash"}));
+    completion->add_option("shell", shell, "Shell: bash")
+        ->required()
+        ->check(CLI::IsMember({"bash"}));
     CLI::App* man = app.add_subcommand("man", "Print facet's man page (roff), facet(1)");
 
     std::string help_topic;

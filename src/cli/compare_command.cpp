@@ -83,7 +83,9 @@ void print_summary(const CompareReport& report, bool quiet) {
             std::printf(
                 "sequence %s%s%s (%s): %s, flicker %.4g%s\n", s.camera.c_str(),
                 s.camera.empty() ? "" : "/", s.pass.c_str(), s.format.c_str(),
-                s.worst_frame ? ("worst frame " + std::to_string(*s.worst_frame) + " (" + short_number(s.worst_percent) + "% failing)").c_str()
+                s.worst_frame ? ("worst frame " + std::to_string(*s.worst_frame) + " (" +
+                                 short_number(s.worst_percent) + "% failing)")
+                                    .c_str()
                               : "no failing pixels",
                 s.flicker,
                 s.flicker_frame ? (" at frame " + std::to_string(*s.flicker_frame)).c_str() : "");

@@ -50,16 +50,22 @@ std::string bash_completion(const CLI::App& app, const std::vector<std::string>&
            "_facet() {\n"
            "    local cur=\"${COMP_WORDS[COMP_CWORD]}\" prev=\"${COMP_WORDS[COMP_CWORD-1]}\" opts\n"
            "    if [ \"$COMP_CWORD\" -eq 1 ]; then\n"
-           "        COMPREPLY=($(compgen -W \"" + names + " --help --version\" -- \"$cur\"))\n"
+           "        COMPREPLY=($(compgen -W \"" +
+           names +
+           " --help --version\" -- \"$cur\"))\n"
            "        return\n"
            "    fi\n"
            "    case \"$prev\" in\n"
-           "        --style|--styles) COMPREPLY=($(compgen -W \"" + style_list + " all\" -- \"$cur\")); return ;;\n"
+           "        --style|--styles) COMPREPLY=($(compgen -W \"" +
+           style_list +
+           " all\" -- \"$cur\")); return ;;\n"
            "        --passes) COMPREPLY=($(compgen -W \"color depth\" -- \"$cur\")); return ;;\n"
            "        --formats) COMPREPLY=($(compgen -W \"png exr\" -- \"$cur\")); return ;;\n"
-           "        --update-reference) COMPREPLY=($(compgen -W \"failed missing all\" -- \"$cur\")); return ;;\n"
+           "        --update-reference) COMPREPLY=($(compgen -W \"failed missing all\" -- "
+           "\"$cur\")); return ;;\n"
            "    esac\n"
-           "    case \"${COMP_WORDS[1]}\" in\n" + cases +
+           "    case \"${COMP_WORDS[1]}\" in\n" +
+           cases +
            "        *) opts=\"--help\" ;;\n"
            "    esac\n"
            "    if [[ \"$cur\" == -* ]]; then\n"
@@ -83,18 +89,22 @@ std::string man_page(const CLI::App& app, const std::string& version) {
         page += ".SS \"facet " + sub->get_name() + "\"\n" + roff(sub->get_description()) + "\n";
         for (const CLI::Option* opt : sub->get_options()) {
             if (opt->get_name() == "--help" || opt->get_name() == "-h,--help") continue;
-            std::string names = opt->get_positional() ? opt->get_name() : opt->get_name(false, true);
+            std::string names =
+                opt->get_positional() ? opt->get_name() : opt->get_name(false, true);
             page += ".TP\n.B " + roff(names) + "\n" + roff(opt->get_description()) + "\n";
         }
     }
-    page += ".SH EXIT STATUS\n"
-            "0 success; 1 runtime failure; 2 usage error or invalid scene, style or asset; "
-            "3 comparison against a reference failed; 4 I/O failure.\n";
-    page += ".SH ENVIRONMENT\n.TP\n.B FACET_STYLE_PATH\nFolders searched for style presets "
-            "first, separated by colons.\n";
-    page += ".SH FILES\n.TP\n.I PREFIX/share/facet/styles\nThe style presets that come with "
-            "facet.\n.TP\n.I PREFIX/share/doc/facet\nThe documentation (scene format, styles, "
-            "regression renders).\n";
+    page +=
+        ".SH EXIT STATUS\n"
+        "0 success; 1 runtime failure; 2 usage error or invalid scene, style or asset; "
+        "3 comparison against a reference failed; 4 I/O failure.\n";
+    page +=
+        ".SH ENVIRONMENT\n.TP\n.B FACET_STYLE_PATH\nFolders searched for style presets "
+        "first, separated by colons.\n";
+    page +=
+        ".SH FILES\n.TP\n.I PREFIX/share/facet/styles\nThe style presets that come with "
+        "facet.\n.TP\n.I PREFIX/share/doc/facet\nThe documentation (scene format, styles, "
+        "regression renders).\n";
     page += ".SH SEE ALSO\n.BR ffmpeg (1),\n.BR oiiotool (1)\n";
     return page;
 }

@@ -169,7 +169,19 @@ Field Field::operator[](size_t index) const {
 }
 
 std::string Field::text() const {
-    if (!node_.IsScalar()) fail("must be a text value, got " + scalar_for_message());
+    if (!node_.IsScalar()) {
+        // "-D output.path={scene}/x" reaches YAML as a flow mapping; say how
+        // to write text that starts with a brace.
+        const auto given = doc_->overridden.find(path_);
+        if (given != doc_->overridden.end() && node_.IsMap())
+            fail(
+                "must be a text value, got a mapping: YAML reads a value that starts with '{' "
+                "as one; quote it as YAML text: -D '" +
+                path_ +
+                "=\"...\"', e.g. -D "
+                "'output.path=\"{scene}/{pass}.{frame}.{ext}\"'");
+        fail("must be a text value, got " + scalar_for_message());
+    }
     return node_.Scalar();
 }
 

@@ -37,6 +37,10 @@ class VideoEncoder {
     std::unique_ptr<State> state_;
 };
 
+// A JPEG (JFIF) of one 8-bit sRGB RGB image, for stills such as contact
+// sheets: full-range 4:4:4 at high quality.
+std::vector<uint8_t> encode_jpeg(int width, int height, std::span<const uint8_t> rgb);
+
 // What a movie file holds, decoded again (tests, `facet info`-like checks).
 struct VideoSummary {
     std::string codec;
