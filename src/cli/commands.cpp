@@ -196,8 +196,9 @@ int render_command(const RenderArgs& args) {
     const size_t images = (frames.empty() ? scene.output.frames.size() : frames.size()) *
                           select_cameras(scene, options.cameras).size();
     progress.start(images, "'" + scene.name + "' to " + args.out);
-    RenderResult result = render_scene(scene, world, options,
-                                       [&](const FrameProgress& p) { progress.frame_done(p); });
+    RenderResult result = render_scene(
+        scene, world, options, [&](const FrameProgress& p) { progress.frame_done(p); },
+        [&](const FrameWritten& w) { progress.frame_written(w); });
     progress.finish();
     if (!args.quiet && !args.video_only)
         std::printf("wrote %s to %s (manifest: %s)\n",

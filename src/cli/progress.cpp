@@ -105,20 +105,27 @@ std::string ProgressReporter::bar_line(const FrameProgress& p) const {
 
 void ProgressReporter::frame_done(const FrameProgress& p) {
     done_ = p.done;
-    if (quiet_) return;
-    if (terminal_) {
-        // \r and erase-to-end: the line is redrawn in place, never appended.
-        std::fprintf(stream_, "\r%s\033[K", bar_line(p).c_str());
-    } else {
-        const double seconds = elapsed();
-        const double eta =
-            seconds / static_cast<double>(p.done) * static_cast<double>(p.total - p.done);
-        std::fprintf(stream_, "[%s] frame %d%s%s (%zu/%zu, %d%%) rendered in %.1f ms, eta %s\n",
-                     clock_text(seconds).c_str(), p.frame, p.cameras > 1 ? " camera " : "",
-                     p.cameras > 1 ? p.camera.c_str() : "", p.done, p.total,
-                     static_cast<int>(100 * p.done / p.total), p.render_ms,
-                     clock_text(eta).c_str());
-    }
+    // In logs the line comes when the image's files are written (frame_written).
+    if (quiet_ || !terminal_) return;
+    // \r and erase-to-end: the line is redrawn in place, never appended.
+    std::fprintf(stream_, "\r%s\033[K", bar_line(p).c_str());
+    std::fflush(stream_);
+}
+
+void ProgressReporter::frame_written(const FrameWritten& w) {
+    ++written_;
+    if (quiet_ || terminal_) return;
+    const double seconds = elapsed();
+    const double eta = seconds / static_cast<double>(written_) *
+                       static_cast<double>(total_ - std::min(total_, written_));
+    std::string files;
+    for (const std::string& f : w.files) files += (files.empty() ? "" : ", ") + f;
+    std::fprintf(
+        stream_,
+        "[%s] frame %d%s%s (%zu/%zu, %d%%) rendered in %.1f ms, wrote %s in %.1f ms, eta %s\n",
+        clock_text(seconds).c_str(), w.frame, w.camera.empty() ? "" : " camera ", w.camera.c_str(),
+        written_, total_, total_ ? static_cast<int>(100 * written_ / total_) : 100, w.render_ms,
+        files.empty() ? "nothing" : files.c_str(), w.encode_ms, clock_text(eta).c_str());
     std::fflush(stream_);
 }
 

@@ -22,6 +22,8 @@ class ProgressReporter {
     // Shown before the first frame, so a slow first frame is not silence.
     void start(size_t total, const std::string& what);
     void frame_done(const FrameProgress& p);
+    // In logs, the one line per image: written when its files are.
+    void frame_written(const FrameWritten& w);
     void finish();
 
   private:
@@ -32,7 +34,7 @@ class ProgressReporter {
     bool quiet_;
     bool terminal_;
     int width_;
-    size_t total_ = 0, done_ = 0;
+    size_t total_ = 0, done_ = 0, written_ = 0;
     std::chrono::steady_clock::time_point start_;
 };
 

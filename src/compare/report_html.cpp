@@ -17,9 +17,11 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Cards past this many show no images, only links: a long failing
-// sequence would otherwise make a page no browser opens.
+// Cards past this many, or past this many bytes of inlined images, show
+// no images, only their names: a long failing sequence of large frames
+// would otherwise make a page no browser opens.
 constexpr size_t kCardsWithImages = 60;
+constexpr size_t kInlineBytes = size_t(64) << 20;
 
 std::string number(double v, const char* format = "%.4g") {
     char text[32];
@@ -263,7 +265,7 @@ std::string report_html(const CompareReport& report) {
     html += summary(report);
     html += sequences_section(report);
     std::string cards, identical;
-    size_t shown = 0, identical_count = 0;
+    size_t shown = 0, inlined = 0, identical_count = 0;
     for (const FileResult& r : report.files) {
         if (r.status == FileStatus::identical ||
             (r.status == FileStatus::compared && r.outcome == Outcome::pass &&
@@ -272,13 +274,15 @@ std::string report_html(const CompareReport& report) {
             ++identical_count;
             continue;
         }
-        cards += card(report, r, shown, shown < kCardsWithImages);
+        const bool with_images = shown < kCardsWithImages && cards.size() < kInlineBytes;
+        if (with_images) ++inlined;
+        cards += card(report, r, shown, with_images);
         ++shown;
     }
     html += "<h2>Files that differ (" + std::to_string(shown) + ")</h2>\n<div id=\"files\">" +
             cards + "</div>\n";
-    if (shown > kCardsWithImages)
-        html += "<p>Images are shown for the first " + std::to_string(kCardsWithImages) +
+    if (shown > inlined)
+        html += "<p>Images are shown for the first " + std::to_string(inlined) +
                 " files; the rest are in the report's images/ folder.</p>\n";
     html += "<details><summary>" + std::to_string(identical_count) +
             " files identical or passing without difference images</summary><ul>" + identical +

@@ -14,12 +14,16 @@
 namespace facet {
 namespace {
 
-double margin_of(const Judgement& j, const Tolerance& t) {
+double margin_of(const Judgement& j, const Tolerance& t, const Tolerance& alpha) {
     double margin = 0;
     const PixelVerdict& v = j.pixels;
     if (v.pixels_failed > t.allowed_failures)
         margin = t.fail_percent > 0 ? v.percent_failed() / t.fail_percent : 1e9;
-    if (j.ssim && t.ssim_min > 0)
+    // A pair told apart by its alpha alone is told apart by that margin.
+    if (j.alpha && j.alpha->pixels_failed > alpha.allowed_failures)
+        margin = std::max(
+            margin, alpha.fail_percent > 0 ? j.alpha->percent_failed() / alpha.fail_percent : 1e9);
+    if (j.ssim && t.ssim_min > 0 && *j.ssim < t.ssim_min)
         margin = std::max(margin, t.ssim_min < 1 ? (1 - *j.ssim) / (1 - t.ssim_min) : 1e9);
     if (t.hard_fail < 1e29 && t.hard_fail > 0) margin = std::max(margin, v.stats.max / t.hard_fail);
     return margin;
@@ -61,9 +65,9 @@ SelfTestReport run_self_test(const std::string& ref_dir, const CompareThresholds
             } else {
                 const CompareImage ia = read_compare_image(a.ref_path, a.kind);
                 const CompareImage ib = read_compare_image(b.ref_path, b.kind);
-                if (ia.width != ib.width || ia.height != ib.height)
+                if (ia.width != ib.width || ia.height != ib.height || ia.channels != ib.channels)
                     throw Error(ExitCode::invalid_input,
-                                b.ref_path + ": not the size of the frame before it");
+                                b.ref_path + ": not the size or channels of the frame before it");
                 const std::vector<uint8_t> mask =
                     masks.build(a.key.camera, a.kind, ia.width, ia.height);
                 JudgeInputs in;
@@ -75,7 +79,7 @@ SelfTestReport run_self_test(const std::string& ref_dir, const CompareThresholds
                 const Judgement j = judge_images(ia, ib, in);
                 r.outcome = j.outcome;
                 r.reason = j.pixels.reason;
-                r.margin = margin_of(j, in.tolerance);
+                r.margin = margin_of(j, in.tolerance, in.alpha_tolerance);
                 if (j.outcome == Outcome::fail)
                     ++report.told_apart;
                 else

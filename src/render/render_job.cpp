@@ -102,8 +102,9 @@ void check_existing_manifest(const Manifest& header, const std::string& output_d
 // write_manifest sorts.
 class Encoder {
   public:
-    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers)
-        : scene_(scene), layout_(layout) {
+    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers,
+            std::function<void(const FrameWritten&)> on_written)
+        : scene_(scene), layout_(layout), on_written_(std::move(on_written)) {
         for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { run(); });
     }
     ~Encoder() { stop(); }
@@ -156,6 +157,12 @@ class Encoder {
             try {
                 Manifest written = encode(job);
                 std::lock_guard lock(mutex_);
+                if (on_written_) {
+                    FrameWritten report{
+                        job.frame, job.camera, job.render_ms, written.frames.front().encode_ms, {}};
+                    for (const ManifestFile& f : written.files) report.files.push_back(f.path);
+                    on_written_(report);
+                }
                 manifest_.frames.insert(manifest_.frames.end(), written.frames.begin(),
                                         written.frames.end());
                 manifest_.files.insert(manifest_.files.end(), written.files.begin(),
@@ -223,6 +230,7 @@ class Encoder {
 
     const SceneDesc& scene_;
     const OutputLayout& layout_;
+    std::function<void(const FrameWritten&)> on_written_;  // called under mutex_
     std::vector<std::thread> workers_;
     std::mutex mutex_;
     std::condition_variable ready_, space_;
@@ -332,7 +340,8 @@ std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptio
 }
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
-                          const std::function<void(const FrameProgress&)>& on_frame) {
+                          const std::function<void(const FrameProgress&)>& on_frame,
+                          const std::function<void(const FrameWritten&)>& on_written) {
     const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
     const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
@@ -346,7 +355,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     FrameRenderer renderer(scene, world, pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
-    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1);
+    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1, on_written);
     const size_t total = frames.size() * cameras.size();
     size_t rendered = 0;
     auto cancelled = [&] { return options.cancel && options.cancel->load(); };

@@ -43,6 +43,15 @@ struct FrameProgress {
     size_t cameras;  // cameras in the run
 };
 
+// One image's files, written (called from the encoder's threads, one call
+// at a time).
+struct FrameWritten {
+    int frame;
+    std::string camera;
+    double render_ms, encode_ms;
+    std::vector<std::string> files;  // relative to the manifest's folder
+};
+
 struct RenderResult {
     std::string output_dir;  // where files and manifest.json went
     std::string manifest_path;
@@ -65,6 +74,7 @@ void check_outputs(const SceneDesc& scene, const RenderOptions& options);
 std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options);
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
-                          const std::function<void(const FrameProgress&)>& on_frame);
+                          const std::function<void(const FrameProgress&)>& on_frame,
+                          const std::function<void(const FrameWritten&)>& on_written = nullptr);
 
 }  // namespace facet
