@@ -69,6 +69,13 @@ TEST_CASE("cli: frames are chosen the same way everywhere, and only inside the s
     CHECK_THAT(both.output, Contains("give frames one way"));
     CHECK(run_facet("sheet " + scene() + " --styles flat -f 9 -o /nonexistent/x.png").exit_code ==
           2);
+    // -s/-e keep the scene's step, inside its range, and beyond it only when allowed.
+    const std::string stepped = " -D output.frames=1-9:2 ";
+    CHECK_THAT(run_facet("validate " + scene() + stepped + "-s 4 -e 8").output,
+               Contains("frames 5..7 of the scene's 1-9:2 (2 frames)"));
+    CHECK(run_facet("validate " + scene() + stepped + "-s 4 -e 13").exit_code == 2);
+    CHECK_THAT(run_facet("validate " + scene() + stepped + "-s 4 -e 13 --allow-outside").output,
+               Contains("frames 5..13 of the scene's 1-9:2 (5 frames)"));
 }
 
 TEST_CASE("cli: mistakes get a did-you-mean", "[cli]") {

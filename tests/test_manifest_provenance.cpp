@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/sha256.hpp"
 #include "core/version.hpp"
 #include "support.hpp"
 
@@ -161,4 +162,37 @@ TEST_CASE("manifest: each image file carries the version, scene, camera and matr
         REQUIRE(software);
         CHECK(software->value() == one.at("Software"));
     }
+}
+
+TEST_CASE("manifest: equivalent runs merge; a file rewritten by a later run is listed once",
+          "[manifest][cli]") {
+    TempDir dir("merge-equivalent");
+    const std::string out = dir.file("out");
+    const std::string scene = source_path("tests/scenes/shapes.yaml");
+    const std::string dotted =
+        (std::filesystem::path(scene).parent_path() / "." / "shapes.yaml").string();
+    // The scene typed two ways, the same overrides in another order.
+    REQUIRE(run_facet("render '" + scene + "' --size 48x32 -q -o '" + out +
+                      "' -f 1 -D camera.fov=40 -D output.samples=1")
+                .exit_code == 0);
+    const RunResult second = run_facet("render '" + dotted + "' --size 48x32 -q -o '" + out +
+                                       "' -f 2 -D output.samples=1 -D camera.fov=40");
+    INFO(second.output);
+    CHECK(second.exit_code == 0);
+    CHECK(manifest_of(out)["frames"].size() == 2);
+    // validate does not look at out/ unless told to with -o.
+    CHECK(run_facet("validate '" + scene + "'").exit_code == 0);
+
+    // A template without {frame}: each run rewrites the same file.
+    const std::string single = dir.file("single");
+    const std::string args = "render '" + scene +
+                             "' --size 48x32 -q -D 'output.path=\"{scene}/{pass}.{ext}\"' -o '" +
+                             single + "' ";
+    REQUIRE(run_facet(args + "-f 1").exit_code == 0);
+    REQUIRE(run_facet(args + "-f 2").exit_code == 0);
+    const nlohmann::json m = manifest_of(single);
+    REQUIRE(m["files"].size() == 1);
+    CHECK(m["files"][0]["frame"] == 2);
+    const std::string bytes = read_file(single + "/shapes/color.png");
+    CHECK(m["files"][0]["sha256"] == facet::sha256_hex(bytes.data(), bytes.size()));
 }

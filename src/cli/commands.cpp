@@ -64,6 +64,7 @@ struct RenderArgs {
     std::string video;                      // render: a movie of the colour frames too
     bool video_only = false;                // render: the movie instead of the images
     bool json = false;                      // validate: the report as JSON
+    bool output_given = false;              // validate: -o was given, so its manifest is checked
     std::vector<std::string> command_line;  // as typed, for the manifest
     CompareArgs comparison;                 // render --reference DIR
 };
@@ -88,7 +89,7 @@ SceneOptions scene_options(const RenderArgs& args) {
         // A file named on the command line is relative to where facet runs.
         std::error_code ec;
         if (std::filesystem::is_regular_file(value, ec))
-            value = std::filesystem::absolute(value).string();
+            value = std::filesystem::weakly_canonical(value, ec).string();
         options.overrides.push_back(
             {"style", "\"" + value + "\"", "command line --style " + args.style});
     }
@@ -208,6 +209,7 @@ int render_command(const RenderArgs& args) {
         VideoArgs video{result.output_dir, args.video, "", 0, args.quiet};
         const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
         video.camera = scene.cameras[cameras.front()].name;
+        video.frames = frames.empty() ? scene.output.frames : frames;  // this run's, not older ones
         video_command(video);
     }
     if (compare) {
@@ -242,12 +244,17 @@ void print_validation(const SceneDesc& scene, const World& world, const RenderOp
 int validate_command(const RenderArgs& args) {
     Warnings warnings;
     try {
-        SceneDesc scene = load_scene(args.scene, scene_options(args));
+        const SceneOptions scene_opts = scene_options(args);
+        SceneDesc scene = load_scene(args.scene, scene_opts);
         warnings = scene.warnings;
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
         options.cameras = split_list(args.cameras);
         options.out_dir = args.out;
+        options.provenance.overrides = scene_opts.overrides;
+        // The output folder's manifest is checked only when -o names one:
+        // validating a scene must not depend on what some earlier run left in out/.
+        options.overwrite = !args.output_given;
         check_outputs(scene, options);
         World world = build_world(scene);
         warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
@@ -640,6 +647,7 @@ int run_command_line(int argc, char** argv) {
     }
     try {
         for (CLI::App* sub : app.get_subcommands()) reject_unknown_arguments(sub);
+        validate_args.output_given = validate->get_option("--output")->count() > 0;
         if (render->parsed()) return render_command(render_args);
         if (compare->parsed()) return compare_command(compare_args);
         if (validate->parsed()) return validate_command(validate_args);

@@ -54,15 +54,29 @@ std::vector<int> resolve_frames(const FrameSelection& s, const OutputDesc& outpu
         option = "-s/-e " + std::to_string(first) + "-" + std::to_string(last);
         if (first > last)
             fail_input(command_line(option), "", "the start frame is after the end frame");
+        const auto [low, high] = std::minmax_element(output.frames.begin(), output.frames.end());
+        if (!s.allow_outside && (first < *low || last > *high))
+            fail_input(command_line(option), "",
+                       "the frames reach outside the scene's frames " + output.frames_text +
+                           "; give --allow-outside to render them anyway");
+        // The scene's own frames in the range, and with --allow-outside the
+        // frames beyond them on the scene's grid (its first frame plus whole
+        // steps), so a scene of 1-72:2 extended to 80 gives 73, 75, ...
+        const long step = output.frames.size() > 1 ? output.frames[1] - output.frames[0] : 1;
+        constexpr long kMostFrames = 1000000;
+        if ((static_cast<long>(last) - first) / std::max(1L, step) > kMostFrames)
+            fail_input(command_line(option), "", "more than a million frames");
         for (int f : output.frames)
             if (f >= first && f <= last) frames.push_back(f);
-        if (frames.empty() && !s.allow_outside)
-            fail_input(command_line(option), "",
-                       "none of the scene's frames " + output.frames_text + " lies in " +
-                           std::to_string(first) + "-" + std::to_string(last));
+        for (long f = *low - step; f >= first; f -= step)
+            if (f <= last) frames.push_back(static_cast<int>(f));
+        for (long f = *high + step; f <= last; f += step)
+            if (f >= first) frames.push_back(static_cast<int>(f));
+        std::sort(frames.begin(), frames.end());
         if (frames.empty())
-            for (int f = first; f <= last; ++f) frames.push_back(f);
-        return frames;
+            fail_input(command_line(option), "",
+                       "no frame of the scene (" + output.frames_text + ") lies in " +
+                           std::to_string(first) + "-" + std::to_string(last));
     } else {
         return {};
     }

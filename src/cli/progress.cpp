@@ -42,6 +42,10 @@ ProgressReporter::ProgressReporter(std::FILE* stream, bool quiet, int width)
       width_(width > 0 ? width : terminal_width(stream)),
       start_(std::chrono::steady_clock::now()) {}
 
+ProgressReporter::~ProgressReporter() {
+    if (bar_open_) std::fprintf(stream_, "\n");
+}
+
 double ProgressReporter::elapsed() const {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
 }
@@ -83,7 +87,7 @@ std::string ProgressReporter::bar_line(const FrameProgress& p) const {
     head += '/';
     head += std::to_string(p.total);
     head += ' ' + std::to_string(percent) + '%';
-    std::string* optional[] = {&frame_part, &rate_part, &elapsed_part};
+    std::string* optional[] = {&frame_part, &rate_part, &elapsed_part, &eta_part};
     const int room = width_ - 1;
     constexpr int kMinBar = 10;
     auto length = [&] {
@@ -109,6 +113,7 @@ void ProgressReporter::frame_done(const FrameProgress& p) {
     if (quiet_ || !terminal_) return;
     // \r and erase-to-end: the line is redrawn in place, never appended.
     std::fprintf(stream_, "\r%s\033[K", bar_line(p).c_str());
+    bar_open_ = true;
     std::fflush(stream_);
 }
 
@@ -132,6 +137,7 @@ void ProgressReporter::frame_written(const FrameWritten& w) {
 void ProgressReporter::finish() {
     if (quiet_) return;
     if (terminal_) std::fprintf(stream_, "\n");
+    bar_open_ = false;
     const double seconds = elapsed();
     std::fprintf(stream_, "rendered %s in %s", count_of(done_, "image", "images").c_str(),
                  clock_text(seconds).c_str());

@@ -19,6 +19,9 @@ class ProgressReporter {
   public:
     // `width`: the terminal's columns, 0 to ask the terminal (COLUMNS, else 80).
     ProgressReporter(std::FILE* stream, bool quiet, int width = 0);
+    // Ends a bar that finish() did not (an error or an interrupt), so the
+    // message that follows starts on a line of its own.
+    ~ProgressReporter();
     // Shown before the first frame, so a slow first frame is not silence.
     void start(size_t total, const std::string& what);
     void frame_done(const FrameProgress& p);
@@ -35,6 +38,7 @@ class ProgressReporter {
     bool terminal_;
     int width_;
     size_t total_ = 0, done_ = 0, written_ = 0;
+    bool bar_open_ = false;  // a bar is drawn and its line not ended
     std::chrono::steady_clock::time_point start_;
 };
 

@@ -50,8 +50,14 @@ std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& fol
     });
     std::vector<ManifestFile> files;
     for (const ManifestFile& f : m.files)
-        if (f.pass == "color" && f.camera == camera && f.format == (has_png ? "png" : "exr"))
+        if (f.pass == "color" && f.camera == camera && f.format == (has_png ? "png" : "exr")) {
+            // As in compare: a manifest's paths must stay inside its folder.
+            const fs::path relative = fs::path(f.path).lexically_normal();
+            if (relative.empty() || relative.is_absolute() || *relative.begin() == "..")
+                throw Error(ExitCode::io_failure,
+                            folder + ": manifest path '" + f.path + "' leaves the folder");
             files.push_back(f);
+        }
     std::sort(files.begin(), files.end(),
               [](const ManifestFile& a, const ManifestFile& b) { return a.frame < b.frame; });
     return files;
@@ -115,8 +121,29 @@ int video_command(const VideoArgs& args) {
                                               ": no manifest.json (facet render -o OUT writes "
                                               "into OUT/SCENE/)");
     const Manifest m = read_manifest(manifest_path);
-    const std::vector<ManifestFile> files = colour_files(m, args.output_dir, args.camera);
-    const double fps = args.fps > 0 ? args.fps : m.fps;
+    std::vector<ManifestFile> files = colour_files(m, args.output_dir, args.camera);
+    if (!args.frames.empty())
+        std::erase_if(files, [&](const ManifestFile& f) {
+            return std::find(args.frames.begin(), args.frames.end(), f.frame) == args.frames.end();
+        });
+    if (files.empty())
+        throw Error(ExitCode::invalid_input,
+                    args.output_dir + ": no colour frames to make a movie of");
+    // Frames every k-th frame of the animation play at fps / k, so the
+    // movie keeps the animation's speed; uneven gaps cannot, and are said.
+    int step = 0;
+    bool even = true;
+    for (size_t i = 1; i < files.size(); ++i) {
+        const int gap = files[i].frame - files[i - 1].frame;
+        if (step == 0) step = gap;
+        even = even && gap == step;
+    }
+    double fps = args.fps > 0 ? args.fps : m.fps;
+    if (args.fps <= 0 && even && step > 1) fps /= step;
+    if (!even && !args.quiet)
+        std::fprintf(stderr,
+                     "facet: warning: the frames are not evenly spaced; the movie plays them at "
+                     "equal intervals\n");
     std::unique_ptr<VideoEncoder> encoder;
     int width = 0, height = 0;
     for (const ManifestFile& f : files) {
@@ -136,9 +163,14 @@ int video_command(const VideoArgs& args) {
     const auto parent = fs::path(args.movie).parent_path();
     if (!parent.empty()) make_directories(parent.string());
     write_file_atomically(args.movie, bytes);
+    // 4:2:0 movies are coded at even sides (video_encoder.hpp).
+    const bool even_sides = format != VideoFormat::gif;
+    const int coded_w = even_sides ? (width + 1) / 2 * 2 : width;
+    const int coded_h = even_sides ? (height + 1) / 2 * 2 : height;
     if (!args.quiet)
-        std::printf("wrote %s (%s, %dx%d, %g fps, %s)\n", args.movie.c_str(),
-                    count_of(files.size(), "frame", "frames").c_str(), width, height, fps,
+        std::printf("wrote %s (%s, %dx%d%s, %g fps, %s)\n", args.movie.c_str(),
+                    count_of(files.size(), "frame", "frames").c_str(), coded_w, coded_h,
+                    coded_w != width || coded_h != height ? " padded to even sides" : "", fps,
                     codec_name(format));
     return 0;
 }

@@ -2,6 +2,7 @@
 // `facet video OUTDIR MOVIE` and `render --video MOVIE`: a movie of a run's
 // colour frames, found through its manifest (docs/video.md).
 #include <string>
+#include <vector>
 
 namespace facet {
 
@@ -11,6 +12,7 @@ struct VideoArgs {
     std::string camera;      // needed when the run has several cameras
     double fps = 0;          // 0: the scene's
     bool quiet = false;
+    std::vector<int> frames;  // only these frames (render --video); empty: all the run has
 };
 
 // Checks the movie's name (its format) before any work: exit code 2.

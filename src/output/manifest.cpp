@@ -50,6 +50,7 @@ Manifest read_manifest(const std::string& path) {
         m.width = j.at("size").at(0).get<int>();
         m.height = j.at("size").at(1).get<int>();
         m.output_template = j.value("output_template", "");
+        m.scene_sha256 = j.value("scene_sha256", "");
         m.fps = j.value("fps", 24.0);
         for (const auto& o : j.value("overrides", nlohmann::json::array()))
             m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
@@ -84,12 +85,20 @@ std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
     if (a.width != b.width || a.height != b.height)
         return differ("size", std::to_string(a.width) + "x" + std::to_string(a.height),
                       std::to_string(b.width) + "x" + std::to_string(b.height));
-    if (a.output_template != b.output_template)
+    // A version-1 manifest recorded no template or scene hash: not a difference.
+    if (!a.output_template.empty() && a.output_template != b.output_template)
         return differ("output template", a.output_template, b.output_template);
+    if (!a.scene_sha256.empty() && !b.scene_sha256.empty() && a.scene_sha256 != b.scene_sha256)
+        return "the scene file changed since the manifest was written";
+    // The overrides as a set: order does not matter, the last value of a key
+    // wins, and settings that change no pixel are left out.
     auto overrides = [](const Manifest& m) {
-        std::string text;
+        std::map<std::string, std::string> effective;
         for (const ManifestOverride& o : m.overrides)
-            text += (text.empty() ? "" : " ") + o.key + "=" + o.value;
+            if (o.key != "assets.allow_paths_outside") effective[o.key] = o.value;
+        std::string text;
+        for (const auto& [key, value] : effective)
+            text += (text.empty() ? "" : " ") + key + "=" + value;
         return text.empty() ? std::string("none") : text;
     };
     if (overrides(a) != overrides(b)) return differ("overrides", overrides(a), overrides(b));
@@ -106,8 +115,13 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge) {
                 for (const auto& f : manifest.frames) rendered.insert({f.camera, f.frame});
                 for (const auto& f : old.frames)
                     if (!rendered.count({f.camera, f.frame})) manifest.frames.push_back(f);
+                // An old entry whose file this run has just rewritten (a name
+                // without {camera} or {frame}) would state a stale hash.
+                std::set<std::string> written;
+                for (const auto& f : manifest.files) written.insert(f.path);
                 for (const auto& f : old.files)
-                    if (!rendered.count({f.camera, f.frame})) manifest.files.push_back(f);
+                    if (!rendered.count({f.camera, f.frame}) && !written.count(f.path))
+                        manifest.files.push_back(f);
             }
         } catch (const Error&) {
             // An unreadable old manifest is replaced.
@@ -129,6 +143,7 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge) {
                   {"commit", manifest.facet_commit},
                   {"build", manifest.facet_build}};
     j["scene"] = manifest.scene;
+    j["scene_sha256"] = manifest.scene_sha256;
     j["style"] = manifest.style;
     j["size"] = {manifest.width, manifest.height};
     j["fps"] = manifest.fps;

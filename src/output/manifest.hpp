@@ -31,7 +31,8 @@ struct ManifestOverride {
 struct Manifest {
     // Provenance: the build that wrote it (core/version.hpp).
     std::string facet_version, facet_commit, facet_build;
-    std::string scene;  // relative to the manifest's folder
+    std::string scene;         // relative to the manifest's folder
+    std::string scene_sha256;  // of the scene file's bytes: an edited scene is other settings
     std::string style;
     int width = 0, height = 0;
     double fps = 24;  // the scene's, for movies made from the files
@@ -44,8 +45,9 @@ struct Manifest {
     std::vector<std::string> command_line;  // of the run that wrote the manifest last
 };
 
-// What must be equal for two runs to share a manifest: scene, style, size,
-// output template and overrides. "" when they are; else the first
+// What must be equal for two runs to share a manifest: scene (path and
+// content), style, size, output template and overrides (as a set, without
+// ones that change no pixel). "" when they are; else the first
 // difference, e.g. "style: 'toon' there, 'wireframe' now".
 std::string manifest_settings_difference(const Manifest& existing, const Manifest& run);
 

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
@@ -61,10 +62,16 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
     m.facet_build = build.build_type + ", " + build.simd + ", " + build.compiler;
     // Relative to the manifest, so the record does not depend on where facet ran.
     std::error_code ec;
-    const auto scene_path = std::filesystem::absolute(scene.path, ec);
-    const auto folder = std::filesystem::absolute(output_dir, ec);
+    // Normalised, so "./scenes/a.yaml" and "scenes/a.yaml" are the same scene.
+    const auto scene_path = std::filesystem::weakly_canonical(scene.path, ec);
+    const auto folder = std::filesystem::weakly_canonical(output_dir, ec);
     m.scene = scene_path.lexically_relative(folder).generic_string();
     if (m.scene.empty()) m.scene = scene.path;
+    try {
+        m.scene_sha256 = sha256_hex(read_input_file(scene.path, "scene"));
+    } catch (const Error&) {
+        // The scene was read moments ago; a scene that vanished has no hash.
+    }
     m.style = scene.style.name;
     m.width = scene.output.width;
     m.height = scene.output.height;

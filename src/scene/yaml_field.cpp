@@ -363,6 +363,9 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
                     fail_input(origin, walked,
                                "'" + parent + "' is an empty list; there is no item " + part);
                 const long index = list_item_index(current, part, origin, parent, walked);
+                // Fields are looked up by index: record the path that way, so
+                // errors in the value name the command line, not the file.
+                walked = join_path(parent, std::to_string(index));
                 if (last) {
                     current[static_cast<size_t>(index)] = value;
                     break;
@@ -383,7 +386,7 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
             }
             start = dot + 1;
         }
-        doc.overridden[ov.path] = ov.origin;
+        doc.overridden[walked] = ov.origin;
     }
 }
 

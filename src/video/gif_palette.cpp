@@ -37,10 +37,17 @@ int longest_side(const Box& box) {
 }  // namespace
 
 GifPalette make_gif_palette(const std::vector<std::vector<uint8_t>>& frames) {
+    // Per bin: how many pixels, and the sum of their real colours, so an
+    // entry is the mean of the colours it stands for (a flat background
+    // keeps its exact value), not a bin's centre.
     std::vector<uint64_t> count(kBins, 0);
+    std::vector<std::array<uint64_t, 3>> sums(kBins, {0, 0, 0});
     for (const auto& frame : frames)
-        for (size_t i = 0; i + 2 < frame.size(); i += 3)
-            ++count[static_cast<size_t>(bin_of(&frame[i]))];
+        for (size_t i = 0; i + 2 < frame.size(); i += 3) {
+            const auto b = static_cast<size_t>(bin_of(&frame[i]));
+            ++count[b];
+            for (size_t c = 0; c < 3; ++c) sums[b][c] += frame[i + c];
+        }
     std::vector<Box> boxes(1);
     for (int b = 0; b < kBins; ++b)
         if (count[static_cast<size_t>(b)]) {
@@ -78,9 +85,7 @@ GifPalette make_gif_palette(const std::vector<std::vector<uint8_t>>& frames) {
         if (box.pixels == 0) continue;
         uint64_t sum[3] = {0, 0, 0};
         for (int b : box.bins)
-            for (int c = 0; c < 3; ++c)
-                sum[c] +=
-                    count[static_cast<size_t>(b)] * static_cast<uint64_t>(channel(b, c) * 8 + 4);
+            for (size_t c = 0; c < 3; ++c) sum[c] += sums[static_cast<size_t>(b)][c];
         palette.colors.push_back({static_cast<uint8_t>(sum[0] / box.pixels),
                                   static_cast<uint8_t>(sum[1] / box.pixels),
                                   static_cast<uint8_t>(sum[2] / box.pixels)});
