@@ -206,7 +206,7 @@ int render_command(const RenderArgs& args) {
                     count_of(result.files_written, "file", "files").c_str(),
                     result.output_dir.c_str(), result.manifest_path.c_str());
     if (!args.video.empty()) {
-        VideoArgs video{result.output_dir, args.video, "", 0, args.quiet};
+        VideoArgs video{result.output_dir, args.video, "", 0, args.quiet, {}};
         const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
         video.camera = scene.cameras[cameras.front()].name;
         video.frames = frames.empty() ? scene.output.frames : frames;  // this run's, not older ones
