@@ -497,6 +497,90 @@ Override parse_define(const std::string& text) {
 
 namespace {
 
+// The subcommands' options, one function each (run_command_line stays a
+// list of commands).
+CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
+    CLI::App* cmd = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
+    add_scene_options(cmd, args);
+    add_output_option(cmd, args.out, "Output folder (files go to OUTPUT/SCENE/)");
+    add_threads_option(cmd, args.threads);
+    cmd->add_option("--video", args.video,
+                    "Also make a movie of the colour frames: .mp4 (H.264), .webm (VP9), .gif");
+    cmd->add_flag("--video-only", args.video_only,
+                  "Keep only the movie: the frames are written to a temporary folder");
+    cmd->add_flag("--dry-run", args.dry_run,
+                  "List the files the render would write (then the manifest); write nothing");
+    cmd->add_flag("--overwrite", args.overwrite,
+                  "Start a new manifest when the output folder holds one of other settings");
+    cmd->add_option("--reference", args.comparison.ref,
+                    "Compare the output with this reference folder (facet compare)");
+    add_comparison_options(cmd, args.comparison, false);
+    return cmd;
+}
+
+CLI::App* add_compare_command(CLI::App& app, CompareArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "compare", "Compare two runs' outputs (or two images) against thresholds; write a report");
+    cmd->add_option("ref", args.ref, "Reference output folder or image")->required();
+    cmd->add_option("new", args.candidate, "New output folder or image");
+    cmd->add_flag(
+        "--self-test", args.self_test,
+        "Judge each reference frame against the next: can the thresholds tell them apart?");
+    add_quiet_flag(cmd, args.quiet);
+    add_comparison_options(cmd, args, true);
+    return cmd;
+}
+
+CLI::App* add_sheet_command(CLI::App& app, SheetArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "sheet", "Render one frame with each style or parameter value into a labelled grid PNG");
+    cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
+    cmd->add_option("--styles", args.styles, "Presets, comma-separated, or 'all'");
+    cmd->add_option("--vary", args.vary,
+                    "One value per cell: key.path=v1,v2,... (e.g. style.cels=2,3,4,6)");
+    add_frame_options(cmd, args.frames);
+    cmd->add_option("--size,--cell", args.size, "Cell size WIDTHxHEIGHT (default 320x240)");
+    cmd->add_option("--columns", args.columns, "Cells per row (default: about square)")
+        ->check(CLI::Range(0, 64));
+    add_output_option(cmd, args.output, "PNG to write (default out/SCENE-sheet.png)");
+    add_threads_option(cmd, args.threads);
+    add_define_option(cmd, args.defines);
+    add_quiet_flag(cmd, args.quiet);
+    return cmd;
+}
+
+CLI::App* add_validate_command(CLI::App& app, RenderArgs& args) {
+    CLI::App* cmd =
+        app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
+    add_scene_options(cmd, args);
+    cmd->add_flag("--json", args.json, "Print the result, every warning and the error as JSON");
+    add_output_option(cmd, args.out,
+                      "Output folder a render would use (checks its manifest's settings)");
+    return cmd;
+}
+
+CLI::App* add_bench_command(CLI::App& app, BenchArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "bench", "Thread study: render a scene's frames at several thread counts; table and plot");
+    add_scene_options(cmd, args.scene);
+    cmd->add_option("--threads", args.threads,
+                    "Thread counts, e.g. 1,2,4 (0: one per core; default 1,2)");
+    add_output_option(cmd, args.output, "Folder for SCENE-threads.md and .png (default out/bench)");
+    return cmd;
+}
+
+CLI::App* add_video_command(CLI::App& app, VideoArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
+        "video", "Make a movie (.mp4, .webm, .gif) of a run's colour frames, through its manifest");
+    cmd->add_option("output", args.output_dir, "A run's folder (holds manifest.json)")->required();
+    cmd->add_option("movie", args.movie, "Movie to write: .mp4, .webm or .gif")->required();
+    cmd->add_option("--camera", args.camera, "Camera, when the run has several");
+    cmd->add_option("--fps", args.fps, "Frames per second (default: the scene's)")
+        ->check(CLI::Range(0.01, 1000.0));
+    add_quiet_flag(cmd, args.quiet);
+    return cmd;
+}
+
 // Prints an error as every command does and returns its exit code.
 int report_error(const std::exception& error) {
     std::fprintf(stderr, "facet: error: %s\n", error.what());
@@ -532,41 +616,13 @@ int run_command_line(int argc, char** argv) {
     app.set_version_flag("--version", version_line());
 
     RenderArgs render_args;
-    CLI::App* render = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
-    add_scene_options(render, render_args);
-    add_output_option(render, render_args.out, "Output folder (files go to OUTPUT/SCENE/)");
-    add_threads_option(render, render_args.threads);
-    render->add_option("--video", render_args.video,
-                       "Also make a movie of the colour frames: .mp4 (H.264), .webm (VP9), .gif");
-    render->add_flag("--video-only", render_args.video_only,
-                     "Keep only the movie: the frames are written to a temporary folder");
-    render->add_flag("--dry-run", render_args.dry_run,
-                     "List the files the render would write (then the manifest); write nothing");
-    render->add_flag("--overwrite", render_args.overwrite,
-                     "Start a new manifest when the output folder holds one of other settings");
-    render->add_option("--reference", render_args.comparison.ref,
-                       "Compare the output with this reference folder (facet compare)");
-    add_comparison_options(render, render_args.comparison, false);
+    CLI::App* render = add_render_command(app, render_args);
 
     CompareArgs compare_args;
-    CLI::App* compare = app.add_subcommand(
-        "compare", "Compare two runs' outputs (or two images) against thresholds; write a report");
-    compare->add_option("ref", compare_args.ref, "Reference output folder or image")->required();
-    compare->add_option("new", compare_args.candidate, "New output folder or image");
-    compare->add_flag(
-        "--self-test", compare_args.self_test,
-        "Judge each reference frame against the next: can the thresholds tell them apart?");
-    add_quiet_flag(compare, compare_args.quiet);
-    add_comparison_options(compare, compare_args, true);
+    CLI::App* compare = add_compare_command(app, compare_args);
 
     RenderArgs validate_args;
-    CLI::App* validate =
-        app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
-    add_scene_options(validate, validate_args);
-    validate->add_flag("--json", validate_args.json,
-                       "Print the result, every warning and the error as JSON");
-    add_output_option(validate, validate_args.out,
-                      "Output folder a render would use (checks its manifest's settings)");
+    CLI::App* validate = add_validate_command(app, validate_args);
 
     std::string style_name;
     bool styles_json = false;
@@ -576,29 +632,10 @@ int run_command_line(int argc, char** argv) {
     styles->add_flag("--json", styles_json, "The list as JSON");
 
     SheetArgs sheet_args;
-    CLI::App* sheet = app.add_subcommand(
-        "sheet", "Render one frame with each style or parameter value into a labelled grid PNG");
-    sheet->add_option("scene", sheet_args.scene, "Scene file (YAML)")->required();
-    sheet->add_option("--styles", sheet_args.styles, "Presets, comma-separated, or 'all'");
-    sheet->add_option("--vary", sheet_args.vary,
-                      "One value per cell: key.path=v1,v2,... (e.g. style.cels=2,3,4,6)");
-    add_frame_options(sheet, sheet_args.frames);
-    sheet->add_option("--size,--cell", sheet_args.size, "Cell size WIDTHxHEIGHT (default 320x240)");
-    sheet->add_option("--columns", sheet_args.columns, "Cells per row (default: about square)")
-        ->check(CLI::Range(0, 64));
-    add_output_option(sheet, sheet_args.output, "PNG to write (default out/SCENE-sheet.png)");
-    add_threads_option(sheet, sheet_args.threads);
-    add_define_option(sheet, sheet_args.defines);
-    add_quiet_flag(sheet, sheet_args.quiet);
+    CLI::App* sheet = add_sheet_command(app, sheet_args);
 
     BenchArgs bench_args;
-    CLI::App* bench = app.add_subcommand(
-        "bench", "Thread study: render a scene's frames at several thread counts; table and plot");
-    add_scene_options(bench, bench_args.scene);
-    bench->add_option("--threads", bench_args.threads,
-                      "Thread counts, e.g. 1,2,4 (0: one per core; default 1,2)");
-    add_output_option(bench, bench_args.output,
-                      "Folder for SCENE-threads.md and .png (default out/bench)");
+    CLI::App* bench = add_bench_command(app, bench_args);
 
     std::string mesh_path;
     bool info_allow_outside = false;
@@ -610,15 +647,7 @@ int run_command_line(int argc, char** argv) {
     add_asset_paths_flag(info, info_allow_outside);
 
     VideoArgs video_args;
-    CLI::App* video = app.add_subcommand(
-        "video", "Make a movie (.mp4, .webm, .gif) of a run's colour frames, through its manifest");
-    video->add_option("output", video_args.output_dir, "A run's folder (holds manifest.json)")
-        ->required();
-    video->add_option("movie", video_args.movie, "Movie to write: .mp4, .webm or .gif")->required();
-    video->add_option("--camera", video_args.camera, "Camera, when the run has several");
-    video->add_option("--fps", video_args.fps, "Frames per second (default: the scene's)")
-        ->check(CLI::Range(0.01, 1000.0));
-    add_quiet_flag(video, video_args.quiet);
+    CLI::App* video = add_video_command(app, video_args);
 
     std::string shell;
     CLI::App* completion =
