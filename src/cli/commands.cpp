@@ -69,10 +69,6 @@ struct RenderArgs {
     CompareArgs comparison;                 // render --reference DIR
 };
 
-SourceLocation command_line(const std::string& what) {
-    return {"", 0, 0, "command line " + what};
-}
-
 // Command-line settings become overrides of the scene's values, so they go
 // through exactly the checks the scene file's own values go through.
 SceneOptions scene_options(const RenderArgs& args) {

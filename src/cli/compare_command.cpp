@@ -16,20 +16,14 @@
 #include "scene/thresholds_file.hpp"
 
 namespace facet {
-namespace {
-
-SourceLocation option_location(const std::string& what) {
-    return {"", 0, 0, "command line " + what};
-}
-
-}  // namespace
+namespace {}  // namespace
 
 CompareThresholds comparison_thresholds(const CompareArgs& args) {
     CompareThresholds t = args.thresholds_file.empty() ? default_thresholds()
                                                        : load_thresholds_file(args.thresholds_file);
     for (const std::string& text : args.thresholds)
         if (std::string problem = apply_threshold_override(t, text); !problem.empty())
-            fail_input(option_location("--threshold " + text), "", problem);
+            fail_input(command_line("--threshold " + text), "", problem);
     for (const std::string& text : args.masks) {
         CompareMask m;
         char extra = 0;
@@ -38,7 +32,7 @@ CompareThresholds comparison_thresholds(const CompareArgs& args) {
                 4 ||
             m.x < 0 || m.y < 0 || m.width < 1 || m.height < 1 || m.x > kMost || m.y > kMost ||
             m.width > kMost || m.height > kMost)
-            fail_input(option_location("--mask " + text), "",
+            fail_input(command_line("--mask " + text), "",
                        "expected x,y,width,height in pixels, e.g. 0,0,120,40");
         t.masks.push_back(m);
     }
@@ -54,7 +48,7 @@ CompareThresholds comparison_thresholds(const CompareArgs& args) {
         try {
             read_png(m.image);
         } catch (const Error& e) {
-            fail_input(option_location("mask image " + m.image), "",
+            fail_input(command_line("mask image " + m.image), "",
                        "cannot be read as a PNG: " + e.detail());
         }
     }
@@ -133,11 +127,11 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
     if (!args.update_reference.empty()) {
         mode = update_mode_from_name(args.update_reference);
         if (!mode)
-            fail_input(option_location("--update-reference " + args.update_reference), "",
+            fail_input(command_line("--update-reference " + args.update_reference), "",
                        "expected failed, missing or all");
         std::error_code ec;
         if (!std::filesystem::is_directory(args.candidate, ec))
-            fail_input(option_location("--update-reference"), "",
+            fail_input(command_line("--update-reference"), "",
                        "updates need two output folders, not image files");
         prepare_reference_folder(args.ref, args.candidate);
     }
@@ -211,12 +205,12 @@ int compare_command(const CompareArgs& args) {
     if (args.self_test) {
         std::error_code ec;
         if (!args.candidate.empty() || !std::filesystem::is_directory(args.ref, ec))
-            fail_input(option_location("--self-test " + args.ref), "",
+            fail_input(command_line("--self-test " + args.ref), "",
                        "give one reference folder (with manifest.json)");
         return self_test_command(args, thresholds);
     }
     if (args.candidate.empty())
-        fail_input(option_location("compare"), "", "give REF and NEW (or --self-test REFDIR)");
+        fail_input(command_line("compare"), "", "give REF and NEW (or --self-test REFDIR)");
     return run_comparison(args, thresholds, std::nullopt);
 }
 

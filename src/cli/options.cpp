@@ -11,16 +11,16 @@
 namespace facet {
 namespace {
 
-SourceLocation command_line(const std::string& what) {
-    return {"", 0, 0, "command line " + what};
-}
-
 std::string range_text(const std::vector<int>& frames) {
     if (frames.empty()) return "none";
     return std::to_string(frames.front()) + "-" + std::to_string(frames.back());
 }
 
 }  // namespace
+
+SourceLocation command_line(const std::string& what) {
+    return {"", 0, 0, "command line " + what};
+}
 
 void add_frame_options(CLI::App* cmd, FrameSelection& s) {
     cmd->add_option("--frames", s.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");

@@ -15,6 +15,9 @@ class App;
 
 namespace facet {
 
+// Where a value given on the command line is reported: "command line WHAT".
+SourceLocation command_line(const std::string& what);
+
 // --frames LIST, -f N, -s/--start N, -e/--end N, --allow-outside.
 struct FrameSelection {
     std::string frames;

@@ -19,10 +19,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-SourceLocation command_line(const std::string& what) {
-    return {"", 0, 0, "command line " + what};
-}
-
 // The colour frames of one camera, PNG where the run wrote PNG.
 std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& folder,
                                        const std::string& camera_asked) {
@@ -51,11 +47,7 @@ std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& fol
     std::vector<ManifestFile> files;
     for (const ManifestFile& f : m.files)
         if (f.pass == "color" && f.camera == camera && f.format == (has_png ? "png" : "exr")) {
-            // As in compare: a manifest's paths must stay inside its folder.
-            const fs::path relative = fs::path(f.path).lexically_normal();
-            if (relative.empty() || relative.is_absolute() || *relative.begin() == "..")
-                throw Error(ExitCode::io_failure,
-                            folder + ": manifest path '" + f.path + "' leaves the folder");
+            manifest_file_path(folder, f.path);  // throws when it leaves the folder
             files.push_back(f);
         }
     std::sort(files.begin(), files.end(),

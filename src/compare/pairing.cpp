@@ -36,14 +36,9 @@ std::map<KeyTuple, ManifestFile> manifest_files(const std::string& dir) {
     }
     std::map<KeyTuple, ManifestFile> files;
     for (ManifestFile& f : m.files) {
-        // A manifest is a file someone may have edited: its paths must stay
-        // inside its folder, or compare would read (and an update write or
-        // delete) files elsewhere.
-        const fs::path relative = fs::path(f.path).lexically_normal();
-        if (relative.empty() || relative.is_absolute() || *relative.begin() == "..")
-            throw Error(ExitCode::io_failure, manifest.string() + ": file path '" + f.path +
-                                                  "' leaves the manifest's folder");
-        f.path = (fs::path(dir) / relative).string();
+        // Compare would otherwise read (and an update write or delete)
+        // files outside the folder.
+        f.path = manifest_file_path(dir, f.path);
         files[{f.camera, f.pass, f.frame, f.format}] = f;
     }
     return files;

@@ -76,6 +76,15 @@ Manifest read_manifest(const std::string& path) {
     }
 }
 
+std::string manifest_file_path(const std::string& folder, const std::string& relative) {
+    const std::filesystem::path path = std::filesystem::path(relative).lexically_normal();
+    if (path.empty() || path.is_absolute() || *path.begin() == "..")
+        throw Error(ExitCode::io_failure,
+                    (std::filesystem::path(folder) / "manifest.json").string() + ": file path '" +
+                        relative + "' leaves the manifest's folder");
+    return (std::filesystem::path(folder) / path).string();
+}
+
 std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
     auto differ = [](const std::string& what, const std::string& there, const std::string& now) {
         return what + ": '" + there + "' there, '" + now + "' now";

@@ -61,4 +61,9 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge = tru
 
 Manifest read_manifest(const std::string& path);
 
+// The file a manifest in `folder` lists as `relative`. A manifest may have
+// been edited by hand: a path that leaves the folder (absolute, or through
+// "..") throws Error(io_failure), so no reader touches files elsewhere.
+std::string manifest_file_path(const std::string& folder, const std::string& relative);
+
 }  // namespace facet
