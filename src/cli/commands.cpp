@@ -15,15 +15,18 @@
 
 #include "assets/mesh.hpp"
 #include "cli/compare_command.hpp"
+#include "cli/farm_commands.hpp"
 #include "cli/inspect_commands.hpp"
 #include "cli/options.hpp"
 #include "cli/progress.hpp"
+#include "cli/render_args.hpp"
 #include "cli/shell_docs.hpp"
 #include "cli/video_command.hpp"
 #include "compare/thresholds.hpp"
 #include "core/color.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/thread_pool.hpp"
 #include "core/version.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
@@ -46,31 +49,8 @@ extern "C" void on_interrupt(int) {
     g_interrupted.store(true);
 }
 
-struct RenderArgs {
-    std::string scene;
-    FrameSelection frames;
-    std::string size;
-    std::string passes;   // e.g. "color,depth"
-    std::string formats;  // e.g. "png,exr"
-    std::string out = "out";
-    unsigned threads = 0;
-    std::string style;
-    std::string cameras;  // comma-separated names, or "all"
-    std::vector<std::string> defines;
-    bool quiet = false;
-    bool allow_asset_paths_outside = false;
-    bool overwrite = false;
-    bool dry_run = false;                   // render: list the files, write none
-    std::string video;                      // render: a movie of the colour frames too
-    bool video_only = false;                // render: the movie instead of the images
-    bool json = false;                      // validate: the report as JSON
-    bool output_given = false;              // validate: -o was given, so its manifest is checked
-    std::vector<std::string> command_line;  // as typed, for the manifest
-    CompareArgs comparison;                 // render --reference DIR
-};
+}  // namespace
 
-// Command-line settings become overrides of the scene's values, so they go
-// through exactly the checks the scene file's own values go through.
 SceneOptions scene_options(const RenderArgs& args) {
     SceneOptions options;
     options.style_dirs = default_style_dirs();
@@ -115,6 +95,8 @@ std::vector<std::string> split_list(const std::string& text) {
     return items;
 }
 
+namespace {
+
 void print_warnings(const SceneDesc& scene, const World& world) {
     for (const Warnings* list : {&scene.warnings, &world.warnings})
         for (const Warning& w : *list)
@@ -154,6 +136,22 @@ int render_command(const RenderArgs& args) {
     SceneDesc scene = load_scene(args.scene, scene_opts);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
+    // A farm task: its part of the job's frames.
+    std::vector<int> part_frames;
+    const std::optional<RunPart> part = choose_part(
+        args.chunk, frames.empty() ? scene.output.frames : frames, part_frames, args.quiet);
+    if (part) {
+        if (compare || !args.video.empty())
+            fail_input(command_line(compare ? "--reference" : "--video"), "",
+                       "a chunk writes a partial manifest: compare or make the movie after "
+                       "facet merge");
+        if (part_frames.empty()) {
+            if (!args.quiet)
+                std::printf("this chunk has no frames (more chunks than frames): nothing to do\n");
+            return 0;
+        }
+        frames = part_frames;
+    }
     if (!compare && !args.comparison.update_reference.empty())
         fail_input(command_line("--update-reference"), "",
                    "give the reference folder with --reference DIR");
@@ -167,7 +165,9 @@ int render_command(const RenderArgs& args) {
     options.out_dir = args.out;
     options.cancel = &g_interrupted;
     options.overwrite = args.overwrite;
-    options.provenance = {args.command_line, scene_opts.overrides};
+    options.provenance = {args.command_line, scene_opts.overrides, ""};
+    options.part = part;
+    options.skip_existing = args.chunk.skip_existing;
     if (!args.video.empty()) {
         check_movie_name(args.video);
         if (!scene.output.write_color)
@@ -190,9 +190,12 @@ int render_command(const RenderArgs& args) {
     World world = build_world(scene);
     if (!args.quiet) print_warnings(scene, world);
     ProgressReporter progress(stderr, args.quiet);
-    const size_t images = (frames.empty() ? scene.output.frames.size() : frames.size()) *
-                          select_cameras(scene, options.cameras).size();
-    progress.start(images, "'" + scene.name + "' to " + args.out);
+    options.on_plan = [&](size_t to_render, size_t skipped) {
+        if (skipped > 0 && !args.quiet)
+            std::fprintf(stderr, "facet: %s already written (files match their recorded hashes)\n",
+                         count_of(skipped, "image is", "images are").c_str());
+        progress.start(to_render, "'" + scene.name + "' to " + args.out);
+    };
     RenderResult result = render_scene(
         scene, world, options, [&](const FrameProgress& p) { progress.frame_done(p); },
         [&](const FrameWritten& w) { progress.frame_written(w); });
@@ -254,7 +257,7 @@ int validate_command(const RenderArgs& args) {
         check_outputs(scene, options);
         World world = build_world(scene);
         warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
-        check_render_memory(scene, world, std::max(1u, std::thread::hardware_concurrency()));
+        check_render_memory(scene, world, available_cores());
         if (args.json) {
             ValidateFacts facts{scene.path,
                                 scene.style.name,
@@ -396,8 +399,7 @@ int bench_command(const BenchArgs& args) {
             fail_input(command_line("--threads " + args.threads), "",
                        "expected thread counts from 0 (one per core) to 256, e.g. 1,2,4");
         // 0 means one per core, as everywhere else.
-        threads.push_back(n == 0 ? std::max(1u, std::thread::hardware_concurrency())
-                                 : static_cast<unsigned>(n));
+        threads.push_back(n == 0 ? available_cores() : static_cast<unsigned>(n));
     }
     if (threads.empty())
         fail_input(command_line("--threads " + args.threads), "", "give at least one thread count");
@@ -425,6 +427,8 @@ void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
                   "Let meshes name files outside their own folder (trusted assets only)");
 }
 
+}  // namespace
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
@@ -438,8 +442,6 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     add_quiet_flag(cmd, args.quiet);
     add_asset_paths_flag(cmd, args.allow_asset_paths_outside);
 }
-
-}  // namespace
 
 std::vector<std::string> default_style_dirs() {
     std::vector<std::string> dirs;
@@ -508,6 +510,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
                   "List the files the render would write (then the manifest); write nothing");
     cmd->add_flag("--overwrite", args.overwrite,
                   "Start a new manifest when the output folder holds one of other settings");
+    add_chunk_options(cmd, args.chunk);
     cmd->add_option("--reference", args.comparison.ref,
                     "Compare the output with this reference folder (facet compare)");
     add_comparison_options(cmd, args.comparison, false);
@@ -645,6 +648,11 @@ int run_command_line(int argc, char** argv) {
     VideoArgs video_args;
     CLI::App* video = add_video_command(app, video_args);
 
+    MergeArgs merge_args;
+    CLI::App* merge = add_merge_command(app, merge_args);
+    FarmArgs slurm_args, openjd_args;
+    CLI::App* farm = add_farm_command(app, slurm_args, openjd_args);
+
     std::string shell;
     CLI::App* completion =
         app.add_subcommand("completion", "Print a shell completion script (bash)");
@@ -661,6 +669,7 @@ int run_command_line(int argc, char** argv) {
     for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
         sub->allow_extras();
     render_args.command_line.assign(argv, argv + argc);
+    merge_args.command_line = render_args.command_line;
     try {
         check_subcommand_name(app, argc, argv);
         app.parse(argc, argv);
@@ -671,7 +680,10 @@ int run_command_line(int argc, char** argv) {
         return report_error(e);
     }
     try {
-        for (CLI::App* sub : app.get_subcommands()) reject_unknown_arguments(sub);
+        for (CLI::App* sub : app.get_subcommands()) {
+            reject_unknown_arguments(sub);
+            for (CLI::App* nested : sub->get_subcommands()) reject_unknown_arguments(nested);
+        }
         validate_args.output_given = validate->get_option("--output")->count() > 0;
         if (render->parsed()) return render_command(render_args);
         if (compare->parsed()) return compare_command(compare_args);
@@ -681,6 +693,10 @@ int run_command_line(int argc, char** argv) {
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
         if (video->parsed()) return video_command(video_args);
+        if (merge->parsed()) return merge_command(merge_args);
+        if (farm->parsed())
+            return farm_command(farm->get_subcommand("openjd")->parsed() ? openjd_args : slurm_args,
+                                farm->get_subcommand("openjd")->parsed());
         if (help->parsed()) return help_command(app, help_topic);
         if (completion->parsed()) {
             std::vector<std::string> names;

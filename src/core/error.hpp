@@ -13,6 +13,9 @@ enum class ExitCode : int {
     invalid_input = 2,  // usage error, invalid scene, style or asset
     comparison_failed = 3,
     io_failure = 4,
+    // Stopped by SIGINT or SIGTERM (Ctrl-C, a scheduler's time limit or
+    // cancel) after writing what was done: rerun with --skip-existing.
+    interrupted = 5,
 };
 
 // A place in a text file, 1-based. line == 0 means "the whole file";

@@ -20,8 +20,8 @@ int parse_int(std::string_view text, const std::string& whole) {
     const char* end = begin + trimmed.size();
     auto [ptr, ec] = std::from_chars(begin, end, value);
     if (trimmed.empty() || ec != std::errc() || ptr != end)
-        throw Error(ExitCode::invalid_input, "'" + std::string(text) + "' in frame range '" + whole +
-                                    "' is not a whole number");
+        throw Error(ExitCode::invalid_input, "'" + std::string(text) + "' in frame range '" +
+                                                 whole + "' is not a whole number");
     return value;
 }
 
@@ -45,7 +45,8 @@ std::vector<int> parse_frame_ranges(const std::string& text) {
             step = parse_int(part.substr(colon + 1), text);
             part = part.substr(0, colon);
             if (step < 1)
-                throw Error(ExitCode::invalid_input, "step in frame range '" + text + "' must be >= 1");
+                throw Error(ExitCode::invalid_input,
+                            "step in frame range '" + text + "' must be >= 1");
         }
         // A '-' after the first character separates the bounds (the first may be a sign).
         size_t dash = part.find('-', part.find_first_not_of(' ') + 1);
@@ -57,16 +58,49 @@ std::vector<int> parse_frame_ranges(const std::string& text) {
             last = parse_int(part.substr(dash + 1), text);
         }
         if (last < first)
-            throw Error(ExitCode::invalid_input, "frame range '" + std::string(part) +
-                                        "' ends before it starts");
+            throw Error(ExitCode::invalid_input,
+                        "frame range '" + std::string(part) + "' ends before it starts");
         if ((static_cast<long long>(last) - first) / step + frames.size() >= kMaxFrames)
             throw Error(ExitCode::invalid_input, "frame range '" + text + "' has more than " +
-                                        std::to_string(kMaxFrames) + " frames");
+                                                     std::to_string(kMaxFrames) + " frames");
         for (long long f = first; f <= last; f += step) frames.push_back(static_cast<int>(f));
     }
     std::sort(frames.begin(), frames.end());
     frames.erase(std::unique(frames.begin(), frames.end()), frames.end());
     return frames;
+}
+
+std::string format_frame_ranges(const std::vector<int>& frames) {
+    std::string text;
+    auto item = [&](const std::string& part) {
+        if (!text.empty()) text += ',';
+        text += part;
+    };
+    size_t i = 0;
+    while (i < frames.size()) {
+        // The longest run from i with the step of its first two frames.
+        size_t end = i + 1;
+        if (i + 2 < frames.size()) {
+            const long long step = static_cast<long long>(frames[i + 1]) - frames[i];
+            while (end < frames.size() &&
+                   static_cast<long long>(frames[end]) - frames[end - 1] == step)
+                ++end;
+            if (end - i >= 3) {
+                std::string range =
+                    std::to_string(frames[i]) + "-" + std::to_string(frames[end - 1]);
+                if (step != 1) {
+                    range += ':';
+                    range += std::to_string(step);
+                }
+                item(range);
+                i = end;
+                continue;
+            }
+        }
+        item(std::to_string(frames[i]));
+        ++i;
+    }
+    return text;
 }
 
 }  // namespace facet

@@ -13,9 +13,14 @@
 
 namespace facet {
 
+// The cores this process may run on: its CPU affinity, which a batch
+// scheduler (Slurm, Kubernetes, taskset) narrows to the cores it allotted,
+// unlike std::thread::hardware_concurrency, which counts the whole machine.
+unsigned available_cores();
+
 class ThreadPool {
   public:
-    // threads == 0 picks the hardware concurrency.
+    // threads == 0 picks available_cores().
     explicit ThreadPool(unsigned threads);
     ~ThreadPool();
     ThreadPool(const ThreadPool&) = delete;

@@ -15,15 +15,6 @@ namespace {
 
 constexpr const char* kTempMark = ".facet-tmp.";
 
-std::string host_name() {
-    char name[256] = {};
-    if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
-    std::string host = name;
-    for (char& c : host)
-        if (c == '/' || c == '.') c = '_';  // the mark's separator stays unambiguous
-    return host;
-}
-
 // ".frame.png.facet-tmp.HOST.PID" beside "frame.png": hidden, and saying
 // who wrote it, so that a rerun can tell its own leftovers from another
 // live process's file (render farm nodes share output folders).
@@ -45,6 +36,15 @@ void sync_folder(const std::string& path) {
 }
 
 }  // namespace
+
+std::string host_name() {
+    char name[256] = {};
+    if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
+    std::string host = name;
+    for (char& c : host)
+        if (c == '/' || c == '.') c = '_';  // the mark's separator stays unambiguous
+    return host;
+}
 
 void write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes) {
     const std::string temp = temp_name(path);

@@ -5,11 +5,13 @@
 #include <fstream>
 #include <map>
 #include <set>
+#include <sstream>
 #include <tuple>
 
 #include <nlohmann/json.hpp>
 
 #include "core/error.hpp"
+#include "core/frame_range.hpp"
 #include "output/atomic_file.hpp"
 
 namespace facet {
@@ -22,14 +24,84 @@ using Json = nlohmann::ordered_json;
 // identical frames and files.
 constexpr int kManifestVersion = 2;
 
-void read_timings(const nlohmann::json& list, Manifest& m) {
-    std::map<std::pair<std::string, int>, std::pair<double, double>> timings;
-    for (const auto& t : list)
-        timings[{t.value("camera", ""), t.at("frame").get<int>()}] = {t.value("render_ms", 0.0),
-                                                                      t.value("encode_ms", 0.0)};
+void read_timings(const nlohmann::json& t, Manifest& m) {
+    m.threads = t.value("threads", 0);
+    m.host = t.value("host", "");
+    m.command_line = t.value("command_line", std::vector<std::string>{});
+    std::map<std::pair<std::string, int>, const nlohmann::json*> timings;
+    for (const auto& entry : t.at("frames"))
+        timings[{entry.value("camera", ""), entry.at("frame").get<int>()}] = &entry;
     for (ManifestFrame& f : m.frames)
-        if (auto it = timings.find({f.camera, f.frame}); it != timings.end())
-            std::tie(f.render_ms, f.encode_ms) = it->second;
+        if (auto it = timings.find({f.camera, f.frame}); it != timings.end()) {
+            f.render_ms = it->second->value("render_ms", 0.0);
+            f.encode_ms = it->second->value("encode_ms", 0.0);
+            f.host = it->second->value("host", "");
+        }
+    for (const auto& p : t.value("parts", nlohmann::json::array()))
+        m.parts.push_back({p.at("name").get<std::string>(), p.value("host", ""),
+                           p.value("commit", ""), p.value("threads", 0),
+                           p.value("command_line", std::vector<std::string>{})});
+}
+
+// Frame lists are stored as range text ("1-48"), which reads back exactly.
+std::vector<int> frames_field(const nlohmann::json& j, const char* key) {
+    try {
+        return parse_frame_ranges(j.at(key).get<std::string>());
+    } catch (const Error& e) {
+        throw nlohmann::json::other_error::create(501, std::string(key) + ": " + e.what(), nullptr);
+    }
+}
+
+void read_job(const nlohmann::json& j, Manifest& m) {
+    if (j.contains("job"))
+        m.job = ManifestJob{frames_field(j["job"], "frames"),
+                            j["job"].at("cameras").get<std::vector<std::string>>()};
+    if (j.contains("part")) {
+        const auto& p = j["part"];
+        m.part = ManifestPart{frames_field(p, "frames"), p.value("chunk_index", -1),
+                              p.value("chunk_count", 0)};
+    }
+}
+
+Json job_json(const Manifest& m) {
+    Json job;
+    job["frames"] = format_frame_ranges(m.job->frames);
+    job["cameras"] = m.job->cameras;
+    return job;
+}
+
+Json part_json(const ManifestPart& part) {
+    Json j;
+    j["frames"] = format_frame_ranges(part.frames);
+    if (part.chunk_index >= 0) {
+        j["chunk_index"] = part.chunk_index;
+        j["chunk_count"] = part.chunk_count;
+    }
+    return j;
+}
+
+Json timings_json(const Manifest& manifest) {
+    Json timings;
+    timings["threads"] = manifest.threads;
+    timings["host"] = manifest.host;
+    timings["command_line"] = manifest.command_line;
+    timings["frames"] = Json::array();
+    for (const auto& f : manifest.frames)
+        timings["frames"].push_back({{"frame", f.frame},
+                                     {"camera", f.camera},
+                                     {"host", f.host},
+                                     {"render_ms", f.render_ms},
+                                     {"encode_ms", f.encode_ms}});
+    if (!manifest.parts.empty()) {
+        timings["parts"] = Json::array();
+        for (const auto& p : manifest.parts)
+            timings["parts"].push_back({{"name", p.name},
+                                        {"host", p.host},
+                                        {"commit", p.facet_commit},
+                                        {"threads", p.threads},
+                                        {"command_line", p.command_line}});
+    }
+    return timings;
 }
 
 }  // namespace
@@ -37,8 +109,15 @@ void read_timings(const nlohmann::json& list, Manifest& m) {
 Manifest read_manifest(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw Error(ExitCode::io_failure, path + ": cannot open manifest");
+    std::stringstream text;
+    text << in.rdbuf();
+    return parse_manifest(text.str(), path);
+}
+
+Manifest parse_manifest(const std::string& text, const std::string& where) {
+    const std::string& path = where;
     try {
-        nlohmann::json j = nlohmann::json::parse(in);
+        nlohmann::json j = nlohmann::json::parse(text);
         Manifest m;
         if (j.contains("facet")) {
             m.facet_version = j["facet"].value("version", "");
@@ -57,19 +136,15 @@ Manifest read_manifest(const std::string& path) {
                                    o.value("origin", "")});
         for (const auto& f : j.at("frames"))
             m.frames.push_back({f.at("frame").get<int>(), f.value("camera", ""),
-                                f.value("render_ms", 0.0), f.value("encode_ms", 0.0)});
+                                f.value("render_ms", 0.0), f.value("encode_ms", 0.0), ""});
         for (const auto& f : j.at("files"))
             m.files.push_back({f.at("frame").get<int>(), f.value("camera", ""),
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
                                f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
                                f.value("style", m.style)});
         m.threads = j.value("threads", 0);
-        if (j.contains("timings")) {
-            const auto& t = j["timings"];
-            m.threads = t.value("threads", 0);
-            m.command_line = t.value("command_line", std::vector<std::string>{});
-            read_timings(t.at("frames"), m);
-        }
+        read_job(j, m);
+        if (j.contains("timings")) read_timings(j["timings"], m);
         return m;
     } catch (const nlohmann::json::exception& e) {
         throw Error(ExitCode::invalid_input, path + ": not a facet manifest: " + e.what());
@@ -114,28 +189,7 @@ std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
     return "";
 }
 
-void write_manifest(const std::string& path, Manifest manifest, bool merge) {
-    std::error_code ec;
-    if (merge && std::filesystem::exists(path, ec)) {
-        try {
-            Manifest old = read_manifest(path);
-            if (manifest_settings_difference(old, manifest).empty()) {
-                std::set<std::pair<std::string, int>> rendered;
-                for (const auto& f : manifest.frames) rendered.insert({f.camera, f.frame});
-                for (const auto& f : old.frames)
-                    if (!rendered.count({f.camera, f.frame})) manifest.frames.push_back(f);
-                // An old entry whose file this run has just rewritten (a name
-                // without {camera} or {frame}) would state a stale hash.
-                std::set<std::string> written;
-                for (const auto& f : manifest.files) written.insert(f.path);
-                for (const auto& f : old.files)
-                    if (!rendered.count({f.camera, f.frame}) && !written.count(f.path))
-                        manifest.files.push_back(f);
-            }
-        } catch (const Error&) {
-            // An unreadable old manifest is replaced.
-        }
-    }
+std::string manifest_json(Manifest manifest, bool indented) {
     std::stable_sort(manifest.frames.begin(), manifest.frames.end(),
                      [](const auto& a, const auto& b) {
                          return std::tie(a.frame, a.camera) < std::tie(b.frame, b.camera);
@@ -160,6 +214,8 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge) {
     j["overrides"] = Json::array();
     for (const ManifestOverride& o : manifest.overrides)
         j["overrides"].push_back({{"key", o.key}, {"value", o.value}, {"origin", o.origin}});
+    if (manifest.job) j["job"] = job_json(manifest);
+    if (manifest.part) j["part"] = part_json(*manifest.part);
     j["frames"] = Json::array();
     for (const auto& f : manifest.frames)
         j["frames"].push_back({{"frame", f.frame}, {"camera", f.camera}});
@@ -172,17 +228,51 @@ void write_manifest(const std::string& path, Manifest manifest, bool merge) {
                               {"style", f.style},
                               {"path", f.path},
                               {"sha256", f.sha256}});
-    Json timings;
-    timings["threads"] = manifest.threads;
-    timings["command_line"] = manifest.command_line;
-    timings["frames"] = Json::array();
-    for (const auto& f : manifest.frames)
-        timings["frames"].push_back({{"frame", f.frame},
-                                     {"camera", f.camera},
-                                     {"render_ms", f.render_ms},
-                                     {"encode_ms", f.encode_ms}});
-    j["timings"] = timings;
-    write_file_atomically(path, j.dump(2) + "\n");
+    j["timings"] = timings_json(manifest);
+    return indented ? j.dump(2) + "\n" : j.dump() + "\n";
+}
+
+void write_manifest(const std::string& path, Manifest manifest, bool merge) {
+    std::error_code ec;
+    if (merge && std::filesystem::exists(path, ec)) {
+        try {
+            Manifest old = read_manifest(path);
+            if (manifest_settings_difference(old, manifest).empty()) {
+                std::set<std::pair<std::string, int>> rendered;
+                for (const auto& f : manifest.frames) rendered.insert({f.camera, f.frame});
+                for (const auto& f : old.frames)
+                    if (!rendered.count({f.camera, f.frame})) manifest.frames.push_back(f);
+                // An old entry whose file this run has just rewritten (a name
+                // without {camera} or {frame}) would state a stale hash.
+                std::set<std::string> written;
+                for (const auto& f : manifest.files) written.insert(f.path);
+                for (const auto& f : old.files)
+                    if (!rendered.count({f.camera, f.frame}) && !written.count(f.path))
+                        manifest.files.push_back(f);
+                if (!manifest.job) manifest.job = old.job;
+                if (manifest.parts.empty()) manifest.parts = old.parts;
+            }
+        } catch (const Error&) {
+            // An unreadable old manifest is replaced.
+        }
+    }
+    write_file_atomically(path, manifest_json(manifest, true));
+}
+
+std::string partial_manifest_name(int first, int last) {
+    auto padded = [](int frame) {
+        std::string digits = std::to_string(frame < 0 ? -static_cast<long long>(frame) : frame);
+        if (digits.size() < 4) digits.insert(0, 4 - digits.size(), '0');
+        return (frame < 0 ? "m" : "") + digits;  // "m0005": no second '-' in the name
+    };
+    return "manifest.part-" + padded(first) + "-" + padded(last) + ".json";
+}
+
+bool is_partial_manifest_name(const std::string& file_name) {
+    const std::string prefix = "manifest.part-", suffix = ".json";
+    return file_name.size() > prefix.size() + suffix.size() &&
+           file_name.compare(0, prefix.size(), prefix) == 0 &&
+           file_name.compare(file_name.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 }  // namespace facet

@@ -1,6 +1,7 @@
 #pragma once
 // manifest.json: what a run wrote, so tools and tests find outputs without
 // guessing file names (docs/scene-format.md, "manifest.json").
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,7 @@ struct ManifestFrame {
     std::string camera;
     double render_ms;
     double encode_ms;
+    std::string host;  // that rendered it ("" in manifests from before render farms)
 };
 
 struct ManifestFile {
@@ -21,6 +23,29 @@ struct ManifestFile {
     std::string path;    // relative to the manifest
     std::string sha256;
     std::string style;  // the style the file was rendered with
+};
+
+// What a job that was cut into parts (render farm chunks) renders as a
+// whole, so that `facet merge` can tell a complete set of parts from an
+// incomplete one.
+struct ManifestJob {
+    std::vector<int> frames;  // every part's, ascending
+    std::vector<std::string> cameras;
+};
+
+// The part of a job a partial manifest covers.
+struct ManifestPart {
+    std::vector<int> frames;  // this part's: the frames it was asked to render
+    int chunk_index = -1;     // --chunk I/N (numbered from 0); -1 when given by frames
+    int chunk_count = 0;
+};
+
+// Where each part of a merged manifest came from (its timings block).
+struct ManifestPartRecord {
+    std::string name;  // the partial manifest's file name
+    std::string host, facet_commit;
+    int threads = 0;
+    std::vector<std::string> command_line;
 };
 
 // A command-line override as the run resolved it.
@@ -40,10 +65,19 @@ struct Manifest {
     std::vector<ManifestOverride> overrides;
     std::vector<ManifestFrame> frames;
     std::vector<ManifestFile> files;
+    std::optional<ManifestJob> job;    // farm jobs: the whole job (partial and merged manifests)
+    std::optional<ManifestPart> part;  // partial manifests only
     // The timings block: what differs between identical runs.
     int threads = 0;
+    std::string host;                       // of the run that wrote the manifest last
     std::vector<std::string> command_line;  // of the run that wrote the manifest last
+    std::vector<ManifestPartRecord> parts;  // merged manifests: one per part
 };
+
+// "manifest.part-0001-0008.json": the partial manifest of a part whose
+// frames run from `first` to `last` (padded as file names are).
+std::string partial_manifest_name(int first, int last);
+bool is_partial_manifest_name(const std::string& file_name);
 
 // What must be equal for two runs to share a manifest: scene (path and
 // content), style, size, output template and overrides (as a set, without
@@ -60,6 +94,12 @@ std::string manifest_settings_difference(const Manifest& existing, const Manifes
 void write_manifest(const std::string& path, Manifest manifest, bool merge = true);
 
 Manifest read_manifest(const std::string& path);
+
+// The manifest as JSON text, frames and files sorted: indented (the file),
+// or on one line ending in a newline (journal lines).
+std::string manifest_json(Manifest manifest, bool indented);
+// Reads manifest JSON text; `where` names it in errors (invalid_input).
+Manifest parse_manifest(const std::string& text, const std::string& where);
 
 // The file a manifest in `folder` lists as `relative`. A manifest may have
 // been edited by hand: a path that leaves the folder (absolute, or through

@@ -19,6 +19,7 @@
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "output/output_path.hpp"
+#include "output/run_ledger.hpp"
 #include "render/file_metadata.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/render_memory.hpp"
@@ -63,8 +64,12 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
     // Relative to the manifest, so the record does not depend on where facet ran.
     std::error_code ec;
     // Normalised, so "./scenes/a.yaml" and "scenes/a.yaml" are the same scene.
-    const auto scene_path = std::filesystem::weakly_canonical(scene.path, ec);
-    const auto folder = std::filesystem::weakly_canonical(output_dir, ec);
+    // Absolute first: weakly_canonical leaves a relative path relative when
+    // its first folder does not exist yet (a first run into a new -o).
+    const auto scene_path =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(scene.path), ec);
+    const auto folder =
+        std::filesystem::weakly_canonical(std::filesystem::absolute(output_dir), ec);
     m.scene = scene_path.lexically_relative(folder).generic_string();
     if (m.scene.empty()) m.scene = scene.path;
     try {
@@ -80,26 +85,31 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
     for (const Override& o : options.provenance.overrides)
         m.overrides.push_back({o.path, o.value, o.origin});
     m.command_line = options.provenance.command_line;
+    m.host = options.provenance.host.empty() ? host_name() : options.provenance.host;
     return m;
 }
 
-// Refuses to add this run to a manifest made with other settings.
-void check_existing_manifest(const Manifest& header, const std::string& output_dir,
-                             bool overwrite) {
-    const std::string path = (std::filesystem::path(output_dir) / "manifest.json").string();
-    std::error_code ec;
-    if (overwrite || !std::filesystem::exists(path, ec)) return;
-    Manifest existing;
-    try {
-        existing = read_manifest(path);
-    } catch (const Error&) {
-        return;  // not a manifest facet can read: replaced
+// What the run claims in its manifest's folder: the manifest it writes
+// (a part's partial manifest, or manifest.json) and its settings.
+LedgerRequest ledger_request(const SceneDesc& scene, const OutputLayout& layout,
+                             const RenderOptions& options, const std::string& output_dir,
+                             const std::vector<int>& frames, const std::vector<size_t>& cameras) {
+    LedgerRequest request;
+    request.folder = output_dir;
+    request.manifest_name = "manifest.json";
+    request.header = manifest_header(scene, layout, options, output_dir);
+    request.overwrite = options.overwrite;
+    if (options.part) {
+        ManifestJob job;
+        job.frames = options.part->job_frames;
+        for (size_t c : cameras) job.cameras.push_back(scene.cameras[c].name);
+        request.header.job = job;
+        request.header.part =
+            ManifestPart{frames, options.part->chunk_index, options.part->chunk_count};
+        if (!frames.empty())
+            request.manifest_name = partial_manifest_name(frames.front(), frames.back());
     }
-    const std::string difference = manifest_settings_difference(existing, header);
-    if (!difference.empty())
-        throw Error(ExitCode::invalid_input,
-                    path + " was written by a run with other settings (" + difference +
-                        "); give --overwrite to start a new manifest there, or another -o");
+    return request;
 }
 
 // Encodes and writes finished frames on worker threads of its own, while the
@@ -109,9 +119,13 @@ void check_existing_manifest(const Manifest& header, const std::string& output_d
 // write_manifest sorts.
 class Encoder {
   public:
-    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers,
-            std::function<void(const FrameWritten&)> on_written)
-        : scene_(scene), layout_(layout), on_written_(std::move(on_written)) {
+    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers, RunLedger& ledger,
+            std::string host, std::function<void(const FrameWritten&)> on_written)
+        : scene_(scene),
+          layout_(layout),
+          ledger_(ledger),
+          host_(std::move(host)),
+          on_written_(std::move(on_written)) {
         for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { run(); });
     }
     ~Encoder() { stop(); }
@@ -164,6 +178,7 @@ class Encoder {
             try {
                 Manifest written = encode(job);
                 std::lock_guard lock(mutex_);
+                ledger_.record(written);  // the files are on disk: a rerun may trust them
                 if (on_written_) {
                     FrameWritten report{
                         job.frame, job.camera, job.render_ms, written.frames.front().encode_ms, {}};
@@ -231,12 +246,14 @@ class Encoder {
         }
         if (out.write_depth && out.write_exr)
             write("depth", "exr", encode_exr_depth(job.images.depth, exr_attributes));
-        written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start)});
+        written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start), host_});
         return written;
     }
 
     const SceneDesc& scene_;
     const OutputLayout& layout_;
+    RunLedger& ledger_;  // used under mutex_
+    std::string host_;
     std::function<void(const FrameWritten&)> on_written_;  // called under mutex_
     std::vector<std::thread> workers_;
     std::mutex mutex_;
@@ -309,88 +326,156 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
 
 }  // namespace
 
+namespace {
+
+// The frames this run renders, and the frames whose names must not clash:
+// the whole job's for a part, so two parts never write one file.
+const std::vector<int>& run_frames(const SceneDesc& scene, const RenderOptions& options) {
+    return options.frames.empty() ? scene.output.frames : options.frames;
+}
+const std::vector<int>& named_frames(const SceneDesc& scene, const RenderOptions& options) {
+    return options.part ? options.part->job_frames : run_frames(scene, options);
+}
+
+// One image's files: their names under the output folder, in the order
+// they are written (pass, then format).
+std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout& layout, int frame,
+                                     const std::string& camera) {
+    const OutputDesc& out = scene.output;
+    std::vector<std::string> names;
+    for (const char* pass : {"color", "depth"}) {
+        if ((pass[0] == 'c' && !out.write_color) || (pass[0] == 'd' && !out.write_depth)) continue;
+        for (const char* format : {"png", "exr"}) {
+            if ((format[0] == 'p' && !out.write_png) || (format[0] == 'e' && !out.write_exr))
+                continue;
+            names.push_back(expand(layout.names, {scene.name, camera, pass, frame, format}));
+        }
+    }
+    return names;
+}
+
+}  // namespace
+
 void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
-    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
     const OutputLayout layout =
-        plan_outputs(scene, select_cameras(scene, options.cameras), frames, options.out_dir);
+        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
     const std::string output_dir =
         (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    check_existing_manifest(manifest_header(scene, layout, options, output_dir), output_dir,
-                            options.overwrite);
+    check_manifest_claims(
+        ledger_request(scene, layout, options, output_dir, run_frames(scene, options), cameras));
 }
 
 std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options) {
     check_outputs(scene, options);
-    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::vector<int>& frames = run_frames(scene, options);
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
-    const OutputDesc& out = scene.output;
+    const OutputLayout layout =
+        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
     std::vector<std::string> files;
     for (int frame : frames)
         for (size_t camera : cameras)
-            for (const char* pass : {"color", "depth"}) {
-                if ((pass[0] == 'c' && !out.write_color) || (pass[0] == 'd' && !out.write_depth))
-                    continue;
-                for (const char* format : {"png", "exr"}) {
-                    if ((format[0] == 'p' && !out.write_png) ||
-                        (format[0] == 'e' && !out.write_exr))
-                        continue;
-                    const std::string name =
-                        expand(layout.names,
-                               {scene.name, scene.cameras[camera].name, pass, frame, format});
-                    files.push_back((std::filesystem::path(options.out_dir) / name).string());
-                }
-            }
-    files.push_back(
-        (std::filesystem::path(options.out_dir) / layout.manifest_dir / "manifest.json").string());
+            for (const std::string& name :
+                 image_files(scene, layout, frame, scene.cameras[camera].name))
+                files.push_back((std::filesystem::path(options.out_dir) / name).string());
+    const std::string output_dir =
+        (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
+    const LedgerRequest request =
+        ledger_request(scene, layout, options, output_dir, frames, cameras);
+    files.push_back((std::filesystem::path(output_dir) / request.manifest_name).string());
     return files;
 }
+
+namespace {
+
+// --skip-existing: the images already on disk as a same-settings record
+// says, moved out of `todo` into `kept`. Every folder the run writes to
+// is rid of what a killed run on this host left half-written, even when
+// nothing in it is rendered again.
+Manifest skip_written_images(const SceneDesc& scene, const OutputLayout& layout,
+                             const RunLedger& ledger, bool skip_existing,
+                             std::vector<std::pair<int, size_t>>& todo) {
+    Manifest kept;
+    std::set<std::string> folders;
+    std::vector<std::pair<int, size_t>> remaining;
+    for (const auto& [frame, camera] : todo) {
+        const std::string& name = scene.cameras[camera].name;
+        std::vector<std::string> relative;
+        for (const std::string& file : image_files(scene, layout, frame, name)) {
+            folders.insert((std::filesystem::path(layout.root) / file).parent_path().string());
+            relative.push_back(path_relative_to_manifest(file, layout.manifest_dir));
+        }
+        const auto recorded = skip_existing ? ledger.verified(frame, name, relative) : std::nullopt;
+        if (!recorded) {
+            remaining.push_back({frame, camera});
+            continue;
+        }
+        kept.frames.push_back(recorded->frame);
+        kept.files.insert(kept.files.end(), recorded->files.begin(), recorded->files.end());
+    }
+    for (const std::string& folder : folders) remove_stale_temporaries(folder);
+    todo = std::move(remaining);
+    return kept;
+}
+
+}  // namespace
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written) {
-    const std::vector<int>& frames = options.frames.empty() ? scene.output.frames : options.frames;
+    const std::vector<int>& frames = run_frames(scene, options);
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout = plan_outputs(scene, cameras, frames, options.out_dir);
+    const OutputLayout layout =
+        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
     RenderResult result;
     result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    Manifest header = manifest_header(scene, layout, options, result.output_dir);
-    check_existing_manifest(header, result.output_dir, options.overwrite);
+    const LedgerRequest request =
+        ledger_request(scene, layout, options, result.output_dir, frames, cameras);
+    check_manifest_claims(request);  // before creating any folder
     ThreadPool pool(options.threads);
     check_render_memory(scene, world, static_cast<unsigned>(pool.size()));
     make_directories(result.output_dir);
+    RunLedger ledger(request);
+    std::vector<std::pair<int, size_t>> todo;
+    for (int frame : frames)
+        for (size_t camera : cameras) todo.push_back({frame, camera});
+    Manifest kept = skip_written_images(scene, layout, ledger, options.skip_existing, todo);
+    result.images_skipped = kept.frames.size();
+    if (options.on_plan) options.on_plan(todo.size(), result.images_skipped);
+
     FrameRenderer renderer(scene, world, pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
-    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1, on_written);
-    const size_t total = frames.size() * cameras.size();
+    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1, ledger, request.header.host,
+                    on_written);
     size_t rendered = 0;
     auto cancelled = [&] { return options.cancel && options.cancel->load(); };
-    for (size_t i = 0; i < frames.size() && !cancelled(); ++i) {
-        for (size_t camera : cameras) {
-            if (cancelled()) break;
-            const auto start = Clock::now();
-            FrameImages images = encoder.take_spare();
-            renderer.render(frames[i], camera, images);
-            const double render_ms = ms_since(start);
-            const std::string& name = scene.cameras[camera].name;
-            encoder.push({frames[i], name, render_ms, std::move(images)});
-            ++rendered;
-            if (on_frame) on_frame({frames[i], rendered, total, render_ms, name, cameras.size()});
-        }
+    for (const auto& [frame, camera] : todo) {
+        if (cancelled()) break;
+        const auto start = Clock::now();
+        FrameImages images = encoder.take_spare();
+        renderer.render(frame, camera, images);
+        const double render_ms = ms_since(start);
+        const std::string& name = scene.cameras[camera].name;
+        encoder.push({frame, name, render_ms, std::move(images)});
+        ++rendered;
+        if (on_frame) on_frame({frame, rendered, todo.size(), render_ms, name, cameras.size()});
     }
     Manifest written = encoder.finish();
-    Manifest& manifest = header;
+    Manifest manifest = request.header;
     manifest.frames = std::move(written.frames);
     manifest.files = std::move(written.files);
-    manifest.threads = static_cast<int>(pool.size());
     result.files_written = manifest.files.size();
-    result.manifest_path = (std::filesystem::path(result.output_dir) / "manifest.json").string();
-    write_manifest(result.manifest_path, manifest, !options.overwrite);
-    if (rendered < total)
-        throw Error(ExitCode::runtime_failure,
-                    "interrupted: " + std::to_string(rendered) + " of " + std::to_string(total) +
-                        " images were written, and are listed in " + result.manifest_path);
+    manifest.frames.insert(manifest.frames.end(), kept.frames.begin(), kept.frames.end());
+    manifest.files.insert(manifest.files.end(), kept.files.begin(), kept.files.end());
+    manifest.threads = static_cast<int>(pool.size());
+    result.manifest_path = ledger.finish(std::move(manifest));
+    if (rendered < todo.size())
+        throw Error(ExitCode::interrupted,
+                    "interrupted: " + std::to_string(rendered + result.images_skipped) + " of " +
+                        std::to_string(frames.size() * cameras.size()) +
+                        " images are written and listed in " + result.manifest_path +
+                        "; the same command with --skip-existing renders the rest");
     return result;
 }
 

@@ -4,6 +4,7 @@
 // manifest.
 #include <atomic>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,17 @@ namespace facet {
 struct RunProvenance {
     std::vector<std::string> command_line;
     std::vector<Override> overrides;  // as resolved, in order
+    std::string host;                 // where the run ran ("" : this machine's name)
+};
+
+// A farm task's share of a job (--chunk, --chunk-frames): the run renders
+// RenderOptions::frames, which are part of job_frames, and writes the
+// partial manifest named after its frames instead of manifest.json, for
+// `facet merge` to combine (docs/farm.md).
+struct RunPart {
+    std::vector<int> job_frames;
+    int chunk_index = -1;  // when given as --chunk I/N
+    int chunk_count = 0;
 };
 
 struct RenderOptions {
@@ -32,6 +44,13 @@ struct RenderOptions {
     // An output folder whose manifest was made with other settings is
     // refused (exit code 2) unless this is set; then a new manifest starts.
     bool overwrite = false;
+    std::optional<RunPart> part;
+    // Images whose files are all on disk with the SHA-256 a manifest or a
+    // journal of the same settings records for them are not rendered again.
+    bool skip_existing = false;
+    // Called once before the first image: how many will be rendered, and
+    // how many were skipped as already written.
+    std::function<void(size_t to_render, size_t skipped)> on_plan;
 };
 
 struct FrameProgress {
@@ -56,6 +75,7 @@ struct RenderResult {
     std::string output_dir;  // where files and manifest.json went
     std::string manifest_path;
     size_t files_written = 0;
+    size_t images_skipped = 0;  // skip_existing
 };
 
 // The indices into scene.cameras that a run renders (see RenderOptions::cameras).
@@ -69,8 +89,9 @@ std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std
 void check_outputs(const SceneDesc& scene, const RenderOptions& options);
 
 // The files a render with these options would write, in the order it
-// writes them (frame, camera, pass, format), then the manifest: paths
-// under options.out_dir. For --dry-run; checks as check_outputs does.
+// writes them (frame, camera, pass, format), then the manifest (or the
+// part's partial manifest): paths under options.out_dir. For --dry-run;
+// checks as check_outputs does.
 std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options);
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,

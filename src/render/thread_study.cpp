@@ -21,7 +21,7 @@ ThreadStudy run_thread_study(const SceneDesc& scene, const World& world,
     study.height = scene.output.height;
     study.frames = frames.size();
     study.triangles = world.triangle_count();
-    study.hardware_threads = std::thread::hardware_concurrency();
+    study.hardware_threads = available_cores();
     for (unsigned count : threads) {
         ThreadPool pool(count);
         FrameRenderer renderer(scene, world, pool);

@@ -1,0 +1,61 @@
+#pragma once
+// The options of commands that load a scene the way render does (render,
+// validate, bench, farm), shared so that they mean the same everywhere.
+#include <string>
+#include <vector>
+
+#include "cli/compare_command.hpp"
+#include "cli/options.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace CLI {
+class App;
+}
+
+namespace facet {
+
+// render: which part of the job this task renders (docs/farm.md).
+struct ChunkArgs {
+    std::string chunk;           // --chunk I/N
+    bool from_env = false;       // --chunk-from-env
+    int chunks = 0;              // --chunks N (with --chunk-from-env)
+    std::string chunk_frames;    // --chunk-frames LIST
+    bool skip_existing = false;  // --skip-existing
+};
+
+struct RenderArgs {
+    std::string scene;
+    FrameSelection frames;
+    std::string size;
+    std::string passes;   // e.g. "color,depth"
+    std::string formats;  // e.g. "png,exr"
+    std::string out = "out";
+    unsigned threads = 0;
+    std::string style;
+    std::string cameras;  // comma-separated names, or "all"
+    std::vector<std::string> defines;
+    bool quiet = false;
+    bool allow_asset_paths_outside = false;
+    bool overwrite = false;
+    bool dry_run = false;                   // render: list the files, write none
+    std::string video;                      // render: a movie of the colour frames too
+    bool video_only = false;                // render: the movie instead of the images
+    bool json = false;                      // validate: the report as JSON
+    bool output_given = false;              // validate: -o was given, so its manifest is checked
+    std::vector<std::string> command_line;  // as typed, for the manifest
+    CompareArgs comparison;                 // render --reference DIR
+    ChunkArgs chunk;                        // render: a farm task's part
+};
+
+// Command-line settings become overrides of the scene's values, so they go
+// through exactly the checks the scene file's own values go through.
+SceneOptions scene_options(const RenderArgs& args);
+
+// The scene and the options that change what is rendered: --size,
+// --passes, --formats, --style, -D, the frame options, --camera, -q,
+// --allow-asset-paths-outside.
+void add_scene_options(CLI::App* command, RenderArgs& args);
+
+std::vector<std::string> split_list(const std::string& text);
+
+}  // namespace facet

@@ -1,0 +1,183 @@
+#include "farm/job_scripts.hpp"
+
+#include <cstdio>
+
+namespace facet {
+namespace {
+
+std::string join_words(const std::vector<std::string>& words) {
+    std::string line;
+    for (const std::string& w : words) {
+        line += ' ';
+        line += shell_word(w);
+    }
+    return line;
+}
+
+// A double-quoted YAML scalar that reads back as exactly `text`.
+std::string yaml_string(const std::string& text) {
+    std::string quoted = "\"";
+    for (unsigned char c : text) {
+        if (c == '"' || c == '\\') {
+            quoted += '\\';
+            quoted += static_cast<char>(c);
+        } else if (c < 0x20 || c == 0x7f) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\x%02x", c);
+            quoted += escape;
+        } else {
+            quoted += static_cast<char>(c);
+        }
+    }
+    return quoted + "\"";
+}
+
+std::string yaml_list(const std::vector<std::string>& items) {
+    std::string list = "[";
+    for (size_t i = 0; i < items.size(); ++i) list += (i ? ", " : "") + yaml_string(items[i]);
+    return list + "]";
+}
+
+}  // namespace
+
+std::string shell_word(const std::string& text) {
+    const std::string safe =
+        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:,+@%";
+    if (!text.empty() && text.find_first_not_of(safe) == std::string::npos) return text;
+    std::string quoted = "'";
+    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
+}
+
+std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
+    const std::string last = std::to_string(s.chunks - 1);
+    std::string t;
+    t += "#!/bin/bash\n";
+    t += "# " + job.name + ": frames " + job.frames + " (" + std::to_string(job.frame_count) +
+         ") in " + std::to_string(s.chunks) + " chunks on Slurm, then `facet merge` of\n";
+    t += "# their partial manifests into " + job.merge_folder + "/manifest.json.\n";
+    t += "# Written by `facet farm slurm` (facet " + job.version + "); docs/farm.md explains it.\n";
+    t += "#\n";
+    t += "#   bash job.sh                submit the render array and the merge job\n";
+    t += "#   bash job.sh --wait         the same, then wait for the merge; exit with its code\n";
+    t += "#   bash job.sh --tasks 2,5    submit only those chunks again (0-" + last +
+         "), and the merge\n";
+    t += "#   sbatch job.sh              the same as bash job.sh, from a job of its own\n";
+    t += "#\n";
+    t += "# Relative paths are resolved from the folder facet farm ran in (--chdir).\n";
+    t += "# Set FACET to run another facet program than the one recorded here.\n";
+    t += "#SBATCH --job-name=" + job.name + "\n";
+    t += "#SBATCH --chdir=" + job.working_dir + "\n";
+    if (!s.partition.empty()) t += "#SBATCH --partition=" + s.partition + "\n";
+    if (s.cpus > 0) t += "#SBATCH --cpus-per-task=" + std::to_string(s.cpus) + "\n";
+    if (!s.time.empty()) t += "#SBATCH --time=" + s.time + "\n";
+    t += "set -euo pipefail\n";
+    t += "cd " + shell_word(job.working_dir) + "\n";
+    t += "facet=${FACET:-" + shell_word(job.facet) + "}\n";
+    t += "chunks=" + std::to_string(s.chunks) + "\n\n";
+    t += "# One chunk: the array task's id is the chunk's number. --skip-existing\n";
+    t += "# makes a resubmitted task render only what is missing or damaged.\n";
+    t += "render() {\n";
+    t += "    exec \"$facet\" render" + join_words(job.render_args) + " --frames " +
+         shell_word(job.frames) + " \\\n";
+    t += "        --chunk-from-env --chunks \"$chunks\" --skip-existing\n";
+    t += "}\n\n";
+    t += "merge() {\n";
+    t += "    exec \"$facet\" merge " + shell_word(job.merge_folder) + "\n";
+    t += "}\n\n";
+    t += "case \"${FACET_FARM_STEP:-}\" in\n";
+    t += "render) render ;;\n";
+    t += "merge) merge ;;\n";
+    t += "esac\n";
+    t += "# Submitted by hand as an array task (sbatch --array=3 job.sh): that chunk.\n";
+    t += "if [[ -n \"${SLURM_ARRAY_TASK_ID:-}\" ]]; then render; fi\n\n";
+    t += "tasks=0-" + last + "\n";
+    t += "wait=()\n";
+    t += "while [[ $# -gt 0 ]]; do\n";
+    t += "    case \"$1\" in\n";
+    t += "    --wait) wait=(--wait) ;;\n";
+    t += "    --tasks) tasks=${2:?--tasks needs a list, e.g. 2,5}; shift ;;\n";
+    t += "    *) echo \"usage: bash $0 [--wait] [--tasks LIST]\" >&2; exit 2 ;;\n";
+    t += "    esac\n";
+    t += "    shift\n";
+    t += "done\n";
+    t += "script=$(readlink -f \"$0\")\n";
+    const std::string limit = s.max_running > 0 ? "%" + std::to_string(s.max_running) : "";
+    t += "array=$(FACET_FARM_STEP=render sbatch --parsable --array=\"$tasks\"" + limit +
+         " \"$script\")\n";
+    t += "array=${array%%;*}\n";
+    t += "echo \"facet: render job $array: chunks $tasks of $chunks\"\n";
+    t += "# The merge runs once every task succeeded; a failed task cancels it\n";
+    t += "# (--kill-on-invalid-dep), so it never waits forever.\n";
+    t += "merge_options=(--job-name=" + shell_word(job.name + "-merge") +
+         " --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes)\n";
+    t += "if [[ ${#wait[@]} -eq 0 ]]; then\n";
+    t += "    FACET_FARM_STEP=merge sbatch \"${merge_options[@]}\" \"$script\"\n";
+    t += "    exit 0\n";
+    t += "fi\n";
+    t += "# --wait: sbatch --wait returns 0 for a merge that was cancelled, so the\n";
+    t += "# merge job's state decides, and failed tasks are named.\n";
+    t += "code=0\n";
+    t += "merge=$(FACET_FARM_STEP=merge sbatch --parsable --wait \"${merge_options[@]}\" "
+         "\"$script\") || code=$?\n";
+    t += "merge=${merge%%;*}\n";
+    t += "state=$(scontrol -o show job \"$merge\" | sed -n 's/.* JobState=\\([A-Z_]*\\) "
+         ".*/\\1/p')\n";
+    t += "if [[ $code -eq 0 && $state == COMPLETED ]]; then\n";
+    t += "    echo \"facet: merge job $merge completed: the job is whole\"\n";
+    t += "    exit 0\n";
+    t += "fi\n";
+    t += "failed=$(scontrol -o show job \"$array\" | awk '!/JobState=COMPLETED/ {\n";
+    t += "    if (match($0, /ArrayTaskId=[0-9]+/)) print substr($0, RSTART + 12, RLENGTH - 12) }' "
+         "| paste -sd, -)\n";
+    t += "echo \"facet: merge job $merge ended ${state:-unknown} (exit code $code)\" >&2\n";
+    t += "if [[ -n $failed ]]; then\n";
+    t += "    echo \"facet: chunks that did not complete: $failed; resubmit them with: bash $0 "
+         "--tasks $failed --wait\" >&2\n";
+    t += "fi\n";
+    t += "exit $((code != 0 ? code : 1))\n";
+    return t;
+}
+
+std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
+    std::vector<std::string> render = {"render"};
+    render.insert(render.end(), job.render_args.begin(), job.render_args.end());
+    for (const char* word : {"--frames", "{{Param.Frames}}", "--chunk-frames",
+                             "{{Task.Param.Frame}}", "--skip-existing"})
+        render.push_back(word);
+    std::string t;
+    t += "# " + job.name + ": frames " + job.frames + " in chunks of " +
+         std::to_string(s.chunk_size) + " frames, then `facet merge` of their\n";
+    t += "# partial manifests into " + job.merge_folder + "/manifest.json.\n";
+    t +=
+        "# Written by `facet farm openjd` (facet " + job.version + "); docs/farm.md explains it.\n";
+    t += "specificationVersion: 'jobtemplate-2023-09'\n";
+    t += "extensions:\n  - TASK_CHUNKING\n";
+    t += "name: " + yaml_string(job.name) + "\n";
+    t += "parameterDefinitions:\n";
+    t += "  - name: Frames\n    type: STRING\n    default: " + yaml_string(job.frames) + "\n";
+    t += "    description: \"The frames to render, e.g. 1-48, 1-48:2 or 1,5,10-20\"\n";
+    t += "steps:\n";
+    t += "  - name: Render\n";
+    t += "    parameterSpace:\n";
+    t += "      taskParameterDefinitions:\n";
+    t += "        - name: Frame\n";
+    t += "          type: CHUNK[INT]\n";
+    t += "          range: \"{{Param.Frames}}\"\n";
+    t += "          chunks:\n";
+    t += "            defaultTaskCount: " + std::to_string(s.chunk_size) + "\n";
+    t += "            rangeConstraint: CONTIGUOUS\n";
+    if (s.target_runtime > 0)
+        t += "            targetRuntimeSeconds: " + std::to_string(s.target_runtime) + "\n";
+    t += "    script:\n      actions:\n        onRun:\n";
+    t += "          command: " + yaml_string(job.facet) + "\n";
+    t += "          args: " + yaml_list(render) + "\n";
+    t += "  - name: Merge\n";
+    t += "    dependencies:\n      - dependsOn: Render\n";
+    t += "    script:\n      actions:\n        onRun:\n";
+    t += "          command: " + yaml_string(job.facet) + "\n";
+    t += "          args: " + yaml_list({"merge", job.merge_folder}) + "\n";
+    return t;
+}
+
+}  // namespace facet
