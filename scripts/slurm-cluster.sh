@@ -59,12 +59,13 @@ start() {
     ctld_port=$(free_port)
     node_port=$(free_port)
     while [ "$node_port" = "$ctld_port" ]; do node_port=$(free_port); done
-    # Every path under DIR; auth/none because the cluster is this host alone
+    # Every path under DIR; addresses by number, so the host's name need not
+    # resolve; auth/none because the cluster is this host alone
     # and lives as long as one test; kill_invalid_depend so a job whose
     # dependency failed is cancelled instead of waiting forever.
     cat > "$dir/slurm.conf" <<CONF
 ClusterName=facet-test
-SlurmctldHost=$host
+SlurmctldHost=$host(127.0.0.1)
 SlurmctldPort=$ctld_port
 SlurmdPort=$node_port
 SlurmUser=root
@@ -91,7 +92,7 @@ KillWait=5
 MinJobAge=600
 SlurmctldTimeout=30
 SlurmdTimeout=30
-NodeName=$host CPUs=$cpus RealMemory=$memory State=UNKNOWN
+NodeName=$host NodeAddr=127.0.0.1 CPUs=$cpus RealMemory=$memory State=UNKNOWN
 PartitionName=main Nodes=$host Default=YES MaxTime=INFINITE State=UP
 CONF
     export SLURM_CONF="$dir/slurm.conf"

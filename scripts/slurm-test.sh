@@ -21,6 +21,10 @@ finish() {
     # A submitter still waiting would wait forever once the daemons stop.
     if [ -n "$submitter" ]; then pkill -P "$submitter" 2>/dev/null || true; kill "$submitter" 2>/dev/null || true; fi
     "$root/scripts/slurm-cluster.sh" stop "$cluster" || code=1
+    if pgrep -f "$cluster/slurm.conf" >/dev/null; then
+        echo "slurm-test: daemons of this cluster are still running" >&2
+        code=1
+    fi
     if [ "$code" -ne 0 ]; then
         echo "slurm-test: FAILED; logs:" >&2
         tail -n 20 "$cluster"/*.log "$work"/slurm-*.out 2>/dev/null >&2 || true

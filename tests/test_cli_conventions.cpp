@@ -76,6 +76,18 @@ TEST_CASE("cli: frames are chosen the same way everywhere, and only inside the s
     CHECK(run_facet("validate " + scene() + stepped + "-s 4 -e 13").exit_code == 2);
     CHECK_THAT(run_facet("validate " + scene() + stepped + "-s 4 -e 13 --allow-outside").output,
                Contains("frames 5..13 of the scene's 1-9:2 (5 frames)"));
+    // -j: every Nth of the frames -s/-e give, or of the scene's (Blender's -j).
+    const std::string ten = " -D output.frames=1-10 --passes color --formats png --dry-run ";
+    const RunResult jump = run_facet("render " + scene() + ten + "-s 2 -e 9 -j 3");
+    CHECK(jump.exit_code == 0);
+    CHECK(jump.output.find("color.0002.png\n") != std::string::npos);
+    CHECK(jump.output.find("color.0005.png\n") != std::string::npos);
+    CHECK(jump.output.find("color.0008.png\n") != std::string::npos);
+    CHECK(jump.output.find("color.0003.png") == std::string::npos);
+    CHECK(jump.output.find("color.0009.png") == std::string::npos);
+    const RunResult alone = run_facet("render " + scene() + ten + "-j 4");
+    CHECK_THAT(alone.output, Contains("color.0009.png") && !Contains("color.0002.png"));
+    CHECK(run_facet("render " + scene() + ten + "--frames 1-4 -j 2").exit_code == 2);
 }
 
 TEST_CASE("cli: mistakes get a did-you-mean", "[cli]") {

@@ -27,15 +27,24 @@ void add_frame_options(CLI::App* cmd, FrameSelection& s) {
     cmd->add_option("-f,--frame", s.single, "One frame (Blender's -f)");
     cmd->add_option("-s,--start", s.start, "First frame (Blender's -s); the scene's step is kept");
     cmd->add_option("-e,--end", s.end, "Last frame (Blender's -e)");
+    cmd->add_option("-j,--jump", s.jump,
+                    "Every Nth of the frames, with -s/-e or alone (Blender's -j)")
+        ->check(CLI::Range(1, 1000000));
     cmd->add_flag("--allow-outside", s.allow_outside,
                   "Allow frames outside the scene's range (the animation is extrapolated)");
 }
 
 std::vector<int> resolve_frames(const FrameSelection& s, const OutputDesc& output) {
-    const int ways = !s.frames.empty() + s.single.has_value() + (s.start || s.end);
+    const int ways = !s.frames.empty() + s.single.has_value() + (s.start || s.end || s.jump);
     if (ways > 1)
-        fail_input(command_line("--frames/-f/-s/-e"), "",
-                   "give frames one way: --frames LIST, -f N, or -s/-e");
+        fail_input(command_line("--frames/-f/-s/-e/-j"), "",
+                   "give frames one way: --frames LIST (with its own :step), -f N, or -s/-e/-j");
+    if (s.jump && !s.start && !s.end) {
+        // -j alone: every Nth of the scene's frames.
+        FrameSelection whole = s;
+        whole.start = output.frames.front();
+        return resolve_frames(whole, output);
+    }
     std::vector<int> frames;
     std::string option;
     if (!s.frames.empty()) {
@@ -77,6 +86,12 @@ std::vector<int> resolve_frames(const FrameSelection& s, const OutputDesc& outpu
             fail_input(command_line(option), "",
                        "no frame of the scene (" + output.frames_text + ") lies in " +
                            std::to_string(first) + "-" + std::to_string(last));
+        if (s.jump) {
+            std::vector<int> every;
+            for (size_t i = 0; i < frames.size(); i += static_cast<size_t>(*s.jump))
+                every.push_back(frames[i]);
+            frames = std::move(every);
+        }
     } else {
         return {};
     }

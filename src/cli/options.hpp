@@ -18,10 +18,11 @@ namespace facet {
 // Where a value given on the command line is reported: "command line WHAT".
 SourceLocation command_line(const std::string& what);
 
-// --frames LIST, -f N, -s/--start N, -e/--end N, --allow-outside.
+// --frames LIST, -f N, -s/--start N, -e/--end N, -j/--jump N, --allow-outside.
 struct FrameSelection {
     std::string frames;
     std::optional<int> single, start, end;
+    std::optional<int> jump;  // every Nth of the frames -s/-e (or the scene) give
     bool allow_outside = false;
 };
 void add_frame_options(CLI::App* command, FrameSelection& selection);

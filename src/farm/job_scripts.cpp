@@ -49,6 +49,64 @@ std::string shell_word(const std::string& text) {
     return quoted + "'";
 }
 
+namespace {
+
+// The part of the script that runs as `bash job.sh`: submits the array
+// and the merge job, and with --wait reports how the merge ended.
+std::string slurm_submission(const FarmJob& job, const SlurmSettings& s) {
+    const std::string last = std::to_string(s.chunks - 1);
+    std::string t;
+    t += "tasks=0-" + last + "\n";
+    t += "wait=()\n";
+    t += "while [[ $# -gt 0 ]]; do\n";
+    t += "    case \"$1\" in\n";
+    t += "    --wait) wait=(--wait) ;;\n";
+    t += "    --tasks) tasks=${2:?--tasks needs a list, e.g. 2,5}; shift ;;\n";
+    t += "    *) echo \"usage: bash $0 [--wait] [--tasks LIST]\" >&2; exit 2 ;;\n";
+    t += "    esac\n";
+    t += "    shift\n";
+    t += "done\n";
+    t += "script=$(readlink -f \"$0\")\n";
+    std::string limit;  // sbatch --array=0-5%M: at most M tasks at once
+    if (s.max_running > 0) limit = '%' + std::to_string(s.max_running);
+    t += "array=$(FACET_FARM_STEP=render sbatch --parsable --array=\"$tasks\"" + limit +
+         " \"$script\")\n";
+    t += "array=${array%%;*}\n";
+    t += "echo \"facet: render job $array: chunks $tasks of $chunks\"\n";
+    t += "# The merge runs once every task succeeded; a failed task cancels it\n";
+    t += "# (--kill-on-invalid-dep), so it never waits forever.\n";
+    t += "merge_options=(--job-name=" + shell_word(job.name + "-merge") +
+         " --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes)\n";
+    t += "if [[ ${#wait[@]} -eq 0 ]]; then\n";
+    t += "    FACET_FARM_STEP=merge sbatch \"${merge_options[@]}\" \"$script\"\n";
+    t += "    exit 0\n";
+    t += "fi\n";
+    t += "# --wait: sbatch --wait returns 0 for a merge that was cancelled, so the\n";
+    t += "# merge job's state decides, and failed tasks are named.\n";
+    t += "code=0\n";
+    t += "merge=$(FACET_FARM_STEP=merge sbatch --parsable --wait \"${merge_options[@]}\" "
+         "\"$script\") || code=$?\n";
+    t += "merge=${merge%%;*}\n";
+    t += "state=$(scontrol -o show job \"$merge\" | sed -n 's/.* JobState=\\([A-Z_]*\\) "
+         ".*/\\1/p')\n";
+    t += "if [[ $code -eq 0 && $state == COMPLETED ]]; then\n";
+    t += "    echo \"facet: merge job $merge completed: the job is whole\"\n";
+    t += "    exit 0\n";
+    t += "fi\n";
+    t += "failed=$(scontrol -o show job \"$array\" | awk '!/JobState=COMPLETED/ {\n";
+    t += "    if (match($0, /ArrayTaskId=[0-9]+/)) print substr($0, RSTART + 12, RLENGTH - 12) }' "
+         "| paste -sd, -)\n";
+    t += "echo \"facet: merge job $merge ended ${state:-unknown} (exit code $code)\" >&2\n";
+    t += "if [[ -n $failed ]]; then\n";
+    t += "    echo \"facet: chunks that did not complete: $failed; resubmit them with: bash $0 "
+         "--tasks $failed --wait\" >&2\n";
+    t += "fi\n";
+    t += "exit $((code != 0 ? code : 1))\n";
+    return t;
+}
+
+}  // namespace
+
 std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
     const std::string last = std::to_string(s.chunks - 1);
     std::string t;
@@ -91,52 +149,7 @@ std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
     t += "esac\n";
     t += "# Submitted by hand as an array task (sbatch --array=3 job.sh): that chunk.\n";
     t += "if [[ -n \"${SLURM_ARRAY_TASK_ID:-}\" ]]; then render; fi\n\n";
-    t += "tasks=0-" + last + "\n";
-    t += "wait=()\n";
-    t += "while [[ $# -gt 0 ]]; do\n";
-    t += "    case \"$1\" in\n";
-    t += "    --wait) wait=(--wait) ;;\n";
-    t += "    --tasks) tasks=${2:?--tasks needs a list, e.g. 2,5}; shift ;;\n";
-    t += "    *) echo \"usage: bash $0 [--wait] [--tasks LIST]\" >&2; exit 2 ;;\n";
-    t += "    esac\n";
-    t += "    shift\n";
-    t += "done\n";
-    t += "script=$(readlink -f \"$0\")\n";
-    const std::string limit = s.max_running > 0 ? "%" + std::to_string(s.max_running) : "";
-    t += "array=$(FACET_FARM_STEP=render sbatch --parsable --array=\"$tasks\"" + limit +
-         " \"$script\")\n";
-    t += "array=${array%%;*}\n";
-    t += "echo \"facet: render job $array: chunks $tasks of $chunks\"\n";
-    t += "# The merge runs once every task succeeded; a failed task cancels it\n";
-    t += "# (--kill-on-invalid-dep), so it never waits forever.\n";
-    t += "merge_options=(--job-name=" + shell_word(job.name + "-merge") +
-         " --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes)\n";
-    t += "if [[ ${#wait[@]} -eq 0 ]]; then\n";
-    t += "    FACET_FARM_STEP=merge sbatch \"${merge_options[@]}\" \"$script\"\n";
-    t += "    exit 0\n";
-    t += "fi\n";
-    t += "# --wait: sbatch --wait returns 0 for a merge that was cancelled, so the\n";
-    t += "# merge job's state decides, and failed tasks are named.\n";
-    t += "code=0\n";
-    t += "merge=$(FACET_FARM_STEP=merge sbatch --parsable --wait \"${merge_options[@]}\" "
-         "\"$script\") || code=$?\n";
-    t += "merge=${merge%%;*}\n";
-    t += "state=$(scontrol -o show job \"$merge\" | sed -n 's/.* JobState=\\([A-Z_]*\\) "
-         ".*/\\1/p')\n";
-    t += "if [[ $code -eq 0 && $state == COMPLETED ]]; then\n";
-    t += "    echo \"facet: merge job $merge completed: the job is whole\"\n";
-    t += "    exit 0\n";
-    t += "fi\n";
-    t += "failed=$(scontrol -o show job \"$array\" | awk '!/JobState=COMPLETED/ {\n";
-    t += "    if (match($0, /ArrayTaskId=[0-9]+/)) print substr($0, RSTART + 12, RLENGTH - 12) }' "
-         "| paste -sd, -)\n";
-    t += "echo \"facet: merge job $merge ended ${state:-unknown} (exit code $code)\" >&2\n";
-    t += "if [[ -n $failed ]]; then\n";
-    t += "    echo \"facet: chunks that did not complete: $failed; resubmit them with: bash $0 "
-         "--tasks $failed --wait\" >&2\n";
-    t += "fi\n";
-    t += "exit $((code != 0 ? code : 1))\n";
-    return t;
+    return t + slurm_submission(job, s);
 }
 
 std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
