@@ -95,6 +95,9 @@ TEST_CASE("cli: mistakes get a did-you-mean", "[cli]") {
     CHECK(command.exit_code == 2);
     CHECK_THAT(command.output, Contains("unknown command 'rendr'; did you mean 'render'?"));
     CHECK_THAT(command.output, Contains("commands: render, compare, validate"));
+    const RunResult nested = run_facet("farm slurmm " + scene() + " --chunks 2");
+    CHECK(nested.exit_code == 2);
+    CHECK_THAT(nested.output, Contains("unknown command 'slurmm'; did you mean 'slurm'?"));
     const RunResult option = run_facet("render " + scene() + " --fames 1");
     CHECK(option.exit_code == 2);
     CHECK_THAT(option.output,

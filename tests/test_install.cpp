@@ -38,6 +38,7 @@ TEST_CASE("install: a moved prefix renders with its own presets", "[install]") {
     CHECK(fs::exists(moved + "/share/man/man1/facet.1"));
     CHECK(fs::exists(moved + "/share/doc/facet/regression.md"));
     CHECK_THAT(read_file(moved + "/share/man/man1/facet.1"), Contains(".SS \"facet render\""));
+    CHECK_THAT(read_file(moved + "/share/man/man1/facet.1"), Contains(".SS \"facet farm slurm\""));
 }
 
 TEST_CASE("install: bash completion completes commands, options and presets", "[install]") {

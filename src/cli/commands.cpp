@@ -672,6 +672,8 @@ int run_command_line(int argc, char** argv) {
     merge_args.command_line = render_args.command_line;
     try {
         check_subcommand_name(app, argc, argv);
+        if (argc > 2 && std::string(argv[1]) == "farm")
+            check_subcommand_name(*farm, argc - 1, argv + 1);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);
