@@ -26,11 +26,11 @@ sanitize=0
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
-          libdeflate-dev libssl-dev
+          libdeflate-dev libssl-dev libmeshoptimizer-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm) ;;
+        --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;

@@ -73,6 +73,15 @@ inline std::vector<PosedPart> posed(const Mesh& mesh, int animation, double seco
     return out;
 }
 
+// The parts of `mesh` posed at `seconds` into several animations at once.
+inline std::vector<PosedPart> posed_with(const Mesh& mesh, const std::vector<int>& animations,
+                                         double seconds) {
+    std::vector<PosedPart> out;
+    pose_mesh(mesh, animations, seconds, out);
+    REQUIRE(out.size() == mesh.parts.size());
+    return out;
+}
+
 inline Bounds bounds_of(const std::vector<PosedPart>& parts) {
     Bounds b;
     for (const auto& part : parts)

@@ -293,3 +293,57 @@ TEST_CASE("glTF files without animation pose as their baked parts", "[gltf][anim
     CHECK(parts[0].positions == mesh.parts[0].positions);
     CHECK(parts[0].normals == mesh.parts[0].normals);
 }
+
+namespace {
+
+// Two triangles on nodes "Box" and "Arm", and an animation for each, as
+// Blender writes one action per object; the second file also has an
+// animation that drives Box as well.
+std::string two_actions_file(const TempDir& dir, bool clash) {
+    Gltf g;
+    const int triangle = g.mesh({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
+    const int box = g.node({{"name", "Box"}, {"mesh", triangle}});
+    const int arm = g.node({{"name", "Arm"}, {"mesh", triangle}, {"translation", {0, 0, 5}}});
+    g.scene({box, arm});
+    add_channel(g, add_animation(g, "BoxAction"), box, "translation", {0, 2}, {0, 0, 0, 4, 0, 0});
+    add_channel(g, add_animation(g, "ArmAction"), arm, "scale", {0, 1}, {1, 1, 1, 3, 3, 3});
+    if (clash)
+        add_channel(g, add_animation(g, "BoxLift"), box, "translation", {0, 2}, {0, 0, 0, 0, 8, 0});
+    return g.write(dir.file(clash ? "clash.gltf" : "actions.gltf"));
+}
+
+}  // namespace
+
+TEST_CASE("glTF animations play together, each on the nodes it drives", "[gltf][anim]") {
+    TempDir dir("gltf-anims");
+    const Mesh mesh = facet::load_gltf(two_actions_file(dir, false));
+    REQUIRE(facet::animation_count(mesh) == 2);
+    CHECK(facet::find_animations(mesh, {"all"}) == std::vector<int>{0, 1});
+    CHECK(facet::find_animations(mesh, {"ArmAction", "BoxAction", "0"}) ==
+          std::vector<int>{0, 1});  // in the file's order, each once
+    CHECK(facet::animations_duration(mesh, {0, 1}) == 2.0);
+    CHECK(facet::animations_duration(mesh, {1}) == 1.0);
+    require_input_error([&] { facet::find_animations(mesh, {"BoxAction", "Walk"}); }, "'Walk'");
+
+    // At 1 s: Box has moved 2 along x; Arm's scale reached 3 and holds.
+    auto both = posed_with(mesh, {0, 1}, 1.0);
+    const size_t x_vertex = vertex_at(mesh.parts[0], {1, 0, 0});
+    CHECK(both[0].positions[x_vertex].x == Approx(3.0f));
+    CHECK(both[1].positions[vertex_at(mesh.parts[1], {1, 0, 5})].x == Approx(3.0f));
+    auto later = posed_with(mesh, {0, 1}, 1.75);
+    CHECK(later[1].positions == both[1].positions);  // ArmAction has ended: it holds
+    CHECK(later[0].positions[x_vertex].x == Approx(4.5f));
+    // One of them alone leaves the other node at rest.
+    auto box_only = posed_with(mesh, {0}, 1.0);
+    CHECK(box_only[1].positions == mesh.parts[1].positions);
+
+    // Two animations on one property: the later in the file wins.
+    const Mesh clash = facet::load_gltf(two_actions_file(dir, true));
+    auto lifted = posed_with(clash, {0, 2}, 1.0);
+    CHECK(lifted[0].positions[x_vertex].x == Approx(1.0f));
+    CHECK(lifted[0].positions[x_vertex].y == Approx(4.0f));
+
+    const Mesh still =
+        facet::load_gltf(single_mesh_file(dir.file("still.gltf"), kTriangle, json::object()));
+    require_input_error([&] { facet::find_animations(still, {"all"}); }, "the file has none");
+}

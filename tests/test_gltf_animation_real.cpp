@@ -142,13 +142,15 @@ TEST_CASE("facet info lists animations, skins and morph targets", "[gltf][anim][
     auto skin = run_facet("info '" + kSimpleSkin + "'");
     INFO(skin.output);
     REQUIRE(skin.exit_code == 0);
-    CHECK_THAT(skin.output, Catch::Contains("animations: 1\n  - animation0: 5.5 s, 1 channel\n"));
+    CHECK_THAT(skin.output,
+               Catch::Contains("animations: 1\n  - animation0: 5.5 s, 1 channel, drives node2\n"));
     CHECK_THAT(skin.output, Catch::Contains("skins:      1\n"));
     CHECK_THAT(skin.output, Catch::Contains("morphed:    0 of 1 parts"));
     auto cube = run_facet("info '" + kMorphCube + "'");
     INFO(cube.output);
     REQUIRE(cube.exit_code == 0);
-    CHECK_THAT(cube.output, Catch::Contains("  - Square: 4.2 s, 1 channel\n"));
+    CHECK_THAT(cube.output,
+               Catch::Contains("  - Square: 4.2 s, 1 channel, drives AnimatedMorphCube\n"));
     CHECK_THAT(cube.output, Catch::Contains("skins:      0\n"));
     CHECK_THAT(cube.output, Catch::Contains("morphed:    1 of 1 parts, up to 2 targets\n"));
 }

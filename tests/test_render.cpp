@@ -17,6 +17,7 @@ TEST_CASE("render: shapes normals",       "[render]") { check_render({"tests/sce
 TEST_CASE("render: floor through near",   "[render]") { check_render({"tests/scenes/near_floor.yaml", 1, "near-floor.png"}); }
 TEST_CASE("render: OBJ spider textured",  "[render]") { check_render({"tests/scenes/spider.yaml", 1, "spider.png"}); }
 TEST_CASE("render: glTF box textured",    "[render]") { check_render({"tests/scenes/box_textured.yaml", 1, "box-textured.png"}); }
+TEST_CASE("render: glTF texture transform", "[render]") { check_render({"tests/scenes/texture_transform.yaml", 1, "texture-transform.png"}); }
 TEST_CASE("render: double-sided tubes",   "[render]") { check_render({"tests/scenes/double_sided.yaml", 1, "double-sided.png"}); }
 TEST_CASE("render: shapes 4 samples",     "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-aa4.png", {}, {"output.samples=4"}}); }
 TEST_CASE("render: polyhedra",            "[render]") { check_render({"tests/scenes/polyhedra.yaml", 1, "polyhedra.png"}); }

@@ -4,6 +4,7 @@
 
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
+#include "gltf_anim_support.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
 #include "scene_support.hpp"
@@ -92,4 +93,52 @@ TEST_CASE("a glTF animation moves the rendered mesh, loops, and holds when told"
         load(write_text(dir.file("fast.yaml"), tentacle_scene("{ name: sway, speed: 2 }")));
     const World fast_world = build_world(fast);
     CHECK(same_pixels(render_frame(fast, fast_world, 7), f13));
+}
+
+TEST_CASE("a scene plays all of a file's animations, or the ones it names", "[anim][scene]") {
+    TempDir dir("scene-animations");
+    Gltf g;
+    const int triangle = g.mesh({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
+    const int box = g.node({{"name", "Box"}, {"mesh", triangle}});
+    const int arm = g.node({{"name", "Arm"}, {"mesh", triangle}, {"translation", {0, 0, 5}}});
+    g.scene({box, arm});
+    add_channel(g, add_animation(g, "BoxAction"), box, "translation", {0, 2}, {0, 0, 0, 4, 0, 0});
+    add_channel(g, add_animation(g, "ArmAction"), arm, "scale", {0, 3}, {1, 1, 1, 3, 3, 3});
+    add_channel(g, add_animation(g, "Idle"), arm, "rotation", {0, 1},
+                concat({z_turn(0), z_turn(90)}));
+    const std::string file = g.write(dir.file("actions.gltf"));
+    auto world_for = [&](const std::string& animation) {
+        const std::string scene =
+            "output: { size: [32, 32], frames: \"1-48\" }\n"
+            "camera: { position: [0, 0, 20], target: [0, 0, 0] }\n"
+            "objects:\n  - mesh: " +
+            file + "\n    animation: " + animation + "\n";
+        return build_world(load(write_text(dir.file("s.yaml"), scene)));
+    };
+    const World all = world_for("all");
+    REQUIRE(all.animated_meshes.size() == 1);
+    CHECK(all.animated_meshes[0].animations == std::vector<int>{0, 1, 2});
+    CHECK(all.animated_meshes[0].duration == 3.0);  // the longest
+    const World two = world_for("[ArmAction, BoxAction]");
+    CHECK(two.animated_meshes[0].animations == std::vector<int>{0, 1});
+    const World mapped = world_for("{ name: [Idle], speed: 2 }");
+    CHECK(mapped.animated_meshes[0].animations == std::vector<int>{2});
+    CHECK(mapped.animated_meshes[0].duration == 1.0);
+    try {
+        world_for("[BoxAction, Walk]");
+        FAIL("no error");
+    } catch (const Error& e) {
+        CHECK_THAT(e.what(), Contains("objects.0.animation"));
+        CHECK_THAT(e.what(), Contains("no animation 'Walk'"));
+    }
+    CHECK_THROWS_WITH(world_for("[]"), Contains("give at least one animation name"));
+
+    // facet info names the nodes each animation drives.
+    const RunResult info = run_facet("info '" + file + "'");
+    CHECK_THAT(info.output, Contains("BoxAction: 2 s, 1 channel, drives Box"));
+    CHECK_THAT(info.output, Contains("ArmAction: 3 s, 1 channel, drives Arm"));
+    const auto described = nlohmann::json::parse(
+        run_command("'" FACET_EXECUTABLE "' info '" + file + "' --json").output);
+    CHECK(described["animations"][0]["nodes"] == nlohmann::json::array({"Box"}));
+    CHECK(described["animations"][2]["nodes"] == nlohmann::json::array({"Arm"}));
 }

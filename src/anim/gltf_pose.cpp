@@ -268,7 +268,35 @@ int find_animation(const Mesh& mesh, const std::string& name_or_index) {
                     ")");
 }
 
+std::vector<int> find_animations(const Mesh& mesh, const std::vector<std::string>& names) {
+    std::vector<int> found;
+    for (const std::string& name : names) {
+        if (name == "all") {
+            if (animation_count(mesh) == 0)
+                throw Error(ExitCode::invalid_input,
+                            mesh.source + ": 'all' animations, but the file has none");
+            for (int i = 0; i < animation_count(mesh); ++i) found.push_back(i);
+        } else {
+            found.push_back(find_animation(mesh, name));
+        }
+    }
+    std::sort(found.begin(), found.end());
+    found.erase(std::unique(found.begin(), found.end()), found.end());
+    return found;
+}
+
+double animations_duration(const Mesh& mesh, const std::vector<int>& animations) {
+    double longest = 0;
+    for (int a : animations) longest = std::max(longest, animation_duration(mesh, a));
+    return longest;
+}
+
 void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<PosedPart>& out) {
+    pose_mesh(mesh, animation < 0 ? std::vector<int>{} : std::vector<int>{animation}, seconds, out);
+}
+
+void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seconds,
+               std::vector<PosedPart>& out) {
     out.resize(mesh.parts.size());
     const MeshRig* rig = mesh.rig.get();
     if (!rig) {
@@ -284,7 +312,7 @@ void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<Pose
         local[i] = {node.translation, node.rotation, node.scale};
         weights[i] = node.weights;
     }
-    if (animation != -1)
+    for (int animation : animations)
         apply_channels(animation_at(mesh, animation), seconds, local, weights, animated);
 
     // World transforms, parents first; `moved` marks nodes whose transform

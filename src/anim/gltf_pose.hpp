@@ -34,10 +34,21 @@ double animation_duration(const Mesh& mesh, int animation);
 // and listing its animations when there is none.
 int find_animation(const Mesh& mesh, const std::string& name_or_index);
 
-// Poses every part of `mesh` at `seconds` into `animation`, clamped to
-// [0, duration]: before the first and after the last keyframe the pose
-// holds. animation -1 poses without animation: the nodes' rest transforms,
-// skins and default morph weights. `out` gets one entry per part; its
+// The animations `names` pick, in the file's order, each once: names or
+// indices as find_animation takes them, or "all" for every one. Throws
+// facet::Error (invalid_input) as find_animation does, and for "all" in a
+// file without animations.
+std::vector<int> find_animations(const Mesh& mesh, const std::vector<std::string>& names);
+
+// The longest of the animations' durations: they play together, and a
+// shorter one holds its last pose until the longest ends.
+double animations_duration(const Mesh& mesh, const std::vector<int>& animations);
+
+// Poses every part of `mesh` at `seconds` into each of `animations`, each
+// clamped to its own [0, duration]: before the first and after the last
+// keyframe the pose holds. Where two of them drive the same node property,
+// the later in the file wins. No animations poses the nodes' rest
+// transforms, skins and default morph weights. `out` gets one entry per part; its
 // vectors are reused from call to call.
 //
 // A part that nothing moves (its node and the node's ancestors are not
@@ -45,6 +56,9 @@ int find_animation(const Mesh& mesh, const std::string& name_or_index);
 // bit-identical to Mesh::parts. Otherwise the pose is computed in double:
 // a rigid part's node transform, or for a skinned part only its joints
 // (the node's own transform is ignored, §3.7.3.3), after the morph targets.
+void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seconds,
+               std::vector<PosedPart>& out);
+// One animation, or -1 for none.
 void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<PosedPart>& out);
 
 }  // namespace facet

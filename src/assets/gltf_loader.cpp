@@ -23,6 +23,8 @@
 #include <glm/mat4x4.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "assets/gltf_extensions.hpp"
+#include "assets/gltf_meshopt.hpp"
 #include "assets/gltf_rig_loader.hpp"
 #include "assets/mesh.hpp"
 #include "core/error.hpp"
@@ -183,11 +185,20 @@ bool load_image(tinygltf::Image* image, const int index, std::string* err, std::
 // texture budget), refusals rethrown, and compressed geometry refused.
 struct ReadModel {
     tinygltf::Model model;
-    std::string warnings;  // tinygltf's, trimmed
+    std::string warnings;         // tinygltf's, trimmed
+    Warnings extension_warnings;  // extensions used that facet ignores
 };
 
 ReadModel read_model(const std::string& path, const AssetContext& context) {
     ReadModel read;
+    // Before tinygltf parses buffers that a compression extension may have
+    // left without data, so the error names the extension.
+    const gltf_detail::ExtensionLists lists = gltf_detail::read_extension_lists(path);
+    gltf_detail::check_extensions(lists, path, read.extension_warnings);
+    const bool meshopt = std::find(lists.used.begin(), lists.used.end(),
+                                   "EXT_meshopt_compression") != lists.used.end() ||
+                         std::find(lists.required.begin(), lists.required.end(),
+                                   "EXT_meshopt_compression") != lists.required.end();
     tinygltf::Model& model = read.model;
     tinygltf::TinyGLTF loader;
     LoadContext load{path, "", &context, std::nullopt};
@@ -203,8 +214,20 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
                   std::filesystem::path(path).extension() == ".GLB";
     bool ok = false;
     try {
-        ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                    : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        if (meshopt) {
+            // The fallback buffers hold no data; tinygltf would refuse them.
+            const std::vector<uint8_t> file =
+                gltf_detail::file_without_fallback_buffers(read_input_file(path, "glTF"));
+            const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash);
+            ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(),
+                                                      static_cast<unsigned>(file.size()), folder)
+                        : loader.LoadASCIIFromString(&model, &err, &warn,
+                                                     reinterpret_cast<const char*>(file.data()),
+                                                     static_cast<unsigned>(file.size()), folder);
+        } else {
+            ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                        : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+        }
     } catch (const std::exception& e) {
         err = e.what();
     }
@@ -216,13 +239,7 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
     if (!ok)
         bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
     read.warnings = trim(warn);
-
-    // Geometry compressed by these extensions is not in the accessors read
-    // below: they have no bufferView and would load as a heap of zeros.
-    for (const auto& ext : model.extensionsRequired)
-        if (ext == "KHR_draco_mesh_compression" || ext == "EXT_meshopt_compression")
-            bad(path, "needs the " + ext + " extension, which facet cannot decode");
-
+    if (meshopt) gltf_detail::decode_meshopt_views(model, path);
     return read;
 }
 
@@ -285,6 +302,8 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     Mesh mesh;
     mesh.source = path;
     if (!read.warnings.empty()) mesh.warnings.push_back(file_warning(path, read.warnings));
+    mesh.warnings.insert(mesh.warnings.end(), read.extension_warnings.begin(),
+                         read.extension_warnings.end());
     // The rest pose below is baked as always; a file that can move also
     // keeps what moves it (gltf_rig_loader.cpp).
     std::shared_ptr<MeshRig> rig;
@@ -381,21 +400,28 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
             }
             if (rig) gltf_detail::read_part_skin_and_morph(model, prim, *rig, path, what, rig_part);
             part.material = default_material;
-            int uv_set = 0;
+            // The base colour texture is the one facet samples, so its
+            // coordinate set and KHR_texture_transform become the part's UVs.
+            gltf_detail::UvTransform uv_transform;
             if (prim.material >= 0) {
                 if (static_cast<size_t>(prim.material) >= model.materials.size())
                     bad(path,
                         what + " refers to missing material " + std::to_string(prim.material));
                 part.material = static_cast<uint32_t>(prim.material);
-                uv_set =
-                    model.materials[prim.material].pbrMetallicRoughness.baseColorTexture.texCoord;
+                uv_transform = gltf_detail::texture_transform(
+                    model.materials[prim.material].pbrMetallicRoughness.baseColorTexture, path,
+                    "material " + std::to_string(prim.material) + " baseColorTexture");
             }
-            if (auto it = prim.attributes.find("TEXCOORD_" + std::to_string(uv_set));
-                it != prim.attributes.end()) {
-                auto uv = read_floats(model, it->second, 2, path, what + " TEXCOORD");
+            const std::string uv_name = "TEXCOORD_" + std::to_string(uv_transform.tex_coord);
+            if (auto it = prim.attributes.find(uv_name); it != prim.attributes.end()) {
+                auto uv = read_floats(model, it->second, 2, path, what + " " + uv_name);
                 if (uv.size() / 2 != count)
-                    bad(path, what + ": TEXCOORD count differs from POSITION count");
-                for (size_t i = 0; i < count; ++i) part.uvs.push_back({uv[2 * i], uv[2 * i + 1]});
+                    bad(path, what + ": " + uv_name + " count differs from POSITION count");
+                for (size_t i = 0; i < count; ++i) {
+                    const glm::vec2 file_uv = {uv[2 * i], uv[2 * i + 1]};
+                    part.uvs.push_back(uv_transform.identity() ? file_uv
+                                                               : uv_transform.apply(file_uv));
+                }
             }
             std::vector<uint32_t> idx;
             if (prim.indices >= 0) {

@@ -40,6 +40,7 @@ RigNode rest_node(const tinygltf::Model& model, int index, const std::string& pa
     const tinygltf::Node& node = model.nodes[index];
     const std::string what = node_name(index);
     RigNode out;
+    out.name = node.name.empty() ? "node" + std::to_string(index) : node.name;
     for (const auto* field :
          {&node.matrix, &node.translation, &node.rotation, &node.scale, &node.weights})
         if (!all_finite(*field)) bad(path, what + " has a transform or weight that is not finite");

@@ -18,7 +18,8 @@
 namespace facet {
 
 struct RigNode {
-    int parent = -1;  // -1 for a root
+    std::string name;  // the file's, or "node<index>" when it has none
+    int parent = -1;   // -1 for a root
     // The local transform at rest: the file's matrix when it gave one
     // (such a node cannot be animated, glTF §3.11.1), else T·R·S of the
     // fields below. Double, like the file's JSON numbers.

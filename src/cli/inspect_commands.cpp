@@ -36,6 +36,16 @@ struct MeshFacts {
     size_t morphed_parts = 0, most_targets = 0;
 };
 
+// The nodes an animation moves, by name, in the order its channels name them.
+std::vector<std::string> driven_nodes(const MeshRig& rig, const RigAnimation& animation) {
+    std::vector<std::string> names;
+    for (const RigChannel& c : animation.channels) {
+        const std::string& name = rig.nodes[static_cast<size_t>(c.node)].name;
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+    }
+    return names;
+}
+
 MeshFacts mesh_facts(const Mesh& mesh) {
     MeshFacts f;
     if (const MeshRig* rig = mesh.rig.get())
@@ -66,8 +76,10 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
     j["animations"] = Json::array();
     if (rig)
         for (const auto& a : rig->animations)
-            j["animations"].push_back(
-                {{"name", a.name}, {"duration", a.duration}, {"channels", a.channels.size()}});
+            j["animations"].push_back({{"name", a.name},
+                                       {"duration", a.duration},
+                                       {"channels", a.channels.size()},
+                                       {"nodes", driven_nodes(*rig, a)}});
     j["skins"] = rig ? rig->skins.size() : 0;
     j["morphed_parts"] = facts.morphed_parts;
     j["most_morph_targets"] = facts.most_targets;
@@ -94,9 +106,16 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
     const MeshRig* rig = mesh.rig.get();
     std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
     if (rig)
-        for (const auto& a : rig->animations)
-            std::printf("  - %s: %g s, %zu %s\n", a.name.c_str(), a.duration, a.channels.size(),
-                        a.channels.size() == 1 ? "channel" : "channels");
+        for (const auto& a : rig->animations) {
+            std::string nodes;
+            for (const std::string& n : driven_nodes(*rig, a)) {
+                if (!nodes.empty()) nodes += ", ";
+                nodes += n;
+            }
+            std::printf("  - %s: %g s, %zu %s, drives %s\n", a.name.c_str(), a.duration,
+                        a.channels.size(), a.channels.size() == 1 ? "channel" : "channels",
+                        nodes.c_str());
+        }
     std::printf("skins:      %zu\n", rig ? rig->skins.size() : 0);
     std::printf("morphed:    %zu of %zu parts, up to %zu targets\n", facts.morphed_parts,
                 mesh.parts.size(), facts.most_targets);

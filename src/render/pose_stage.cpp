@@ -32,7 +32,7 @@ PosedVertices PoseStage::pose(const FrameState& state) {
             seconds = std::fmod(seconds, a.duration);
             if (seconds < 0) seconds += a.duration;
         }
-        pose_mesh(*a.mesh, a.animation, seconds, scratch_);
+        pose_mesh(*a.mesh, a.animations, seconds, scratch_);
         Bounds posed;
         for (size_t part = 0; part < scratch_.size(); ++part) {
             write_part(a.first_draw + static_cast<uint32_t>(part), scratch_[part].positions,

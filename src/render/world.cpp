@@ -158,10 +158,10 @@ World build_world(const SceneDesc& scene) {
         if (obj.animation) {
             const std::string key = "objects." + std::to_string(o) + ".animation";
             try {
-                const int animation = find_animation(*mesh, obj.animation->name);
+                const std::vector<int> animations = find_animations(*mesh, obj.animation->names);
                 world.animated_meshes.push_back(
-                    {o, mesh, animation, animation_duration(*mesh, animation), obj.animation->loop,
-                     static_cast<uint32_t>(world.draws.size())});
+                    {o, mesh, animations, animations_duration(*mesh, animations),
+                     obj.animation->loop, static_cast<uint32_t>(world.draws.size())});
             } catch (const Error& e) {
                 fail_input(obj.animation->where, key, e.what());
             }

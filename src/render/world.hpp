@@ -9,8 +9,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "cloth/cloth.hpp"
 #include "assets/mesh.hpp"
+#include "cloth/cloth.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
@@ -23,13 +23,13 @@ struct Draw {
     bool has_uvs;       // the mesh part had texture coordinates
 };
 
-// An object playing an animation stored in its glTF file: its mesh parts
+// An object playing animations stored in its glTF file: its mesh parts
 // are posed every frame (anim/gltf_pose.hpp) instead of using the rest pose.
 struct AnimatedMesh {
     uint32_t object;
     std::shared_ptr<const Mesh> mesh;
-    int animation;
-    double duration;  // seconds
+    std::vector<int> animations;  // played together
+    double duration;              // seconds: the longest of them
     bool loop;
     uint32_t first_draw;  // the mesh's parts are draws first_draw, first_draw + 1, ...
 };

@@ -178,12 +178,13 @@ struct ClothDesc {
     SourceLocation where;
 };
 
-// Which animation stored in a glTF file plays, and how.
+// Which animations stored in a glTF file play, and how. Several play
+// together, each on the nodes it drives (Blender writes one per object).
 struct AnimationChoiceDesc {
-    std::string name;   // the animation's name, or its index as text
-    double speed = 1;   // playback rate; negative plays backwards
-    double offset = 0;  // seconds into the animation at the scene's first frame
-    bool loop = true;   // repeat; otherwise hold the last pose
+    std::vector<std::string> names;  // names, indices as text, or "all"
+    double speed = 1;                // playback rate; negative plays backwards
+    double offset = 0;               // seconds into the animation at the scene's first frame
+    bool loop = true;                // repeat; otherwise hold the last pose
     SourceLocation where;
 };
 
@@ -253,7 +254,8 @@ StyleDesc load_style_file(const std::string& path, const std::vector<std::string
 // The preset as one YAML mapping with its `extends` chain applied (each
 // layer's keys over its parent's, mappings merged key by key), for `facet
 // styles NAME`. Checks the preset as load_style_file does.
-std::string resolved_style_yaml(const std::string& path, const std::vector<std::string>& style_dirs);
+std::string resolved_style_yaml(const std::string& path,
+                                const std::vector<std::string>& style_dirs);
 
 // The preset files found in the given folders: name -> path, first folder wins.
 std::vector<std::pair<std::string, std::string>> list_style_presets(

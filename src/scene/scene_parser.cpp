@@ -457,16 +457,26 @@ ClothDesc parse_cloth(const Field& f) {
     return c;
 }
 
-// `animation: walk`, `animation: 0`, or a mapping with speed, offset and loop.
+// One animation or several: `walk`, `0`, `all`, or a list `[walk, blink]`.
+std::vector<std::string> animation_names(const Field& f) {
+    std::vector<std::string> names;
+    if (!f.is_sequence()) return {f.text()};
+    for (size_t i = 0; i < f.size(); ++i) names.push_back(f[i].text());
+    if (names.empty()) f.fail("give at least one animation name, or all");
+    return names;
+}
+
+// `animation: walk`, `animation: 0`, `animation: all`, `animation: [walk,
+// blink]`, or a mapping with name (one or a list), speed, offset and loop.
 AnimationChoiceDesc parse_animation_choice(const Field& f) {
     AnimationChoiceDesc choice;
     choice.where = f.where();
     if (!f.is_map()) {
-        choice.name = f.text();
+        choice.names = animation_names(f);
         return choice;
     }
     f.check_keys({"name", "speed", "offset", "loop"});
-    choice.name = f.has("name") ? f["name"].text() : "0";
+    choice.names = f.has("name") ? animation_names(f["name"]) : std::vector<std::string>{"0"};
     if (f.has("speed")) choice.speed = f["speed"].number(-1000, 1000);
     if (f.has("offset")) choice.offset = f["offset"].number(-1e7, 1e7);
     if (f.has("loop")) choice.loop = f["loop"].boolean();

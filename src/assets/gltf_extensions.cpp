@@ -1,0 +1,143 @@
+#include "assets/gltf_extensions.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "assets/gltf_accessors.hpp"
+
+namespace facet::gltf_detail {
+namespace {
+
+// What facet reads, and what it does with each.
+const std::map<std::string, std::string>& supported_extensions() {
+    static const std::map<std::string, std::string> supported = {
+        {"KHR_mesh_quantization", "integer vertex attributes"},
+        {"EXT_meshopt_compression",
+         "geometry compressed by gltfpack -cc, decoded by libmeshoptimizer"},
+        {"KHR_texture_transform", "texture offset, rotation, scale and texCoord"},
+    };
+    return supported;
+}
+
+// What is lost when an extension is ignored, for the ones files often use.
+std::string what_is_lost(const std::string& extension) {
+    static const std::map<std::string, std::string> effects = {
+        {"KHR_draco_mesh_compression", "its geometry is compressed"},
+        {"KHR_materials_unlit", "unlit materials are shaded as lit"},
+        {"KHR_materials_emissive_strength", "emission is not drawn"},
+        {"KHR_lights_punctual", "the file's lights are not used"},
+        {"KHR_texture_basisu", "its KTX2 textures are not read"},
+        {"EXT_texture_webp", "its WebP textures are not read"},
+        {"KHR_materials_variants", "only the default material of each part is used"},
+    };
+    const auto it = effects.find(extension);
+    return it == effects.end() ? "what it adds is not drawn" : it->second;
+}
+
+uint32_t little_endian(const char* bytes) {
+    uint32_t value = 0;
+    for (int i = 3; i >= 0; --i) value = (value << 8) | static_cast<unsigned char>(bytes[i]);
+    return value;
+}
+
+// The JSON text of a .gltf, or of a .glb's first chunk; "" when there is none.
+std::string json_text(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::array<char, 20> head{};
+    if (!in.read(head.data(), head.size())) return "";
+    if (std::memcmp(head.data(), "glTF", 4) != 0) {
+        // A .gltf is JSON from its first byte.
+        in.clear();
+        in.seekg(0);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        return text;
+    }
+    // GLB: 12-byte header, then a chunk: length, type "JSON", data.
+    const uint32_t length = little_endian(head.data() + 12);
+    if (std::memcmp(head.data() + 16, "JSON", 4) != 0 || length > (uint32_t(1) << 30)) return "";
+    std::string text(length, '\0');
+    if (!in.read(text.data(), length)) return "";
+    return text;
+}
+
+std::vector<std::string> names(const nlohmann::json& doc, const char* key) {
+    std::vector<std::string> list;
+    if (!doc.contains(key) || !doc[key].is_array()) return list;
+    for (const auto& item : doc[key])
+        if (item.is_string()) list.push_back(item.get<std::string>());
+    return list;
+}
+
+double finite_number(const tinygltf::Value& v, const std::string& path, const std::string& what) {
+    if (!v.IsNumber()) bad(path, what + " is not a number");
+    const double number = v.GetNumberAsDouble();
+    if (!std::isfinite(number)) bad(path, what + " is not finite");
+    return number;
+}
+
+glm::dvec2 pair_of(const tinygltf::Value& v, const std::string& path, const std::string& what) {
+    if (!v.IsArray() || v.ArrayLen() != 2) bad(path, what + " must be an array of 2 numbers");
+    return {finite_number(v.Get(0), path, what), finite_number(v.Get(1), path, what)};
+}
+
+}  // namespace
+
+ExtensionLists read_extension_lists(const std::string& path) {
+    const nlohmann::json doc = nlohmann::json::parse(json_text(path), nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return {};
+    return {names(doc, "extensionsRequired"), names(doc, "extensionsUsed")};
+}
+
+void check_extensions(const ExtensionLists& lists, const std::string& path, Warnings& warnings) {
+    const auto& supported = supported_extensions();
+    for (const std::string& name : lists.required)
+        if (!supported.count(name))
+            bad(path, "requires the glTF extension " + name + ", which facet does not support (" +
+                          what_is_lost(name) + ")");
+    for (const std::string& name : lists.used)
+        if (!supported.count(name) &&
+            std::find(lists.required.begin(), lists.required.end(), name) == lists.required.end())
+            warnings.push_back(
+                file_warning(path, "uses the glTF extension " + name +
+                                       ", which facet ignores: " + what_is_lost(name)));
+}
+
+glm::vec2 UvTransform::apply(glm::vec2 uv) const {
+    // The extension's matrix, translation · rotation · scale, written out:
+    // a positive rotation turns the UVs counter-clockwise, the image
+    // clockwise (glTF KHR_texture_transform).
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    const double u = scale.x * uv.x, v = scale.y * uv.y;
+    return {static_cast<float>(offset.x + c * u + s * v),
+            static_cast<float>(offset.y - s * u + c * v)};
+}
+
+UvTransform texture_transform(const tinygltf::TextureInfo& info, const std::string& path,
+                              const std::string& what) {
+    UvTransform t;
+    t.tex_coord = info.texCoord;
+    const auto it = info.extensions.find("KHR_texture_transform");
+    if (it == info.extensions.end()) return t;
+    const tinygltf::Value& e = it->second;
+    const std::string where = what + " KHR_texture_transform";
+    if (!e.IsObject()) bad(path, where + " is not an object");
+    if (e.Has("offset")) t.offset = pair_of(e.Get("offset"), path, where + " offset");
+    if (e.Has("rotation")) t.rotation = finite_number(e.Get("rotation"), path, where + " rotation");
+    if (e.Has("scale")) t.scale = pair_of(e.Get("scale"), path, where + " scale");
+    if (e.Has("texCoord")) {
+        const double set = finite_number(e.Get("texCoord"), path, where + " texCoord");
+        if (set < 0 || set > 31 || set != std::floor(set))
+            bad(path, where + " texCoord must be a whole number from 0 to 31");
+        t.tex_coord = static_cast<int>(set);
+    }
+    return t;
+}
+
+}  // namespace facet::gltf_detail

@@ -1,0 +1,50 @@
+#pragma once
+// Internal to the glTF loader: which glTF extensions facet reads, the check
+// of a file's extension lists against them, and KHR_texture_transform.
+// Only assets/ includes this header, because it brings in tinygltf.
+#include <string>
+#include <vector>
+
+#include <tiny_gltf.h>
+#include <glm/vec2.hpp>
+
+#include "core/diagnostics.hpp"
+
+namespace facet::gltf_detail {
+
+struct ExtensionLists {
+    std::vector<std::string> required, used;
+};
+
+// The file's extensionsRequired and extensionsUsed, read from its JSON
+// (the JSON chunk of a .glb) before tinygltf parses the rest. A file that
+// needs compressed geometry can fail tinygltf's own checks of its buffers
+// ("Invalid byteLength") before the extension lists are looked at; reading
+// them first lets the error name the extension. Empty lists when the JSON
+// cannot be read: tinygltf then reports why.
+ExtensionLists read_extension_lists(const std::string& path);
+
+// An extension facet does not support is an error (invalid_input, naming
+// it and what it does) when the file requires it, and a warning naming it
+// when the file only uses it.
+void check_extensions(const ExtensionLists& lists, const std::string& path, Warnings& warnings);
+
+// KHR_texture_transform of a textureInfo: uv' = offset + R(rotation)·(scale ∘ uv),
+// and the texture coordinate set it reads.
+struct UvTransform {
+    glm::dvec2 offset = {0, 0};
+    double rotation = 0;  // radians
+    glm::dvec2 scale = {1, 1};
+    int tex_coord = 0;
+    bool identity() const {
+        return offset == glm::dvec2(0) && rotation == 0 && scale == glm::dvec2(1);
+    }
+    glm::vec2 apply(glm::vec2 uv) const;
+};
+
+// The textureInfo's transform (identity with its texCoord when it has
+// none). Throws invalid_input for values that are not finite.
+UvTransform texture_transform(const tinygltf::TextureInfo& info, const std::string& path,
+                              const std::string& what);
+
+}  // namespace facet::gltf_detail
