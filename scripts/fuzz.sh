@@ -37,7 +37,7 @@ seeds_for() {
     case "$1" in
         scene) echo "$root/scenes $root/styles $root/tests/scenes" ;;
         obj) echo "$models/OBJ" ;;
-        gltf) echo "$models/glTF2 $models/glTF" ;;
+        gltf) echo "$models/glTF2 $models/glTF $root/tests/assets" ;;
         texture) echo "$models/OBJ $models/glTF2/BoxTextured-glTF" ;;
     esac
 }
