@@ -142,3 +142,40 @@ TEST_CASE("a scene plays all of a file's animations, or the ones it names", "[an
     CHECK(described["animations"][0]["nodes"] == nlohmann::json::array({"Box"}));
     CHECK(described["animations"][2]["nodes"] == nlohmann::json::array({"Arm"}));
 }
+
+TEST_CASE("a pose that mirrors a single-sided mesh keeps its front faces", "[anim][gltf][render]") {
+    // A triangle facing the camera, its X scale animated from 1 to -1: the
+    // mirror reverses the winding on screen; the front must stay the front
+    // (drawn, and lit from the front), not be culled as a back face.
+    TempDir dir("scene-mirror");
+    Gltf g;
+    g.one_node_scene({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
+    add_channel(g, add_animation(g, "mirror"), 0, "scale", {0, 1}, {1, 1, 1, -1, 1, 1}, "STEP");
+    const std::string file = g.write(dir.file("mirror.gltf"));
+    const std::string text =
+        "output: { size: [64, 64], frames: \"1-48\", fps: 24, background: [0, 0, 0, 1] }\n"
+        "style: phong\n"
+        "camera: { position: [0, 0.3, 3], target: [0, 0.3, 0], fov: 60 }\n"
+        "lights: [ { type: directional, direction: [0, 0, -1] } ]\n"
+        "objects:\n  - mesh: " +
+        file + "\n    animation: { name: mirror, loop: false }\n";
+    const SceneDesc scene = load(write_text(dir.file("s.yaml"), text));
+    const World world = build_world(scene);
+    auto lit_pixels = [&](int frame, float& brightest) {
+        const ColorImage image = render_frame(scene, world, frame);
+        size_t lit = 0;
+        brightest = 0;
+        for (const glm::vec4& p : image.pixels)
+            if (p.r > 0.05f) {
+                ++lit;
+                brightest = std::max(brightest, p.r);
+            }
+        return lit;
+    };
+    float rest_light = 0, mirrored_light = 0;
+    const size_t rest = lit_pixels(1, rest_light);
+    const size_t mirrored = lit_pixels(40, mirrored_light);  // 1.6 s: scale -1
+    CHECK(rest > 100);
+    CHECK(mirrored == rest);  // the mirror image of the same triangle
+    CHECK(mirrored_light == Approx(rest_light).epsilon(1e-3));
+}

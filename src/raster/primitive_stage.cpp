@@ -113,17 +113,19 @@ void Rasterizer::project_vertices(const RasterInput& input, size_t first, size_t
 
 // One triangle (a source triangle, or a piece of one that clipping made):
 // cull, bound, set up edges and planes, and list the tiles it touches.
-void Rasterizer::emit_triangle(const ScreenTriangle& t, uint32_t source, bool cull_back,
+void Rasterizer::emit_triangle(const ScreenTriangle& t, uint32_t source, Facing facing,
                                ChunkBins& bins) const {
     const int64_t* X = t.x;
     const int64_t* Y = t.y;
     const int64_t area = (X[1] - X[0]) * (Y[2] - Y[0]) - (Y[1] - Y[0]) * (X[2] - X[0]);
     if (area == 0) return;
-    // Screen y points down, so counter-clockwise front faces have negative area.
-    const bool back_facing = area > 0;
-    if (back_facing && cull_back) return;
+    // Screen y points down, so counter-clockwise front faces have negative
+    // area; a mirrored triangle's front is the other way round.
+    const bool clockwise = area > 0;
+    const bool back_facing = clockwise != facing.flipped;
+    if (back_facing && facing.cull_back) return;
     int order[3] = {0, 1, 2};
-    if (!back_facing) std::swap(order[1], order[2]);  // make the area positive
+    if (!clockwise) std::swap(order[1], order[2]);  // make the area positive
 
     const int64_t px0 = std::max<int64_t>(first_pixel_at_or_after(std::min({X[0], X[1], X[2]})), 0);
     const int64_t px1 =
@@ -193,7 +195,7 @@ void Rasterizer::emit_triangle(const ScreenTriangle& t, uint32_t source, bool cu
 // A triangle that leaves the guard band or crosses the near or far plane:
 // clipped in clip space (raster/clip.cpp), the polygon emitted as a fan.
 void Rasterizer::emit_clipped(const RasterInput& input, const uint32_t* idx, uint32_t planes,
-                              uint32_t source, bool cull_back, ChunkBins& bins) const {
+                              uint32_t source, Facing facing, ChunkBins& bins) const {
     const float half_w = 0.5f * static_cast<float>(width_);
     const float half_h = 0.5f * static_cast<float>(height_);
     ClipVertex in[3], out[kMaxClippedVertices];
@@ -211,7 +213,7 @@ void Rasterizer::emit_clipped(const RasterInput& input, const uint32_t* idx, uin
             t.z[k] = v.z * t.inv_w[k];
             t.bary[k] = corner[k]->bary;
         }
-        emit_triangle(t, source, cull_back, bins);
+        emit_triangle(t, source, facing, bins);
     }
 }
 
@@ -230,10 +232,11 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
         const uint32_t any = v[0]->outcode | v[1]->outcode | v[2]->outcode;
         if (any & kNotFinite) continue;
         if (v[0]->outcode & v[1]->outcode & v[2]->outcode) continue;  // outside one plane
-        const bool cull = input.cull_back && input.cull_back[tri];
+        const Facing facing{input.cull_back && input.cull_back[tri],
+                            input.flip_winding && input.flip_winding[tri]};
         const uint32_t source = static_cast<uint32_t>(tri);
         if (any != 0) {
-            emit_clipped(input, idx, any, source, cull, bins);
+            emit_clipped(input, idx, any, source, facing, bins);
             continue;
         }
         for (int k = 0; k < 3; ++k) {
@@ -242,7 +245,7 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
             t.inv_w[k] = v[k]->inv_w;
             t.z[k] = v[k]->z;
         }
-        emit_triangle(t, source, cull, bins);
+        emit_triangle(t, source, facing, bins);
     }
     bin_chunk(bins);
 }

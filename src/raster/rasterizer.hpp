@@ -22,6 +22,10 @@ struct RasterInput {
     const uint32_t* indices = nullptr;  // three per triangle, counter-clockwise = front
     size_t triangle_count = 0;
     const uint8_t* cull_back = nullptr;  // per triangle: 1 drops back faces
+    // Per triangle, or null: 1 where a mirroring transform (a negative
+    // scale in a pose) has reversed the winding, so that clockwise on
+    // screen is the front.
+    const uint8_t* flip_winding = nullptr;
 };
 
 // Marks a visibility-buffer sample that no triangle covers.
@@ -82,17 +86,22 @@ class Rasterizer {
 
     void project_vertices(const RasterInput& input, size_t first, size_t last);
     void setup_chunk(const RasterInput& input, size_t chunk);
-    void emit_triangle(const ScreenTriangle& t, uint32_t source, bool cull_back,
+    // How a source triangle's screen winding is read.
+    struct Facing {
+        bool cull_back;  // drop it when it faces away
+        bool flipped;    // clockwise is its front (RasterInput::flip_winding)
+    };
+    void emit_triangle(const ScreenTriangle& t, uint32_t source, Facing facing,
                        ChunkBins& bins) const;
     void emit_clipped(const RasterInput& input, const uint32_t* idx, uint32_t planes,
-                      uint32_t source, bool cull_back, ChunkBins& bins) const;
+                      uint32_t source, Facing facing, ChunkBins& bins) const;
     void bin_chunk(ChunkBins& bins) const;
     void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const;
 
     int width_, height_;
     int tile_size_;
     int tiles_x_, tiles_y_;
-    float guard_x_, guard_y_;  // guard band half-size in NDC units
+    float guard_x_, guard_y_;          // guard band half-size in NDC units
     BulkVector<ScreenVertex> screen_;  // per input vertex
     std::vector<ChunkBins> chunks_;
     size_t chunk_count_ = 0;

@@ -11,17 +11,18 @@ namespace {
 // Shading writes every pixel (background included), so nothing is cleared.
 template <typename Image>
 void fit(Image& image, int width, int height) {
-    if (image.width != width || image.height != height)
-        image = Image::uninitialized(width, height);
+    if (image.width != width || image.height != height) image = Image::uninitialized(width, height);
 }
 
-RasterInput raster_input(const World& world, const TransformedVertices& vertices) {
+RasterInput raster_input(const World& world, const TransformedVertices& vertices,
+                         const PosedVertices& posed) {
     RasterInput input;
     input.clip = vertices.clip.data();
     input.vertex_count = vertices.clip.size();
     input.indices = world.indices.data();
     input.triangle_count = world.triangle_count();
     input.cull_back = world.cull_back.data();
+    input.flip_winding = posed.flipped_triangles.empty() ? nullptr : posed.flipped_triangles.data();
     return input;
 }
 
@@ -51,7 +52,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const std::vector<ShadeLight> lights = make_shade_lights(inputs.state.lights, shadow_maps);
     const TransformedVertices& vertices =
         vertices_.transform(inputs, posed, lights, plan.any_gouraud, pool_);
-    rasterizer_.set_geometry(raster_input(world_, vertices), pool_);
+    rasterizer_.set_geometry(raster_input(world_, vertices, posed), pool_);
 
     // Shading writes finished pixels, resolving anti-aliased ones itself,
     // unless screen-space passes need every sample first (then post/

@@ -19,8 +19,15 @@ void PoseStage::write_part(uint32_t draw, std::span<const glm::vec3> positions,
     std::copy(normals.begin(), normals.end(), normals_.begin() + d.first_vertex);
 }
 
+void PoseStage::mark_flipped(uint32_t draw, bool flipped) {
+    if (flipped && flipped_.empty()) flipped_.assign(world_.triangle_count(), 0);
+    if (flipped_.empty()) return;
+    const Draw& d = world_.draws[draw];
+    std::fill_n(flipped_.begin() + d.first_triangle, d.triangle_count, flipped ? 1 : 0);
+}
+
 PosedVertices PoseStage::pose(const FrameState& state) {
-    if (!world_.deforms()) return {world_.positions, world_.normals, world_.object_bounds};
+    if (!world_.deforms()) return {world_.positions, world_.normals, world_.object_bounds, {}};
     if (positions_.empty()) {
         positions_ = world_.positions;
         normals_ = world_.normals;
@@ -35,8 +42,9 @@ PosedVertices PoseStage::pose(const FrameState& state) {
         pose_mesh(*a.mesh, a.animations, seconds, scratch_);
         Bounds posed;
         for (size_t part = 0; part < scratch_.size(); ++part) {
-            write_part(a.first_draw + static_cast<uint32_t>(part), scratch_[part].positions,
-                       scratch_[part].normals);
+            const uint32_t draw = a.first_draw + static_cast<uint32_t>(part);
+            write_part(draw, scratch_[part].positions, scratch_[part].normals);
+            mark_flipped(draw, scratch_[part].winding_flipped);
             for (const glm::vec3& p : scratch_[part].positions) posed.add(p);
         }
         bounds_[a.object] = posed;
@@ -48,7 +56,7 @@ PosedVertices PoseStage::pose(const FrameState& state) {
         const ClothFrame cloth = cloths_[i]->state_at(frame);
         write_part(world_.cloths[i].draw, cloth.positions, cloth.normals);
     }
-    return {positions_, normals_, bounds_};
+    return {positions_, normals_, bounds_, flipped_};
 }
 
 }  // namespace facet

@@ -23,6 +23,9 @@ struct PosedVertices {
     std::span<const glm::vec3> positions;
     std::span<const glm::vec3> normals;
     std::span<const Bounds> object_bounds;
+    // Per triangle, 1 where the pose mirrors its part (a negative scale):
+    // its winding on screen is reversed. Empty when nothing is mirrored.
+    std::span<const uint8_t> flipped_triangles;
 };
 
 class PoseStage {
@@ -35,6 +38,8 @@ class PoseStage {
   private:
     void write_part(uint32_t draw, std::span<const glm::vec3> positions,
                     std::span<const glm::vec3> normals);
+    // Records whether the pose mirrors the draw's triangles.
+    void mark_flipped(uint32_t draw, bool flipped);
 
     const SceneDesc& scene_;
     const World& world_;
@@ -42,6 +47,7 @@ class PoseStage {
     // A copy of the world's arrays with the moving parts posed, when any move.
     std::vector<glm::vec3> positions_, normals_;
     std::vector<Bounds> bounds_;
+    std::vector<uint8_t> flipped_;  // per triangle; empty until a part is mirrored
     std::vector<PosedPart> scratch_;
 };
 
