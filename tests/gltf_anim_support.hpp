@@ -61,6 +61,19 @@ inline void add_channel(Gltf& g, int animation, int node, const std::string& pat
         {{"sampler", anim["samplers"].size() - 1}, {"target", {{"node", node}, {"path", path}}}});
 }
 
+// Two nodes showing one triangle each, "Box" at the origin and "Arm" at
+// z = 5, as a scene of two objects (Blender writes one action per object).
+struct BoxAndArm {
+    int box, arm;
+};
+inline BoxAndArm box_and_arm(Gltf& g) {
+    const int triangle = g.mesh({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
+    const int box = g.node({{"name", "Box"}, {"mesh", triangle}});
+    const int arm = g.node({{"name", "Arm"}, {"mesh", triangle}, {"translation", {0, 0, 5}}});
+    g.scene({box, arm});
+    return {box, arm};
+}
+
 // The parts of `mesh` posed at `seconds` into `animation`.
 inline std::vector<PosedPart> posed(const Mesh& mesh, int animation, double seconds) {
     std::vector<PosedPart> out;

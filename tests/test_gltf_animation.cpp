@@ -301,10 +301,7 @@ namespace {
 // animation that drives Box as well.
 std::string two_actions_file(const TempDir& dir, bool clash) {
     Gltf g;
-    const int triangle = g.mesh({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
-    const int box = g.node({{"name", "Box"}, {"mesh", triangle}});
-    const int arm = g.node({{"name", "Arm"}, {"mesh", triangle}, {"translation", {0, 0, 5}}});
-    g.scene({box, arm});
+    const auto [box, arm] = box_and_arm(g);
     add_channel(g, add_animation(g, "BoxAction"), box, "translation", {0, 2}, {0, 0, 0, 4, 0, 0});
     add_channel(g, add_animation(g, "ArmAction"), arm, "scale", {0, 1}, {1, 1, 1, 3, 3, 3});
     if (clash)

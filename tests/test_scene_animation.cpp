@@ -98,10 +98,7 @@ TEST_CASE("a glTF animation moves the rendered mesh, loops, and holds when told"
 TEST_CASE("a scene plays all of a file's animations, or the ones it names", "[anim][scene]") {
     TempDir dir("scene-animations");
     Gltf g;
-    const int triangle = g.mesh({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
-    const int box = g.node({{"name", "Box"}, {"mesh", triangle}});
-    const int arm = g.node({{"name", "Arm"}, {"mesh", triangle}, {"translation", {0, 0, 5}}});
-    g.scene({box, arm});
+    const auto [box, arm] = box_and_arm(g);
     add_channel(g, add_animation(g, "BoxAction"), box, "translation", {0, 2}, {0, 0, 0, 4, 0, 0});
     add_channel(g, add_animation(g, "ArmAction"), arm, "scale", {0, 3}, {1, 1, 1, 3, 3, 3});
     add_channel(g, add_animation(g, "Idle"), arm, "rotation", {0, 1},
