@@ -142,8 +142,9 @@ TEST_CASE("merge refuses gaps, duplicates, damaged files and stray parts with ex
     test::write_text(folder + "/color.0006.png", "not the rendered image");
     r = merge();
     CHECK(r.exit_code == 3);
-    CHECK(r.output.find("color.0006.png: its SHA-256 is not the one manifest.part-0005-0006.json "
-                        "records") != std::string::npos);
+    CHECK(r.output.find("color.0006.png: its SHA-256 is not the one recorded: the file changed "
+                        "after it was written (listed in manifest.part-0005-0006.json)") !=
+          std::string::npos);
     std::filesystem::remove(folder + "/color.0006.png");
     r = merge();
     CHECK(r.exit_code == 3);

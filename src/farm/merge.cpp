@@ -7,8 +7,6 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
-#include "core/input_file.hpp"
-#include "core/sha256.hpp"
 #include "output/atomic_file.hpp"
 #include "output/manifest.hpp"
 #include "output/manifest_journal.hpp"
@@ -48,18 +46,9 @@ std::string describe_images(const std::set<ImageKey>& images) {
 void check_files(const std::string& folder, const NamedManifest& m,
                  std::vector<std::string>& problems) {
     for (const ManifestFile& file : m.manifest.files) {
-        try {
-            const std::string path = manifest_file_path(folder, file.path);
-            if (!fs::exists(path)) {
-                problems.push_back(file.path + ": missing (listed in " + m.name + ")");
-                continue;
-            }
-            if (sha256_hex(read_input_file(path, "output file")) != file.sha256)
-                problems.push_back(file.path + ": its SHA-256 is not the one " + m.name +
-                                   " records: the file changed after it was written");
-        } catch (const Error& e) {
-            problems.push_back(m.name + ": " + e.what());
-        }
+        const std::string problem = listed_file_problem(folder, file);
+        if (!problem.empty())
+            problems.push_back(file.path + ": " + problem + " (listed in " + m.name + ")");
     }
 }
 

@@ -12,6 +12,8 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/input_file.hpp"
+#include "core/sha256.hpp"
 #include "output/atomic_file.hpp"
 
 namespace facet {
@@ -158,6 +160,19 @@ std::string manifest_file_path(const std::string& folder, const std::string& rel
                     (std::filesystem::path(folder) / "manifest.json").string() + ": file path '" +
                         relative + "' leaves the manifest's folder");
     return (std::filesystem::path(folder) / path).string();
+}
+
+std::string listed_file_problem(const std::string& folder, const ManifestFile& file) {
+    try {
+        const std::string path = manifest_file_path(folder, file.path);
+        std::error_code ec;
+        if (!std::filesystem::exists(path, ec)) return "missing";
+        if (sha256_hex(read_input_file(path, "output file")) != file.sha256)
+            return "its SHA-256 is not the one recorded: the file changed after it was written";
+        return "";
+    } catch (const Error& e) {
+        return e.what();
+    }
 }
 
 std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {

@@ -106,4 +106,10 @@ Manifest parse_manifest(const std::string& text, const std::string& where);
 // "..") throws Error(io_failure), so no reader touches files elsewhere.
 std::string manifest_file_path(const std::string& folder, const std::string& relative);
 
+// Whether the file a manifest in `folder` lists is on disk with the SHA-256
+// the manifest records for it: "" when it is, else why not ("missing",
+// "its SHA-256 is not the one recorded: the file changed after it was
+// written", or why it cannot be read, its path included).
+std::string listed_file_problem(const std::string& folder, const ManifestFile& file);
+
 }  // namespace facet

@@ -113,9 +113,11 @@ void ManifestJournal::append(const Manifest& image) {
     Manifest line = header_;
     line.frames = image.frames;
     line.files = image.files;
+    const std::string text = manifest_json(line, false);
+    std::lock_guard lock(append_mutex_);
     // One write of one whole line: a reader sees it whole or torn at the
     // end, never interleaved (this process is the journal's only writer).
-    write_all(fd_, manifest_json(line, false), path_);
+    write_all(fd_, text, path_);
     ::fdatasync(fd_);
 }
 

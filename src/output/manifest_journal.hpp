@@ -2,6 +2,7 @@
 // What lets several runs share one output folder (render farm nodes, two
 // shells) and lets a killed run be resumed: a lock around every change to
 // the folder's manifests, and a journal per running process.
+#include <mutex>
 #include <string>
 #include <vector>
 
@@ -43,6 +44,7 @@ class ManifestJournal {
     ManifestJournal& operator=(const ManifestJournal&) = delete;
 
     // One image: its frame line and files (the header's fields are ignored).
+    // Safe to call from several threads: lines are written one at a time.
     void append(const Manifest& image);
     void remove();
     const std::string& path() const { return path_; }
@@ -51,6 +53,7 @@ class ManifestJournal {
     std::string path_;
     int fd_ = -1;
     Manifest header_;
+    std::mutex append_mutex_;
 };
 
 struct JournalFile {

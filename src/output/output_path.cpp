@@ -393,7 +393,8 @@ std::string path_relative_to_manifest(const std::string& output_path,
         output_path[manifest_dir.size()] == '/')
         return output_path.substr(manifest_dir.size() + 1);
     throw Error(ExitCode::invalid_input, "output file '" + output_path +
-                                "' is not inside the manifest's folder '" + manifest_dir + "'");
+                                             "' is not inside the manifest's folder '" +
+                                             manifest_dir + "'");
 }
 
 }  // namespace facet

@@ -5,8 +5,6 @@
 #include <set>
 
 #include "core/error.hpp"
-#include "core/input_file.hpp"
-#include "core/sha256.hpp"
 #include "output/atomic_file.hpp"
 
 namespace facet {
@@ -44,10 +42,11 @@ bool overlap(const std::vector<int>& a, const std::vector<int>& b) {
 }
 
 // The manifests in the way of this run; each with the reason.
-std::vector<std::pair<std::string, std::string>> conflicts(const LedgerRequest& request) {
+std::vector<std::pair<std::string, std::string>> conflicts(
+    const LedgerRequest& request, const std::vector<FolderManifest>& manifests) {
     std::vector<std::pair<std::string, std::string>> found;
     if (request.overwrite) return found;
-    for (const FolderManifest& other : folder_manifests(request.folder)) {
+    for (const FolderManifest& other : manifests) {
         const std::string difference = manifest_settings_difference(other.manifest, request.header);
         if (!difference.empty()) {
             found.push_back(
@@ -64,8 +63,8 @@ std::vector<std::pair<std::string, std::string>> conflicts(const LedgerRequest& 
     return found;
 }
 
-void check_live_runs(const LedgerRequest& request) {
-    for (const JournalFile& journal : list_journals(request.folder)) {
+void check_live_runs(const LedgerRequest& request, const std::vector<JournalFile>& journals) {
+    for (const JournalFile& journal : journals) {
         if (!journal.live) continue;
         Manifest other;
         try {
@@ -82,21 +81,28 @@ void check_live_runs(const LedgerRequest& request) {
     }
 }
 
-}  // namespace
-
-void check_manifest_claims(const LedgerRequest& request) {
-    check_live_runs(request);
-    const auto found = conflicts(request);
+void check_claims(const LedgerRequest& request, const std::vector<FolderManifest>& manifests,
+                  const std::vector<JournalFile>& journals) {
+    check_live_runs(request, journals);
+    const auto found = conflicts(request, manifests);
     if (found.empty()) return;
     const std::string path = (fs::path(request.folder) / found.front().first).string();
     std::string hint = "give --overwrite to start a new manifest there, or another -o";
     throw Error(ExitCode::invalid_input, path + " " + found.front().second + "; " + hint);
 }
 
+}  // namespace
+
+void check_manifest_claims(const LedgerRequest& request) {
+    check_claims(request, folder_manifests(request.folder), list_journals(request.folder));
+}
+
 RunLedger::RunLedger(LedgerRequest request) : request_(std::move(request)) {
     ManifestFolderLock lock(request_.folder);
-    check_manifest_claims(request_);
+    // Read once, under the lock: checked, then the records to skip by.
     const std::vector<FolderManifest> manifests = folder_manifests(request_.folder);
+    const std::vector<JournalFile> journals = list_journals(request_.folder);
+    check_claims(request_, manifests, journals);
     std::vector<Manifest> sources;
     for (const FolderManifest& m : manifests) {
         const bool same = manifest_settings_difference(m.manifest, request_.header).empty();
@@ -114,7 +120,7 @@ RunLedger::RunLedger(LedgerRequest request) : request_(std::move(request)) {
         }
         if (same) sources.push_back(m.manifest);
     }
-    for (const JournalFile& journal : list_journals(request_.folder)) {
+    for (const JournalFile& journal : journals) {
         try {
             Manifest recorded = read_journal(journal.path);
             if (manifest_settings_difference(recorded, request_.header).empty())
@@ -146,14 +152,9 @@ std::optional<RecordedImage> RunLedger::verified(int frame, const std::string& c
     for (const std::string& path : paths) {
         const auto file = std::find_if(it->second.files.begin(), it->second.files.end(),
                                        [&](const ManifestFile& f) { return f.path == path; });
-        if (file == it->second.files.end()) return std::nullopt;
-        try {
-            const std::vector<uint8_t> bytes =
-                read_input_file(manifest_file_path(request_.folder, path), "output file");
-            if (sha256_hex(bytes) != file->sha256) return std::nullopt;
-        } catch (const Error&) {
-            return std::nullopt;  // missing or unreadable: rendered again
-        }
+        // Missing, changed or unreadable: rendered again.
+        if (file == it->second.files.end() || !listed_file_problem(request_.folder, *file).empty())
+            return std::nullopt;
         image.files.push_back(*file);
     }
     return image;

@@ -177,8 +177,11 @@ class Encoder {
             }
             try {
                 Manifest written = encode(job);
+                // The files are on disk: a rerun may trust them. Outside the
+                // queue's lock, so the journal's disk sync holds up neither
+                // the render thread nor the other encoder.
+                ledger_.record(written);
                 std::lock_guard lock(mutex_);
-                ledger_.record(written);  // the files are on disk: a rerun may trust them
                 if (on_written_) {
                     FrameWritten report{
                         job.frame, job.camera, job.render_ms, written.frames.front().encode_ms, {}};
@@ -252,7 +255,7 @@ class Encoder {
 
     const SceneDesc& scene_;
     const OutputLayout& layout_;
-    RunLedger& ledger_;  // used under mutex_
+    RunLedger& ledger_;  // its journal serialises its own appends
     std::string host_;
     std::function<void(const FrameWritten&)> on_written_;  // called under mutex_
     std::vector<std::thread> workers_;
