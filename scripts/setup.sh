@@ -26,7 +26,7 @@ sanitize=0
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
-          libdeflate-dev libssl-dev libmeshoptimizer-dev
+          libdeflate-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev)
 for arg in "$@"; do
     case "$arg" in

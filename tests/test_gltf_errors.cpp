@@ -142,7 +142,7 @@ TEST_CASE("glTF broken references and data are errors naming the file", "[assets
              show_triangle(g);
              g.buffer_uri = "data:application/octet-stream;base64,@@@@!!!!";
          }},
-        {"geometry compressed with an unsupported required extension", "draco.gltf",
+        {"Draco-compressed geometry whose stream is not Draco data", "draco.gltf",
          [](Gltf& g) {
              show_triangle(g);
              g.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};

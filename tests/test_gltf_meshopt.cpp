@@ -10,55 +10,10 @@
 
 #include "anim/gltf_pose.hpp"
 #include "assets/mesh.hpp"
-#include "core/thread_pool.hpp"
-#include "render/frame_renderer.hpp"
-#include "render/world.hpp"
-#include "scene_support.hpp"
-#include "support.hpp"
+#include "real_asset_support.hpp"
 
 using namespace facet;
 using namespace facet::test;
-
-namespace {
-
-// The depth image of `mesh` (a path) at frame `frame`, seen from the front.
-DepthImage depth_of(const TempDir& dir, const std::string& mesh, const std::string& animation,
-                    int frame) {
-    const std::string text =
-        "output: { size: [160, 120], frames: \"1-48\", fps: 24 }\n"
-        "style: unlit\n"
-        "camera: { frame: all }\n"
-        "objects:\n  - mesh: " +
-        mesh + "\n" + (animation.empty() ? "" : "    animation: " + animation + "\n");
-    const SceneDesc scene = load(write_text(dir.file("view.yaml"), text));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(frame, 0, images);
-    return images.depth;
-}
-
-// Share of pixels covered in one image and not the other, and the largest
-// depth difference where both are covered, relative to the depth there.
-std::pair<double, double> depth_difference(const DepthImage& a, const DepthImage& b) {
-    REQUIRE(a.pixels.size() == b.pixels.size());
-    size_t coverage = 0;
-    double largest = 0;
-    for (size_t i = 0; i < a.pixels.size(); ++i) {
-        const bool ha = std::isfinite(a.pixels[i]), hb = std::isfinite(b.pixels[i]);
-        if (ha != hb) ++coverage;
-        if (ha && hb)
-            largest = std::max(largest, std::abs(double(a.pixels[i]) - b.pixels[i]) / a.pixels[i]);
-    }
-    return {double(coverage) / double(a.pixels.size()), largest};
-}
-
-std::string asset(const std::string& name) {
-    return source_path("tests/assets/" + name);
-}
-
-}  // namespace
 
 TEST_CASE("gltfpack's quantized and meshopt-compressed knots render as the original",
           "[gltf][meshopt][real]") {

@@ -22,6 +22,9 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"EXT_meshopt_compression",
          "geometry compressed by gltfpack -cc, decoded by libmeshoptimizer"},
         {"KHR_texture_transform", "texture offset, rotation, scale and texCoord"},
+        {"KHR_draco_mesh_compression", "compressed geometry, decoded by libdraco"},
+        {"KHR_materials_emissive_strength", "emission brighter than 1"},
+        {"KHR_materials_unlit", "materials shown without lights"},
     };
     return supported;
 }
@@ -29,9 +32,6 @@ const std::map<std::string, std::string>& supported_extensions() {
 // What is lost when an extension is ignored, for the ones files often use.
 std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
-        {"KHR_draco_mesh_compression", "its geometry is compressed"},
-        {"KHR_materials_unlit", "unlit materials are shaded as lit"},
-        {"KHR_materials_emissive_strength", "emission is not drawn"},
         {"KHR_lights_punctual", "the file's lights are not used"},
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
         {"EXT_texture_webp", "its WebP textures are not read"},
@@ -88,6 +88,45 @@ glm::dvec2 pair_of(const tinygltf::Value& v, const std::string& path, const std:
 }
 
 }  // namespace
+
+std::vector<uint8_t> with_json_rewritten(
+    const std::vector<uint8_t>& file,
+    const std::function<std::string(const std::string&)>& rewrite) {
+    auto u32 = [&](size_t at) {
+        uint32_t v = 0;
+        for (int i = 3; i >= 0; --i) v = (v << 8) | file[at + static_cast<size_t>(i)];
+        return v;
+    };
+    const bool glb = file.size() >= 20 && std::equal(file.begin(), file.begin() + 4, "glTF");
+    if (!glb) {
+        const std::string json = rewrite(std::string(file.begin(), file.end()));
+        return std::vector<uint8_t>(json.begin(), json.end());
+    }
+    // GLB: a 12-byte header, then chunks of (length, type, data); the first is JSON.
+    const uint32_t json_length = u32(12);
+    if (!std::equal(file.begin() + 16, file.begin() + 20, "JSON") ||
+        20 + static_cast<uint64_t>(json_length) > file.size())
+        return file;  // tinygltf reports what is wrong
+    std::string json = rewrite(std::string(file.begin() + 20, file.begin() + 20 + json_length));
+    while (json.size() % 4) json += ' ';  // chunks stay 4-byte aligned
+    std::vector<uint8_t> out(file.begin(), file.begin() + 12);
+    auto put = [&](uint32_t v) {
+        for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
+    };
+    put(static_cast<uint32_t>(json.size()));
+    out.insert(out.end(), {'J', 'S', 'O', 'N'});
+    out.insert(out.end(), json.begin(), json.end());
+    out.insert(out.end(), file.begin() + 20 + json_length, file.end());
+    const uint32_t total = static_cast<uint32_t>(out.size());
+    for (int i = 0; i < 4; ++i)
+        out[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(total >> (8 * i));
+    return out;
+}
+
+bool ExtensionLists::lists(const std::string& extension) const {
+    return std::find(required.begin(), required.end(), extension) != required.end() ||
+           std::find(used.begin(), used.end(), extension) != used.end();
+}
 
 ExtensionLists read_extension_lists(const std::string& path) {
     const nlohmann::json doc = nlohmann::json::parse(json_text(path), nullptr, false);

@@ -2,6 +2,8 @@
 // Internal to the glTF loader: which glTF extensions facet reads, the check
 // of a file's extension lists against them, and KHR_texture_transform.
 // Only assets/ includes this header, because it brings in tinygltf.
+#include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -12,8 +14,17 @@
 
 namespace facet::gltf_detail {
 
+// A whole file with its JSON rewritten: a .gltf's text, or a .glb rebuilt
+// around its rewritten JSON chunk (other chunks kept as they are). For
+// compression extensions whose files tinygltf would refuse as they are.
+std::vector<uint8_t> with_json_rewritten(
+    const std::vector<uint8_t>& file,
+    const std::function<std::string(const std::string&)>& rewrite);
+
 struct ExtensionLists {
     std::vector<std::string> required, used;
+    // In either list.
+    bool lists(const std::string& extension) const;
 };
 
 // The file's extensionsRequired and extensionsUsed, read from its JSON

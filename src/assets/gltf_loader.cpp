@@ -15,6 +15,7 @@
 
 #include <stb/stb_image.h>
 #include <tiny_gltf.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -23,6 +24,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "assets/gltf_draco.hpp"
 #include "assets/gltf_extensions.hpp"
 #include "assets/gltf_meshopt.hpp"
 #include "assets/gltf_rig_loader.hpp"
@@ -195,10 +197,7 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
     // left without data, so the error names the extension.
     const gltf_detail::ExtensionLists lists = gltf_detail::read_extension_lists(path);
     gltf_detail::check_extensions(lists, path, read.extension_warnings);
-    const bool meshopt = std::find(lists.used.begin(), lists.used.end(),
-                                   "EXT_meshopt_compression") != lists.used.end() ||
-                         std::find(lists.required.begin(), lists.required.end(),
-                                   "EXT_meshopt_compression") != lists.required.end();
+    const bool meshopt = lists.lists("EXT_meshopt_compression");
     tinygltf::Model& model = read.model;
     tinygltf::TinyGLTF loader;
     LoadContext load{path, "", &context, std::nullopt};
@@ -213,11 +212,17 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
     bool binary = std::filesystem::path(path).extension() == ".glb" ||
                   std::filesystem::path(path).extension() == ".GLB";
     bool ok = false;
+    // Compressed files are rewritten before tinygltf sees them: meshopt's
+    // fallback buffers hold no data, Draco's accessors have no views.
+    const bool draco = lists.lists("KHR_draco_mesh_compression");
+    int placeholder_view = -1;
     try {
-        if (meshopt) {
-            // The fallback buffers hold no data; tinygltf would refuse them.
-            const std::vector<uint8_t> file =
-                gltf_detail::file_without_fallback_buffers(read_input_file(path, "glTF"));
+        if (meshopt || draco) {
+            const std::vector<uint8_t> file = gltf_detail::with_json_rewritten(
+                read_input_file(path, "glTF"), [&](const std::string& json) {
+                    std::string out = meshopt ? gltf_detail::without_fallback_buffers(json) : json;
+                    return draco ? gltf_detail::with_placeholder_views(out, placeholder_view) : out;
+                });
             const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash);
             ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(),
                                                       static_cast<unsigned>(file.size()), folder)
@@ -240,7 +245,47 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
         bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trim(err)));
     read.warnings = trim(warn);
     if (meshopt) gltf_detail::decode_meshopt_views(model, path);
+    if (draco) gltf_detail::decode_draco_primitives(model, path, placeholder_view);
     return read;
+}
+
+// COLOR_0 (glTF §3.7.2.1): linear RGB or RGBA, floats or normalised
+// integers. The alpha is read past: facet's surfaces are opaque.
+std::vector<glm::vec3> read_vertex_colors(const tinygltf::Model& model, int accessor, size_t count,
+                                          const std::string& path, const std::string& what) {
+    const tinygltf::Accessor& a =
+        gltf_detail::accessor_at(model, accessor, path, what + " COLOR_0");
+    if (a.type != TINYGLTF_TYPE_VEC3 && a.type != TINYGLTF_TYPE_VEC4)
+        bad(path, what + ": COLOR_0 must be VEC3 or VEC4");
+    const int components = a.type == TINYGLTF_TYPE_VEC3 ? 3 : 4;
+    const std::vector<float> values =
+        read_floats(model, accessor, components, path, what + " COLOR_0");
+    if (values.size() / static_cast<size_t>(components) != count)
+        bad(path, what + ": COLOR_0 count differs from POSITION count");
+    std::vector<glm::vec3> colors(count);
+    for (size_t i = 0; i < count; ++i) {
+        const float* c = &values[i * static_cast<size_t>(components)];
+        colors[i] = glm::clamp(glm::vec3(c[0], c[1], c[2]), glm::vec3(0), glm::vec3(1));
+    }
+    return colors;
+}
+
+// The emission of a material: emissiveFactor scaled by
+// KHR_materials_emissive_strength (which lets it pass 1).
+glm::vec3 emission(const tinygltf::Material& m, const std::string& path) {
+    if (m.emissiveFactor.size() < 3) return glm::vec3(0);
+    glm::vec3 e(m.emissiveFactor[0], m.emissiveFactor[1], m.emissiveFactor[2]);
+    const auto it = m.extensions.find("KHR_materials_emissive_strength");
+    if (it != m.extensions.end() && it->second.Has("emissiveStrength")) {
+        const tinygltf::Value& v = it->second.Get("emissiveStrength");
+        const double strength = v.IsNumber() ? v.GetNumberAsDouble() : -1;
+        if (!(strength >= 0 && strength <= 1e6))
+            bad(path, "material '" + m.name + "': emissiveStrength must be a number from 0 to 1e6");
+        e *= static_cast<float>(strength);
+    }
+    if (!(e.x >= 0 && e.y >= 0 && e.z >= 0 && std::isfinite(e.x + e.y + e.z)))
+        bad(path, "material '" + m.name + "': emissiveFactor must be finite and not negative");
+    return e;
 }
 
 // The file's materials, with textures decoded once each.
@@ -288,6 +333,8 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
         mat.shininess = std::max(mat.shininess, 1.0f);
         mat.specular = 0.15f + 0.6f * (1.0f - roughness);
         mat.double_sided = m.doubleSided;
+        mat.emissive = emission(m, path);
+        mat.unlit = m.extensions.count("KHR_materials_unlit") > 0;
         materials.push_back(mat);
     }
     return materials;
@@ -301,6 +348,7 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     const tinygltf::Model& model = read.model;
     Mesh mesh;
     mesh.source = path;
+    mesh.loader = "tinygltf";
     if (!read.warnings.empty()) mesh.warnings.push_back(file_warning(path, read.warnings));
     mesh.warnings.insert(mesh.warnings.end(), read.extension_warnings.begin(),
                          read.extension_warnings.end());
@@ -423,6 +471,8 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
                                                                : uv_transform.apply(file_uv));
                 }
             }
+            if (auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end())
+                part.colors = read_vertex_colors(model, it->second, count, path, what);
             std::vector<uint32_t> idx;
             if (prim.indices >= 0) {
                 idx = read_indices(model, prim.indices, path);

@@ -112,39 +112,6 @@ std::string without_fallback_buffers(const std::string& json) {
     return changed ? doc.dump() : json;
 }
 
-std::vector<uint8_t> file_without_fallback_buffers(const std::vector<uint8_t>& file) {
-    auto u32 = [&](size_t at) {
-        uint32_t v = 0;
-        for (int i = 3; i >= 0; --i) v = (v << 8) | file[at + static_cast<size_t>(i)];
-        return v;
-    };
-    const bool glb = file.size() >= 20 && std::equal(file.begin(), file.begin() + 4, "glTF");
-    if (!glb) {
-        const std::string json = without_fallback_buffers(std::string(file.begin(), file.end()));
-        return std::vector<uint8_t>(json.begin(), json.end());
-    }
-    // GLB: a 12-byte header, then chunks of (length, type, data); the first is JSON.
-    const uint32_t json_length = u32(12);
-    if (!std::equal(file.begin() + 16, file.begin() + 20, "JSON") ||
-        20 + static_cast<uint64_t>(json_length) > file.size())
-        return file;  // tinygltf reports what is wrong
-    std::string json =
-        without_fallback_buffers(std::string(file.begin() + 20, file.begin() + 20 + json_length));
-    while (json.size() % 4) json += ' ';  // chunks stay 4-byte aligned
-    std::vector<uint8_t> out(file.begin(), file.begin() + 12);
-    auto put = [&](uint32_t v) {
-        for (int i = 0; i < 4; ++i) out.push_back(static_cast<uint8_t>(v >> (8 * i)));
-    };
-    put(static_cast<uint32_t>(json.size()));
-    out.insert(out.end(), {'J', 'S', 'O', 'N'});
-    out.insert(out.end(), json.begin(), json.end());
-    out.insert(out.end(), file.begin() + 20 + json_length, file.end());
-    const uint32_t total = static_cast<uint32_t>(out.size());
-    for (int i = 0; i < 4; ++i)
-        out[8 + static_cast<size_t>(i)] = static_cast<uint8_t>(total >> (8 * i));
-    return out;
-}
-
 void decode_meshopt_views(tinygltf::Model& model, const std::string& path) {
     for (size_t v = 0; v < model.bufferViews.size(); ++v) {
         tinygltf::BufferView& view = model.bufferViews[v];

@@ -14,12 +14,8 @@ namespace facet::gltf_detail {
 // that has a length but no data: the data is in the compressed views) made
 // a tiny data URI, so that tinygltf accepts it. The views that point into
 // it are decoded afterwards by decode_meshopt_views. `json` is the .gltf
-// text or the .glb's JSON chunk.
+// text or the .glb's JSON chunk (gltf_extensions.hpp, with_json_rewritten).
 std::string without_fallback_buffers(const std::string& json);
-
-// The same for a whole file: a .gltf's text, or a .glb rebuilt around its
-// rewritten JSON chunk (other chunks kept as they are).
-std::vector<uint8_t> file_without_fallback_buffers(const std::vector<uint8_t>& file);
 
 // Decodes every bufferView that carries EXT_meshopt_compression into a
 // buffer of its own and points the view there, so the accessors read the

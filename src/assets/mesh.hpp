@@ -27,6 +27,11 @@ struct Material {
     std::shared_ptr<const Texture> texture;  // multiplies color
     glm::vec2 uv_scale = {1, 1};             // texture coordinates are multiplied by this
     bool double_sided = false;
+    // Light the surface gives off, linear RGB, added to the shaded colour
+    // of the lit models (glTF emissiveFactor times emissiveStrength).
+    glm::vec3 emissive = {0, 0, 0};
+    // Shown as its colour alone, without lights (KHR_materials_unlit).
+    bool unlit = false;
 };
 
 struct Bounds {
@@ -41,13 +46,16 @@ struct MeshPart {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // one per position, unit length
     std::vector<glm::vec2> uvs;      // one per position, or empty
-    std::vector<uint32_t> indices;   // three per triangle
+    std::vector<glm::vec3>
+        colors;  // one per position (linear RGB, multiplies the material's), or empty
+    std::vector<uint32_t> indices;  // three per triangle
     uint32_t material = 0;
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
 struct Mesh {
     std::string source;  // file it came from, or the primitive's description
+    std::string loader;  // what read it: "tinygltf", "tinyobjloader", "assimp" or "facet"
     std::vector<MeshPart> parts;
     std::vector<Material> materials;
     Warnings warnings;  // non-fatal problems found while loading, each naming the file

@@ -223,6 +223,7 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
             out.positions.push_back(part.positions[v]);
             out.normals.push_back(corner_normal[c]);
             if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
+            if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
             if (source_vertex) source_vertex->push_back(v);
         }
         out.indices[c] = new_index[first_use[c]];
@@ -236,7 +237,8 @@ void validate_part(const MeshPart& part, const std::string& source) {
     if (part.indices.size() % 3 != 0)
         throw Error(ExitCode::invalid_input, source + ": index count is not a multiple of 3");
     if (part.normals.size() != part.positions.size() ||
-        (!part.uvs.empty() && part.uvs.size() != part.positions.size()))
+        (!part.uvs.empty() && part.uvs.size() != part.positions.size()) ||
+        (!part.colors.empty() && part.colors.size() != part.positions.size()))
         throw Error(ExitCode::invalid_input, source + ": vertex attribute counts differ");
     for (uint32_t i : part.indices)
         if (i >= part.positions.size())

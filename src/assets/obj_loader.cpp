@@ -379,6 +379,7 @@ Mesh load_obj(const std::string& path, const AssetContext& context) {
 
     Mesh mesh;
     mesh.source = path;
+    mesh.loader = "tinyobjloader";
     for (std::string& line : split_lines(warn, ""))
         mesh.warnings.push_back(file_warning(path, line));
 

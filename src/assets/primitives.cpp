@@ -273,6 +273,7 @@ Mesh make_primitive(const PrimitiveSpec& spec) {
     if (is_round(t) && !spec.smooth.value_or(true)) detail::make_faceted(b.part);
     Mesh mesh;
     mesh.source = "primitive " + t;
+    mesh.loader = "facet";
     mesh.materials.push_back(Material{});
     mesh.parts.push_back(std::move(b.part));
     return mesh;

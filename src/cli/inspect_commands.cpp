@@ -34,6 +34,7 @@ Json warnings_json(const Warnings& warnings) {
 
 struct MeshFacts {
     size_t morphed_parts = 0, most_targets = 0;
+    size_t textured_parts = 0, colored_parts = 0;  // with texture coordinates, vertex colours
 };
 
 // The nodes an animation moves, by name, in the order its channels name them.
@@ -48,6 +49,10 @@ std::vector<std::string> driven_nodes(const MeshRig& rig, const RigAnimation& an
 
 MeshFacts mesh_facts(const Mesh& mesh) {
     MeshFacts f;
+    for (const MeshPart& part : mesh.parts) {
+        f.textured_parts += part.uvs.empty() ? 0 : 1;
+        f.colored_parts += part.colors.empty() ? 0 : 1;
+    }
     if (const MeshRig* rig = mesh.rig.get())
         for (const auto& part : rig->parts)
             if (!part.morph_targets.empty()) {
@@ -63,16 +68,21 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
     const MeshFacts facts = mesh_facts(mesh);
     Json j = {
         {"file", path},
+        {"loader", mesh.loader},
         {"triangles", mesh.triangle_count()},
         {"vertices", mesh.vertex_count()},
         {"parts", mesh.parts.size()},
+        {"parts_with_vertex_colors", facts.colored_parts},
+        {"parts_with_uvs", facts.textured_parts},
         {"bounds", {{"min", {b.min.x, b.min.y, b.min.z}}, {"max", {b.max.x, b.max.y, b.max.z}}}}};
     j["materials"] = Json::array();
     for (const auto& m : mesh.materials)
         j["materials"].push_back({{"name", m.name},
                                   {"color", {m.color.r, m.color.g, m.color.b}},
                                   {"textured", m.texture != nullptr},
-                                  {"double_sided", m.double_sided}});
+                                  {"double_sided", m.double_sided},
+                                  {"emissive", {m.emissive.r, m.emissive.g, m.emissive.b}},
+                                  {"unlit", m.unlit}});
     j["animations"] = Json::array();
     if (rig)
         for (const auto& a : rig->animations)
@@ -91,18 +101,31 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
     const Bounds b = mesh.bounds();
     const MeshFacts facts = mesh_facts(mesh);
     std::printf("file:       %s\n", path.c_str());
+    std::printf("loader:     %s\n", mesh.loader.c_str());
     std::printf("triangles:  %zu\n", mesh.triangle_count());
     std::printf("vertices:   %zu\n", mesh.vertex_count());
-    std::printf("parts:      %zu\n", mesh.parts.size());
+    std::printf("parts:      %zu (%zu with texture coordinates, %zu with vertex colours)\n",
+                mesh.parts.size(), facts.textured_parts, facts.colored_parts);
     std::printf("bounds:     [%g, %g, %g] .. [%g, %g, %g]\n", b.min.x, b.min.y, b.min.z, b.max.x,
                 b.max.y, b.max.z);
     std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y,
                 b.max.z - b.min.z);
     std::printf("materials:  %zu\n", mesh.materials.size());
-    for (const auto& m : mesh.materials)
-        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s%s\n",
+    for (const auto& m : mesh.materials) {
+        std::string extra;
+        if (m.texture) extra += ", textured";
+        if (m.double_sided) extra += ", double-sided";
+        if (m.unlit) extra += ", unlit";
+        if (m.emissive != glm::vec3(0)) {
+            char text[96];
+            std::snprintf(text, sizeof text, ", emissive [%.3g, %.3g, %.3g]", m.emissive.r,
+                          m.emissive.g, m.emissive.b);
+            extra += text;
+        }
+        std::printf("  - %s: color [%.3g, %.3g, %.3g]%s\n",
                     m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
-                    m.texture ? ", textured" : "", m.double_sided ? ", double-sided" : "");
+                    extra.c_str());
+    }
     const MeshRig* rig = mesh.rig.get();
     std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
     if (rig)

@@ -116,8 +116,11 @@ template <bool Single>
                 b.object[lane] = draw.object;
                 b.material[lane] = &m;
                 b.has_uvs[lane] = draw.has_uvs;
+                b.has_colors[lane] = draw.has_colors;
             }
         b.any_texture = b.any_texture || m.texture != nullptr;
+        b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
+        b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
     }
 }
 
@@ -127,7 +130,7 @@ template <bool Single>
                                                    const Needs& needs, const LaneGroup* groups,
                                                    int group_count, ShadeBatch& b) {
     CornerLanes c;
-    b.any_texture = false;
+    b.any_texture = b.any_vertex_colors = b.any_emission = false;
     if (group_count == 1)
         gather_groups<true>(in, style, needs, groups, group_count, b, c);
     else
@@ -209,6 +212,32 @@ void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
     }
 }
 
+// Vertex colours multiply the albedo, lane by lane: few meshes have them.
+void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
+    for (int i = 0; i < b.count; ++i) {
+        if (!b.has_colors[i]) continue;
+        const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
+        const glm::vec3 color = b.sample.bary[0][i] * in.world.colors[c[0]] +
+                                b.sample.bary[1][i] * in.world.colors[c[1]] +
+                                b.sample.bary[2][i] * in.world.colors[c[2]];
+        for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= color[a];
+    }
+}
+
+// Unlit materials show their albedo; emission adds to what the model made.
+// Only the models that light a surface: normal and depth views stay
+// measurements.
+void apply_emission(const StyleState& style, ShadeBatch& b) {
+    if (!needs_of(style, false).light_terms && style.model != ShadingModel::gouraud) return;
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        for (int a = 0; a < 3; ++a) {
+            const float base = m.unlit ? b.lanes.albedo[a][i] : b.color[a][i];
+            b.color[a][i] = base + m.emissive[a];
+        }
+    }
+}
+
 // What the layers need, lane by lane: wire coverage and stroke coordinates.
 void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBatch& b,
                   LayerInputs (&out)[kLanes]) {
@@ -277,11 +306,16 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     b.lanes.count = b.count;
     gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
     if (b.any_texture && !style.base_color) apply_textures(in, b);
+    if (b.any_vertex_colors && !style.base_color) apply_vertex_colors(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
-    if (has_layers(style)) return finish_layers(in, style, context, b);
-    ShadedLanes shaded;
-    shade_lanes(style, context, b.lanes, shaded);
-    for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
+    if (has_layers(style)) {
+        finish_layers(in, style, context, b);
+    } else {
+        ShadedLanes shaded;
+        shade_lanes(style, context, b.lanes, shaded);
+        for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
+    }
+    if (b.any_emission) apply_emission(style, b);
 }
 
 }  // namespace facet

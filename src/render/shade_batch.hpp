@@ -35,7 +35,8 @@ struct ShadeBatch {
     // Scratch.
     const Material* material[simd::kLanes];
     bool has_uvs[simd::kLanes];
-    bool any_texture;
+    bool has_colors[simd::kLanes];
+    bool any_texture, any_vertex_colors, any_emission;
     SurfaceLanes lanes;
 };
 

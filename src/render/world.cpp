@@ -24,6 +24,8 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     if (desc.specular) m.specular = desc.specular->value;
     if (desc.shininess) m.shininess = desc.shininess->value;
     if (desc.double_sided) m.double_sided = *desc.double_sided;
+    if (desc.emissive) m.emissive = *desc.emissive;
+    if (desc.unlit) m.unlit = *desc.unlit;
     if (desc.uv_scale) m.uv_scale = *desc.uv_scale;
     if (desc.texture) {
         auto& slot = textures[*desc.texture];
@@ -90,6 +92,7 @@ void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
 Mesh cloth_mesh(const ClothModel& model) {
     Mesh mesh;
     mesh.source = "cloth";
+    mesh.loader = "facet";
     mesh.parts.push_back(model.rest_part);
     mesh.materials.push_back(Material{});
     mesh.materials.back().name = "cloth";
@@ -175,6 +178,7 @@ World build_world(const SceneDesc& scene) {
             d.triangle_count = static_cast<uint32_t>(part.triangle_count());
             d.material = material_base + part.material;
             d.has_uvs = !part.uvs.empty();
+            d.has_colors = !part.colors.empty();
             const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
             world.positions.insert(world.positions.end(), part.positions.begin(),
                                    part.positions.end());
@@ -183,6 +187,12 @@ World build_world(const SceneDesc& scene) {
                 world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
             else
                 world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
+            if (d.has_colors && world.colors.empty())
+                world.colors.resize(d.first_vertex, glm::vec3(1));
+            if (d.has_colors)
+                world.colors.insert(world.colors.end(), part.colors.begin(), part.colors.end());
+            else if (!world.colors.empty())
+                world.colors.resize(world.positions.size(), glm::vec3(1));
             world.vertex_draw.resize(world.positions.size(), draw_index);
             for (uint32_t i : part.indices) world.indices.push_back(d.first_vertex + i);
             world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);

@@ -21,6 +21,7 @@ struct Draw {
     uint32_t first_triangle, triangle_count;
     uint32_t material;  // index into World::materials
     bool has_uvs;       // the mesh part had texture coordinates
+    bool has_colors;    // the mesh part had vertex colours (World::colors)
 };
 
 // An object playing animations stored in its glTF file: its mesh parts
@@ -62,6 +63,9 @@ struct World {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
+    // Vertex colours, one per vertex when any draw has them (white for the
+    // draws that do not), else empty.
+    std::vector<glm::vec3> colors;
     std::vector<uint32_t> vertex_draw;
 
     std::vector<uint32_t> indices;        // global vertex indices, three per triangle

@@ -145,6 +145,8 @@ struct MaterialDesc {
     std::optional<TextureWrap> wrap;
     std::optional<glm::vec2> uv_scale;  // texture repeats across the surface
     std::optional<bool> double_sided;
+    std::optional<glm::vec3> emissive;  // linear RGB added to the shaded colour
+    std::optional<bool> unlit;          // the colour alone, without lights
 };
 
 // Which keys apply to which type: docs/scene-format.md, "Primitives". The

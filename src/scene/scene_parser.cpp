@@ -241,7 +241,7 @@ CameraDesc parse_camera(const Field& f, bool named, Warnings& warnings) {
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
     f.check_keys({"color", "ambient", "diffuse", "specular", "ka", "kd", "ks", "shininess",
-                  "texture", "wrap", "uv_scale", "double_sided"});
+                  "texture", "wrap", "uv_scale", "double_sided", "emissive", "unlit"});
     if (f.has("color")) m.color = f["color"].animated_color3();
     // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
     auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
@@ -268,6 +268,8 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
         m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();
     }
     if (f.has("double_sided")) m.double_sided = f["double_sided"].boolean();
+    if (f.has("emissive")) m.emissive = f["emissive"].color3();
+    if (f.has("unlit")) m.unlit = f["unlit"].boolean();
     return m;
 }
 
