@@ -30,6 +30,7 @@ void run_error_cases(const std::vector<ErrorCase>& cases) {
         DYNAMIC_SECTION(c.name) {
             TempDir dir("scene-error");
             write_text(dir.file("model.stl"), "solid x\nendsolid x\n");
+            write_text(dir.file("model.blend"), "BLENDER");
             std::string path = write_text(dir.file("bad.yaml"), c.text);
             std::string message = load_error(path);
             check_error_at(message, path, line_col(c.text, c.needle, c.offset), c.key);
@@ -252,8 +253,8 @@ TEST_CASE("mesh and texture files must exist and have a supported format", "[sce
     run_error_cases({
         {"missing mesh", "objects:\n  - mesh: models/missing.obj\n", "objects.0.mesh", "models/", 0,
          "missing.obj"},
-        {"unsupported extension", "objects:\n  - name: stl\n    mesh: model.stl\n",
-         "objects.0.mesh", "model.stl", 0, "unsupported mesh format '.stl'"},
+        {"unsupported extension", "objects:\n  - name: blend\n    mesh: model.blend\n",
+         "objects.0.mesh", "model.blend", 0, "unsupported mesh format '.blend'"},
         {"missing texture",
          "objects:\n  - primitive: cube\n    material:\n      texture: wood.png\n",
          "objects.0.material.texture", "wood.png", 0, "no such file"},

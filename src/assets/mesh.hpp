@@ -76,11 +76,18 @@ struct AssetContext {
     TextureBudget* textures = nullptr;  // when set, charged before each texture is decoded
 };
 
-// Loads .obj (with .mtl), .gltf or .glb by extension. Throws facet::Error
-// (invalid_input) with the file name and what is wrong.
+// Loads .obj (with .mtl, through tinyobjloader), .gltf or .glb (through
+// tinygltf), or .stl, .fbx, .dae or .3ds (through libassimp) by
+// extension. Throws facet::Error (invalid_input) with the file name and
+// what is wrong.
 Mesh load_mesh(const std::string& path, const AssetContext& context = {});
 Mesh load_obj(const std::string& path, const AssetContext& context = {});
+// Whether load_mesh reads files with this extension (lower case, with its
+// dot), and the list of them for messages: ".obj, .gltf, ...".
+bool is_mesh_extension(const std::string& extension);
+std::string mesh_extensions();
 Mesh load_gltf(const std::string& path, const AssetContext& context = {});
+Mesh load_assimp(const std::string& path, const AssetContext& context = {});
 
 // Normals for a part from its triangles: per vertex, area weighted, over
 // the fan of faces round the vertex joined by edges whose faces meet within

@@ -250,13 +250,33 @@ void validate_part(const MeshPart& part, const std::string& source) {
             throw Error(ExitCode::invalid_input, source + ": a vertex position is not finite");
 }
 
+namespace {
+// Through libassimp: the formats users bring that have no loader of their
+// own. Not PLY: assimp 5.2.5's PLY reader aborts, crashes or loops on a
+// truncated file, so it waits for a check of the file before assimp reads it.
+const std::vector<std::string> kAssimpExtensions = {".stl", ".fbx", ".dae", ".3ds"};
+}  // namespace
+
+bool is_mesh_extension(const std::string& extension) {
+    return extension == ".obj" || extension == ".gltf" || extension == ".glb" ||
+           std::find(kAssimpExtensions.begin(), kAssimpExtensions.end(), extension) !=
+               kAssimpExtensions.end();
+}
+
+std::string mesh_extensions() {
+    std::string list = ".obj, .gltf, .glb";
+    for (const std::string& e : kAssimpExtensions) list += ", " + e;
+    return list;
+}
+
 Mesh load_mesh(const std::string& path, const AssetContext& context) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".obj") return load_obj(path, context);
     if (ext == ".gltf" || ext == ".glb") return load_gltf(path, context);
+    if (is_mesh_extension(ext)) return load_assimp(path, context);
     throw Error(ExitCode::invalid_input,
-                path + ": unsupported mesh format '" + ext + "' (use .obj, .gltf or .glb)");
+                path + ": unsupported mesh format '" + ext + "' (use " + mesh_extensions() + ")");
 }
 
 }  // namespace facet

@@ -532,8 +532,8 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
         obj.mesh_at = f["mesh"].where();
         std::string ext = fs::path(obj.mesh).extension().string();
         for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (ext != ".obj" && ext != ".gltf" && ext != ".glb")
-            f["mesh"].fail("unsupported mesh format '" + ext + "' (use .obj, .gltf or .glb)");
+        if (!is_mesh_extension(ext))
+            f["mesh"].fail("unsupported mesh format '" + ext + "' (use " + mesh_extensions() + ")");
     } else if (f.has("primitive")) {
         obj.primitive = parse_primitive(f["primitive"]);
     } else {

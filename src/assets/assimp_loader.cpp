@@ -1,0 +1,235 @@
+// STL, FBX, Collada and 3DS through Debian's libassimp, into the same
+// Mesh as the OBJ and glTF loaders. assimp stays in this file: nothing
+// outside assets/ sees its types.
+//
+// What is read: triangles (polygons are triangulated, points and lines left
+// out), the node hierarchy baked into world positions, normals (computed as
+// for OBJ when the file has none), the first UV set, the first vertex
+// colour set, and each material's diffuse colour and diffuse texture file.
+// Animations in these formats are not played.
+#include <assimp/DefaultIOSystem.h>
+#include <assimp/material.h>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+#include <assimp/Importer.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <memory>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "assets/mesh.hpp"
+#include "core/error.hpp"
+#include "core/input_file.hpp"
+#include "core/memory.hpp"
+
+namespace facet {
+namespace {
+
+// Normals are computed for files without them, smooth across edges whose
+// faces meet at less than this (as for OBJ).
+constexpr float kCreaseDegrees = 60.0f;
+
+std::string lower(std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+}
+
+[[noreturn]] void bad(const std::string& path, const std::string& what) {
+    throw Error(ExitCode::invalid_input, path + ": " + what);
+}
+
+// assimp opens files through this: only the mesh file itself, so that a
+// hostile file cannot make it read another (textures go through the asset
+// path policy below, as for OBJ).
+class OneFileSystem : public Assimp::DefaultIOSystem {
+  public:
+    explicit OneFileSystem(std::string path) : path_(std::move(path)) {}
+    bool Exists(const char* file) const override { return path_ == file; }
+    Assimp::IOStream* Open(const char* file, const char* mode) override {
+        if (path_ != file || std::string(mode).find_first_of("wa+") != std::string::npos)
+            return nullptr;
+        return Assimp::DefaultIOSystem::Open(file, mode);
+    }
+
+  private:
+    std::string path_;
+};
+
+glm::mat4 to_glm(const aiMatrix4x4& m) {
+    // assimp's matrices are row-major; glm's columns are assimp's rows.
+    return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
+                     m.b4, m.c4, m.d4);
+}
+
+// A texture named by a file, as the asset path policy allows. Exporters
+// write the authoring machine's paths and 3DS its DOS names in capitals:
+// when the name is not found as written, a file of the same name in other
+// letter case in the mesh's folder is taken.
+std::string texture_file(const std::string& path, const std::string& where, std::string reference,
+                         const AssetContext& context) {
+    std::replace(reference.begin(), reference.end(), '\\', '/');
+    try {
+        return resolve_asset_reference(path, where, reference, context.paths);
+    } catch (const Error&) {
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        const std::string wanted = lower(std::filesystem::path(reference).filename().string());
+        std::error_code error;
+        for (const auto& entry : std::filesystem::directory_iterator(
+                 folder.empty() ? std::filesystem::path(".") : folder, error))
+            if (lower(entry.path().filename().string()) == wanted)
+                return resolve_asset_reference(path, where, entry.path().filename().string(),
+                                               context.paths);
+        throw;
+    }
+}
+
+std::vector<Material> read_materials(const aiScene& scene, const std::string& path,
+                                     const AssetContext& context, Warnings& warnings) {
+    std::vector<Material> materials;
+    std::map<std::string, std::shared_ptr<const Texture>> textures;
+    for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
+        const aiMaterial& m = *scene.mMaterials[i];
+        Material mat;
+        aiString name;
+        if (m.Get(AI_MATKEY_NAME, name) == AI_SUCCESS) mat.name = name.C_Str();
+        aiColor3D color;
+        if (m.Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS)
+            mat.color = glm::clamp(glm::vec3(color.r, color.g, color.b), 0.0f, 1.0f);
+        float shininess = 0;
+        if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0)
+            mat.shininess = std::min(shininess, 2048.0f);
+        int two_sided = 0;
+        if (m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
+        aiString file;
+        // "*N" names a texture inside the file; those are not read. A
+        // texture that cannot be read is a warning: files from these
+        // formats often name one on the machine that made them.
+        if (m.GetTexture(aiTextureType_DIFFUSE, 0, &file) == AI_SUCCESS && file.length > 0 &&
+            file.C_Str()[0] != '*') {
+            const std::string where = "material '" + mat.name + "': diffuse texture";
+            try {
+                const std::string texture = texture_file(path, where, file.C_Str(), context);
+                auto& slot = textures[texture];
+                if (!slot)
+                    slot = std::make_shared<Texture>(load_texture(texture, context.textures));
+                mat.texture = slot;
+                if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
+            } catch (const Error& e) {
+                std::string message = e.what();
+                if (message.compare(0, path.size() + 2, path + ": ") == 0)
+                    message.erase(0, path.size() + 2);
+                warnings.push_back(file_warning(path, message + "; drawn without it"));
+            }
+        }
+        materials.push_back(mat);
+    }
+    return materials;
+}
+
+MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::string& path) {
+    MeshPart part;
+    const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(world));
+    const bool mirrored = glm::determinant(glm::mat3(world)) < 0;
+    for (unsigned v = 0; v < source.mNumVertices; ++v) {
+        const aiVector3D& p = source.mVertices[v];
+        part.positions.push_back(glm::vec3(world * glm::vec4(p.x, p.y, p.z, 1)));
+        if (source.mNormals) {
+            const aiVector3D& n = source.mNormals[v];
+            const glm::vec3 turned = normal_matrix * glm::vec3(n.x, n.y, n.z);
+            const float length = glm::length(turned);
+            part.normals.push_back(length > 0 && std::isfinite(length) ? turned / length
+                                                                       : glm::vec3(0, 1, 0));
+        }
+        if (source.mTextureCoords[0]) {
+            const aiVector3D& uv = source.mTextureCoords[0][v];
+            part.uvs.push_back({uv.x, uv.y});
+        }
+        if (source.mColors[0]) {
+            const aiColor4D& c = source.mColors[0][v];
+            part.colors.push_back(glm::clamp(glm::vec3(c.r, c.g, c.b), 0.0f, 1.0f));
+        }
+    }
+    for (unsigned f = 0; f < source.mNumFaces; ++f) {
+        const aiFace& face = source.mFaces[f];
+        if (face.mNumIndices != 3) continue;  // points and lines
+        uint32_t a = face.mIndices[0], b = face.mIndices[1], c = face.mIndices[2];
+        if (mirrored) std::swap(b, c);
+        part.indices.insert(part.indices.end(), {a, b, c});
+    }
+    part.material = source.mMaterialIndex;
+    if (part.normals.empty() && !part.indices.empty()) compute_normals(part, kCreaseDegrees);
+    for (const glm::vec3& p : part.positions)
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            bad(path, "mesh '" + std::string(source.mName.C_Str()) +
+                          "': a vertex position is not finite");
+    return part;
+}
+
+}  // namespace
+
+Mesh load_assimp(const std::string& path, const AssetContext& context) {
+    require_input_file(path, "mesh");
+    // The file's size is checked against the policy before assimp reads it.
+    read_input_file(path, "mesh", context.paths.max_file_bytes);
+    Assimp::Importer importer;
+    importer.SetIOHandler(new OneFileSystem(path));  // the importer owns it
+    // Points and lines are split off and left out; polygons become
+    // triangles; degenerate triangles go.
+    importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                                aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    const aiScene* scene =
+        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType |
+                                    aiProcess_FindDegenerates | aiProcess_JoinIdenticalVertices);
+    if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+        bad(path, std::string("cannot read: ") + importer.GetErrorString());
+    Mesh mesh;
+    mesh.source = path;
+    mesh.loader = "assimp";
+    mesh.materials = read_materials(*scene, path, context, mesh.warnings);
+    const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
+    Material fallback;
+    fallback.name = "default";
+    mesh.materials.push_back(fallback);
+
+    // Every instance of a mesh is baked, so a small file can ask for far
+    // more than its size: the vertices are counted before they are read.
+    const uint64_t memory = memory_available();
+    uint64_t planned = 0;
+    struct Instance {
+        const aiNode* node;
+        glm::mat4 world;
+    };
+    std::vector<Instance> stack = {{scene->mRootNode, to_glm(scene->mRootNode->mTransformation)}};
+    size_t visited = 0;
+    while (!stack.empty()) {
+        const Instance at = stack.back();
+        stack.pop_back();
+        if (++visited > 1000000) bad(path, "the node hierarchy has more than a million nodes");
+        for (unsigned i = 0; i < at.node->mNumMeshes; ++i) {
+            const unsigned index = at.node->mMeshes[i];
+            if (index >= scene->mNumMeshes) bad(path, "a node refers to a missing mesh");
+            const aiMesh& source = *scene->mMeshes[index];
+            planned += static_cast<uint64_t>(source.mNumVertices) * 64 +
+                       static_cast<uint64_t>(source.mNumFaces) * 48;
+            check_memory("loading " + path, {{"mesh instances", planned}}, memory);
+            MeshPart part = read_part(source, at.world, path);
+            if (part.indices.empty()) continue;
+            if (part.material >= default_material) part.material = default_material;
+            validate_part(part, path);
+            mesh.parts.push_back(std::move(part));
+        }
+        for (unsigned c = 0; c < at.node->mNumChildren; ++c)
+            stack.push_back(
+                {at.node->mChildren[c], at.world * to_glm(at.node->mChildren[c]->mTransformation)});
+    }
+    if (mesh.triangle_count() == 0) bad(path, "the file has no triangles to render");
+    return mesh;
+}
+
+}  // namespace facet
