@@ -51,6 +51,22 @@ inline std::pair<double, double> depth_difference(const DepthImage& a, const Dep
     return {double(coverage) / double(a.pixels.size()), largest};
 }
 
+// Of the pixels where both images show a surface, the share whose depths
+// differ by more than `relative` of the depth: where a model has thin
+// parts, an edge pixel can see another part in either image.
+inline double share_of_depth_differences(const DepthImage& a, const DepthImage& b, float relative) {
+    REQUIRE(a.pixels.size() == b.pixels.size());
+    size_t covered = 0, different = 0;
+    for (size_t i = 0; i < a.pixels.size(); ++i) {
+        const float da = a.pixels[i], db = b.pixels[i];
+        if (!std::isfinite(da) || !std::isfinite(db)) continue;
+        ++covered;
+        if (std::abs(da - db) > relative * da) ++different;
+    }
+    REQUIRE(covered > 500);
+    return double(different) / double(covered);
+}
+
 inline std::string asset(const std::string& name) {
     return source_path("tests/assets/" + name);
 }

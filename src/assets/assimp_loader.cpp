@@ -1,4 +1,4 @@
-// STL, FBX, Collada and 3DS through Debian's libassimp, into the same
+// STL, PLY, FBX, Collada and 3DS through Debian's libassimp, into the same
 // Mesh as the OBJ and glTF loaders. assimp stays in this file: nothing
 // outside assets/ sees its types.
 //
@@ -24,6 +24,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "assets/mesh.hpp"
+#include "assets/ply_check.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/memory.hpp"
@@ -91,6 +92,8 @@ std::string texture_file(const std::string& path, const std::string& where, std:
 
 std::vector<Material> read_materials(const aiScene& scene, const std::string& path,
                                      const AssetContext& context, Warnings& warnings) {
+    const std::string extension = lower(std::filesystem::path(path).extension().string());
+    const bool without_materials = extension == ".ply" || extension == ".stl";
     std::vector<Material> materials;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
@@ -104,8 +107,11 @@ std::vector<Material> read_materials(const aiScene& scene, const std::string& pa
         float shininess = 0;
         if (m.Get(AI_MATKEY_SHININESS, shininess) == AI_SUCCESS && shininess > 0)
             mat.shininess = std::min(shininess, 2048.0f);
+        // PLY and STL have no materials: the two-sidedness assimp gives
+        // them is its own default, not the file's, so they cull as OBJ does.
         int two_sided = 0;
-        if (m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS) mat.double_sided = two_sided != 0;
+        if (!without_materials && m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS)
+            mat.double_sided = two_sided != 0;
         aiString file;
         // "*N" names a texture inside the file; those are not read. A
         // texture that cannot be read is a warning: files from these
@@ -136,6 +142,9 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
     MeshPart part;
     const glm::mat3 normal_matrix = glm::inverseTranspose(glm::mat3(world));
     const bool mirrored = glm::determinant(glm::mat3(world)) < 0;
+    // STL writers often leave the facet normal zero: then the part's
+    // normals all come from its faces.
+    bool unusable_normals = false;
     for (unsigned v = 0; v < source.mNumVertices; ++v) {
         const aiVector3D& p = source.mVertices[v];
         part.positions.push_back(glm::vec3(world * glm::vec4(p.x, p.y, p.z, 1)));
@@ -143,8 +152,10 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
             const aiVector3D& n = source.mNormals[v];
             const glm::vec3 turned = normal_matrix * glm::vec3(n.x, n.y, n.z);
             const float length = glm::length(turned);
-            part.normals.push_back(length > 0 && std::isfinite(length) ? turned / length
-                                                                       : glm::vec3(0, 1, 0));
+            if (length > 0 && std::isfinite(length))
+                part.normals.push_back(turned / length);
+            else
+                unusable_normals = true;
         }
         if (source.mTextureCoords[0]) {
             const aiVector3D& uv = source.mTextureCoords[0][v];
@@ -163,6 +174,7 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
         part.indices.insert(part.indices.end(), {a, b, c});
     }
     part.material = source.mMaterialIndex;
+    if (unusable_normals) part.normals.clear();
     if (part.normals.empty() && !part.indices.empty()) compute_normals(part, kCreaseDegrees);
     for (const glm::vec3& p : part.positions)
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
@@ -175,8 +187,10 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
 
 Mesh load_assimp(const std::string& path, const AssetContext& context) {
     require_input_file(path, "mesh");
-    // The file's size is checked against the policy before assimp reads it.
-    read_input_file(path, "mesh", context.paths.max_file_bytes);
+    // The file's size is checked against the policy before assimp reads it,
+    // and a PLY file's structure (assets/ply_check.hpp).
+    const std::vector<uint8_t> bytes = read_input_file(path, "mesh", context.paths.max_file_bytes);
+    if (lower(std::filesystem::path(path).extension().string()) == ".ply") check_ply(bytes, path);
     Assimp::Importer importer;
     importer.SetIOHandler(new OneFileSystem(path));  // the importer owns it
     // Points and lines are split off and left out; polygons become

@@ -77,7 +77,7 @@ struct AssetContext {
 };
 
 // Loads .obj (with .mtl, through tinyobjloader), .gltf or .glb (through
-// tinygltf), or .stl, .fbx, .dae or .3ds (through libassimp) by
+// tinygltf), or .stl, .ply, .fbx, .dae or .3ds (through libassimp) by
 // extension. Throws facet::Error (invalid_input) with the file name and
 // what is wrong.
 Mesh load_mesh(const std::string& path, const AssetContext& context = {});

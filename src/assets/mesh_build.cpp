@@ -252,9 +252,8 @@ void validate_part(const MeshPart& part, const std::string& source) {
 
 namespace {
 // Through libassimp: the formats users bring that have no loader of their
-// own. Not PLY: assimp 5.2.5's PLY reader aborts, crashes or loops on a
-// truncated file, so it waits for a check of the file before assimp reads it.
-const std::vector<std::string> kAssimpExtensions = {".stl", ".fbx", ".dae", ".3ds"};
+// own (PLY files are checked first: assets/ply_check.hpp).
+const std::vector<std::string> kAssimpExtensions = {".stl", ".ply", ".fbx", ".dae", ".3ds"};
 }  // namespace
 
 bool is_mesh_extension(const std::string& extension) {
