@@ -350,8 +350,8 @@ TEST_CASE("framing fits the objects in the view for any fov and aspect", "[camer
 }
 
 TEST_CASE("framing with an orbit circles the objects at the fitted distance", "[camera]") {
-    SceneDesc scene = load_text(
-        framing_scene(45, 160, 90, "all", "  orbit: { elevation: 25, start_angle: 30 }\n"));
+    SceneDesc scene = load_text(framing_scene(45, 160, 90, "{ objects: all, fit: sphere }",
+                                              "  orbit: { elevation: 25, start_angle: 30 }\n"));
     World world = build_world(scene);
     const FrameState first = evaluate_frame(scene, world.object_bounds, 1);
     const FrameState third = evaluate_frame(scene, world.object_bounds, 3);

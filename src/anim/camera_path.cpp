@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/trigonometric.hpp>
@@ -136,6 +137,56 @@ double corners_fit_distance(std::span<const glm::dvec3> corners, const glm::dvec
         distance = std::max(distance, -ahead);
     }
     return distance;
+}
+
+ExactFit exact_fit_distance(std::span<const glm::dvec3> points, const glm::dvec3& center,
+                            const glm::dvec3& toward_camera, const glm::dvec3& up,
+                            const ViewAngles& view) {
+    const glm::dvec3 forward = -glm::normalize(toward_camera);
+    glm::dvec3 right = glm::cross(forward, up);
+    if (glm::length(right) < 1e-9) right = glm::cross(forward, glm::dvec3(0, 0, 1));
+    right = glm::normalize(right);
+    const glm::dvec3 true_up = glm::cross(right, forward);
+    const double inf = std::numeric_limits<double>::infinity();
+    double low_x = -inf, high_x = inf, low_y = -inf, high_y = inf, nearest = inf;
+    glm::dvec2 least(inf), most(-inf);  // of the lateral offsets, where the shifts lie
+    for (const glm::dvec3& point : points) {
+        const glm::dvec3 q = point - center;
+        const double z = glm::dot(q, forward), x = glm::dot(q, right), y = glm::dot(q, true_up);
+        low_x = std::max(low_x, x - view.tan_half_horizontal * z);
+        high_x = std::min(high_x, x + view.tan_half_horizontal * z);
+        low_y = std::max(low_y, y - view.tan_half_vertical * z);
+        high_y = std::min(high_y, y + view.tan_half_vertical * z);
+        nearest = std::min(nearest, z);
+        least = glm::min(least, glm::dvec2(x, y));
+        most = glm::max(most, glm::dvec2(x, y));
+    }
+    if (points.empty()) return {0, glm::dvec3(0)};
+    double distance = std::max((low_x - high_x) / (2 * view.tan_half_horizontal),
+                               (low_y - high_y) / (2 * view.tan_half_vertical));
+    // Every point stays in front of the camera.
+    distance = std::max(distance, -nearest + 1e-9 * (1 + std::abs(nearest)));
+    // At that distance, each axis is centred where the farthest projections
+    // either way are equal: the shift s minimising max |x - s| / (d + z).
+    // The difference of the two sides falls as s grows, so bisection finds it.
+    auto centred = [&](const glm::dvec3& axis, double low, double high) {
+        for (int step = 0; step < 80; ++step) {
+            const double s = 0.5 * (low + high);
+            double ahead = -inf, behind = -inf;
+            for (const glm::dvec3& point : points) {
+                const glm::dvec3 q = point - center;
+                const double depth = distance + glm::dot(q, forward);
+                const double x = glm::dot(q, axis);
+                ahead = std::max(ahead, (x - s) / depth);
+                behind = std::max(behind, (s - x) / depth);
+            }
+            (ahead > behind ? low : high) = s;
+        }
+        return 0.5 * (low + high);
+    };
+    const double shift_x = centred(right, least.x, most.x);
+    const double shift_y = centred(true_up, least.y, most.y);
+    return {distance, right * shift_x + true_up * shift_y};
 }
 
 }  // namespace facet

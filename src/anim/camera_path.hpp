@@ -57,4 +57,19 @@ double corners_fit_distance(std::span<const glm::dvec3> corners, const glm::dvec
                             const glm::dvec3& toward_camera, const glm::dvec3& up,
                             const ViewAngles& view);
 
+// The exact fit of points in a perspective view looking along
+// -toward_camera: the least distance at which every point's projection fits
+// the view, and the sideways shift (along the view's right and up) that
+// centres their projections. Per axis, a point at lateral offset x and
+// depth z past the centre plane fits when |x - s| <= t (d + z), which
+// holds for all points iff d >= (max(x - t z) - min(x + t z)) / (2 t), with
+// s = (max(x - t z) + min(x + t z)) / 2.
+struct ExactFit {
+    double distance;
+    glm::dvec3 shift;
+};
+ExactFit exact_fit_distance(std::span<const glm::dvec3> points, const glm::dvec3& center,
+                            const glm::dvec3& toward_camera, const glm::dvec3& up,
+                            const ViewAngles& view);
+
 }  // namespace facet

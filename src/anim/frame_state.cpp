@@ -78,30 +78,42 @@ double animation_time(const AnimationChoiceDesc& choice, const FrameTime& at) {
     return choice.offset + choice.speed * at.seconds;
 }
 
-// The objects a framing camera fits, as spheres (steady as objects turn) or
-// world-space box corners (tight).
+// The objects a framing camera fits, as spheres (steady as objects turn),
+// world-space box corners, and world-space vertices (exact).
 struct FramedBounds {
     Sphere sphere;
     std::vector<glm::dvec3> corners;
+    std::vector<glm::dvec3> points;  // vertices, or corners for objects without them
 };
 
-FramedBounds framed_bounds(const SceneDesc& scene, std::span<const Bounds> bounds,
+FramedBounds framed_bounds(const SceneDesc& scene, std::span<const Bounds> object_bounds,
+                           std::span<const FramingShape> shapes,
                            const std::vector<ObjectState>& objects,
-                           const std::vector<std::string>& names) {
+                           const std::vector<std::string>& names, bool want_points = false) {
     std::vector<Sphere> spheres;
     FramedBounds out;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
         const bool chosen = names.empty() ? scene.objects[i].visible
                                           : std::find(names.begin(), names.end(),
                                                       scene.objects[i].name) != names.end();
-        if (!chosen || i >= bounds.size() || bounds[i].empty()) continue;
-        spheres.push_back(transformed_box_sphere(bounds[i], objects[i].transform));
+        const Bounds* bounds = i < shapes.size()          ? &shapes[i].bounds
+                               : i < object_bounds.size() ? &object_bounds[i]
+                                                          : nullptr;
+        if (!chosen || !bounds || bounds->empty()) continue;
+        spheres.push_back(transformed_box_sphere(*bounds, objects[i].transform));
         const glm::dmat4 m(objects[i].transform);
         for (int c = 0; c < 8; ++c) {
-            glm::dvec3 p((c & 1) ? bounds[i].max.x : bounds[i].min.x,
-                         (c & 2) ? bounds[i].max.y : bounds[i].min.y,
-                         (c & 4) ? bounds[i].max.z : bounds[i].min.z);
+            glm::dvec3 p((c & 1) ? bounds->max.x : bounds->min.x,
+                         (c & 2) ? bounds->max.y : bounds->min.y,
+                         (c & 4) ? bounds->max.z : bounds->min.z);
             out.corners.emplace_back(m * glm::dvec4(p, 1.0));
+        }
+        if (!want_points) continue;
+        if (i < shapes.size() && !shapes[i].points.empty()) {
+            for (const glm::vec3& p : shapes[i].points)
+                out.points.emplace_back(m * glm::dvec4(glm::dvec3(p), 1.0));
+        } else {
+            out.points.insert(out.points.end(), out.corners.end() - 8, out.corners.end());
         }
     }
     out.sphere = enclosing_sphere(spheres);
@@ -110,9 +122,10 @@ FramedBounds framed_bounds(const SceneDesc& scene, std::span<const Bounds> bound
 
 // Near and far planes that contain every visible object, for framing cameras.
 glm::vec2 fitted_clip_range(const SceneDesc& scene, std::span<const Bounds> bounds,
+                            std::span<const FramingShape> shapes,
                             const std::vector<ObjectState>& objects, const glm::dvec3& eye,
                             const glm::dvec3& forward) {
-    const Sphere all = framed_bounds(scene, bounds, objects, {}).sphere;
+    const Sphere all = framed_bounds(scene, bounds, shapes, objects, {}).sphere;
     const double ahead = glm::dot(all.center - eye, forward);
     // A little slack, so surfaces exactly on the sphere are not clipped.
     const double far = std::max(ahead + all.radius * 1.01, 1e-3);
@@ -120,9 +133,21 @@ glm::vec2 fitted_clip_range(const SceneDesc& scene, std::span<const Bounds> boun
     return {static_cast<float>(near), static_cast<float>(far)};
 }
 
+// The direction from an orbit's centre to the camera at `progress` (0..1
+// over the frame range; 1 is the end of the turns).
+glm::dvec3 orbit_direction(const OrbitDesc& o, const FrameTime& at, double progress) {
+    const double sign = o.clockwise ? -1.0 : 1.0;
+    const double angle =
+        glm::radians(evaluate(o.start_angle, at) + sign * 360.0 * o.turns * progress);
+    const double elevation = glm::radians(static_cast<double>(evaluate(o.elevation, at)));
+    return {std::cos(elevation) * std::sin(angle), std::sin(elevation),
+            std::cos(elevation) * std::cos(angle)};
+}
+
 CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
-                            std::span<const Bounds> bounds, const std::vector<ObjectState>& objects,
-                            const FrameTime& at, double progress, double path_fraction) {
+                            std::span<const Bounds> bounds, std::span<const FramingShape> shapes,
+                            const std::vector<ObjectState>& objects, const FrameTime& at,
+                            double progress, double path_fraction) {
     CameraState state;
     state.position = evaluate(cam.position, at);
     state.target = evaluate(cam.target, at);
@@ -148,18 +173,15 @@ CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
     glm::dvec3 toward_camera = glm::dvec3(state.position) - centre;
     double distance = glm::length(toward_camera);
     if (cam.orbit) {
-        const OrbitDesc& o = *cam.orbit;
-        const double sign = o.clockwise ? -1.0 : 1.0;
-        const double angle =
-            glm::radians(evaluate(o.start_angle, at) + sign * 360.0 * o.turns * progress);
-        const double elevation = glm::radians(static_cast<double>(evaluate(o.elevation, at)));
-        toward_camera = {std::cos(elevation) * std::sin(angle), std::sin(elevation),
-                         std::cos(elevation) * std::cos(angle)};
-        centre = glm::dvec3(evaluate(o.center, at));
-        distance = evaluate(o.radius, at);
+        toward_camera = orbit_direction(*cam.orbit, at, progress);
+        centre = glm::dvec3(evaluate(cam.orbit->center, at));
+        distance = evaluate(cam.orbit->radius, at);
     }
     if (cam.frame) {
-        const FramedBounds framed = framed_bounds(scene, bounds, objects, cam.frame->objects);
+        const FramingFit fit =
+            cam.frame->fit.value_or(cam.orbit ? FramingFit::geometry : FramingFit::sphere);
+        const FramedBounds framed = framed_bounds(scene, bounds, shapes, objects,
+                                                  cam.frame->objects, fit == FramingFit::geometry);
         // The margin is a fraction of the view left free: the view angles
         // shrink by 1 + margin, so the bounds reach 1 / (1 + margin) of the
         // half-view for any fov and aspect.
@@ -170,17 +192,38 @@ CameraState evaluate_camera(const SceneDesc& scene, const CameraDesc& cam,
         view.tan_half_horizontal /= grow;
         centre = framed.sphere.center;
         if (glm::length(toward_camera) < 1e-12) toward_camera = {0, 0, 1};
-        distance = cam.frame->fit_box ? corners_fit_distance(framed.corners, centre, toward_camera,
-                                                             glm::dvec3(state.up), view)
-                                      : sphere_fit_distance(framed.sphere, view);
+        const std::span<const glm::dvec3> points =
+            fit == FramingFit::geometry ? framed.points : framed.corners;
+        const glm::dvec3 up(state.up);
+        if (fit == FramingFit::sphere) {
+            distance = sphere_fit_distance(framed.sphere, view);
+        } else if (cam.orbit) {
+            // The union of the views over the whole orbit: the farthest of
+            // the distances at which the points fit, so nothing leaves the
+            // frame anywhere on the turn and the widest view fills it.
+            constexpr int kOrbitSamples = 72;
+            distance = corners_fit_distance(points, centre, toward_camera, up, view);
+            for (int k = 0; k <= kOrbitSamples; ++k)
+                distance = std::max(
+                    distance,
+                    corners_fit_distance(points, centre,
+                                         orbit_direction(*cam.orbit, at, double(k) / kOrbitSamples),
+                                         up, view));
+        } else if (fit == FramingFit::box) {
+            distance = corners_fit_distance(points, centre, toward_camera, up, view);
+        } else {
+            const ExactFit exact = exact_fit_distance(points, centre, toward_camera, up, view);
+            centre += exact.shift;
+            distance = exact.distance;
+        }
     }
     if (cam.orbit || cam.frame) {
         const glm::dvec3 eye = centre + glm::normalize(toward_camera) * distance;
         state.position = glm::vec3(eye);
         state.target = glm::vec3(centre);
         if (cam.frame && !(cam.near && cam.far)) {
-            const glm::vec2 range =
-                fitted_clip_range(scene, bounds, objects, eye, -glm::normalize(toward_camera));
+            const glm::vec2 range = fitted_clip_range(scene, bounds, shapes, objects, eye,
+                                                      -glm::normalize(toward_camera));
             if (!cam.near) state.near = range.x;
             if (!cam.far) state.far = range.y;
         }
@@ -208,7 +251,7 @@ glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
 }
 
 FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
-                          size_t camera) {
+                          size_t camera, std::span<const FramingShape> framing) {
     FrameState state;
     state.frame = frame;
     const auto& frames = scene.output.frames;
@@ -239,8 +282,8 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
     const double open_fraction =
         last > first ? static_cast<double>(frame - first) / (last - first) : 0.0;
     const double path_fraction = cam.path && cam.path->closed ? state.progress : open_fraction;
-    state.camera = evaluate_camera(scene, cam, object_bounds, state.objects, at, state.progress,
-                                   path_fraction);
+    state.camera = evaluate_camera(scene, cam, object_bounds, framing, state.objects, at,
+                                   state.progress, path_fraction);
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].camera_relative)
             state.lights[i].direction = camera_to_world(state.camera, state.lights[i].direction);

@@ -60,10 +60,19 @@ struct FrameState {
     std::vector<LightState> lights;
 };
 
-// `object_bounds` are model-space bounds per scene object (for framing and
-// following objects); `camera` indexes scene.cameras.
+// What cameras with `frame:` fit of one scene object, in model space.
+struct FramingShape {
+    Bounds bounds;  // for an animated mesh, over the frames of the scene
+    // The vertices `fit: geometry` fits; empty: the bounds' corners.
+    std::vector<glm::vec3> points;
+};
+
+// `object_bounds` are model-space bounds per scene object (for following
+// objects, and for framing when `framing` is empty); `camera` indexes
+// scene.cameras; `framing` (empty, or one per scene object) is what
+// `frame:` fits.
 FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
-                          size_t camera = 0);
+                          size_t camera = 0, std::span<const FramingShape> framing = {});
 
 // Model matrix from translate, a rotation and scale.
 glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,

@@ -1,5 +1,7 @@
 #include "render/frame_inputs.hpp"
 
+#include "render/framing_shapes.hpp"
+
 #include <algorithm>
 
 #include <glm/geometric.hpp>
@@ -67,11 +69,12 @@ FrameEvaluator::FrameEvaluator(const SceneDesc& scene, const World& world, int s
     : scene_(scene),
       world_(world),
       samples_per_side_(samples_per_side),
-      plan_(plan_styles(scene)) {}
+      plan_(plan_styles(scene)),
+      framing_(framing_shapes(scene, world)) {}
 
 FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     FrameInputs in;
-    in.state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index);
+    in.state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index, framing_);
     const FrameTime at{static_cast<double>(in.state.frame), in.state.time};
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);

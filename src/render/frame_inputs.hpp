@@ -61,6 +61,7 @@ class FrameEvaluator {
     int samples_per_side_;
     StylePlan plan_;
     TamCache tams_;
+    std::vector<FramingShape> framing_;  // render/framing_shapes.hpp
 };
 
 // The depth range that fits the visible scene's bounding sphere.

@@ -34,12 +34,8 @@ PosedVertices PoseStage::pose(const FrameState& state) {
     }
     bounds_ = world_.object_bounds;
     for (const AnimatedMesh& a : world_.animated_meshes) {
-        double seconds = state.objects[a.object].animation_seconds;
-        if (a.loop && a.duration > 0) {
-            seconds = std::fmod(seconds, a.duration);
-            if (seconds < 0) seconds += a.duration;
-        }
-        pose_mesh(*a.mesh, a.animations, seconds, scratch_);
+        pose_mesh(*a.mesh, a.animations,
+                  animation_clock(a, state.objects[a.object].animation_seconds), scratch_);
         Bounds posed;
         for (size_t part = 0; part < scratch_.size(); ++part) {
             const uint32_t draw = a.first_draw + static_cast<uint32_t>(part);

@@ -1,6 +1,7 @@
 #include "render/world.hpp"
 
 #include <array>
+#include <cmath>
 #include <map>
 
 #include <glm/geometric.hpp>
@@ -101,6 +102,14 @@ Mesh cloth_mesh(const ClothModel& model) {
 }
 
 }  // namespace
+
+double animation_clock(const AnimatedMesh& mesh, double seconds) {
+    if (mesh.loop && mesh.duration > 0) {
+        seconds = std::fmod(seconds, mesh.duration);
+        if (seconds < 0) seconds += mesh.duration;
+    }
+    return seconds;
+}
 
 World build_world(const SceneDesc& scene) {
     World world;

@@ -35,6 +35,10 @@ struct AnimatedMesh {
     uint32_t first_draw;  // the mesh's parts are draws first_draw, first_draw + 1, ...
 };
 
+// The time in an animated mesh's animations at `seconds` of its clock:
+// wrapped into the longest animation when it loops.
+double animation_clock(const AnimatedMesh& mesh, double seconds);
+
 // An object that is a simulated cloth (cloth/cloth.hpp): its one draw is
 // re-posed every frame from the simulation of its model, built once.
 struct ClothObject {

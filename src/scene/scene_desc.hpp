@@ -71,14 +71,18 @@ struct PathDesc {
     SourceLocation where;
 };
 
+enum class FramingFit { sphere, box, geometry };
+
 // `frame:` places the camera so that these objects' bounds fill the view.
 struct FramingDesc {
     std::vector<std::string> objects;  // empty: all visible objects
     std::vector<SourceLocation> object_at;
     float margin = 0.1f;  // fraction of the view left free around the bounds
     // sphere: the bounding sphere (the distance stays constant however the
-    // objects turn); box: the bounding box corners, tighter for stills.
-    bool fit_box = false;
+    // objects turn); box: the bounding box corners; geometry: the vertices
+    // themselves, exactly (docs/scene-format.md, "Fit objects in the view").
+    // Unset: sphere, or geometry over the whole turn for an orbit.
+    std::optional<FramingFit> fit;
     SourceLocation where;
 };
 

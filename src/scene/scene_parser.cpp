@@ -177,7 +177,12 @@ FramingDesc parse_framing(const Field& f) {
     f.check_keys({"objects", "margin", "fit"});
     if (f.has("objects")) add_names(f["objects"]);
     if (f.has("margin")) framing.margin = static_cast<float>(f["margin"].number(0, 10));
-    if (f.has("fit")) framing.fit_box = f["fit"].choice({"sphere", "box"}) == "box";
+    if (f.has("fit")) {
+        const std::string fit = f["fit"].choice({"sphere", "box", "geometry"});
+        framing.fit = fit == "box"        ? FramingFit::box
+                      : fit == "geometry" ? FramingFit::geometry
+                                          : FramingFit::sphere;
+    }
     return framing;
 }
 
