@@ -31,7 +31,8 @@ struct Extent {
 Extent extent_at(const SceneDesc& scene, const World& world,
                  const std::vector<FramingShape>& shapes, int frame,
                  const std::vector<glm::vec3>* posed = nullptr) {
-    const FrameState state = evaluate_frame(scene, world.object_bounds, frame, 0, shapes);
+    const FrameState state =
+        evaluate_frame(scene, world.object_bounds, frame, 0, FrameAssets{shapes, {}});
     const float aspect = float(scene.output.width) / float(scene.output.height);
     const CameraMatrices m = make_camera(state.camera, aspect);
     Extent e;
@@ -85,8 +86,8 @@ TEST_CASE("fit: geometry fits the projected vertices exactly, centred", "[camera
             knot_scene("{ position: [3, 1, 2], fov: 40, frame: { objects: all, fit: " + fit +
                        " } }")));
         const World world = build_world(scene);
-        const FrameState s =
-            evaluate_frame(scene, world.object_bounds, 1, 0, framing_shapes(scene, world));
+        const FrameState s = evaluate_frame(scene, world.object_bounds, 1, 0,
+                                            FrameAssets{framing_shapes(scene, world), {}});
         return glm::length(s.camera.position - s.camera.target);
     };
     CHECK(distance("geometry") < distance("box"));
@@ -109,7 +110,8 @@ TEST_CASE("an orbit frames the union of its views: all in, and filled at the wid
         CHECK(e.fill() <= 1 / 1.1 + 1e-4);
         widest = std::max(widest, e.fill());
         // No breathing: the distance stays the same all the way round.
-        const FrameState s = evaluate_frame(scene, world.object_bounds, f, 0, shapes);
+        const FrameState s =
+            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}});
         const double distance = glm::length(s.camera.position - s.camera.target);
         if (f == 1) first_distance = distance;
         CHECK(distance == Approx(first_distance).epsilon(1e-6));
@@ -149,7 +151,8 @@ TEST_CASE("an animated mesh is framed by its poses over the scene's frames", "[c
     CHECK(shapes[0].bounds.max.x == Approx(8 * 23.0 / 24 + 1).epsilon(1e-5));
     for (int f : {1, 13, 24}) {
         INFO("frame " << f);
-        const FrameState state = evaluate_frame(scene, world.object_bounds, f, 0, shapes);
+        const FrameState state =
+            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}});
         std::vector<PosedPart> parts;
         pose_mesh(*world.animated_meshes[0].mesh, world.animated_meshes[0].animations,
                   animation_clock(world.animated_meshes[0], state.objects[0].animation_seconds),

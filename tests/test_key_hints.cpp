@@ -24,7 +24,7 @@ TEST_CASE("unknown keys suggest the nearest known key", "[scene][hints]") {
     CHECK_THAT(error_for("objets: [ { primitive: cube } ]\n"),
                Catch::Contains("did you mean 'objects'?"));
     // Nothing close: no guess, just the list.
-    std::string far = error_for("camera: { zoom: 2 }\nobjects: [ { primitive: cube } ]\n");
+    std::string far = error_for("camera: { magnification: 2 }\nobjects: [ { primitive: cube } ]\n");
     CHECK_THAT(far, !Catch::Contains("did you mean"));
     CHECK_THAT(far, Catch::Contains("expected one of: position, target"));
 }

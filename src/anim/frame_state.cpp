@@ -1,5 +1,7 @@
 #include "anim/frame_state.hpp"
 
+#include "anim/gltf_pose.hpp"
+
 #include <algorithm>
 #include <cmath>
 
@@ -243,6 +245,22 @@ glm::vec3 camera_to_world(const CameraState& camera, const glm::vec3& d) {
 
 }  // namespace
 
+CameraState file_camera_state(const FileCamera& camera, double seconds) {
+    const glm::dmat4 world =
+        node_world_matrix(*camera.rig, camera.animations, seconds, camera.camera.node);
+    CameraState state;
+    const glm::dvec3 position(world * glm::dvec4(0, 0, 0, 1));
+    const glm::dvec3 forward = glm::normalize(glm::dvec3(world * glm::dvec4(0, 0, -1, 0)));
+    state.position = glm::vec3(position);
+    state.target = glm::vec3(position + forward);
+    state.up = glm::vec3(glm::normalize(glm::dvec3(world * glm::dvec4(0, 1, 0, 0))));
+    state.fov_degrees = static_cast<float>(camera.camera.yfov_degrees);
+    state.near = static_cast<float>(camera.camera.znear);
+    state.far =
+        static_cast<float>(camera.camera.zfar > 0 ? camera.camera.zfar : camera.camera.znear * 1e4);
+    return state;
+}
+
 glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
                         const glm::vec3& scale) {
     glm::dmat4 m = glm::translate(glm::dmat4(1.0), glm::dvec3(translate));
@@ -251,7 +269,7 @@ glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,
 }
 
 FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
-                          size_t camera, std::span<const FramingShape> framing) {
+                          size_t camera, const FrameAssets& assets) {
     FrameState state;
     state.frame = frame;
     const auto& frames = scene.output.frames;
@@ -282,8 +300,11 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
     const double open_fraction =
         last > first ? static_cast<double>(frame - first) / (last - first) : 0.0;
     const double path_fraction = cam.path && cam.path->closed ? state.progress : open_fraction;
-    state.camera = evaluate_camera(scene, cam, object_bounds, framing, state.objects, at,
-                                   state.progress, path_fraction);
+    if (camera < assets.cameras.size() && assets.cameras[camera].rig)
+        state.camera = file_camera_state(assets.cameras[camera], state.time);
+    else
+        state.camera = evaluate_camera(scene, cam, object_bounds, assets.framing, state.objects, at,
+                                       state.progress, path_fraction);
     for (size_t i = 0; i < scene.lights.size(); ++i)
         if (scene.lights[i].camera_relative)
             state.lights[i].direction = camera_to_world(state.camera, state.lights[i].direction);

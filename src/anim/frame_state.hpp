@@ -67,12 +67,29 @@ struct FramingShape {
     std::vector<glm::vec3> points;
 };
 
+// A scene camera `from:` a glTF file: the file's camera and what moves it.
+struct FileCamera {
+    GltfCamera camera;
+    std::shared_ptr<const MeshRig> rig;  // null: the scene camera is not from a file
+    std::vector<int> animations;         // the file's animations that move the camera
+};
+
+// What the scene's loaded files add to its records.
+struct FrameAssets {
+    std::span<const FramingShape> framing;  // empty, or one per scene object: what `frame:` fits
+    std::span<const FileCamera> cameras;    // empty, or one per scene camera
+};
+
 // `object_bounds` are model-space bounds per scene object (for following
-// objects, and for framing when `framing` is empty); `camera` indexes
-// scene.cameras; `framing` (empty, or one per scene object) is what
-// `frame:` fits.
+// objects, and for framing when `assets.framing` is empty); `camera`
+// indexes scene.cameras.
 FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object_bounds, int frame,
-                          size_t camera = 0, std::span<const FramingShape> framing = {});
+                          size_t camera = 0, const FrameAssets& assets = {});
+
+// A file camera at `seconds` after the scene's first frame: its node's
+// world transform (the camera looks down its -Z, +Y up), yfov and planes
+// (an infinite far plane becomes 10^4 near planes away).
+CameraState file_camera_state(const FileCamera& camera, double seconds);
 
 // Model matrix from translate, a rotation and scale.
 glm::mat4 object_matrix(const glm::vec3& translate, const glm::dquat& rotation,

@@ -353,4 +353,39 @@ void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seco
     }
 }
 
+glm::dmat4 node_world_matrix(const MeshRig& rig, const std::vector<int>& animations, double seconds,
+                             int node) {
+    const size_t node_count = rig.nodes.size();
+    std::vector<NodeTrs> local(node_count);
+    std::vector<std::vector<double>> weights(node_count);
+    std::vector<bool> animated(node_count, false);
+    for (size_t i = 0; i < node_count; ++i) {
+        local[i] = {rig.nodes[i].translation, rig.nodes[i].rotation, rig.nodes[i].scale};
+        weights[i] = rig.nodes[i].weights;
+    }
+    for (int a : animations)
+        apply_channels(rig.animations.at(static_cast<size_t>(a)), seconds, local, weights,
+                       animated);
+    // The chain from the node up to its root, applied root first.
+    glm::dmat4 world(1.0);
+    for (int n = node; n >= 0; n = rig.nodes[static_cast<size_t>(n)].parent)
+        world =
+            local_matrix(rig.nodes[static_cast<size_t>(n)], local[static_cast<size_t>(n)]) * world;
+    return world;
+}
+
+std::vector<int> animations_moving(const MeshRig& rig, int node) {
+    std::vector<bool> chain(rig.nodes.size(), false);
+    for (int n = node; n >= 0; n = rig.nodes[static_cast<size_t>(n)].parent)
+        chain[static_cast<size_t>(n)] = true;
+    std::vector<int> out;
+    for (size_t a = 0; a < rig.animations.size(); ++a)
+        for (const RigChannel& c : rig.animations[a].channels)
+            if (c.path != RigChannelPath::weights && chain[static_cast<size_t>(c.node)]) {
+                out.push_back(static_cast<int>(a));
+                break;
+            }
+    return out;
+}
+
 }  // namespace facet

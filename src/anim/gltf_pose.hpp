@@ -61,4 +61,12 @@ void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seco
 // One animation, or -1 for none.
 void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<PosedPart>& out);
 
+// The world matrix of one node of `rig` at `seconds` into `animations`
+// (indices into rig.animations, played together, held at their ends).
+glm::dmat4 node_world_matrix(const MeshRig& rig, const std::vector<int>& animations, double seconds,
+                             int node);
+
+// The animations of `rig` that move `node` or one of its ancestors.
+std::vector<int> animations_moving(const MeshRig& rig, int node);
+
 }  // namespace facet

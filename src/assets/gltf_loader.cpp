@@ -340,6 +340,41 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
     return materials;
 }
 
+// The cameras on the file's nodes (§3.10), checked.
+std::vector<GltfCamera> read_cameras(const tinygltf::Model& model, const std::string& path) {
+    std::vector<GltfCamera> cameras;
+    for (size_t n = 0; n < model.nodes.size(); ++n) {
+        const int index = model.nodes[n].camera;
+        if (index < 0) continue;
+        if (static_cast<size_t>(index) >= model.cameras.size())
+            bad(path,
+                "node " + std::to_string(n) + " refers to missing camera " + std::to_string(index));
+        const tinygltf::Camera& c = model.cameras[static_cast<size_t>(index)];
+        GltfCamera camera;
+        // Named as the rig names nodes (gltf_rig_loader.cpp) when neither has a name.
+        camera.name = !c.name.empty()                ? c.name
+                      : !model.nodes[n].name.empty() ? model.nodes[n].name
+                                                     : "node" + std::to_string(n);
+        camera.node = static_cast<int>(n);
+        camera.orthographic = c.type != "perspective";
+        if (camera.orthographic) {
+            cameras.push_back(camera);
+            continue;
+        }
+        const double yfov = c.perspective.yfov * 180.0 / 3.14159265358979323846;
+        if (!(yfov >= 1 && yfov <= 179))
+            bad(path, "camera '" + camera.name + "': yfov must be 1 to 179 degrees");
+        if (!(c.perspective.znear > 0) ||
+            !(c.perspective.zfar == 0 || c.perspective.zfar > c.perspective.znear))
+            bad(path, "camera '" + camera.name + "': znear must be positive and zfar beyond it");
+        camera.yfov_degrees = yfov;
+        camera.znear = c.perspective.znear;
+        camera.zfar = c.perspective.zfar;
+        cameras.push_back(camera);
+    }
+    return cameras;
+}
+
 }  // namespace
 
 Mesh load_gltf(const std::string& path, const AssetContext& context) {
@@ -574,7 +609,20 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     for (int root : roots) visit(root, glm::mat4(1.0f), 0, on_path);
     if (mesh.triangle_count() == 0) bad(path, "the glTF file has no triangles to render");
     mesh.rig = std::move(rig);
+    mesh.cameras = read_cameras(model, path);
     return mesh;
+}
+
+GltfCameras load_gltf_cameras(const std::string& path, const AssetContext& context) {
+    require_input_file(path, "glTF");
+    ReadModel read = read_model(path, context);
+    GltfCameras out;
+    out.warnings = read.extension_warnings;
+    auto rig = std::make_shared<MeshRig>();
+    gltf_detail::read_rig_nodes_and_animations(read.model, path, *rig, out.warnings);
+    out.cameras = read_cameras(read.model, path);
+    out.rig = std::move(rig);
+    return out;
 }
 
 }  // namespace facet

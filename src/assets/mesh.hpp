@@ -53,6 +53,17 @@ struct MeshPart {
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
+// A camera of a glTF file (§3.10), on the node that carries it. It looks
+// down the node's -Z with +Y up.
+struct GltfCamera {
+    std::string name;           // the camera's name, else its node's
+    int node = -1;              // index into the rig's nodes
+    bool orthographic = false;  // listed, but facet renders perspective only
+    double yfov_degrees = 45;
+    double znear = 0.1;
+    double zfar = 0;  // 0: infinite
+};
+
 struct Mesh {
     std::string source;  // file it came from, or the primitive's description
     std::string loader;  // what read it: "tinygltf", "tinyobjloader", "assimp" or "facet"
@@ -63,10 +74,19 @@ struct Mesh {
     // (anim/gltf_pose.hpp); null when the file has none of them. The parts
     // above are always the static rest pose.
     std::shared_ptr<const MeshRig> rig;
+    std::vector<GltfCamera> cameras;  // a glTF file's, for `facet info`
 
     size_t triangle_count() const;
     size_t vertex_count() const;
     Bounds bounds() const;
+};
+
+// The cameras of a glTF file, with its nodes and animations to place them
+// at any time (anim/gltf_pose.hpp, node_world_matrix).
+struct GltfCameras {
+    std::vector<GltfCamera> cameras;
+    std::shared_ptr<const MeshRig> rig;
+    Warnings warnings;
 };
 
 // What loading may touch besides the file itself: the policy for paths
@@ -88,6 +108,9 @@ bool is_mesh_extension(const std::string& extension);
 std::string mesh_extensions();
 Mesh load_gltf(const std::string& path, const AssetContext& context = {});
 Mesh load_assimp(const std::string& path, const AssetContext& context = {});
+// The cameras of a .gltf or .glb, which need hold no triangles. Throws
+// invalid_input naming the file for a file that cannot be read.
+GltfCameras load_gltf_cameras(const std::string& path, const AssetContext& context = {});
 
 // Normals for a part from its triangles: per vertex, area weighted, over
 // the fan of faces round the vertex joined by edges whose faces meet within

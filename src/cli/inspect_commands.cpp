@@ -90,6 +90,16 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
                                        {"duration", a.duration},
                                        {"channels", a.channels.size()},
                                        {"nodes", driven_nodes(*rig, a)}});
+    j["cameras"] = Json::array();
+    for (const GltfCamera& c : mesh.cameras) {
+        Json camera = {{"name", c.name}, {"type", c.orthographic ? "orthographic" : "perspective"}};
+        if (!c.orthographic) {
+            camera["yfov_degrees"] = c.yfov_degrees;
+            camera["znear"] = c.znear;
+            camera["zfar"] = c.zfar;
+        }
+        j["cameras"].push_back(camera);
+    }
     j["skins"] = rig ? rig->skins.size() : 0;
     j["morphed_parts"] = facts.morphed_parts;
     j["most_morph_targets"] = facts.most_targets;
@@ -127,6 +137,17 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
                     extra.c_str());
     }
     const MeshRig* rig = mesh.rig.get();
+    std::printf("cameras:    %zu\n", mesh.cameras.size());
+    for (const GltfCamera& c : mesh.cameras) {
+        if (c.orthographic)
+            std::printf("  - %s: orthographic (not rendered)\n", c.name.c_str());
+        else if (c.zfar > 0)
+            std::printf("  - %s: yfov %.4g degrees, near %g, far %g\n", c.name.c_str(),
+                        c.yfov_degrees, c.znear, c.zfar);
+        else
+            std::printf("  - %s: yfov %.4g degrees, near %g, far infinite\n", c.name.c_str(),
+                        c.yfov_degrees, c.znear);
+    }
     std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
     if (rig)
         for (const auto& a : rig->animations) {

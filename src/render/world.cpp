@@ -103,6 +103,56 @@ Mesh cloth_mesh(const ClothModel& model) {
 
 }  // namespace
 
+namespace {
+
+// The cameras `from:` glTF files, one per scene camera (without a rig for
+// the others); errors name the camera's `from` key.
+std::vector<FileCamera> load_file_cameras(const SceneDesc& scene, const AssetContext& assets,
+                                          Warnings& warnings) {
+    std::vector<FileCamera> out(scene.cameras.size());
+    std::map<std::string, GltfCameras> files;
+    for (size_t c = 0; c < scene.cameras.size(); ++c) {
+        const CameraDesc& cam = scene.cameras[c];
+        if (cam.from.empty()) continue;
+        const std::string key = cam.key + ".from";
+        auto found = files.find(cam.from);
+        if (found == files.end()) {
+            try {
+                found = files.emplace(cam.from, load_gltf_cameras(cam.from, assets)).first;
+            } catch (const Error& e) {
+                fail_input(cam.from_at, key, e.what());
+            }
+            warnings.insert(warnings.end(), found->second.warnings.begin(),
+                            found->second.warnings.end());
+        }
+        const GltfCameras& file = found->second;
+        std::string names;
+        for (const GltfCamera& g : file.cameras) {
+            if (!names.empty()) names += ", ";
+            names += "'" + g.name + "'";
+        }
+        if (file.cameras.empty()) fail_input(cam.from_at, key, cam.from + " has no cameras");
+        const GltfCamera* chosen = &file.cameras.front();
+        if (cam.name_given) {
+            chosen = nullptr;
+            for (const GltfCamera& g : file.cameras)
+                if (g.name == cam.name) chosen = &g;
+            if (!chosen)
+                fail_input(
+                    cam.from_at, key,
+                    cam.from + " has no camera named '" + cam.name + "' (it has " + names + ")");
+        }
+        if (chosen->orthographic)
+            fail_input(cam.from_at, key,
+                       cam.from + ": camera '" + chosen->name +
+                           "' is orthographic; facet renders perspective cameras only");
+        out[c] = {*chosen, file.rig, animations_moving(*file.rig, chosen->node)};
+    }
+    return out;
+}
+
+}  // namespace
+
 double animation_clock(const AnimatedMesh& mesh, double seconds) {
     if (mesh.loop && mesh.duration > 0) {
         seconds = std::fmod(seconds, mesh.duration);
@@ -211,6 +261,7 @@ World build_world(const SceneDesc& scene) {
             world.draws.push_back(d);
         }
     }
+    world.file_cameras = load_file_cameras(scene, assets, world.warnings);
     if (world.positions.size() >= 0xffffffffu)
         throw Error(ExitCode::invalid_input, "the scene has more than 4 billion vertices");
     return world;

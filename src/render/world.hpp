@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "anim/frame_state.hpp"
 #include "assets/mesh.hpp"
 #include "cloth/cloth.hpp"
 #include "scene/scene_desc.hpp"
@@ -57,6 +58,8 @@ struct World {
     // renderer poses a copy of the vertex arrays every frame.
     bool deforms() const { return !animated_meshes.empty() || !cloths.empty(); }
     std::vector<Bounds> object_bounds;  // model space, per scene object
+    // Per scene camera: the glTF camera of one `from:` a file (else no rig).
+    std::vector<FileCamera> file_cameras;
     // Per scene object: `cast_shadows` (drawn into shadow maps), and
     // `receive_shadows` as 1 or 0, the value shading puts in its lanes.
     std::vector<uint8_t> casts_shadows;

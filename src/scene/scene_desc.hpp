@@ -103,6 +103,12 @@ struct CameraDesc {
     std::optional<OrbitDesc> orbit;
     std::optional<PathDesc> path;
     std::optional<FramingDesc> frame;
+    // `from: FILE`: the camera of a glTF file, placed and animated by the
+    // file (render/world.hpp loads it); `name` then names it in the file,
+    // and empty means the file's first camera.
+    std::string from;
+    SourceLocation from_at;
+    bool name_given = false;
     SourceLocation where;
     std::string key;  // "camera" or "cameras.N", for messages
 };

@@ -186,12 +186,28 @@ FramingDesc parse_framing(const Field& f) {
     return framing;
 }
 
-CameraDesc parse_camera(const Field& f, bool named, Warnings& warnings) {
+CameraDesc parse_camera(const Field& f, bool named, const std::string& base_dir,
+                        Warnings& warnings) {
     CameraDesc cam;
     cam.where = f.where();
     cam.key = f.path();
-    f.check_keys(
-        {"position", "target", "up", "fov", "near", "far", "orbit", "path", "frame", "name"});
+    f.check_keys({"position", "target", "up", "fov", "near", "far", "orbit", "path", "frame",
+                  "name", "from"});
+    cam.name_given = f.has("name");
+    if (f.has("from")) {
+        // The file places the camera and sets its lens: nothing else may.
+        for (const char* key :
+             {"position", "target", "up", "fov", "near", "far", "orbit", "path", "frame"})
+            if (f.has(key))
+                f[key].fail("a camera `from:` a file takes its " + std::string(key) +
+                            " from the file");
+        cam.from = existing_file(f["from"], base_dir);
+        cam.from_at = f["from"].where();
+        std::string ext = fs::path(cam.from).extension().string();
+        for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        if (ext != ".gltf" && ext != ".glb")
+            f["from"].fail("cameras are read from glTF files (.gltf or .glb)");
+    }
     if (named)
         cam.name = f.require("name").text();
     else if (f.has("name"))
@@ -627,16 +643,17 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         Field cameras = root["cameras"];
         if (cameras.size() == 0) cameras.fail("the list of cameras is empty");
         for (size_t i = 0; i < cameras.size(); ++i) {
-            scene.cameras.push_back(parse_camera(cameras[i], true, scene.warnings));
+            scene.cameras.push_back(
+                parse_camera(cameras[i], true, scene.directory, scene.warnings));
             for (size_t j = 0; j < i; ++j)
                 if (scene.cameras[j].name == scene.cameras[i].name)
                     cameras[i]["name"].fail("another camera is already named '" +
                                             scene.cameras[i].name + "'");
         }
     } else {
-        scene.cameras.push_back(root.has("camera")
-                                    ? parse_camera(root["camera"], false, scene.warnings)
-                                    : CameraDesc{});
+        scene.cameras.push_back(root.has("camera") ? parse_camera(root["camera"], false,
+                                                                  scene.directory, scene.warnings)
+                                                   : CameraDesc{});
     }
     if (root.has("lights")) {  // `lights: []` is a scene without lights, on purpose
         Field lights = root["lights"];
