@@ -103,7 +103,7 @@ TEST_CASE("a spline path passes through its points at constant speed", "[camera]
     }
 }
 
-TEST_CASE("a closed path wraps round; an open one stops at its ends", "[camera][anim]") {
+TEST_CASE("a closed path wraps round, an open one stops at its ends", "[camera][anim]") {
     const std::vector<glm::vec3> square = {{5, 1, 0}, {0, 1, 5}, {-5, 1, 0}, {0, 1, -5}};
     SplinePath closed(square, true);
     // By symmetry each control point is a quarter of the way round.

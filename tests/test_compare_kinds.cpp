@@ -268,7 +268,7 @@ diff_scale: 4
     CHECK(o.output.find("did you mean 'hard_fail'") != std::string::npos);
 }
 
-TEST_CASE("compare kinds: masked pixels play no part in SSIM; NaN colour fails", "[compare]") {
+TEST_CASE("compare kinds: masked pixels play no part in SSIM, NaN colour fails", "[compare]") {
     CompareImage ref = plane(64, 64, 3, 0.5f), candidate = plane(64, 64, 3, 0.5f);
     for (int y = 20; y < 30; ++y)
         for (int x = 20; x < 30; ++x)

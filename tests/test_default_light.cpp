@@ -53,7 +53,7 @@ TEST_CASE("the default key light comes from above and left of the camera, at eve
     }
 }
 
-TEST_CASE("lights: [] renders without light; no lights key lights the scene", "[scene][lights]") {
+TEST_CASE("lights: [] renders without light, no lights key lights the scene", "[scene][lights]") {
     TempDir dir("default-light");
     const float lit = mean_red(load(write_text(dir.file("lit.yaml"), kSphere)));
     const float dark = mean_red(load(write_text(dir.file("dark.yaml"), kSphere + "lights: []\n")));

@@ -149,7 +149,7 @@ TEST_CASE("killed with SIGKILL mid-run, a rerun renders only the rest, bit for b
           test::listed_hashes(dir.file("whole/spin/manifest.json")));
 }
 
-TEST_CASE("two runs writing into one folder keep every entry; other settings are refused",
+TEST_CASE("two runs writing into one folder keep every entry, other settings are refused",
           "[farm][cli][concurrent]") {
     test::TempDir dir("farm-shared");
     const std::string scene = test::write_farm_scene(dir, 24, "[320, 180]");

@@ -94,23 +94,24 @@ TEST_CASE("KHR_texture_transform moves, turns and scales the UVs it applies to",
         "KHR_texture_transform scale must be an array of 2 numbers");
 }
 
-TEST_CASE("a required glTF extension facet lacks is an error that names it; a used one warns",
+TEST_CASE("a required glTF extension facet lacks is an error that names it, a used one warns",
           "[gltf][extensions]") {
     TempDir dir("gltf-ext");
     Gltf g;
     g.one_node_scene({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
-    g.doc["extensionsUsed"] = {"KHR_materials_unlit", "KHR_lights_punctual"};
+    g.doc["extensionsUsed"] = {"KHR_materials_variants", "KHR_texture_basisu",
+                               "KHR_lights_punctual"};
     const facet::Mesh mesh = facet::load_gltf(g.write(dir.file("used.gltf")));
-    REQUIRE(mesh.warnings.size() == 2);
+    REQUIRE(mesh.warnings.size() == 2);  // the lights are read
     CHECK_THAT(mesh.warnings[0].describe(),
-               Contains("uses the glTF extension KHR_materials_unlit, which facet ignores: unlit "
-                        "materials are shaded as lit"));
-    CHECK_THAT(mesh.warnings[1].describe(), Contains("KHR_lights_punctual"));
+               Contains("uses the glTF extension KHR_materials_variants, which facet ignores: "
+                        "only the default material of each part is used"));
+    CHECK_THAT(mesh.warnings[1].describe(), Contains("KHR_texture_basisu"));
 
-    g.doc["extensionsRequired"] = {"KHR_materials_unlit"};
+    g.doc["extensionsRequired"] = {"KHR_materials_variants"};
     const std::string required = g.write(dir.file("required.gltf"));
     require_input_error([&] { facet::load_gltf(required); },
-                        "required.gltf: requires the glTF extension KHR_materials_unlit, which "
+                        "required.gltf: requires the glTF extension KHR_materials_variants, which "
                         "facet does not support");
 
     // KHR_mesh_quantization and KHR_texture_transform are read: no error.

@@ -164,7 +164,7 @@ TEST_CASE("manifest: each image file carries the version, scene, camera and matr
     }
 }
 
-TEST_CASE("manifest: equivalent runs merge; a file rewritten by a later run is listed once",
+TEST_CASE("manifest: equivalent runs merge, a file rewritten by a later run is listed once",
           "[manifest][cli]") {
     TempDir dir("merge-equivalent");
     const std::string out = dir.file("out");

@@ -80,6 +80,24 @@ double animation_time(const AnimationChoiceDesc& choice, const FrameTime& at) {
     return choice.offset + choice.speed * at.seconds;
 }
 
+// A file light placed by its object's transform at this frame.
+LightState object_light_state(const ObjectLight& l, const glm::mat4& model) {
+    LightState s;
+    s.type = l.light.type == GltfLight::Type::directional ? LightType::directional
+             : l.light.type == GltfLight::Type::spot      ? LightType::spot
+                                                          : LightType::point;
+    s.position = glm::vec3(model * glm::vec4(l.light.position, 1.0f));
+    const glm::vec3 direction = glm::mat3(model) * l.light.direction;
+    const float length = glm::length(direction);
+    s.direction = length > 0 ? direction / length : l.light.direction;
+    s.color = l.light.color;
+    s.intensity = l.light.intensity * l.intensity_scale;
+    s.range = l.light.range;
+    s.inner_angle = l.light.inner_degrees;
+    s.outer_angle = l.light.outer_degrees;
+    return s;
+}
+
 // The objects a framing camera fits, as spheres (steady as objects turn),
 // world-space box corners, and world-space vertices (exact).
 struct FramedBounds {
@@ -293,6 +311,8 @@ FrameState evaluate_frame(const SceneDesc& scene, std::span<const Bounds> object
         state.objects.push_back(o);
     }
     for (const LightDesc& l : scene.lights) state.lights.push_back(evaluate_light(l, at));
+    for (const ObjectLight& l : assets.lights)
+        state.lights.push_back(object_light_state(l, state.objects[l.object].transform));
 
     // An open path runs from its first point at the first frame to its last
     // point at the last frame; a closed one loops like an orbit.

@@ -74,10 +74,19 @@ struct FileCamera {
     std::vector<int> animations;         // the file's animations that move the camera
 };
 
+// A light of an object's glTF file (`lights: true`), in the object's model
+// space: it moves with the object.
+struct ObjectLight {
+    uint32_t object;
+    GltfLight light;
+    float intensity_scale = 1;
+};
+
 // What the scene's loaded files add to its records.
 struct FrameAssets {
     std::span<const FramingShape> framing;  // empty, or one per scene object: what `frame:` fits
     std::span<const FileCamera> cameras;    // empty, or one per scene camera
+    std::span<const ObjectLight> lights;    // after the scene's own, in FrameState::lights
 };
 
 // `object_bounds` are model-space bounds per scene object (for following

@@ -25,6 +25,7 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_draco_mesh_compression", "compressed geometry, decoded by libdraco"},
         {"KHR_materials_emissive_strength", "emission brighter than 1"},
         {"KHR_materials_unlit", "materials shown without lights"},
+        {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
     };
     return supported;
 }
@@ -32,7 +33,6 @@ const std::map<std::string, std::string>& supported_extensions() {
 // What is lost when an extension is ignored, for the ones files often use.
 std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
-        {"KHR_lights_punctual", "the file's lights are not used"},
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
         {"EXT_texture_webp", "its WebP textures are not read"},
         {"KHR_materials_variants", "only the default material of each part is used"},

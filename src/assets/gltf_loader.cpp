@@ -22,6 +22,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/trigonometric.hpp>
+#include <glm/vector_relational.hpp>
 
 #include "assets/gltf_accessors.hpp"
 #include "assets/gltf_draco.hpp"
@@ -340,6 +342,52 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
     return materials;
 }
 
+// The KHR_lights_punctual light a node carries, placed by `world`.
+std::optional<GltfLight> node_light(const tinygltf::Model& model, const tinygltf::Node& node,
+                                    const glm::mat4& world, const std::string& path) {
+    const auto it = node.extensions.find("KHR_lights_punctual");
+    if (it == node.extensions.end() || !it->second.Has("light")) return std::nullopt;
+    const tinygltf::Value& index_value = it->second.Get("light");
+    const int index =
+        index_value.IsNumber() ? static_cast<int>(index_value.GetNumberAsDouble()) : -1;
+    if (index < 0 || static_cast<size_t>(index) >= model.lights.size())
+        bad(path, "node '" + node.name + "' refers to missing light " + std::to_string(index));
+    const tinygltf::Light& l = model.lights[static_cast<size_t>(index)];
+    GltfLight light;
+    light.name = l.name.empty() ? node.name : l.name;
+    const std::string what = "light '" + light.name + "'";
+    if (l.type == "directional")
+        light.type = GltfLight::Type::directional;
+    else if (l.type == "point")
+        light.type = GltfLight::Type::point;
+    else if (l.type == "spot")
+        light.type = GltfLight::Type::spot;
+    else
+        bad(path, what + ": unknown type '" + l.type + "' (directional, point or spot)");
+    if (l.color.size() >= 3)
+        light.color = glm::vec3(static_cast<float>(l.color[0]), static_cast<float>(l.color[1]),
+                                static_cast<float>(l.color[2]));
+    light.intensity = static_cast<float>(l.intensity);
+    light.range = static_cast<float>(l.range);
+    light.inner_degrees = static_cast<float>(glm::degrees(l.spot.innerConeAngle));
+    light.outer_degrees = static_cast<float>(glm::degrees(l.spot.outerConeAngle));
+    const bool finite = std::isfinite(light.intensity) && std::isfinite(light.range) &&
+                        std::isfinite(light.color.r + light.color.g + light.color.b);
+    if (!finite || light.intensity < 0 || light.range < 0 ||
+        glm::any(glm::lessThan(light.color, glm::vec3(0))))
+        bad(path, what + ": colour, intensity and range must be finite and not negative");
+    if (!(light.inner_degrees >= 0 && light.inner_degrees < light.outer_degrees &&
+          light.outer_degrees <= 90))
+        bad(path, what + ": spot cone angles must satisfy 0 <= inner < outer <= 90 degrees");
+    light.position = glm::vec3(world * glm::vec4(0, 0, 0, 1));
+    const glm::vec3 direction(world * glm::vec4(0, 0, -1, 0));
+    const float length = glm::length(direction);
+    if (!(length > 0) || !std::isfinite(length))
+        bad(path, what + ": its node's transform has no direction");
+    light.direction = direction / length;
+    return light;
+}
+
 // The cameras on the file's nodes (§3.10), checked.
 std::vector<GltfCamera> read_cameras(const tinygltf::Model& model, const std::string& path) {
     std::vector<GltfCamera> cameras;
@@ -577,6 +625,7 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
             const auto& node = model.nodes[node_index];
             glm::mat4 world = parent * node_matrix(node);
             if (node.mesh >= 0) add_mesh(node.mesh, world, node_index);
+            if (auto light = node_light(model, node, world, path)) mesh.lights.push_back(*light);
             for (int child : node.children) visit(child, world, depth + 1, on_path);
             on_path.erase(node_index);
         };

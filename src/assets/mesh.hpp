@@ -64,6 +64,20 @@ struct GltfCamera {
     double zfar = 0;  // 0: infinite
 };
 
+// A light of KHR_lights_punctual, placed by its node's rest transform in
+// the file's world space; it shines down the node's -Z.
+struct GltfLight {
+    enum class Type { directional, point, spot };
+    std::string name;
+    Type type = Type::point;
+    glm::vec3 color = {1, 1, 1};                  // linear
+    float intensity = 1;                          // the file's (lux or candela), facet's multiplier
+    float range = 0;                              // 0: no limit
+    float inner_degrees = 0, outer_degrees = 45;  // spot cone half-angles
+    glm::vec3 position = {0, 0, 0};
+    glm::vec3 direction = {0, 0, -1};  // unit length
+};
+
 struct Mesh {
     std::string source;  // file it came from, or the primitive's description
     std::string loader;  // what read it: "tinygltf", "tinyobjloader", "assimp" or "facet"
@@ -75,6 +89,7 @@ struct Mesh {
     // above are always the static rest pose.
     std::shared_ptr<const MeshRig> rig;
     std::vector<GltfCamera> cameras;  // a glTF file's, for `facet info`
+    std::vector<GltfLight> lights;    // a glTF file's KHR_lights_punctual lights
 
     size_t triangle_count() const;
     size_t vertex_count() const;

@@ -47,6 +47,12 @@ std::vector<std::string> driven_nodes(const MeshRig& rig, const RigAnimation& an
     return names;
 }
 
+const char* light_type_name(GltfLight::Type type) {
+    return type == GltfLight::Type::directional ? "directional"
+           : type == GltfLight::Type::spot      ? "spot"
+                                                : "point";
+}
+
 MeshFacts mesh_facts(const Mesh& mesh) {
     MeshFacts f;
     for (const MeshPart& part : mesh.parts) {
@@ -100,6 +106,13 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
         }
         j["cameras"].push_back(camera);
     }
+    j["lights"] = Json::array();
+    for (const GltfLight& l : mesh.lights)
+        j["lights"].push_back({{"name", l.name},
+                               {"type", light_type_name(l.type)},
+                               {"color", {l.color.r, l.color.g, l.color.b}},
+                               {"intensity", l.intensity},
+                               {"position", {l.position.x, l.position.y, l.position.z}}});
     j["skins"] = rig ? rig->skins.size() : 0;
     j["morphed_parts"] = facts.morphed_parts;
     j["most_morph_targets"] = facts.most_targets;
@@ -148,6 +161,11 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
             std::printf("  - %s: yfov %.4g degrees, near %g, far infinite\n", c.name.c_str(),
                         c.yfov_degrees, c.znear);
     }
+    std::printf("lights:     %zu%s\n", mesh.lights.size(),
+                mesh.lights.empty() ? "" : " (used by an object with `lights: true`)");
+    for (const GltfLight& l : mesh.lights)
+        std::printf("  - %s: %s, intensity %g, at [%g, %g, %g]\n", l.name.c_str(),
+                    light_type_name(l.type), l.intensity, l.position.x, l.position.y, l.position.z);
     std::printf("animations: %zu\n", rig ? rig->animations.size() : 0);
     if (rig)
         for (const auto& a : rig->animations) {

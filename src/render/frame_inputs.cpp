@@ -75,7 +75,7 @@ FrameEvaluator::FrameEvaluator(const SceneDesc& scene, const World& world, int s
 FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     FrameInputs in;
     in.state = evaluate_frame(scene_, world_.object_bounds, frame, camera_index,
-                              FrameAssets{framing_, world_.file_cameras});
+                              FrameAssets{framing_, world_.file_cameras, world_.object_lights});
     const FrameTime at{static_cast<double>(in.state.frame), in.state.time};
     const float aspect =
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);

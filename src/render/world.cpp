@@ -207,6 +207,9 @@ World build_world(const SceneDesc& scene) {
             }
         }
         world.object_bounds.push_back(mesh->bounds());
+        if (obj.file_lights)
+            for (const GltfLight& light : mesh->lights)
+                world.object_lights.push_back({o, light, *obj.file_lights});
         world.casts_shadows.push_back(obj.cast_shadows ? 1 : 0);
         world.receives_shadows.push_back(obj.receive_shadows ? 1.0f : 0.0f);
         if (!obj.visible) continue;

@@ -60,6 +60,8 @@ struct World {
     std::vector<Bounds> object_bounds;  // model space, per scene object
     // Per scene camera: the glTF camera of one `from:` a file (else no rig).
     std::vector<FileCamera> file_cameras;
+    // The lights of objects with `lights:`, lit after the scene's own.
+    std::vector<ObjectLight> object_lights;
     // Per scene object: `cast_shadows` (drawn into shadow maps), and
     // `receive_shadows` as 1 or 0, the value shading puts in its lanes.
     std::vector<uint8_t> casts_shadows;

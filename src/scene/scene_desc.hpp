@@ -218,6 +218,9 @@ struct ObjectDesc {
     bool visible = true;
     bool cast_shadows = true;     // appears in the lights' shadow maps
     bool receive_shadows = true;  // shadows darken it
+    // `lights:` the glTF file's KHR_lights_punctual lights join the scene's,
+    // their intensities times this; unset: the file's lights are not used.
+    std::optional<float> file_lights;
     SourceLocation where;
 };
 

@@ -544,7 +544,8 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     ObjectDesc obj;
     obj.where = f.where();
     f.check_keys({"name", "mesh", "primitive", "translate", "rotate", "scale", "material", "spin",
-                  "visible", "animation", "style", "cast_shadows", "receive_shadows", "cloth"});
+                  "visible", "animation", "style", "cast_shadows", "receive_shadows", "cloth",
+                  "lights"});
     obj.name = f.has("name") ? f["name"].text() : "object" + std::to_string(index);
     if (int(f.has("mesh")) + int(f.has("primitive")) + int(f.has("cloth")) != 1)
         f.fail("an object needs exactly one of 'mesh' (a file), 'primitive' or 'cloth'");
@@ -577,6 +578,21 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("visible")) obj.visible = f["visible"].boolean();
     if (f.has("cast_shadows")) obj.cast_shadows = f["cast_shadows"].boolean();
     if (f.has("receive_shadows")) obj.receive_shadows = f["receive_shadows"].boolean();
+    if (f.has("lights")) {
+        const Field lights = f["lights"];
+        const std::string ext = fs::path(obj.mesh).extension().string();
+        if (obj.mesh.empty() ||
+            (ext != ".gltf" && ext != ".glb" && ext != ".GLTF" && ext != ".GLB"))
+            lights.fail("only glTF meshes carry lights (KHR_lights_punctual)");
+        if (lights.is_map()) {
+            lights.check_keys({"intensity"});
+            obj.file_lights = lights.has("intensity")
+                                  ? static_cast<float>(lights["intensity"].number(0, 1e9))
+                                  : 1.0f;
+        } else if (lights.boolean()) {
+            obj.file_lights = 1.0f;
+        }
+    }
     if (f.has("animation")) {
         if (obj.mesh.empty()) f["animation"].fail("only glTF meshes carry animations");
         obj.animation = parse_animation_choice(f["animation"]);
