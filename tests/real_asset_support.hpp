@@ -17,6 +17,16 @@
 
 namespace facet::test {
 
+// Frame `frame` of `scene`, on one thread.
+inline FrameImages render_frame(const SceneDesc& scene, int frame) {
+    const World world = build_world(scene);
+    ThreadPool pool(1);
+    FrameRenderer renderer(scene, world, pool);
+    FrameImages images;
+    renderer.render(frame, 0, images);
+    return images;
+}
+
 // The depth image of `mesh` (a path) at frame `frame`, framed from the
 // front; `animation` is the scene's `animation:` value, or "".
 inline DepthImage depth_of(const TempDir& dir, const std::string& mesh,
@@ -27,13 +37,7 @@ inline DepthImage depth_of(const TempDir& dir, const std::string& mesh,
         "camera: { frame: all }\n"
         "objects:\n  - mesh: " +
         mesh + "\n" + (animation.empty() ? "" : "    animation: " + animation + "\n");
-    const SceneDesc scene = load(write_text(dir.file("view.yaml"), text));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(frame, 0, images);
-    return images.depth;
+    return render_frame(load(write_text(dir.file("view.yaml"), text)), frame).depth;
 }
 
 // Share of pixels covered in one image and not the other, and the largest

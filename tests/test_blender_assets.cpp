@@ -30,13 +30,7 @@ ColorImage colour_of(const TempDir& dir, const std::string& mesh, const std::str
         "camera: { position: [0, 0, 5], frame: all }\n"
         "objects:\n  - mesh: " +
         mesh + "\n" + extra;
-    const SceneDesc scene = load(write_text(dir.file("colour.yaml"), text));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(1, 0, images);
-    return to_float_image(images.color);
+    return to_float_image(render_frame(load(write_text(dir.file("colour.yaml"), text)), 1).color);
 }
 
 // Light-dark changes along the middle row, where the model covers it.
@@ -228,11 +222,7 @@ TEST_CASE("Blender's Suzanne fills the frame: fit: geometry, and a default turnt
             dir.file("fill.yaml"), "output: { size: [160, 90], frames: \"" + frames +
                                        "\" }\nstyle: unlit\ncamera: " + camera +
                                        "\nobjects:\n  - mesh: " + blender("suzanne.glb") + "\n"));
-        const World world = build_world(scene);
-        ThreadPool pool(1);
-        FrameRenderer renderer(scene, world, pool);
-        FrameImages images;
-        renderer.render(frame, 0, images);
+        const FrameImages images = render_frame(scene, frame);
         int left = 160, right = -1, top = 90, bottom = -1;
         for (int y = 0; y < 90; ++y)
             for (int x = 0; x < 160; ++x)

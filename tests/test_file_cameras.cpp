@@ -65,7 +65,7 @@ TEST_CASE("a glTF camera is placed, aimed and animated by its file", "[camera][g
     REQUIRE(world.file_cameras.size() == 1);
     REQUIRE(world.file_cameras[0].rig);
     CHECK(world.file_cameras[0].animations == std::vector<int>{0});
-    const FrameAssets assets{{}, world.file_cameras};
+    const FrameAssets assets{{}, world.file_cameras, {}};
     const FrameState first = evaluate_frame(scene, world.object_bounds, 1, 0, assets);
     CHECK(first.camera.position.x == Approx(0).margin(1e-6));
     CHECK(first.camera.position.z == Approx(5));
@@ -108,7 +108,7 @@ TEST_CASE("a glTF camera under a turned parent, and the file's first camera", "[
     const SceneDesc side = scene_with(dir, file, "{ from: cameras.gltf, name: Side }");
     const World world = build_world(side);
     const FrameState s =
-        evaluate_frame(side, world.object_bounds, 1, 0, FrameAssets{{}, world.file_cameras});
+        evaluate_frame(side, world.object_bounds, 1, 0, FrameAssets{{}, world.file_cameras, {}});
     CHECK(s.camera.position.x == Approx(4).epsilon(1e-6));
     CHECK(s.camera.position.z == Approx(0).margin(1e-6));
     CHECK(s.camera.target.x == Approx(3).epsilon(1e-6));  // looking along -X, at the quad
@@ -164,7 +164,7 @@ TEST_CASE("Khronos' Cameras sample: the perspective camera renders its square",
     const SceneDesc scene = load(write_text(dir.file("cameras.yaml"), text));
     const World world = build_world(scene);
     const FrameState s =
-        evaluate_frame(scene, world.object_bounds, 1, 0, FrameAssets{{}, world.file_cameras});
+        evaluate_frame(scene, world.object_bounds, 1, 0, FrameAssets{{}, world.file_cameras, {}});
     // Node 1: translation [0.5, 0.5, 3], yfov 0.7 rad, planes 0.01 and 100.
     CHECK(s.camera.position == glm::vec3(0.5f, 0.5f, 3.0f));
     CHECK(s.camera.fov_degrees == Approx(0.7 * 180 / M_PI));

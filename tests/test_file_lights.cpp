@@ -8,6 +8,7 @@
 #include "asset_support.hpp"
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
+#include "real_asset_support.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
 #include "scene_support.hpp"
@@ -45,12 +46,7 @@ float centre_red(const TempDir& dir, const std::string& file, const std::string&
                         "camera: { position: [0, 0, 4], target: [0, 0, 0], fov: 50 }\n"
                         "objects:\n  - mesh: " +
                             file + "\n    material: { ambient: 0, specular: 0 }\n" + object_extra));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(1, 0, images);
-    return to_float_image(images.color).at(16, 16).r;
+    return to_float_image(render_frame(scene, 1).color).at(16, 16).r;
 }
 
 }  // namespace

@@ -32,7 +32,7 @@ Extent extent_at(const SceneDesc& scene, const World& world,
                  const std::vector<FramingShape>& shapes, int frame,
                  const std::vector<glm::vec3>* posed = nullptr) {
     const FrameState state =
-        evaluate_frame(scene, world.object_bounds, frame, 0, FrameAssets{shapes, {}});
+        evaluate_frame(scene, world.object_bounds, frame, 0, FrameAssets{shapes, {}, {}});
     const float aspect = float(scene.output.width) / float(scene.output.height);
     const CameraMatrices m = make_camera(state.camera, aspect);
     Extent e;
@@ -87,7 +87,7 @@ TEST_CASE("fit: geometry fits the projected vertices exactly, centred", "[camera
                        " } }")));
         const World world = build_world(scene);
         const FrameState s = evaluate_frame(scene, world.object_bounds, 1, 0,
-                                            FrameAssets{framing_shapes(scene, world), {}});
+                                            FrameAssets{framing_shapes(scene, world), {}, {}});
         return glm::length(s.camera.position - s.camera.target);
     };
     CHECK(distance("geometry") < distance("box"));
@@ -111,7 +111,7 @@ TEST_CASE("an orbit frames the union of its views: all in, and filled at the wid
         widest = std::max(widest, e.fill());
         // No breathing: the distance stays the same all the way round.
         const FrameState s =
-            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}});
+            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}, {}});
         const double distance = glm::length(s.camera.position - s.camera.target);
         if (f == 1) first_distance = distance;
         CHECK(distance == Approx(first_distance).epsilon(1e-6));
@@ -152,7 +152,7 @@ TEST_CASE("an animated mesh is framed by its poses over the scene's frames", "[c
     for (int f : {1, 13, 24}) {
         INFO("frame " << f);
         const FrameState state =
-            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}});
+            evaluate_frame(scene, world.object_bounds, f, 0, FrameAssets{shapes, {}, {}});
         std::vector<PosedPart> parts;
         pose_mesh(*world.animated_meshes[0].mesh, world.animated_meshes[0].animations,
                   animation_clock(world.animated_meshes[0], state.objects[0].animation_seconds),

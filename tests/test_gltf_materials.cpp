@@ -9,6 +9,7 @@
 #include "asset_support.hpp"
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
+#include "real_asset_support.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/world.hpp"
 #include "scene_support.hpp"
@@ -41,13 +42,7 @@ ColorImage render_quad(const TempDir& dir, Gltf& g, const std::string& style,
     const std::string text = "output: { size: [64, 64], frames: \"1\" }\nstyle: " + style +
                              "\ncamera: { position: [0, 0, 3], target: [0, 0, 0], fov: 60 }\n" +
                              lights + "objects:\n  - mesh: " + mesh + "\n";
-    const SceneDesc scene = load(write_text(dir.file("quad.yaml"), text));
-    const World world = build_world(scene);
-    ThreadPool pool(1);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(1, 0, images);
-    return to_float_image(images.color);
+    return to_float_image(render_frame(load(write_text(dir.file("quad.yaml"), text)), 1).color);
 }
 
 glm::vec3 rgb(const ColorImage& image, int x, int y) {

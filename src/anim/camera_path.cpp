@@ -115,14 +115,29 @@ double sphere_fit_distance(const Sphere& sphere, const ViewAngles& view) {
     return sphere.radius / sin_half;
 }
 
-double corners_fit_distance(std::span<const glm::dvec3> corners, const glm::dvec3& center,
-                            const glm::dvec3& toward_camera, const glm::dvec3& up,
-                            const ViewAngles& view) {
+namespace {
+
+struct ViewBasis {
+    glm::dvec3 forward, right, up;
+};
+
+// The view's axes looking along -toward_camera; another axis stands in for
+// an `up` parallel to the view.
+ViewBasis view_basis(const glm::dvec3& toward_camera, const glm::dvec3& up) {
     const glm::dvec3 forward = -glm::normalize(toward_camera);
     glm::dvec3 right = glm::cross(forward, up);
     if (glm::length(right) < 1e-9) right = glm::cross(forward, glm::dvec3(0, 0, 1));
     right = glm::normalize(right);
-    const glm::dvec3 true_up = glm::cross(right, forward);
+    return {forward, right, glm::cross(right, forward)};
+}
+
+}  // namespace
+
+double corners_fit_distance(std::span<const glm::dvec3> corners, const glm::dvec3& center,
+                            const glm::dvec3& toward_camera, const glm::dvec3& up,
+                            const ViewAngles& view) {
+    const ViewBasis basis = view_basis(toward_camera, up);
+    const glm::dvec3 forward = basis.forward, right = basis.right, true_up = basis.up;
     double distance = 0;
     for (const glm::dvec3& corner : corners) {
         const glm::dvec3 p = corner - center;
@@ -142,11 +157,8 @@ double corners_fit_distance(std::span<const glm::dvec3> corners, const glm::dvec
 ExactFit exact_fit_distance(std::span<const glm::dvec3> points, const glm::dvec3& center,
                             const glm::dvec3& toward_camera, const glm::dvec3& up,
                             const ViewAngles& view) {
-    const glm::dvec3 forward = -glm::normalize(toward_camera);
-    glm::dvec3 right = glm::cross(forward, up);
-    if (glm::length(right) < 1e-9) right = glm::cross(forward, glm::dvec3(0, 0, 1));
-    right = glm::normalize(right);
-    const glm::dvec3 true_up = glm::cross(right, forward);
+    const ViewBasis basis = view_basis(toward_camera, up);
+    const glm::dvec3 forward = basis.forward, right = basis.right, true_up = basis.up;
     const double inf = std::numeric_limits<double>::infinity();
     double low_x = -inf, high_x = inf, low_y = -inf, high_y = inf, nearest = inf;
     glm::dvec2 least(inf), most(-inf);  // of the lateral offsets, where the shifts lie

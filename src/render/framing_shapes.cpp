@@ -41,7 +41,7 @@ Bounds posed_bounds(const SceneDesc& scene, const World& world, const AnimatedMe
     std::vector<PosedPart> posed;
     for (size_t i : picked) {
         const FrameState state = evaluate_frame(scene, world.object_bounds, frames[i], 0,
-                                                FrameAssets{{}, world.file_cameras});
+                                                FrameAssets{{}, world.file_cameras, {}});
         pose_mesh(*a.mesh, a.animations,
                   animation_clock(a, state.objects[a.object].animation_seconds), posed);
         for (const PosedPart& part : posed)
