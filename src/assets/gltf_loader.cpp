@@ -336,6 +336,17 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
         mat.specular = 0.15f + 0.6f * (1.0f - roughness);
         mat.double_sided = m.doubleSided;
         mat.emissive = emission(m, path);
+        if (pbr.baseColorFactor.size() >= 4)
+            mat.alpha = static_cast<float>(std::clamp(pbr.baseColorFactor[3], 0.0, 1.0));
+        if (m.alphaMode == "MASK")
+            mat.alpha_mode = AlphaMode::mask;
+        else if (m.alphaMode == "BLEND")
+            mat.alpha_mode = AlphaMode::blend;
+        else if (!m.alphaMode.empty() && m.alphaMode != "OPAQUE")
+            bad(path, "material '" + m.name + "': alphaMode must be OPAQUE, MASK or BLEND");
+        if (!(m.alphaCutoff >= 0 && m.alphaCutoff <= 1))
+            bad(path, "material '" + m.name + "': alphaCutoff must be 0 to 1");
+        mat.alpha_cutoff = static_cast<float>(m.alphaCutoff);
         mat.unlit = m.extensions.count("KHR_materials_unlit") > 0;
         materials.push_back(mat);
     }

@@ -17,6 +17,8 @@
 
 namespace facet {
 
+enum class AlphaMode { opaque, mask, blend };
+
 struct Material {
     std::string name;
     glm::vec3 color = {0.8f, 0.8f, 0.8f};  // linear base colour
@@ -32,6 +34,13 @@ struct Material {
     glm::vec3 emissive = {0, 0, 0};
     // Shown as its colour alone, without lights (KHR_materials_unlit).
     bool unlit = false;
+    // glTF alphaMode: opaque ignores alpha; mask keeps the samples whose
+    // alpha (this times the texture's) reaches alpha_cutoff; blend keeps a
+    // share of samples equal to the alpha, in an ordered pattern
+    // (render/alpha_coverage.hpp).
+    AlphaMode alpha_mode = AlphaMode::opaque;
+    float alpha = 1;
+    float alpha_cutoff = 0.5f;
 };
 
 struct Bounds {

@@ -169,6 +169,7 @@ void Rasterizer::emit_triangle(const ScreenTriangle& t, uint32_t source, Facing 
     tri.z0 = zp[0];
     tri.dzdx = zp[1];
     tri.dzdy = zp[2];
+    tri.coverage_tested = facing.coverage_tested ? 1 : 0;
 
     ShadeSetup shade;
     shade.x0 = tri.x0;
@@ -233,7 +234,8 @@ void Rasterizer::setup_chunk(const RasterInput& input, size_t chunk) {
         if (any & kNotFinite) continue;
         if (v[0]->outcode & v[1]->outcode & v[2]->outcode) continue;  // outside one plane
         const Facing facing{input.cull_back && input.cull_back[tri],
-                            input.flip_winding && input.flip_winding[tri]};
+                            input.flip_winding && input.flip_winding[tri],
+                            input.coverage_tested && input.coverage_tested[tri]};
         const uint32_t source = static_cast<uint32_t>(tri);
         if (any != 0) {
             emit_clipped(input, idx, any, source, facing, bins);

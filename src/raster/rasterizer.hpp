@@ -26,6 +26,21 @@ struct RasterInput {
     // scale in a pose) has reversed the winding, so that clockwise on
     // screen is the front.
     const uint8_t* flip_winding = nullptr;
+    // Per triangle, or null: 1 where the triangle covers a sample only if
+    // the CoverageTest given to draw_tiles keeps it (cut-out and dithered
+    // transparency: render/alpha_coverage.hpp).
+    const uint8_t* coverage_tested = nullptr;
+};
+
+// Asked for each sample a coverage-tested triangle would win on depth:
+// false leaves the sample to what is behind. `b1` and `b2` are the
+// perspective-correct weights of the source triangle's second and third
+// corners; x and y the sample's position. The rasterizer knows nothing of
+// what decides.
+struct CoverageTest {
+    const void* context = nullptr;
+    bool (*keep)(const void* context, uint32_t source_triangle, float b1, float b2, int x,
+                 int y) = nullptr;
 };
 
 // Marks a visibility-buffer sample that no triangle covers.
@@ -52,8 +67,10 @@ class Rasterizer {
 
     // Tile stage. `shade` runs once per tile, possibly on several threads at
     // once for different tiles; it must write only pixels inside its tile.
-    void draw_tiles(ThreadPool& pool,
-                    const std::function<void(const TileVisibility&)>& shade) const;
+    // `test` decides the samples of coverage-tested triangles; without one
+    // they cover as any other.
+    void draw_tiles(ThreadPool& pool, const std::function<void(const TileVisibility&)>& shade,
+                    const CoverageTest& test = {}) const;
 
     const ShadeSetup& shade_setup(uint32_t id) const {
         return chunks_[id >> kLocalIdBits].shading[id & kLocalIdMask];
@@ -88,15 +105,17 @@ class Rasterizer {
     void setup_chunk(const RasterInput& input, size_t chunk);
     // How a source triangle's screen winding is read.
     struct Facing {
-        bool cull_back;  // drop it when it faces away
-        bool flipped;    // clockwise is its front (RasterInput::flip_winding)
+        bool cull_back;        // drop it when it faces away
+        bool flipped;          // clockwise is its front (RasterInput::flip_winding)
+        bool coverage_tested;  // RasterInput::coverage_tested
     };
     void emit_triangle(const ScreenTriangle& t, uint32_t source, Facing facing,
                        ChunkBins& bins) const;
     void emit_clipped(const RasterInput& input, const uint32_t* idx, uint32_t planes,
                       uint32_t source, Facing facing, ChunkBins& bins) const;
     void bin_chunk(ChunkBins& bins) const;
-    void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade) const;
+    void draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade,
+                   const CoverageTest& test) const;
 
     int width_, height_;
     int tile_size_;

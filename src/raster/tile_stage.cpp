@@ -10,8 +10,25 @@
 namespace facet {
 namespace {
 
+// The source triangle's weights at a sample, from its shading planes (as
+// shading reconstructs them), for a coverage test.
+struct SampleWeights {
+    const ShadeSetup& s;
+    void at(int x, int y, float& b1, float& b2) const {
+        const float fx = (static_cast<float>(x) + 0.5f) - s.x0;
+        const float fy = (static_cast<float>(y) + 0.5f) - s.y0;
+        const float inv_w = s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy;
+        b1 = (s.b1_w[0] + s.b1_w[1] * fx + s.b1_w[2] * fy) / inv_w;
+        b2 = (s.b2_w[0] + s.b2_w[1] * fx + s.b2_w[2] * fy) / inv_w;
+    }
+};
+
+// Tested: the triangle's samples also pass `test` (instantiated apart, so
+// the usual loop carries no branch for it).
+template <bool Tested>
 void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, int tile_x1,
-               int tile_y1, float* depth, uint32_t* ids) {
+               int tile_y1, float* depth, uint32_t* ids, const ShadeSetup* shading = nullptr,
+               const CoverageTest* test = nullptr) {
     const int x_lo = std::max<int>(tri.min_x, tile_x0), x_hi = std::min<int>(tri.max_x, tile_x1);
     const int y_lo = std::max<int>(tri.min_y, tile_y0), y_hi = std::min<int>(tri.max_y, tile_y1);
     if (x_lo > x_hi || y_lo > y_hi) return;
@@ -33,7 +50,15 @@ void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, 
                 float z = z_row + tri.dzdx * ((static_cast<float>(x) + 0.5f) - tri.x0);
                 // Reversed-Z: larger is nearer. Strictly greater keeps the
                 // first-submitted triangle on ties, the same on every run.
-                if (z > depth_row[x]) {
+                bool wins = z > depth_row[x];
+                if constexpr (Tested) {
+                    if (wins) {
+                        float b1, b2;
+                        SampleWeights{*shading}.at(x, y, b1, b2);
+                        wins = test->keep(test->context, shading->source_triangle, b1, b2, x, y);
+                    }
+                }
+                if (wins) {
                     depth_row[x] = z;
                     id_row[x] = id;
                 }
@@ -48,7 +73,8 @@ void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, 
 }  // namespace
 
 void Rasterizer::draw_tiles(ThreadPool& pool,
-                            const std::function<void(const TileVisibility&)>& shade) const {
+                            const std::function<void(const TileVisibility&)>& shade,
+                            const CoverageTest& test) const {
     // A thread takes a few neighbouring tiles at a time: they mostly show
     // the same triangles, whose setup and vertices are then still in its
     // cache (taking tiles one by one, two threads alternate and each misses
@@ -58,12 +84,12 @@ void Rasterizer::draw_tiles(ThreadPool& pool,
     pool.parallel_for(runs, [&](size_t run) {
         const size_t last = std::min(tiles, (run + 1) * kTilesPerTask);
         for (size_t tile = run * kTilesPerTask; tile < last; ++tile)
-            draw_tile(static_cast<int>(tile), shade);
+            draw_tile(static_cast<int>(tile), shade, test);
     });
 }
 
-void Rasterizer::draw_tile(int tile,
-                           const std::function<void(const TileVisibility&)>& shade) const {
+void Rasterizer::draw_tile(int tile, const std::function<void(const TileVisibility&)>& shade,
+                           const CoverageTest& test) const {
     std::array<float, kTileSize * kTileSize> depth;
     std::array<uint32_t, kTileSize * kTileSize> ids;
     depth.fill(0.0f);
@@ -75,9 +101,14 @@ void Rasterizer::draw_tile(int tile,
     for (size_t c = 0; c < chunk_count_; ++c) {
         const ChunkBins& bins = chunks_[c];
         for (uint32_t k = bins.tile_start[tile]; k < bins.tile_start[tile + 1]; ++k) {
-            uint32_t local = bins.tile_items[k];
-            rasterize(bins.triangles[local], static_cast<uint32_t>(c << kLocalIdBits) | local, x0,
-                      y0, x1, y1, depth.data(), ids.data());
+            const uint32_t local = bins.tile_items[k];
+            const SetupTriangle& tri = bins.triangles[local];
+            const uint32_t id = static_cast<uint32_t>(c << kLocalIdBits) | local;
+            if (tri.coverage_tested && test.keep)
+                rasterize<true>(tri, id, x0, y0, x1, y1, depth.data(), ids.data(),
+                                &bins.shading[local], &test);
+            else
+                rasterize<false>(tri, id, x0, y0, x1, y1, depth.data(), ids.data());
         }
     }
     TileVisibility vis{x0, y0, x1 - x0 + 1, y1 - y0 + 1, depth.data(), ids.data()};

@@ -1,6 +1,7 @@
 #include "render/frame_renderer.hpp"
 
 #include "post/resolve.hpp"
+#include "render/alpha_coverage.hpp"
 #include "render/shade_lights.hpp"
 #include "render/shade_stage.hpp"
 
@@ -15,7 +16,7 @@ void fit(Image& image, int width, int height) {
 }
 
 RasterInput raster_input(const World& world, const TransformedVertices& vertices,
-                         const PosedVertices& posed) {
+                         const PosedVertices& posed, const std::vector<uint8_t>& coverage_tested) {
     RasterInput input;
     input.clip = vertices.clip.data();
     input.vertex_count = vertices.clip.size();
@@ -23,6 +24,7 @@ RasterInput raster_input(const World& world, const TransformedVertices& vertices
     input.triangle_count = world.triangle_count();
     input.cull_back = world.cull_back.data();
     input.flip_winding = posed.flipped_triangles.empty() ? nullptr : posed.flipped_triangles.data();
+    input.coverage_tested = coverage_tested.empty() ? nullptr : coverage_tested.data();
     return input;
 }
 
@@ -40,7 +42,8 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       // Tiles hold whole pixels of the k x k sample grid.
       rasterizer_(scene.output.width * side_, scene.output.height * side_,
                   kTileSize - kTileSize % side_),
-      hidden_edges_(world) {}
+      hidden_edges_(world),
+      coverage_tested_(coverage_tested_triangles(world)) {}
 
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const StylePlan& plan = evaluator_.plan();
@@ -52,7 +55,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const std::vector<ShadeLight> lights = make_shade_lights(inputs.state.lights, shadow_maps);
     const TransformedVertices& vertices =
         vertices_.transform(inputs, posed, lights, plan.any_gouraud, pool_);
-    rasterizer_.set_geometry(raster_input(world_, vertices, posed), pool_);
+    rasterizer_.set_geometry(raster_input(world_, vertices, posed, coverage_tested_), pool_);
 
     // Shading writes finished pixels, resolving anti-aliased ones itself,
     // unless screen-space passes need every sample first (then post/
@@ -72,9 +75,11 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
         per_sample ? sample_depth_ : out.depth,
         plan.outlines ? &outlines_.gbuffer(rasterizer_.width(), rasterizer_.height()) : nullptr};
-    rasterizer_.draw_tiles(pool_, [&](const TileVisibility& tile) {
-        shade_tile(tile, rasterizer_, shade_in, shade_out);
-    });
+    const AlphaCoverage alpha(world_, inputs.materials);
+    rasterizer_.draw_tiles(
+        pool_,
+        [&](const TileVisibility& tile) { shade_tile(tile, rasterizer_, shade_in, shade_out); },
+        alpha.test());
     if (!per_sample) return;
     if (plan.hidden_edges && !world_.edge_mask.empty())
         hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_);

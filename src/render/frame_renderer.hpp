@@ -23,9 +23,9 @@
 namespace facet {
 
 struct FrameImages {
-    HalfColorImage color;        // linear RGBA, half floats (core/half.hpp)
-    DepthImage depth;            // linear view depth, +inf where nothing was hit
-    glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
+    HalfColorImage color;                    // linear RGBA, half floats (core/half.hpp)
+    DepthImage depth;                        // linear view depth, +inf where nothing was hit
+    glm::vec2 depth_view_range;              // near..far fitted to the scene, for grey depth views
     glm::mat4 view{1.0f}, projection{1.0f};  // the camera, for the files' metadata
 };
 
@@ -49,6 +49,8 @@ class FrameRenderer {
     Rasterizer rasterizer_;
     HiddenEdgeStage hidden_edges_;
     OutlineStage outlines_;
+    // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).
+    std::vector<uint8_t> coverage_tested_;
     // Every sample in float, when passes at the sample resolution follow.
     ColorImage sample_color_;
     DepthImage sample_depth_;
