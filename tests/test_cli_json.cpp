@@ -65,6 +65,38 @@ TEST_CASE("json: info and styles", "[cli][json]") {
     CHECK(mesh["triangles"] == 23040);
     CHECK(mesh["bounds"]["min"].size() == 3);
     CHECK(mesh["materials"].size() >= 1);
+    CHECK(mesh["loader"] == "tinygltf");
+
+    // A Blender file with every kind of fact info gives, in text and JSON alike.
+    const std::string features = source_path("tests/assets/blender/features.glb");
+    const RunResult rich = run_stdout("info '" + features + "' --json");
+    REQUIRE(rich.exit_code == 0);
+    const auto f = nlohmann::json::parse(rich.output);
+    CHECK(f["parts_with_vertex_colors"] == 1);
+    REQUIRE(f["cameras"].size() == 1);
+    CHECK(f["cameras"][0]["name"] == "Camera");
+    CHECK(f["cameras"][0]["type"] == "perspective");
+    REQUIRE(f["lights"].size() == 2);
+    CHECK(f["lights"][0]["type"] == "point");
+    CHECK(f["lights"][1]["type"] == "directional");
+    REQUIRE(f["animations"].size() == 1);
+    CHECK(f["animations"][0]["nodes"] == nlohmann::json::array({"Camera"}));
+    bool glowing = false;
+    for (const auto& m : f["materials"])
+        if (m["name"] == "Glow") glowing = m["emissive"][0].get<double>() > 3.9;
+    CHECK(glowing);
+    const RunResult text = run_stdout("info '" + features + "'");
+    for (const char* fact :
+         {"loader:     tinygltf", "1 with vertex colours", "cameras:    1", "  - Camera: yfov",
+          "lights:     2", "emissive [4, 2, 0]", "CameraAction: 1 s, 1 channel, drives Camera"})
+        CHECK_THAT(text.output, Catch::Contains(fact));
+    const RunResult obj =
+        run_stdout("info '" + source_path("tests/scenes/open_tube.obj") + "' --json");
+    CHECK(nlohmann::json::parse(obj.output)["loader"] == "tinyobjloader");
+    const std::string stl = "/usr/share/assimp/models/STL/Wuson.stl";
+    if (std::filesystem::exists(stl))
+        CHECK(nlohmann::json::parse(run_stdout("info '" + stl + "' --json").output)["loader"] ==
+              "assimp");
 
     const RunResult styles = run_stdout("styles --json");
     REQUIRE(styles.exit_code == 0);
