@@ -10,7 +10,9 @@
 #                               dpkg-dev and file (the CPack package test),
 #                               slurm-wlm (a one-host Slurm cluster runs a farm
 #                               job: scripts/slurm-test.sh) and python3-yaml
-#                               (runs the Open Job Description template)
+#                               (runs the Open Job Description template),
+#                               openimageio-tools (oiiotool reads the
+#                               pass EXRs back: docs/passes.md)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
 #   scripts/setup.sh --sanitize also clang and its sanitizer and libFuzzer
 #                               runtimes, and a second build by clang with
@@ -30,7 +32,7 @@ packages=(g++ cmake make pkg-config
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack) ;;
+        --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;

@@ -6,11 +6,13 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "core/color.hpp"
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/pass_files.hpp"
 #include "render/world.hpp"
 #include "support.hpp"
 
@@ -28,6 +30,34 @@ FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
     return images;
 }
 
+// The pass's picture: its PNG view, or for the float-only passes one made
+// here. Position: each axis from [-4, 4] m to [0, 1]; motion: 0.5 plus
+// the vector over 32 pixels, in red and green.
+std::vector<uint8_t> pass_png(const std::string& pass, const FrameImages& images) {
+    const int width = images.color.width, height = images.color.height;
+    ColorImage view(width, height);
+    if (pass == "position" || pass == "motion") {
+        for (size_t i = 0; i < view.pixels.size(); ++i) {
+            const glm::vec3 v = pass == "position"
+                                    ? images.surface.position.pixels[i] / 8.0f + 0.5f
+                                    : glm::vec3(images.surface.motion.pixels[i] / 32.0f + 0.5f, 0);
+            // Linear values meant as display values: undo the sRGB curve.
+            for (int a = 0; a < 3; ++a)
+                view.pixels[i][a] = srgb_to_linear(std::clamp(v[a], 0.0f, 1.0f));
+            view.pixels[i].a = 1;
+        }
+        return encode_png_color(view, 6);
+    }
+    OutputDesc out;
+    out.passes = {};
+    out.passes.add(*pass_from_name(pass));
+    out.png_compression = 6;
+    std::vector<uint8_t> png;
+    encode_frame_files(out, images, {images.depth_view_range, {}, {}},
+                       [&](const PassFile&, const std::vector<uint8_t>& bytes) { png = bytes; });
+    return png;
+}
+
 }  // namespace
 
 ColorImage render_color(const SceneDesc& scene, int frame, unsigned threads) {
@@ -42,13 +72,17 @@ void check_render(const RenderCase& c) {
         size_t eq = d.find('=');
         options.overrides.push_back({d.substr(0, eq), d.substr(eq + 1), "test -D " + d});
     }
+    if (c.pass != "color") {
+        options.overrides.push_back({"output.passes", "[" + c.pass + "]", "test pass"});
+        options.overrides.push_back({"output.formats", "[png, exr]", "test pass"});
+    }
     SceneDesc scene = load_scene(source_path(c.scene), options);
     const FrameImages images = render_images(scene, c.frame, 2);
 
     const fs::path out_dir = fs::path("render-test-output");
     fs::create_directories(out_dir);
     const std::string actual_path = (out_dir / c.reference).string();
-    write_file_atomically(actual_path, encode_png_color(images.color, 6));
+    write_file_atomically(actual_path, pass_png(c.pass, images));
     const std::string reference_path = (fs::path(FACET_BASELINES) / c.reference).string();
 
     const char* update = std::getenv("FACET_UPDATE_BASELINES");

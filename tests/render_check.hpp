@@ -21,6 +21,9 @@ struct RenderCase {
     Tolerance tolerance;
     std::vector<std::string> defines;  // -D style overrides, "key=value"
     std::string style;                 // --style, if not empty
+    // The pass compared (docs/passes.md), through its PNG view; position
+    // and motion, which have none, through render_check's own views.
+    std::string pass = "color";
 };
 
 // Renders the case and compares. A missing reference (or FACET_UPDATE_BASELINES=1)

@@ -11,13 +11,16 @@
 
 namespace facet::test {
 
-// (frame, pass, format) -> sha256 of the file: colour and depth, PNG and EXR.
-inline std::map<std::string, std::string> render_hashes(const std::string& scene_file,
-                                                        unsigned threads, std::vector<int> frames,
-                                                        const std::string& out, int samples = 1) {
+// (frame, pass, format) -> sha256 of the file: the passes asked for (colour
+// and depth unless told), PNG and EXR; `style` replaces the scene's if set.
+inline std::map<std::string, std::string> render_hashes(
+    const std::string& scene_file, unsigned threads, std::vector<int> frames,
+    const std::string& out, int samples = 1, const std::string& passes = "[color, depth]",
+    const std::string& style = "") {
     SceneOptions options;
     options.style_dirs = {FACET_STYLES_DIR};
-    options.overrides.push_back({"output.passes", "[color, depth]", "test"});
+    options.overrides.push_back({"output.passes", passes, "test"});
+    if (!style.empty()) options.overrides.push_back({"style", style, "test"});
     options.overrides.push_back({"output.formats", "[png, exr]", "test"});
     options.overrides.push_back({"output.samples", std::to_string(samples), "test"});
     SceneDesc scene = load_scene(source_path(scene_file), options);

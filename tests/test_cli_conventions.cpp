@@ -107,8 +107,10 @@ TEST_CASE("cli: mistakes get a did-you-mean", "[cli]") {
     CHECK_THAT(style.output, Contains("no style preset named 'tooon'; did you mean 'toon'?"));
     const RunResult pass = run_facet("validate " + scene() + " --passes colr");
     CHECK(pass.exit_code == 2);
-    CHECK_THAT(pass.output,
-               Contains("got 'colr'; did you mean 'color'? (must be one of: color, depth)"));
+    CHECK_THAT(
+        pass.output,
+        Contains("got 'colr'; did you mean 'color'? (must be one of: color, alpha, depth, normal, "
+                 "object_id, material_id, uv, position, motion, lines)"));
     const RunResult extra = run_facet("validate " + scene() + " stray");
     CHECK(extra.exit_code == 2);
     CHECK_THAT(extra.output, Contains("unexpected argument 'stray' for facet validate"));

@@ -50,12 +50,18 @@ TEST_CASE("PNG writer: decodes to what it encoded, every level", "[output][png]"
                             srgb_byte(c[k]));
             }
     }
-    // Translucent pixels keep alpha, as linear bytes.
-    image.at(3, 4) = to_half(glm::vec4(0.5f, 0.5f, 0.5f, 0.25f));
+    // Translucent pixels keep alpha, as linear bytes; the colour, held
+    // premultiplied, is written straight (divided by alpha), as PNG defines it.
+    image.at(3, 4) = to_half(glm::vec4(0.125f, 0.125f, 0.125f, 0.25f));
     const DecodedPng rgba = round_trip(encode_png_color(image, 1), dir.file("a.png"));
     REQUIRE(rgba.channels == 4);
     CHECK(rgba.samples[(4 * 37 + 3) * 4 + 3] == 64);  // round(0.25 * 255)
     CHECK(rgba.samples[(4 * 37 + 3) * 4] == srgb_byte(0.5f));
+    // Fully transparent: black, whatever the colour channels hold.
+    image.at(5, 4) = to_half(glm::vec4(0.0f));
+    const DecodedPng clear = round_trip(encode_png_color(image, 1), dir.file("t.png"));
+    CHECK(clear.samples[(4 * 37 + 5) * 4 + 3] == 0);
+    CHECK(clear.samples[(4 * 37 + 5) * 4] == 0);
 }
 
 TEST_CASE("PNG writer: 16-bit depth follows its mapping", "[output][png]") {

@@ -12,6 +12,7 @@
 #include "scene_support.hpp"
 #include "support.hpp"
 
+using facet::Pass;
 using facet::SceneDesc;
 using facet::SceneOptions;
 using namespace facet::test;
@@ -37,8 +38,8 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     CHECK(scene.output.width == 1280);
     CHECK(scene.output.height == 720);
     CHECK(scene.output.frames == std::vector<int>{1});
-    CHECK(scene.output.write_color);
-    CHECK_FALSE(scene.output.write_depth);
+    CHECK(scene.output.writes(Pass::color));
+    CHECK_FALSE(scene.output.writes(Pass::depth));
     CHECK(scene.output.write_png);
     CHECK_FALSE(scene.output.write_exr);
     CHECK(scene.style.name == "default");
@@ -132,8 +133,8 @@ objects:
     CHECK(out.frames == std::vector<int>{1, 4, 7, 10});
     CHECK(out.frames_text == "1-10:3");
     CHECK(out.fps == 30);
-    CHECK(out.write_color);
-    CHECK(out.write_depth);
+    CHECK(out.writes(Pass::color));
+    CHECK(out.writes(Pass::depth));
     CHECK_FALSE(out.write_png);
     CHECK(out.write_exr);
     // #ff8000 in sRGB: red 1, green 128/255 -> 0.2158605 linear, blue 0.
@@ -269,8 +270,8 @@ TEST_CASE("passes and formats accept a single word or a list", "[scene]") {
     std::string path = write_text(
         dir.file("s.yaml"), "output:\n  passes: depth\n  formats: [png, exr]\n" + kMinimalObjects);
     auto out = load(path).output;
-    CHECK_FALSE(out.write_color);
-    CHECK(out.write_depth);
+    CHECK_FALSE(out.writes(Pass::color));
+    CHECK(out.writes(Pass::depth));
     CHECK(out.write_png);
     CHECK(out.write_exr);
 }

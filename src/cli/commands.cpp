@@ -170,7 +170,7 @@ int render_command(const RenderArgs& args) {
     options.skip_existing = args.chunk.skip_existing;
     if (!args.video.empty()) {
         check_movie_name(args.video);
-        if (!scene.output.write_color)
+        if (!scene.output.writes(Pass::color))
             fail_input(command_line("--video " + args.video), "",
                        "a movie needs the colour pass (--passes color)");
     }
@@ -432,7 +432,9 @@ void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
-    cmd->add_option("--passes", args.passes, "Passes to write: color, depth or color,depth");
+    cmd->add_option("--passes", args.passes,
+                    "Passes to write, comma-separated: color, alpha, depth, normal, object_id, "
+                    "material_id, uv, position, motion, lines (docs/passes.md)");
     cmd->add_option("--formats", args.formats, "File formats: png, exr or png,exr");
     cmd->add_option("--style", args.style, "Style preset name or file");
     add_define_option(cmd, args.defines);

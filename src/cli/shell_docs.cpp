@@ -85,7 +85,8 @@ std::string bash_completion(const CLI::App& app, const std::vector<std::string>&
            "        --style|--styles) COMPREPLY=($(compgen -W \"" +
            style_list +
            " all\" -- \"$cur\")); return ;;\n"
-           "        --passes) COMPREPLY=($(compgen -W \"color depth\" -- \"$cur\")); return ;;\n"
+           "        --passes) COMPREPLY=($(compgen -W \"color alpha depth normal object_id "
+           "material_id uv position motion lines\" -- \"$cur\")); return ;;\n"
            "        --formats) COMPREPLY=($(compgen -W \"png exr\" -- \"$cur\")); return ;;\n"
            "        --update-reference) COMPREPLY=($(compgen -W \"failed missing all\" -- "
            "\"$cur\")); return ;;\n"

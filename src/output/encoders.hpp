@@ -2,12 +2,14 @@
 // Image encoders: each returns the complete file as bytes, so the caller
 // can hash it and write it atomically; and readers. The only users of
 // libdeflate (deflate), libpng (reading) and OpenEXR.
+#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 
 #include "core/half.hpp"
 #include "core/image.hpp"
@@ -19,9 +21,9 @@ struct PngText {
     std::string keyword, text;
 };
 
-// 8-bit sRGB PNG from linear colour: RGB when every pixel is opaque, RGBA
-// otherwise. `compression` is 0..9 as zlib counts (0 fastest, 9
-// smallest), mapped onto the deflate library's levels. The float version
+// 8-bit sRGB PNG from linear premultiplied colour: RGB when every pixel is
+// opaque, RGBA with straight alpha (as PNG defines it) otherwise. `compression` is 0..9 as zlib
+// counts (0 fastest, 9 smallest), mapped onto the deflate library's levels. The float version
 // converts to half first, so both give the same bytes for the same colour.
 std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression,
                                       const std::vector<PngText>& text = {});
@@ -36,7 +38,22 @@ std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, 
 // them): `channels` 1 (grey), 3 (RGB) or 4 (RGBA), row by row. For
 // pictures made for people, such as comparison reports.
 std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
-                                      std::span<const uint8_t> samples, int compression);
+                                      std::span<const uint8_t> samples, int compression,
+                                      const std::vector<PngText>& text = {});
+
+// 8-bit RGB views of the data passes (docs/passes.md), written as plain
+// bytes without the sRGB curve; the background is black.
+// Normal: each axis from [-1, 1] to [0, 255].
+std::vector<uint8_t> encode_png_normal(const Image<glm::vec3>& normal, int compression,
+                                       const std::vector<PngText>& text = {});
+// Ids: a fixed colour per id (id_view_color), the same in every frame and run.
+std::vector<uint8_t> encode_png_ids(const Image<uint32_t>& ids, int compression,
+                                    const std::vector<PngText>& text = {});
+// uv: u in red, v in green, each clamped to [0, 1].
+std::vector<uint8_t> encode_png_uv(const Image<glm::vec2>& uv, int compression,
+                                   const std::vector<PngText>& text = {});
+// The id view's colour: black for 0, else a bright colour from a hash of the id.
+std::array<uint8_t, 3> id_view_color(uint32_t id);
 
 // OpenEXR scanline files, ZIP compression (16 scanlines a chunk).
 enum class ExrSample { half, float32, uint32 };

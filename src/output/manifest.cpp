@@ -144,6 +144,11 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
                                f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
                                f.value("style", m.style)});
+        for (const char* pass : {"object_id", "material_id"})
+            for (const auto& id :
+                 j.value("ids", nlohmann::json::object()).value(pass, nlohmann::json::array()))
+                m.ids.push_back({pass, id.at("id").get<uint32_t>(),
+                                 id.at("name").get<std::string>(), id.value("object", "")});
         m.threads = j.value("threads", 0);
         read_job(j, m);
         if (j.contains("timings")) read_timings(j["timings"], m);
@@ -243,6 +248,15 @@ std::string manifest_json(Manifest manifest, bool indented) {
                               {"style", f.style},
                               {"path", f.path},
                               {"sha256", f.sha256}});
+    if (!manifest.ids.empty()) {
+        Json ids = Json::object();
+        for (const ManifestId& id : manifest.ids) {
+            Json entry = {{"id", id.id}, {"name", id.name}};
+            if (!id.object.empty()) entry["object"] = id.object;
+            ids[id.pass].push_back(entry);
+        }
+        j["ids"] = ids;
+    }
     j["timings"] = timings_json(manifest);
     return indented ? j.dump(2) + "\n" : j.dump() + "\n";
 }

@@ -1,6 +1,7 @@
 #pragma once
 // manifest.json: what a run wrote, so tools and tests find outputs without
 // guessing file names (docs/scene-format.md, "manifest.json").
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -18,7 +19,7 @@ struct ManifestFrame {
 struct ManifestFile {
     int frame;
     std::string camera;
-    std::string pass;    // color, depth
+    std::string pass;    // core/passes.hpp, or multilayer
     std::string format;  // png, exr
     std::string path;    // relative to the manifest
     std::string sha256;
@@ -49,6 +50,14 @@ struct ManifestPartRecord {
 };
 
 // A command-line override as the run resolved it.
+// What an id in the object_id or material_id pass stands for.
+struct ManifestId {
+    std::string pass;  // object_id, material_id
+    uint32_t id;
+    std::string name;    // the object's, or the material's
+    std::string object;  // material ids: the object the material belongs to
+};
+
 struct ManifestOverride {
     std::string key, value, origin;
 };
@@ -65,6 +74,7 @@ struct Manifest {
     std::vector<ManifestOverride> overrides;
     std::vector<ManifestFrame> frames;
     std::vector<ManifestFile> files;
+    std::vector<ManifestId> ids;       // when an id pass is written
     std::optional<ManifestJob> job;    // farm jobs: the whole job (partial and merged manifests)
     std::optional<ManifestPart> part;  // partial manifests only
     // The timings block: what differs between identical runs.

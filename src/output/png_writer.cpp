@@ -95,6 +95,18 @@ const HalfToByte& half_to_byte() {
     return table;
 }
 
+// A premultiplied pixel that is not opaque, as PNG stores it: straight
+// (colour divided by alpha) and then sRGB-encoded; transparent is black.
+void straight_srgb(const Rgba16F& c, uint8_t* rgb) {
+    const float a = half_to_float(c.a);
+    const uint16_t channel[3] = {c.r, c.g, c.b};
+    for (int i = 0; i < 3; ++i) {
+        const float v = a > 0.0f ? half_to_float(channel[i]) / a : 0.0f;
+        const double unit = v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0;
+        rgb[i] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+    }
+}
+
 inline uint16_t unit_to_u16(float v) {
     if (!(v > 0.0f)) return 0;  // also NaN
     if (v >= 1.0f) return 65535;
@@ -117,9 +129,13 @@ std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compressi
         uint8_t* row = &scanlines[(row_bytes + 1) * static_cast<size_t>(y) + 1];
         const Rgba16F* c = &image.at(0, y);
         for (int x = 0; x < image.width; ++x, row += channels) {
-            row[0] = table.srgb[c[x].r];
-            row[1] = table.srgb[c[x].g];
-            row[2] = table.srgb[c[x].b];
+            if (opaque || c[x].a == one) {
+                row[0] = table.srgb[c[x].r];
+                row[1] = table.srgb[c[x].g];
+                row[2] = table.srgb[c[x].b];
+            } else {
+                straight_srgb(c[x], row);
+            }
             if (!opaque) row[3] = table.linear[c[x].a];
         }
         filter_sub(row - row_bytes, row_bytes, channels);
@@ -151,7 +167,8 @@ std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, 
 }
 
 std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
-                                      std::span<const uint8_t> samples, int compression) {
+                                      std::span<const uint8_t> samples, int compression,
+                                      const std::vector<PngText>& text) {
     const size_t bpp = static_cast<size_t>(channels);
     const size_t row_bytes = static_cast<size_t>(width) * bpp;
     std::vector<uint8_t> scanlines((row_bytes + 1) * static_cast<size_t>(height));
@@ -161,7 +178,7 @@ std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
         filter_sub(row, row_bytes, bpp);
     }
     const uint8_t type = channels == 4 ? kColorRgba : channels == 3 ? kColorRgb : kColorGrey;
-    return png_file(width, height, 8, type, scanlines, {}, compression);
+    return png_file(width, height, 8, type, scanlines, text, compression);
 }
 
 }  // namespace facet

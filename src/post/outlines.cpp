@@ -108,7 +108,8 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
                 ThreadPool& pool) {
     const size_t n = static_cast<size_t>(b.width) * static_cast<size_t>(b.height);
     if (b.depth.size() != n || b.normal.size() != n || b.object_id.size() != n)
-        throw Error(ExitCode::runtime_failure, "outlines: buffer sizes do not match width * height");
+        throw Error(ExitCode::runtime_failure,
+                    "outlines: buffer sizes do not match width * height");
     scratch.edges.assign(n, 0);
     const uint8_t enabled = enabled_flags(style);
     if (enabled == 0) return;
@@ -247,19 +248,35 @@ void draw_outlines(const OutlineBuffers& b, const OutlineStyle& style, ColorImag
     });
 }
 
-void composite_lines(const ColorImage& lines, ColorImage& color, ThreadPool& pool) {
-    if (lines.width != color.width || lines.height != color.height)
+namespace {
+
+// Each line pixel with some coverage through `over(line, pixel)`, row by row.
+template <typename Over>
+void composite_each(const ColorImage& lines, ColorImage& image, ThreadPool& pool, Over over) {
+    if (lines.width != image.width || lines.height != image.height)
         throw Error(ExitCode::runtime_failure, "outlines: line and colour images differ in size");
-    pool.parallel_for(static_cast<size_t>(color.height), [&](size_t row) {
+    pool.parallel_for(static_cast<size_t>(image.height), [&](size_t row) {
         const int y = static_cast<int>(row);
-        for (int x = 0; x < color.width; ++x) {
+        for (int x = 0; x < image.width; ++x) {
             const glm::vec4& line = lines.at(x, y);
-            const float a = line.a;
-            if (!(a > 0.0f)) continue;
-            glm::vec4& c = color.at(x, y);
-            c = glm::vec4(glm::vec3(c) + (glm::vec3(line) - glm::vec3(c)) * a,
-                          a + c.a * (1.0f - a));
+            if (line.a > 0.0f) over(line, image.at(x, y));
         }
+    });
+}
+
+}  // namespace
+
+void composite_lines(const ColorImage& lines, ColorImage& color, ThreadPool& pool) {
+    composite_each(lines, color, pool, [](const glm::vec4& line, glm::vec4& c) {
+        const float a = line.a;
+        c = glm::vec4(glm::vec3(c) + (glm::vec3(line) - glm::vec3(c)) * a, a + c.a * (1.0f - a));
+    });
+}
+
+void composite_lines_premultiplied(const ColorImage& lines, ColorImage& image, ThreadPool& pool) {
+    composite_each(lines, image, pool, [](const glm::vec4& line, glm::vec4& c) {
+        const float a = line.a;
+        c = glm::vec4(glm::vec3(line) * a + glm::vec3(c) * (1.0f - a), a + c.a * (1.0f - a));
     });
 }
 

@@ -111,4 +111,8 @@ void draw_outlines(const OutlineBuffers& buffers, const OutlineStyle& style, Col
 // alpha = a + alpha · (1 − a).
 void composite_lines(const ColorImage& lines, ColorImage& color, ThreadPool& pool);
 
+// Lines over a premultiplied RGBA image (Porter & Duff 1984, "over"):
+// rgb = line · a + rgb · (1 − a), alpha as above.
+void composite_lines_premultiplied(const ColorImage& lines, ColorImage& image, ThreadPool& pool);
+
 }  // namespace facet

@@ -86,7 +86,9 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     if (plan_.outlines)
         in.outlines =
             evaluate_outlines(scene_.style.outlines, at, static_cast<float>(samples_per_side_));
-    in.background = scene_.style.background.value_or(scene_.output.background);
+    // Given straight, used premultiplied like every colour in the frame.
+    const glm::vec4 background = scene_.style.background.value_or(scene_.output.background);
+    in.background = glm::vec4(glm::vec3(background) * background.a, background.a);
     in.depth_view_range = fit_depth_view_range(world_, in.state, in.camera);
     in.style_depth_range = scene_.style.depth_range.value_or(in.depth_view_range);
     return in;

@@ -35,7 +35,7 @@ struct FrameInputs {
     std::vector<Material> materials;  // the world's, with this frame's animated values
     std::vector<StyleState> styles;   // StylePlan::styles at this frame
     OutlineStyle outlines;            // when StylePlan::outlines; widths in sample pixels
-    glm::vec4 background;             // linear RGBA behind everything
+    glm::vec4 background;             // linear RGBA behind everything, premultiplied
     // Near..far of the visible scene's bounding sphere, for grey depth
     // views (the depth PNG, unless output.depth_range is set).
     glm::vec2 depth_view_range;

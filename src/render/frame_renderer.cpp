@@ -43,10 +43,13 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       rasterizer_(scene.output.width * side_, scene.output.height * side_,
                   kTileSize - kTileSize % side_),
       hidden_edges_(world),
-      coverage_tested_(coverage_tested_triangles(world)) {}
+      coverage_tested_(coverage_tested_triangles(world)) {
+    if (scene.output.writes(Pass::motion)) previous_.emplace(scene, world);
+}
 
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const StylePlan& plan = evaluator_.plan();
+    const PassSet passes = scene_.output.passes;
     const FrameInputs inputs = evaluator_.evaluate(frame, camera_index);
     // Animated meshes and cloth take this frame's pose first: the shadow
     // maps and the image are both drawn from it.
@@ -60,31 +63,63 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     // Shading writes finished pixels, resolving anti-aliased ones itself,
     // unless screen-space passes need every sample first (then post/
     // resolves). Either way one sample per pixel without anti-aliasing.
-    fit(out.color, scene_.output.width, scene_.output.height);
-    fit(out.depth, scene_.output.width, scene_.output.height);
+    const int width = scene_.output.width, height = scene_.output.height;
+    fit(out.color, width, height);
+    fit(out.depth, width, height);
     out.depth_view_range = inputs.depth_view_range;
     out.view = inputs.camera.view;
     out.projection = inputs.camera.projection;
-    const bool per_sample = plan.outlines || plan.hidden_edges;
+    const bool want_alpha = passes.has(Pass::alpha), want_lines = passes.has(Pass::lines);
+    if (want_alpha) fit(out.alpha, width, height);
+    if (want_lines) fit(out.lines, width, height);
+    const bool per_sample = plan.outlines || plan.hidden_edges || want_lines;
     if (per_sample) {
         fit(sample_color_, rasterizer_.width(), rasterizer_.height());
         fit(sample_depth_, rasterizer_.width(), rasterizer_.height());
+        if (want_lines) fit(sample_lines_, rasterizer_.width(), rasterizer_.height());
     }
     const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_};
-    const ShadeTarget shade_out{
+    ShadeTarget shade_out{
         per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
         per_sample ? sample_depth_ : out.depth,
         plan.outlines ? &outlines_.gbuffer(rasterizer_.width(), rasterizer_.height()) : nullptr};
+    if (want_alpha && !per_sample) shade_out.pixels_over_nothing = &out.alpha;
+    if (want_lines) shade_out.line_samples = &sample_lines_;
+
+    // The surface passes, when asked for, from the same visibility buffer.
+    std::span<const glm::vec4> previous_clip;
+    if (previous_)
+        previous_clip =
+            previous_->clip_positions(evaluator_.evaluate(frame - 1, camera_index), pool_);
+    const SurfacePassInputs surface_in{world_,
+                                       inputs,
+                                       vertices,
+                                       previous_clip,
+                                       side_,
+                                       passes,
+                                       scene_.output.normals_in_camera_space,
+                                       width,
+                                       height};
+    const bool surface_passes = wants_surface_passes(passes);
+    if (surface_passes) fit_surface_passes(surface_in, out.surface);
+
     const AlphaCoverage alpha(world_, inputs.materials);
     rasterizer_.draw_tiles(
         pool_,
-        [&](const TileVisibility& tile) { shade_tile(tile, rasterizer_, shade_in, shade_out); },
+        [&](const TileVisibility& tile) {
+            shade_tile(tile, rasterizer_, shade_in, shade_out);
+            if (surface_passes) write_surface_passes(tile, rasterizer_, surface_in, out.surface);
+        },
         alpha.test());
     if (!per_sample) return;
+    ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
     if (plan.hidden_edges && !world_.edge_mask.empty())
-        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_);
-    if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_);
-    resolve_supersampled(sample_color_, sample_depth_, side_, out.color, out.depth, pool_);
+        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_, lines);
+    if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_, lines);
+    resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
+                         {out.color, out.depth, want_alpha ? &out.alpha : nullptr,
+                          want_lines ? &out.lines : nullptr},
+                         pool_);
 }
 
 }  // namespace facet

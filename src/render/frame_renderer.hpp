@@ -3,6 +3,7 @@
 // pipeline"): each stage has a header of its own and hands the next a plain
 // record. The renderer owns the stages, which keep their buffers from frame
 // to frame.
+#include <optional>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -16,16 +17,23 @@
 #include "render/hidden_edge_stage.hpp"
 #include "render/outline_stage.hpp"
 #include "render/pose_stage.hpp"
+#include "render/previous_frame_stage.hpp"
 #include "render/shadow_stage.hpp"
+#include "render/surface_pass_stage.hpp"
 #include "render/vertex_stage.hpp"
 #include "render/world.hpp"
 
 namespace facet {
 
+// A frame's passes (docs/passes.md). Colour and depth are always made;
+// the others only when the scene asks for them (else they stay empty).
 struct FrameImages {
-    HalfColorImage color;                    // linear RGBA, half floats (core/half.hpp)
-    DepthImage depth;                        // linear view depth, +inf where nothing was hit
-    glm::vec2 depth_view_range;              // near..far fitted to the scene, for grey depth views
+    HalfColorImage color;        // linear RGBA, premultiplied, half floats (core/half.hpp)
+    DepthImage depth;            // linear view depth, +inf where nothing was hit
+    HalfColorImage alpha;        // the colour over nothing: coverage in a, premultiplied
+    HalfColorImage lines;        // outline and wireframe strokes alone, premultiplied
+    SurfacePassImages surface;   // normal, ids, uv, position, motion
+    glm::vec2 depth_view_range;  // near..far fitted to the scene, for grey depth views
     glm::mat4 view{1.0f}, projection{1.0f};  // the camera, for the files' metadata
 };
 
@@ -51,9 +59,11 @@ class FrameRenderer {
     OutlineStage outlines_;
     // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).
     std::vector<uint8_t> coverage_tested_;
+    std::optional<PreviousFrameStage> previous_;  // for the motion pass only
     // Every sample in float, when passes at the sample resolution follow.
     ColorImage sample_color_;
     DepthImage sample_depth_;
+    ColorImage sample_lines_;  // the lines pass
 };
 
 }  // namespace facet

@@ -18,7 +18,7 @@ constexpr float kHiddenDepthTolerance = 1e-2f;
 
 void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& frame,
                            const StylePlan& plan, int samples_per_side, const DepthImage& depth,
-                           ColorImage& color) {
+                           ColorImage& color, ColorImage* lines) {
     const int width = color.width, height = color.height;
     coverage_.assign(static_cast<size_t>(width) * height, 0.0f);
     line_color_.assign(static_cast<size_t>(width) * height, glm::vec3(0));
@@ -67,8 +67,13 @@ void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& f
         }
     }
     if (!any) return;
-    for (size_t i = 0; i < coverage_.size(); ++i)
-        if (coverage_[i] > 0) color.pixels[i] = glm::vec4(line_color_[i], color.pixels[i].a);
+    // Opaque lines: the sample's colour becomes the line's, and it counts
+    // as covered (its alpha 1) even where the line crosses the background.
+    for (size_t i = 0; i < coverage_.size(); ++i) {
+        if (!(coverage_[i] > 0)) continue;
+        color.pixels[i] = glm::vec4(line_color_[i], 1.0f);
+        if (lines) lines->pixels[i] = glm::vec4(line_color_[i], 1.0f);
+    }
 }
 
 }  // namespace facet

@@ -19,9 +19,12 @@ class HiddenEdgeStage {
     explicit HiddenEdgeStage(const World& world) : world_(world) {}
 
     // `clip` holds every world vertex in clip space; `depth` and `color` are
-    // the shaded images at sample resolution (`samples_per_side` per pixel side).
+    // the shaded images at sample resolution (`samples_per_side` per pixel
+    // side). `lines`, when given (the lines pass), gets the edges too, as
+    // premultiplied RGBA.
     void draw(std::span<const glm::vec4> clip, const FrameInputs& frame, const StylePlan& plan,
-              int samples_per_side, const DepthImage& depth, ColorImage& color);
+              int samples_per_side, const DepthImage& depth, ColorImage& color,
+              ColorImage* lines = nullptr);
 
   private:
     const World& world_;

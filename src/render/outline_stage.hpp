@@ -13,8 +13,10 @@ class OutlineStage {
     // The G-buffer for this frame's shading, `width` x `height` samples.
     OutlineBuffers& gbuffer(int width, int height);
 
-    // Lines from the G-buffer over `color` (the same size).
-    void draw(const OutlineStyle& style, ColorImage& color, ThreadPool& pool);
+    // Lines from the G-buffer over `color` (the same size), and over
+    // `lines` (premultiplied strokes alone, the lines pass) when given.
+    void draw(const OutlineStyle& style, ColorImage& color, ThreadPool& pool,
+              ColorImage* lines = nullptr);
 
   private:
     OutlineBuffers buffers_;

@@ -22,6 +22,7 @@
 #include "output/run_ledger.hpp"
 #include "render/file_metadata.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/pass_files.hpp"
 #include "render/render_memory.hpp"
 
 namespace facet {
@@ -235,20 +236,12 @@ class Encoder {
         };
         const FileFacts facts{scene_.name,       job.camera,      job.frame,
                               scene_.style.name, job.images.view, job.images.projection};
-        const std::vector<PngText> png_text = png_metadata(facts);
-        const std::vector<ExrAttribute> exr_attributes = exr_metadata(facts);
-        if (out.write_color && out.write_png)
-            write("color", "png",
-                  encode_png_color(job.images.color, out.png_compression, png_text));
-        if (out.write_color && out.write_exr)
-            write("color", "exr", encode_exr_color(job.images.color, exr_attributes));
-        if (out.write_depth && out.write_png) {
-            glm::vec2 range = out.depth_range.value_or(job.images.depth_view_range);
-            write("depth", "png",
-                  encode_png_depth(job.images.depth, range, out.png_compression, png_text));
-        }
-        if (out.write_depth && out.write_exr)
-            write("depth", "exr", encode_exr_depth(job.images.depth, exr_attributes));
+        const PassFileFacts file_facts{out.depth_range.value_or(job.images.depth_view_range),
+                                       png_metadata(facts), exr_metadata(facts)};
+        encode_frame_files(out, job.images, file_facts,
+                           [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
+                               write(file.pass, file.format, bytes);
+                           });
         written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start), host_});
         return written;
     }
@@ -311,10 +304,12 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
     layout.template_text = text;
     std::vector<std::string> camera_names, passes, exts;
     for (size_t c : cameras) camera_names.push_back(scene.cameras[c].name);
-    if (out.write_color) passes.push_back("color");
-    if (out.write_depth) passes.push_back("depth");
-    if (out.write_png) exts.push_back("png");
-    if (out.write_exr) exts.push_back("exr");
+    for (const PassFile& file : frame_files(out)) {
+        if (std::find(passes.begin(), passes.end(), file.pass) == passes.end())
+            passes.push_back(file.pass);
+        if (std::find(exts.begin(), exts.end(), file.format) == exts.end())
+            exts.push_back(file.format);
+    }
     try {
         layout.names = parse_output_template(text);
         check_unique_outputs(layout.names, scene.name, camera_names, passes, exts, frames);
@@ -344,16 +339,9 @@ const std::vector<int>& named_frames(const SceneDesc& scene, const RenderOptions
 // they are written (pass, then format).
 std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout& layout, int frame,
                                      const std::string& camera) {
-    const OutputDesc& out = scene.output;
     std::vector<std::string> names;
-    for (const char* pass : {"color", "depth"}) {
-        if ((pass[0] == 'c' && !out.write_color) || (pass[0] == 'd' && !out.write_depth)) continue;
-        for (const char* format : {"png", "exr"}) {
-            if ((format[0] == 'p' && !out.write_png) || (format[0] == 'e' && !out.write_exr))
-                continue;
-            names.push_back(expand(layout.names, {scene.name, camera, pass, frame, format}));
-        }
-    }
+    for (const PassFile& file : frame_files(scene.output))
+        names.push_back(expand(layout.names, {scene.name, camera, file.pass, frame, file.format}));
     return names;
 }
 
@@ -472,6 +460,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     manifest.frames.insert(manifest.frames.end(), kept.frames.begin(), kept.frames.end());
     manifest.files.insert(manifest.files.end(), kept.files.begin(), kept.files.end());
     manifest.threads = static_cast<int>(pool.size());
+    manifest.ids = pass_ids(scene, world);
     result.manifest_path = ledger.finish(std::move(manifest));
     if (rendered < todo.size())
         throw Error(ExitCode::interrupted,

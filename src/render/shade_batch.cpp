@@ -270,6 +270,10 @@ void finish_layers(const ShadeInputs& in, const StyleState& style, const Shading
                    ShadeBatch& b) {
     LayerInputs layers[kLanes];
     layer_inputs(in, style, b, layers);
+    if (b.want_wire && style.wireframe) {
+        for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
+        b.wire_color = style.wire.color;
+    }
     if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
         for (int i = 0; i < b.count; ++i) {
             const glm::vec3 c =
@@ -304,6 +308,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     b.sample = reconstruct_surfaces(setup, b.x, b.y);
     if (b.pixel_side > 0) b.pixel_depth = nearest_depth(setup, b.x, b.y, b.pixel_side);
     b.lanes.count = b.count;
+    if (b.want_wire) std::fill(b.wire, b.wire + kLanes, 0.0f);
     gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
     if (b.any_texture && !style.base_color) apply_textures(in, b);
     if (b.any_vertex_colors && !style.base_color) apply_vertex_colors(in, b);

@@ -6,6 +6,8 @@
 // style's model run (shade/shading_models.hpp).
 #include <cstdint>
 
+#include <glm/vec3.hpp>
+
 #include "core/simd_math.hpp"
 #include "raster/rasterizer.hpp"
 #include "raster/surface_sample.hpp"
@@ -20,6 +22,7 @@ struct ShadeBatch {
     uint32_t id[simd::kLanes];  // the rasterizer's triangle id
     simd::vf x, y;              // where each point is, in the rasterizer's sample units
     bool want_normal = false;   // fill `normal` even if the style's model needs none
+    bool want_wire = false;     // fill `wire` and `wire_color` (the lines pass)
     // > 0: fill `pixel_depth` with the depth of the nearest of each lane's
     // pixel_side x pixel_side samples round (x, y), all of the same triangle.
     int pixel_side = 0;
@@ -31,6 +34,8 @@ struct ShadeBatch {
     simd::vf normal[3];  // on the viewer's side, any length, as the G-buffer keeps it
     simd::vf color[3];   // linear RGB, the result
     simd::vf pixel_depth;
+    float wire[simd::kLanes];  // wireframe line coverage drawn over each lane, 0..1
+    glm::vec3 wire_color{0.0f};
 
     // Scratch.
     const Material* material[simd::kLanes];

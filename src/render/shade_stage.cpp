@@ -143,9 +143,24 @@ struct RowChunk {
 #endif
 }
 
+// The alpha pass's copy of a chunk: the pixels that show a surface as they
+// are, the background ones transparent. Mixed pixels come later.
+void write_chunk_over_nothing(const ShadeTarget& out, int x, int y, const RowChunk& chunk,
+                              unsigned shown) {
+    Rgba16F* pixels = &out.pixels_over_nothing->at(x, y);
+    for (int i = 0; i < chunk.count; ++i) {
+        if (chunk.id[i] == kMixedPixel) continue;
+        pixels[i] = (shown >> i) & 1 ? to_half(glm::vec4(chunk.color[0][i], chunk.color[1][i],
+                                                         chunk.color[2][i], chunk.color[3][i]))
+                                     : to_half(glm::vec4(0.0f));
+    }
+}
+
 [[gnu::always_inline]] inline void write_chunk(const TileVisibility& tile, const ShadeTarget& out,
-                                               int side, const RowChunk& chunk, bool any_mixed) {
+                                               int side, const RowChunk& chunk, bool any_mixed,
+                                               unsigned shown) {
     const int x = tile.x0 / side + chunk.px0, y = tile.y0 / side + chunk.py;
+    if (out.pixels_over_nothing) write_chunk_over_nothing(out, x, y, chunk, shown);
     Rgba16F* colors = &out.pixels->at(x, y);
     float* depths = &out.depth.at(x, y);
     if (chunk.count == kLanes && !any_mixed) {
@@ -224,7 +239,8 @@ struct RowChunk {
             for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
             chunk.depth = simd::splat(kInfinity);
             bool any_mixed = false;
-            unsigned shown = chunk_ids(tile, side, chunk, any_mixed);
+            const unsigned shown_at_start = chunk_ids(tile, side, chunk, any_mixed);
+            unsigned shown = shown_at_start;
             // The next chunk's triangles are most likely not in cache yet
             // (a dense mesh shows a new triangle every pixel or two): ask
             // for their setup records now, while this chunk shades.
@@ -242,7 +258,7 @@ struct RowChunk {
                 shade_chunk_style(in, raster, tile, style, mine, chunk);
                 shown &= ~mine;
             }
-            write_chunk(tile, out, side, chunk, any_mixed);
+            write_chunk(tile, out, side, chunk, any_mixed, shown_at_start);
             if (any_mixed)
                 for (int i = 0; i < chunk.count; ++i)
                     if (chunk.id[i] == kMixedPixel)
@@ -256,7 +272,7 @@ struct RowChunk {
 // to `write(batch, fragment indices)`.
 template <typename Write>
 void shade_fragments(const TileFragments& f, const Rasterizer& raster, const ShadeInputs& in,
-                     Write write) {
+                     bool want_wire, Write write) {
     StyleLookup style_of_id(in, raster);
     std::vector<uint32_t> style_of(static_cast<size_t>(f.count));
     std::vector<int> order(static_cast<size_t>(f.count));
@@ -266,6 +282,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
                      [&](int a, int b) { return style_of[a] < style_of[b]; });
     ShadeBatch b;
     b.want_normal = in.plan.outlines;  // the G-buffer keeps the normal
+    b.want_wire = want_wire;
     int fragment[kLanes];
     for (int first = 0; first < f.count;) {
         const uint32_t style = style_of[order[first]];
@@ -299,7 +316,7 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     const float per_sample = 1.0f / static_cast<float>(side * side);
     const glm::vec4 bg = in.frame.background;
     std::vector<glm::vec4> sums(static_cast<size_t>(f.pixels_x * f.pixels_y), glm::vec4(0));
-    shade_fragments(f, raster, in, [&](const ShadeBatch& b, const int* fragment) {
+    shade_fragments(f, raster, in, false, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
             const float weight = static_cast<float>(f.samples[at]) * per_sample;
@@ -314,6 +331,7 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
             sums[f.pixel[at]] + bg * (static_cast<float>(f.empty[f.pixel[at]]) * per_sample);
         const int x = tile.x0 / side + px, y = tile.y0 / side + py;
         out.pixels->at(x, y) = to_half(color);
+        if (out.pixels_over_nothing) out.pixels_over_nothing->at(x, y) = to_half(sums[f.pixel[at]]);
         out.depth.at(x, y) = nearest_sample_depth(tile, raster, side, px, py);
     }
 }
@@ -324,28 +342,34 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
                         const ShadeTarget& out, TileFragments& f) {
     build_tile_fragments(tile, in.samples_per_side, false, f);
     const int side = f.side;
-    shade_fragments(f, raster, in, [&](const ShadeBatch& b, const int* fragment) {
-        for (int i = 0; i < b.count; ++i) {
-            const int at = fragment[i];
-            const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f);
-            const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
-            for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
-                for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
-                    if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
-                    const int x = tile.x0 + sx, y = tile.y0 + sy;
-                    const float depth = sample_depth(raster, f.id[at], x, y);
-                    out.samples->at(x, y) = color;
-                    out.depth.at(x, y) = depth;
-                    if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
-                }
-        }
-    });
+    shade_fragments(
+        f, raster, in, out.line_samples != nullptr, [&](const ShadeBatch& b, const int* fragment) {
+            for (int i = 0; i < b.count; ++i) {
+                const int at = fragment[i];
+                const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f);
+                const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+                const glm::vec4 stroke(b.wire_color * b.wire[i], b.wire[i]);
+                for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
+                    for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
+                        if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
+                        const int x = tile.x0 + sx, y = tile.y0 + sy;
+                        const float depth = sample_depth(raster, f.id[at], x, y);
+                        out.samples->at(x, y) = color;
+                        out.depth.at(x, y) = depth;
+                        if (out.line_samples) out.line_samples->at(x, y) = stroke;
+                        if (out.gbuffer)
+                            write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
+                    }
+            }
+        });
     for (int ty = 0; ty < tile.height; ++ty)
         for (int tx = 0; tx < tile.width; ++tx) {
             if (tile.id[ty * kTileSize + tx] != kNoTriangle) continue;
             const int x = tile.x0 + tx, y = tile.y0 + ty;
-            out.samples->at(x, y) = in.frame.background;
+            // The background's colour, nothing covering it (post/resolve.hpp).
+            out.samples->at(x, y) = glm::vec4(glm::vec3(in.frame.background), 0.0f);
             out.depth.at(x, y) = kInfinity;
+            if (out.line_samples) out.line_samples->at(x, y) = glm::vec4(0.0f);
             if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, kInfinity, glm::vec3(0), kNoObject);
         }
 }

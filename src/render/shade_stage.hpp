@@ -35,10 +35,16 @@ struct ShadeInputs {
 // output size), or every sample (`samples` set, `depth` of the rasterizer's
 // size, and the G-buffer when outlines follow).
 struct ShadeTarget {
-    HalfColorImage* pixels;   // linear RGBA, half floats
-    ColorImage* samples;      // linear RGBA, floats
+    HalfColorImage* pixels;   // linear RGBA, half floats, premultiplied
+    ColorImage* samples;      // rgb the sample's colour, a its coverage (post/resolve.hpp)
     DepthImage& depth;        // linear view depth, +inf for background
     OutlineBuffers* gbuffer;  // per sample: depth, normal, object id; null when not needed
+    // With `pixels`, for the alpha pass: the same pixels over nothing
+    // (no background), premultiplied; null when not asked for.
+    HalfColorImage* pixels_over_nothing = nullptr;
+    // With `samples`, for the lines pass: each sample's wireframe stroke
+    // alone, premultiplied; null when not asked for.
+    ColorImage* line_samples = nullptr;
 };
 
 // Shades one tile; `raster` resolves its triangle ids. Called for different

@@ -15,6 +15,7 @@
 #include "cloth/cloth_params.hpp"
 #include "core/diagnostics.hpp"
 #include "core/error.hpp"
+#include "core/passes.hpp"
 #include "scene/animated.hpp"
 #include "scene/style_desc.hpp"
 
@@ -26,11 +27,16 @@ struct OutputDesc {
     std::vector<int> frames = {1};
     std::string frames_text = "1";
     double fps = 24;
-    bool write_color = true;
-    bool write_depth = false;
+    // What each frame writes (docs/passes.md): colour unless `passes:` says otherwise.
+    PassSet passes = {1u << static_cast<int>(Pass::color)};
+    bool writes(Pass p) const { return passes.has(p); }
     bool write_png = true;
     bool write_exr = false;
-    glm::vec4 background = {0, 0, 0, 1};  // linear RGBA
+    glm::vec4 background = {0, 0, 0, 1};  // linear RGBA, straight; `transparent` is all 0
+    // The normal pass: world space, or the camera's (x right, y up, z towards the viewer).
+    bool normals_in_camera_space = false;
+    // `exr: multilayer`: one EXR per frame with every pass as layers, instead of one per pass.
+    bool exr_multilayer = false;
     // Samples per pixel on a regular grid (1, 4, 9, 16, 25): anti-aliasing
     // by supersampling, resolved in post/resolve.cpp.
     int samples = 1;

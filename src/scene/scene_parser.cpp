@@ -44,11 +44,40 @@ glm::vec3 nonzero_direction(const Field& field) {
     return v;
 }
 
+PassSet parse_passes(const Field& f) {
+    const std::vector<std::string_view> names(kPassNames.begin(), kPassNames.end());
+    PassSet passes;
+    auto add = [&](const Field& item) {
+        const std::string name = item.text();
+        const std::optional<Pass> pass = pass_from_name(name);
+        if (!pass) item.fail_not_one_of(name, names);
+        passes.add(*pass);
+    };
+    if (f.is_sequence())
+        for (size_t i = 0; i < f.size(); ++i) add(f[i]);
+    else
+        add(f);
+    if (passes.empty()) f.fail("must name at least one pass");
+    return passes;
+}
+
+// Position and motion have no 8-bit view: a run that writes only PNG
+// cannot hold them.
+void check_pass_formats(const Field& f, const OutputDesc& out) {
+    if (out.write_exr) return;
+    for (Pass p : {Pass::position, Pass::motion})
+        if (out.writes(p)) {
+            const Field& at = f.has("formats") ? f["formats"] : f["passes"];
+            at.fail("the " + std::string(pass_name(p)) +
+                    " pass is written only as EXR: add exr to output.formats");
+        }
+}
+
 OutputDesc parse_output(const Field& f) {
     OutputDesc out;
     out.where = f.where();
     f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
-                  "png_compression", "depth_range", "path"});
+                  "png_compression", "depth_range", "path", "normals", "exr"});
     if (f.has("path")) {
         out.path = f["path"].text();
         out.path_at = f["path"].where();
@@ -69,19 +98,19 @@ OutputDesc parse_output(const Field& f) {
         }
     }
     if (f.has("fps")) out.fps = f["fps"].number(0.001, 1000);
-    if (f.has("passes")) {
-        auto passes = f["passes"].choices({"color", "depth"});
-        if (passes.empty()) f["passes"].fail("must name at least one pass");
-        out.write_color = out.write_depth = false;
-        for (auto& p : passes) (p == "color" ? out.write_color : out.write_depth) = true;
-    }
+    if (f.has("passes")) out.passes = parse_passes(f["passes"]);
     if (f.has("formats")) {
         auto formats = f["formats"].choices({"png", "exr"});
         if (formats.empty()) f["formats"].fail("must name at least one format");
         out.write_png = out.write_exr = false;
         for (auto& fmt : formats) (fmt == "png" ? out.write_png : out.write_exr) = true;
     }
-    if (f.has("background")) out.background = f["background"].color4();
+    check_pass_formats(f, out);
+    if (f.has("normals"))
+        out.normals_in_camera_space = f["normals"].choice({"world", "camera"}) == "camera";
+    if (f.has("exr"))
+        out.exr_multilayer = f["exr"].choice({"separate", "multilayer"}) == "multilayer";
+    if (f.has("background")) out.background = f["background"].background();
     if (f.has("samples")) {
         out.samples = f["samples"].integer(1, 25);
         const int side = out.samples_per_side();

@@ -227,7 +227,7 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
         else
             style.base_color = c.animated_color3();
     }
-    if (f.has("background")) style.background = f["background"].color4();
+    if (f.has("background")) style.background = f["background"].background();
     if (f.has("shadows")) {
         Field sh = f["shadows"];
         if (sh.is_scalar() && sh.text() == "lights")

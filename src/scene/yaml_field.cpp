@@ -256,6 +256,11 @@ glm::vec4 Field::color4() const {
     return {v[0], v[1], v[2], v.size() == 4 ? v[3] : 1.0};
 }
 
+glm::vec4 Field::background() const {
+    if (node_.IsScalar() && node_.Scalar() == "transparent") return glm::vec4(0.0f);
+    return color4();
+}
+
 glm::vec3 Field::color3() const {
     if (node_.IsSequence() && node_.size() != 3) numbers(3, 3);  // reports the count
     if (node_.IsScalar() && node_.Scalar().size() == 9) fail("must be an RGB colour '#rrggbb'");

@@ -67,6 +67,7 @@ class Field {
     glm::vec3 color3() const;          // [r, g, b] linear, or "#rrggbb" sRGB
     glm::vec2 distance_range() const;  // [near, far] with 0 <= near < far
     glm::vec4 color4() const;          // [r, g, b, a] or [r, g, b] or "#rrggbb[aa]"
+    glm::vec4 background() const;      // a color4, or `transparent`: [0, 0, 0, 0]
     // One of the given words.
     std::string choice(std::initializer_list<const char*> words) const;
     // "got 'x'; did you mean 'y'? (one of: ...)": the one message for a

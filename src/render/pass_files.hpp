@@ -1,0 +1,49 @@
+#pragma once
+// The files of a frame's passes (docs/passes.md): which pass goes into
+// which format, with which EXR channels, in the order they are written.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+
+#include "output/encoders.hpp"
+#include "output/manifest.hpp"
+#include "render/frame_renderer.hpp"
+#include "scene/scene_desc.hpp"
+
+namespace facet {
+
+// One file of a frame: a pass name (or "multilayer") and a format.
+struct PassFile {
+    std::string pass, format;
+};
+
+// The files each frame gets from the scene's passes and formats: per pass
+// in core/passes.hpp's order its PNG view (passes that have one), then its
+// EXR; with `exr: multilayer` one EXR of every pass last instead.
+std::vector<PassFile> frame_files(const OutputDesc& out);
+
+// What the files carry besides the pixels.
+struct PassFileFacts {
+    glm::vec2 depth_range;  // near..far of the depth PNG
+    std::vector<PngText> png_text;
+    std::vector<ExrAttribute> exr_attributes;
+};
+
+// Encodes the frame's files in frame_files' order, handing each to `write`.
+void encode_frame_files(
+    const OutputDesc& out, const FrameImages& images, const PassFileFacts& facts,
+    const std::function<void(const PassFile&, const std::vector<uint8_t>&)>& write);
+
+// What each object and material id stands for, for the manifest: scene
+// object i has id i + 1, World material i id i + 1 (0 is the background).
+// Materials without a name in their file are named "OBJECT:N", N counting
+// the object's materials from 0. Empty unless an id pass is written.
+std::vector<ManifestId> pass_ids(const SceneDesc& scene, const World& world);
+
+// The EXR channels of one pass, as they are named in its own file
+// (`layered` false) or in a multilayer file.
+std::vector<ExrChannel> exr_pass_channels(Pass pass, const FrameImages& images, bool layered);
+
+}  // namespace facet
