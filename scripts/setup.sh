@@ -56,6 +56,10 @@ fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
     echo "setup: configuring and building facet in $build (a few minutes the first time)" >&2
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
+elif [ ${#missing[@]} -gt 0 ]; then
+    # A package installed into an existing build (OSMesa for --bench, say)
+    # is found only when CMake looks again.
+    cmake -S "$root" -B "$build" >/dev/null
 fi
 log="$build/build.log"
 if ! cmake --build "$build" -j2 >"$log" 2>&1; then

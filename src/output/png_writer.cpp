@@ -128,15 +128,25 @@ std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compressi
     for (int y = 0; y < image.height; ++y) {
         uint8_t* row = &scanlines[(row_bytes + 1) * static_cast<size_t>(y) + 1];
         const Rgba16F* c = &image.at(0, y);
-        for (int x = 0; x < image.width; ++x, row += channels) {
-            if (opaque || c[x].a == one) {
+        // Two loops, not one with a test per pixel: the opaque one is the
+        // common case and stays a plain table lookup.
+        if (opaque) {
+            for (int x = 0; x < image.width; ++x, row += 3) {
                 row[0] = table.srgb[c[x].r];
                 row[1] = table.srgb[c[x].g];
                 row[2] = table.srgb[c[x].b];
-            } else {
-                straight_srgb(c[x], row);
             }
-            if (!opaque) row[3] = table.linear[c[x].a];
+        } else {
+            for (int x = 0; x < image.width; ++x, row += 4) {
+                if (c[x].a == one) {
+                    row[0] = table.srgb[c[x].r];
+                    row[1] = table.srgb[c[x].g];
+                    row[2] = table.srgb[c[x].b];
+                } else {
+                    straight_srgb(c[x], row);
+                }
+                row[3] = table.linear[c[x].a];
+            }
         }
         filter_sub(row - row_bytes, row_bytes, channels);
     }
