@@ -209,6 +209,31 @@ TEST_CASE("facet sheet --vary renders one cell per value", "[cli][style]") {
     CHECK(png.height == 24 + label_band());
 }
 
+TEST_CASE("facet sheet cells keep the scene's aspect ratio unless given both sides",
+          "[cli][style]") {
+    TempDir dir("cli-sheet");
+    // A 16:9 scene: 4:3 cells would crop its sides.
+    std::string text = kSheetScene;
+    text.replace(text.find("[64, 48]"), 8, "[160, 90]");
+    const std::string scene = write_text(dir.file("s.yaml"), text);
+    const std::string out = dir.file("sheet.png");
+    struct Case {
+        const char* args;
+        int cell_width, cell_height;
+    };
+    for (const Case& c :
+         {Case{"", 320, 180}, Case{"--cell 100", 100, 56}, Case{"--cell 80x80", 80, 80}}) {
+        INFO(c.args);
+        const RunResult r = facet_shipped("sheet " + quoted(scene) + " --styles flat " + c.args +
+                                          " -o " + quoted(out) + " --threads 2");
+        INFO(r.output);
+        REQUIRE(r.exit_code == 0);
+        const facet::DecodedPng png = facet::read_png(out);
+        CHECK(png.width == c.cell_width);
+        CHECK(png.height == c.cell_height + label_band());
+    }
+}
+
 TEST_CASE("facet sheet errors exit with code 2 and write nothing", "[cli][style]") {
     TempDir dir("cli-sheet");
     const std::string scene = write_text(dir.file("s.yaml"), kSheetScene);
@@ -228,6 +253,7 @@ TEST_CASE("facet sheet errors exit with code 2 and write nothing", "[cli][style]
         {"neither --styles nor --vary", "", "--styles"},
         // --size, as for every command (--cell is an alias).
         {"a bad cell size", "--styles flat --size 64by48", "--size 64by48"},
+        {"a cell width of zero", "--styles flat --cell 0", "WIDTHxHEIGHT or WIDTH"},
         {"a frame outside the scene", "--styles flat -f 400", "outside the scene's frames"},
     };
     for (const Case& c : cases) {

@@ -82,7 +82,7 @@ style:
     hidden_color: [1, 0, 0]
 )";
 
-int red_pixels_of_cube_wireframe(bool hidden) {
+facet::ColorImage cube_wireframe(bool hidden) {
     facet::test::TempDir dir("wire-hidden");
     const std::string text =
         std::string(kWireCube) + "    hidden: " + (hidden ? "true" : "false") + "\n";
@@ -95,10 +95,18 @@ int red_pixels_of_cube_wireframe(bool hidden) {
     facet::FrameRenderer renderer(scene, world, pool);
     facet::FrameImages images;
     renderer.render(1, 0, images);
+    return facet::to_float_image(images.color);
+}
+
+bool is_black(const glm::vec4& c) {
+    return c.r < 0.2f && c.g < 0.2f && c.b < 0.2f;
+}
+
+int red_pixels_of_cube_wireframe(bool hidden) {
     int red = 0, black = 0;
-    for (const glm::vec4& c : facet::to_float_image(images.color).pixels) {
+    for (const glm::vec4& c : cube_wireframe(hidden).pixels) {
         red += c.r > 0.5f && c.g < 0.3f && c.b < 0.3f;
-        black += c.r < 0.2f && c.g < 0.2f && c.b < 0.2f;
+        black += is_black(c);
     }
     CHECK(black > 100);  // the visible edges are there either way
     return red;
@@ -112,6 +120,21 @@ int red_pixels_of_cube_wireframe(bool hidden) {
 TEST_CASE("wireframe hidden: true also draws the edges behind the surfaces", "[render][style]") {
     CHECK(red_pixels_of_cube_wireframe(false) == 0);
     CHECK(red_pixels_of_cube_wireframe(true) > 60);
+}
+
+// Where a hidden edge meets a visible one (at the silhouette's corners),
+// the visible line wins: every pixel the visible edges make black stays so.
+TEST_CASE("wireframe hidden edges stay under the visible ones", "[render][style]") {
+    const facet::ColorImage visible_only = cube_wireframe(false);
+    const facet::ColorImage with_hidden = cube_wireframe(true);
+    int black = 0, lost = 0;
+    for (size_t i = 0; i < visible_only.pixels.size(); ++i) {
+        if (!is_black(visible_only.pixels[i])) continue;
+        ++black;
+        lost += !is_black(with_hidden.pixels[i]);
+    }
+    CHECK(black > 100);
+    CHECK(lost == 0);
 }
 
 namespace {

@@ -283,10 +283,10 @@ int validate_command(const RenderArgs& args) {
 
 struct SheetArgs {
     std::string scene;
-    std::string styles;            // comma-separated, or "all"
-    std::string vary;              // key=v1,v2,...
-    FrameSelection frames;         // one frame
-    std::string size = "320x240";  // of a cell
+    std::string styles;     // comma-separated, or "all"
+    std::string vary;       // key=v1,v2,...
+    FrameSelection frames;  // one frame
+    std::string size;       // of a cell: WIDTHxHEIGHT, or WIDTH with the scene's aspect ratio
     int columns = 0;
     std::string output;
     unsigned threads = 0;
@@ -308,12 +308,30 @@ std::vector<uint8_t> sheet_jpeg(const ColorImage& sheet) {
     return encode_jpeg(sheet.width, sheet.height, rgb);
 }
 
+// Cells keep the scene's aspect ratio unless given both sides: a 4:3 cell
+// would crop a 16:9 scene and push its model against the cell's edges.
+std::pair<int, int> sheet_cell_size(const std::string& size, const OutputDesc& scene) {
+    constexpr int kDefaultCellWidth = 320;
+    if (size.find('x') != std::string::npos) return parse_size(size, "--size");
+    int width = kDefaultCellWidth;
+    if (!size.empty()) {
+        char* end = nullptr;
+        const long w = std::strtol(size.c_str(), &end, 10);
+        if (end == size.c_str() || *end != '\0' || w < 1 || w > 4096)
+            fail_input(command_line("--size " + size), "",
+                       "expected WIDTHxHEIGHT or WIDTH (1 to 4096), e.g. 320x180 or 320");
+        width = static_cast<int>(w);
+    }
+    const int height = std::max(
+        1, static_cast<int>(std::lround(static_cast<double>(width) * scene.height / scene.width)));
+    return {width, height};
+}
+
 int sheet_command(const SheetArgs& args) {
     SheetRequest request;
     request.scene = args.scene;
     request.options.style_dirs = default_style_dirs();
     for (const auto& d : args.defines) request.options.overrides.push_back(parse_define(d));
-    std::tie(request.cell_width, request.cell_height) = parse_size(args.size, "--size");
     std::string output = args.output;
     if (output.empty())
         output = (std::filesystem::path("out") /
@@ -327,8 +345,9 @@ int sheet_command(const SheetArgs& args) {
         fail_input(command_line("-o " + output), "",
                    "a contact sheet is written as PNG or JPEG; name the file *.png, *.jpg or "
                    "*.jpeg");
-    const std::vector<int> frames =
-        resolve_frames(args.frames, load_scene(args.scene, request.options).output);
+    const OutputDesc scene_output = load_scene(args.scene, request.options).output;
+    const std::vector<int> frames = resolve_frames(args.frames, scene_output);
+    std::tie(request.cell_width, request.cell_height) = sheet_cell_size(args.size, scene_output);
     if (frames.size() > 1)
         fail_input(command_line("--frames"), "", "a contact sheet shows one frame; give -f N");
     request.frame = frames.empty() ? 0 : frames.front();
@@ -540,7 +559,8 @@ CLI::App* add_sheet_command(CLI::App& app, SheetArgs& args) {
     cmd->add_option("--vary", args.vary,
                     "One value per cell: key.path=v1,v2,... (e.g. style.cels=2,3,4,6)");
     add_frame_options(cmd, args.frames);
-    cmd->add_option("--size,--cell", args.size, "Cell size WIDTHxHEIGHT (default 320x240)");
+    cmd->add_option("--size,--cell", args.size,
+                    "Cell size WIDTHxHEIGHT, or WIDTH with the scene's aspect ratio (default 320)");
     cmd->add_option("--columns", args.columns, "Cells per row (default: about square)")
         ->check(CLI::Range(0, 64));
     add_output_option(cmd, args.output, "PNG to write (default out/SCENE-sheet.png)");

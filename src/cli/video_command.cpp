@@ -56,9 +56,11 @@ std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& fol
 }
 
 // 8-bit sRGB RGB of a colour file: PNG values as they are (alpha left
-// out), EXR colour clamped and encoded as sRGB, as the PNG writer does.
-std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& format, int& width,
-                               int& height) {
+// out; the PNG writer applied the scene's exposure and tone curve), EXR
+// colour through that display transform, clamped and encoded as sRGB, as
+// the PNG writer does.
+std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& format,
+                               const DisplayTransform& display, int& width, int& height) {
     std::vector<uint8_t> rgb;
     if (format == "png") {
         const DecodedPng png = read_png(path);
@@ -76,15 +78,24 @@ std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& forma
     const DecodedExr exr = read_exr(path);
     width = exr.width;
     height = exr.height;
-    rgb.resize(static_cast<size_t>(width) * height * 3);
-    for (int c = 0; c < 3; ++c) {
-        const char* name[] = {"R", "G", "B"};
-        const auto it = std::find(exr.channel_names.begin(), exr.channel_names.end(), name[c]);
-        if (it == exr.channel_names.end())
-            throw Error(ExitCode::io_failure, path + ": no " + name[c] + " channel");
-        const auto& values = exr.channels[static_cast<size_t>(it - exr.channel_names.begin())];
-        for (size_t p = 0; p < values.size(); ++p) {
-            const double v = std::isfinite(values[p]) ? std::clamp<double>(values[p], 0, 1) : 0;
+    const size_t pixels = static_cast<size_t>(width) * height;
+    rgb.resize(pixels * 3);
+    const std::vector<float>* channel[4] = {};
+    for (int c = 0; c < 4; ++c) {
+        const std::string name(1, "RGBA"[c]);
+        const auto it = std::find(exr.channel_names.begin(), exr.channel_names.end(), name);
+        if (it != exr.channel_names.end())
+            channel[c] = &exr.channels[static_cast<size_t>(it - exr.channel_names.begin())];
+        else if (c < 3)
+            throw Error(ExitCode::io_failure, path + ": no " + name + " channel");
+    }
+    for (size_t p = 0; p < pixels; ++p) {
+        glm::vec4 colour(1.0f);
+        for (int c = 0; c < 4; ++c)
+            if (channel[c]) colour[c] = (*channel[c])[p];
+        colour = display_color(colour, display);
+        for (int c = 0; c < 3; ++c) {
+            const double v = std::isfinite(colour[c]) ? std::clamp<double>(colour[c], 0, 1) : 0;
             rgb[p * 3 + static_cast<size_t>(c)] =
                 static_cast<uint8_t>(std::lround(linear_to_srgb(v) * 255));
         }
@@ -141,7 +152,7 @@ int video_command(const VideoArgs& args) {
     for (const ManifestFile& f : files) {
         int w = 0, h = 0;
         const std::vector<uint8_t> rgb =
-            frame_rgb((fs::path(args.output_dir) / f.path).string(), f.format, w, h);
+            frame_rgb((fs::path(args.output_dir) / f.path).string(), f.format, m.display, w, h);
         if (!encoder) {
             width = w;
             height = h;

@@ -133,6 +133,10 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         m.output_template = j.value("output_template", "");
         m.scene_sha256 = j.value("scene_sha256", "");
         m.fps = j.value("fps", 24.0);
+        if (j.contains("display")) {
+            m.display.exposure = j["display"].value("exposure", 0.0f);
+            m.display.tonemap = tonemap_from_name(j["display"].value("tonemap", "none"));
+        }
         for (const auto& o : j.value("overrides", nlohmann::json::array()))
             m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
                                    o.value("origin", "")});
@@ -230,6 +234,8 @@ std::string manifest_json(Manifest manifest, bool indented) {
     j["style"] = manifest.style;
     j["size"] = {manifest.width, manifest.height};
     j["fps"] = manifest.fps;
+    j["display"] = {{"exposure", manifest.display.exposure},
+                    {"tonemap", tonemap_name(manifest.display.tonemap)}};
     j["output_template"] = manifest.output_template;
     j["overrides"] = Json::array();
     for (const ManifestOverride& o : manifest.overrides)

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "core/display_transform.hpp"
+
 namespace facet {
 
 struct ManifestFrame {
@@ -69,7 +71,8 @@ struct Manifest {
     std::string scene_sha256;  // of the scene file's bytes: an edited scene is other settings
     std::string style;
     int width = 0, height = 0;
-    double fps = 24;  // the scene's, for movies made from the files
+    double fps = 24;           // the scene's, for movies made from the files
+    DisplayTransform display;  // the scene's exposure and tone curve, for movies from EXR
     std::string output_template;
     std::vector<ManifestOverride> overrides;
     std::vector<ManifestFrame> frames;

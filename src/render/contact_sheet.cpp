@@ -46,6 +46,8 @@ ColorImage render_contact_sheet(const SheetRequest& request) {
         FrameImages images;
         const int frame = request.frame != 0 ? request.frame : scene.output.frames.front();
         renderer.render(frame, 0, images);
+        if (!scene.output.display.is_identity())
+            images.color = apply_display_transform(images.color, scene.output.display);
 
         const int x0 = (c % columns) * pitch_x, y0 = (c / columns) * pitch_y;
         for (int y = 0; y < request.cell_height; ++y)

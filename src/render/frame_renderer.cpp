@@ -76,7 +76,9 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     if (per_sample) {
         fit(sample_color_, rasterizer_.width(), rasterizer_.height());
         fit(sample_depth_, rasterizer_.width(), rasterizer_.height());
-        if (want_lines) fit(sample_lines_, rasterizer_.width(), rasterizer_.height());
+        // Hidden edges need the visible strokes, to stay under them.
+        if (want_lines || plan.hidden_edges)
+            fit(sample_lines_, rasterizer_.width(), rasterizer_.height());
     }
     const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_};
     ShadeTarget shade_out{
@@ -84,7 +86,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         per_sample ? sample_depth_ : out.depth,
         plan.outlines ? &outlines_.gbuffer(rasterizer_.width(), rasterizer_.height()) : nullptr};
     if (want_alpha && !per_sample) shade_out.pixels_over_nothing = &out.alpha;
-    if (want_lines) shade_out.line_samples = &sample_lines_;
+    if (want_lines || (per_sample && plan.hidden_edges)) shade_out.line_samples = &sample_lines_;
 
     // The surface passes, when asked for, from the same visibility buffer.
     std::span<const glm::vec4> previous_clip;
@@ -114,7 +116,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     if (!per_sample) return;
     ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
     if (plan.hidden_edges && !world_.edge_mask.empty())
-        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_, lines);
+        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_,
+                           sample_lines_);
     if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_, lines);
     resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
                          {out.color, out.depth, want_alpha ? &out.alpha : nullptr,

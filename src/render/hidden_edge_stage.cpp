@@ -18,7 +18,7 @@ constexpr float kHiddenDepthTolerance = 1e-2f;
 
 void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& frame,
                            const StylePlan& plan, int samples_per_side, const DepthImage& depth,
-                           ColorImage& color, ColorImage* lines) {
+                           ColorImage& color, ColorImage& lines) {
     const int width = color.width, height = color.height;
     coverage_.assign(static_cast<size_t>(width) * height, 0.0f);
     line_color_.assign(static_cast<size_t>(width) * height, glm::vec3(0));
@@ -67,12 +67,17 @@ void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& f
         }
     }
     if (!any) return;
-    // Opaque lines: the sample's colour becomes the line's, and it counts
-    // as covered (its alpha 1) even where the line crosses the background.
+    // Opaque lines under the visible ones: where a visible stroke covers
+    // the sample by w, it keeps w and the hidden line shows through the
+    // rest. The sample counts as covered (alpha 1) even where the line
+    // crosses the background.
     for (size_t i = 0; i < coverage_.size(); ++i) {
         if (!(coverage_[i] > 0)) continue;
-        color.pixels[i] = glm::vec4(line_color_[i], 1.0f);
-        if (lines) lines->pixels[i] = glm::vec4(line_color_[i], 1.0f);
+        const glm::vec4 visible = lines.pixels[i];  // premultiplied
+        const glm::vec4 merged =
+            visible + glm::vec4(line_color_[i], 1.0f) * (1.0f - std::min(visible.a, 1.0f));
+        color.pixels[i] = merged;
+        lines.pixels[i] = merged;
     }
 }
 

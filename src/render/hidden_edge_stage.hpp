@@ -20,11 +20,11 @@ class HiddenEdgeStage {
 
     // `clip` holds every world vertex in clip space; `depth` and `color` are
     // the shaded images at sample resolution (`samples_per_side` per pixel
-    // side). `lines`, when given (the lines pass), gets the edges too, as
-    // premultiplied RGBA.
+    // side). `lines` holds the visible strokes the shading stage drew
+    // (premultiplied RGBA, per sample): hidden edges go under them, so a
+    // visible line always wins where the two meet, and are added to them.
     void draw(std::span<const glm::vec4> clip, const FrameInputs& frame, const StylePlan& plan,
-              int samples_per_side, const DepthImage& depth, ColorImage& color,
-              ColorImage* lines = nullptr);
+              int samples_per_side, const DepthImage& depth, ColorImage& color, ColorImage& lines);
 
   private:
     const World& world_;

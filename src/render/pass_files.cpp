@@ -33,6 +33,12 @@ std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const Fra
         case Pass::color:
         case Pass::alpha:
         case Pass::lines:
+            // PNG is for looking at: it gets the exposure and tone curve
+            // (EXR stays scene-linear).
+            if (!out.display.is_identity())
+                return encode_png_color(
+                    apply_display_transform(rgba_image(pass, images), out.display), level,
+                    facts.png_text);
             return encode_png_color(rgba_image(pass, images), level, facts.png_text);
         case Pass::depth:
             return encode_png_depth(images.depth, facts.depth_range, level, facts.png_text);

@@ -82,6 +82,7 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
     m.width = scene.output.width;
     m.height = scene.output.height;
     m.fps = scene.output.fps;
+    m.display = scene.output.display;
     m.output_template = layout.template_text;
     for (const Override& o : options.provenance.overrides)
         m.overrides.push_back({o.path, o.value, o.origin});

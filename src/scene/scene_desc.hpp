@@ -14,6 +14,7 @@
 #include "assets/primitives.hpp"
 #include "cloth/cloth_params.hpp"
 #include "core/diagnostics.hpp"
+#include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "core/passes.hpp"
 #include "scene/animated.hpp"
@@ -46,7 +47,8 @@ struct OutputDesc {
         while (k * k < samples) ++k;
         return k;
     }
-    int png_compression = 1;  // zlib level 0..9; 1 is fast, 9 small
+    DisplayTransform display;  // exposure and tone curve: PNG, video, sheets (not EXR)
+    int png_compression = 1;   // zlib level 0..9; 1 is fast, 9 small
     // File names relative to the output folder (docs/output-naming.md);
     // unset: {scene}/{pass}.{frame}.{ext}, with {camera}/ after {scene} when
     // a run renders several cameras. Checked before rendering starts.

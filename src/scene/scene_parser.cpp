@@ -77,7 +77,8 @@ OutputDesc parse_output(const Field& f) {
     OutputDesc out;
     out.where = f.where();
     f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
-                  "png_compression", "depth_range", "path", "normals", "exr"});
+                  "png_compression", "depth_range", "path", "normals", "exr", "exposure",
+                  "tonemap"});
     if (f.has("path")) {
         out.path = f["path"].text();
         out.path_at = f["path"].where();
@@ -120,6 +121,9 @@ OutputDesc parse_output(const Field& f) {
                               std::to_string(out.height * side) + ") would be larger than " +
                               std::to_string(kMaxImageSide) + " on a side");
     }
+    if (f.has("exposure")) out.display.exposure = static_cast<float>(f["exposure"].number(-20, 20));
+    if (f.has("tonemap"))
+        out.display.tonemap = tonemap_from_name(f["tonemap"].choice({"none", "aces", "filmic"}));
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;

@@ -1,0 +1,102 @@
+#include "core/display_transform.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec3.hpp>
+
+#include "core/color.hpp"
+
+namespace facet {
+namespace {
+
+// ACES filmic tone curve as fitted by Krzysztof Narkowicz ("ACES Filmic
+// Tone Mapping Curve", 2015): a rational fit of the RRT+ODT luminance
+// response. His fit expects its input scaled by 0.6 so that scene middle
+// grey lands where the reference transform puts it.
+float aces_curve(float x) {
+    x *= 0.6f;
+    const float y = (x * (2.51f * x + 0.03f)) / (x * (2.43f * x + 0.59f) + 0.14f);
+    return std::clamp(y, 0.0f, 1.0f);
+}
+
+// An AgX-like filmic curve, our own: the value is encoded as stops around
+// middle grey (0.18) over [-10, +6.5] stops, where film's response lives,
+// passed through a logistic S-curve pinned to 0 and 1 at the ends of that
+// range, and the result (a display value) turned back to linear for the
+// sRGB encoder. Before the curve each channel is pulled 15% toward the
+// pixel's mean ("inset"), so that bright saturated colours move toward
+// white instead of skewing hue as each channel clips on its own.
+constexpr float kMinStops = -10.0f, kMaxStops = 6.5f;
+constexpr float kContrast = 9.0f;  // slope of the logistic over the unit range
+float logistic(float t) {
+    return 1.0f / (1.0f + std::exp(-kContrast * (t - 0.606f)));
+}
+
+float filmic_curve(float x) {
+    if (!(x > 0.0f)) return 0.0f;
+    const float stops = std::log2(x / 0.18f);
+    const float t = std::clamp((stops - kMinStops) / (kMaxStops - kMinStops), 0.0f, 1.0f);
+    const float lo = logistic(0.0f), hi = logistic(1.0f);
+    const float display = (logistic(t) - lo) / (hi - lo);
+    return srgb_to_linear(display);
+}
+
+glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
+    switch (tonemap) {
+        case Tonemap::none:
+            return c;
+        case Tonemap::aces:
+            return {aces_curve(c.r), aces_curve(c.g), aces_curve(c.b)};
+        case Tonemap::filmic: {
+            const float mean = (c.r + c.g + c.b) / 3.0f;
+            c += (glm::vec3(mean) - c) * 0.15f;
+            return {filmic_curve(c.r), filmic_curve(c.g), filmic_curve(c.b)};
+        }
+    }
+    return c;
+}
+
+}  // namespace
+
+Tonemap tonemap_from_name(std::string_view name) {
+    if (name == "aces") return Tonemap::aces;
+    if (name == "filmic") return Tonemap::filmic;
+    return Tonemap::none;
+}
+
+const char* tonemap_name(Tonemap tonemap) {
+    switch (tonemap) {
+        case Tonemap::aces:
+            return "aces";
+        case Tonemap::filmic:
+            return "filmic";
+        case Tonemap::none:
+            break;
+    }
+    return "none";
+}
+
+glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform) {
+    const float a = premultiplied.a;
+    if (!(a > 0.0f) || transform.is_identity()) return premultiplied;
+    // exp2 of a whole number of stops is exact, so +1 doubles exactly.
+    const float gain = std::exp2(transform.exposure);
+    const glm::vec3 straight = glm::vec3(premultiplied) / a * gain;
+    return {tone(straight, transform.tonemap) * a, a};
+}
+
+ColorImage apply_display_transform(const ColorImage& image, const DisplayTransform& transform) {
+    ColorImage out = image;
+    for (glm::vec4& c : out.pixels) c = display_color(c, transform);
+    return out;
+}
+
+HalfColorImage apply_display_transform(const HalfColorImage& image,
+                                       const DisplayTransform& transform) {
+    HalfColorImage out = image;
+    for (Rgba16F& c : out.pixels) c = to_half(display_color(to_float(c), transform));
+    return out;
+}
+
+}  // namespace facet

@@ -1,0 +1,37 @@
+#pragma once
+// Display transform: exposure and tone mapping for the files people look
+// at (PNG, video, contact sheets). EXR files stay scene-linear.
+#include <string_view>
+
+#include <glm/vec4.hpp>
+
+#include "core/half.hpp"
+#include "core/image.hpp"
+
+namespace facet {
+
+enum class Tonemap { none, aces, filmic };
+
+struct DisplayTransform {
+    float exposure = 0;  // stops: each one doubles the linear values
+    Tonemap tonemap = Tonemap::none;
+
+    bool is_identity() const { return exposure == 0 && tonemap == Tonemap::none; }
+};
+
+// "none", "aces", "filmic"; the parser checks the name first.
+Tonemap tonemap_from_name(std::string_view name);
+const char* tonemap_name(Tonemap tonemap);
+
+// One premultiplied linear colour, exposed and tone-mapped; alpha kept.
+// The curve applies to the straight colour, so a half-covered edge pixel
+// gets the same tone as the surface it belongs to.
+glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform);
+
+// The whole image, pixel by pixel. Callers skip the copy when the
+// transform is the identity.
+ColorImage apply_display_transform(const ColorImage& image, const DisplayTransform& transform);
+HalfColorImage apply_display_transform(const HalfColorImage& image,
+                                       const DisplayTransform& transform);
+
+}  // namespace facet

@@ -1,0 +1,129 @@
+// Exposure and tone mapping (output.exposure, output.tonemap): they change
+// the images people look at (PNG, video, sheets) and never the EXR files.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "core/color.hpp"
+#include "core/display_transform.hpp"
+#include "output/encoders.hpp"
+#include "output/manifest.hpp"
+#include "render/render_job.hpp"
+#include "render/world.hpp"
+#include "support.hpp"
+
+using namespace facet;
+
+namespace {
+
+struct RenderedFiles {
+    DecodedPng png;
+    DecodedExr exr;
+};
+
+// A lit sphere on a grey card: a spread of linear values, some above 0.5
+// so that doubling them clips.
+RenderedFiles render_with(const test::TempDir& dir, const std::string& name,
+                          const std::string& display) {
+    const std::string yaml =
+        "output: { size: [96, 64], formats: [png, exr], " + display +
+        " }\n"
+        "style: phong\n"
+        "camera: { position: [0, 0, 6], target: [0, 0, 0], fov: 40 }\n"
+        "lights: [{ type: directional, direction: [-1, -1, -1], intensity: 1.2 }]\n"
+        "objects:\n"
+        "  - { name: ball, primitive: { type: sphere, radius: 1.4 }, material: { color: [0.7, "
+        "0.4, 0.2] } }\n"
+        "  - { name: card, primitive: { type: cube, size: 1 }, scale: [8, 8, 0.1], translate: [0, "
+        "0, -2], material: { color: [0.3, 0.3, 0.3] } }\n";
+    SceneOptions scene_options;
+    scene_options.style_dirs = {FACET_STYLES_DIR};
+    const SceneDesc scene =
+        load_scene(test::write_text(dir.file(name + ".yaml"), yaml), scene_options);
+    const World world = build_world(scene);
+    RenderOptions options;
+    options.out_dir = dir.file("out");
+    options.threads = 2;
+    const RenderResult result = render_scene(scene, world, options, nullptr);
+    const Manifest manifest = read_manifest(result.manifest_path);
+    RenderedFiles files;
+    for (const ManifestFile& f : manifest.files) {
+        const std::string path = manifest_file_path(result.output_dir, f.path);
+        if (f.pass != "color") continue;
+        if (f.format == "png") files.png = read_png(path);
+        if (f.format == "exr") files.exr = read_exr(path);
+    }
+    return files;
+}
+
+// The 8-bit sRGB code of a linear value, as the PNG writer rounds it.
+int srgb_byte(double linear) {
+    return static_cast<int>(std::lround(linear_to_srgb(std::clamp(linear, 0.0, 1.0)) * 255.0));
+}
+
+}  // namespace
+
+TEST_CASE("exposure +1 doubles the linear values of the PNG and leaves the EXR alone",
+          "[display]") {
+    test::TempDir dir("exposure");
+    const RenderedFiles plain = render_with(dir, "plain", "exposure: 0");
+    const RenderedFiles brighter = render_with(dir, "brighter", "exposure: 1");
+    REQUIRE(plain.png.channels == 3);
+    REQUIRE(brighter.png.channels == 3);
+    // The EXR holds the scene-linear values either way.
+    REQUIRE(plain.exr.channel_names == brighter.exr.channel_names);
+    CHECK(plain.exr.channels == brighter.exr.channels);
+    int doubled = 0, clipped = 0;
+    const size_t pixels = plain.exr.channels[0].size();
+    for (int c = 0; c < 3; ++c) {
+        const auto at = std::find(plain.exr.channel_names.begin(), plain.exr.channel_names.end(),
+                                  std::string(1, "RGB"[c]));
+        REQUIRE(at != plain.exr.channel_names.end());
+        const std::vector<float>& linear =
+            plain.exr.channels[static_cast<size_t>(at - plain.exr.channel_names.begin())];
+        for (size_t p = 0; p < pixels; ++p) {
+            INFO("pixel " << p << " channel " << c << " linear " << linear[p]);
+            REQUIRE(plain.png.samples[p * 3 + c] == srgb_byte(linear[p]));
+            // Doubling a half float is exact: the PNG holds exactly 2x.
+            REQUIRE(brighter.png.samples[p * 3 + c] == srgb_byte(2.0 * linear[p]));
+            doubled += linear[p] > 0.01f && linear[p] < 0.5f;
+            clipped += linear[p] > 0.5f;
+        }
+    }
+    CHECK(doubled > 1000);  // the check saw real mid-tones
+    CHECK(clipped > 10);    // and values the exposure pushed past white
+}
+
+TEST_CASE("tone curves keep black, rise monotonically and roll off below white", "[display]") {
+    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic}) {
+        INFO(tonemap_name(curve));
+        const DisplayTransform t{0, curve};
+        CHECK(display_color({0, 0, 0, 1}, t) == glm::vec4(0, 0, 0, 1));
+        float previous = 0;
+        for (float x = 0.001f; x < 64.0f; x *= 1.05f) {
+            const float y = display_color({x, x, x, 1}, t).r;
+            CHECK(y >= previous);
+            CHECK(y <= 1.0f);
+            previous = y;
+        }
+        // Highlights that `none` clips keep distinct values.
+        CHECK(display_color({2, 2, 2, 1}, t).r < display_color({4, 4, 4, 1}, t).r);
+        CHECK(display_color({1, 1, 1, 1}, t).r < 1.0f);
+        // Grey stays grey.
+        const glm::vec4 grey = display_color({0.18f, 0.18f, 0.18f, 1}, t);
+        CHECK(grey.r == grey.g);
+        CHECK(grey.g == grey.b);
+        // The curve applies to the straight colour: an edge pixel half
+        // covered gets half the surface's displayed colour, alpha kept.
+        const glm::vec4 full = display_color({0.9f, 0.5f, 0.1f, 1}, t);
+        const glm::vec4 half = display_color({0.45f, 0.25f, 0.05f, 0.5f}, t);
+        for (int c = 0; c < 3; ++c) CHECK(half[c] == Approx(0.5f * full[c]).epsilon(1e-5));
+        CHECK(half.a == 0.5f);
+    }
+    // none with no exposure is the identity; a transparent pixel stays so.
+    const DisplayTransform identity;
+    CHECK(display_color({3, 0.5f, 0.25f, 1}, identity) == glm::vec4(3, 0.5f, 0.25f, 1));
+    CHECK(display_color({0, 0, 0, 0}, DisplayTransform{2, Tonemap::aces}) == glm::vec4(0));
+}
