@@ -4,6 +4,7 @@
 // FACET_UPDATE_BASELINES=1, then look at every image before keeping it.
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <filesystem>
 #include <set>
 #include <string>
@@ -120,6 +121,66 @@ int red_pixels_of_cube_wireframe(bool hidden) {
 TEST_CASE("wireframe hidden: true also draws the edges behind the surfaces", "[render][style]") {
     CHECK(red_pixels_of_cube_wireframe(false) == 0);
     CHECK(red_pixels_of_cube_wireframe(true) > 60);
+}
+
+namespace {
+
+// A dense sphere (128 x 64 segments, 16 k triangles) filling the middle of
+// a 160 x 160 image, white faces and black lines, with the silhouette
+// outline the shipped wireframe presets have (the wireframe alone draws
+// only the inner half of a contour edge, and at a smooth contour the
+// triangles along it are edge-on); the counts of line pixels inside 80%
+// of its radius and on its rim.
+struct SphereLines {
+    int inside = 0, rim = 0;
+};
+
+SphereLines wire_sphere_lines(const std::string& edges) {
+    facet::test::TempDir dir("wire-sphere");
+    const std::string text = R"(output: { size: [160, 160], background: [1, 1, 1, 1] }
+camera: { position: [0.3, 0.8, 4], target: [0, 0, 0], fov: 40 }
+objects:
+  - primitive: { type: sphere, radius: 1, segments: 128, rings: 64 }
+style:
+  shading: unlit
+  outlines: { silhouette: { width: 1.5, color: [0, 0, 0] } }
+  wireframe: { width: 1.5, color: [0, 0, 0], fill: color, fill_color: [1, 1, 1], edges: )" +
+                             edges + " }\n";
+    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
+    facet::SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const facet::SceneDesc scene = facet::load_scene(path, options);
+    const facet::World world = facet::build_world(scene);
+    facet::ThreadPool pool(2);
+    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameImages images;
+    renderer.render(1, 0, images);
+    const facet::ColorImage image = facet::to_float_image(images.color);
+    // The sphere's radius on screen: focal length times 1 / distance.
+    const float distance = std::sqrt(0.3f * 0.3f + 0.8f * 0.8f + 4.0f * 4.0f);
+    const float focal = 80.0f / std::tan(glm::radians(20.0f));
+    const float radius = focal * std::tan(std::asin(1.0f / distance));
+    SphereLines lines;
+    for (int y = 0; y < image.height; ++y)
+        for (int x = 0; x < image.width; ++x) {
+            const float r = std::hypot(x + 0.5f - 80.0f, y + 0.5f - 80.0f);
+            const bool line = image.at(x, y).r < 0.6f;
+            if (r < 0.8f * radius) lines.inside += line;
+            if (std::abs(r - radius) < 1.5f) lines.rim += line;
+        }
+    return lines;
+}
+
+}  // namespace
+
+// Wireframe draws what an illustrator draws: on a smooth dense mesh, the
+// silhouette only, not a moiré of every triangle edge.
+TEST_CASE("wireframe on a dense sphere draws only its silhouette", "[render][style]") {
+    const SphereLines features = wire_sphere_lines("features");
+    CHECK(features.inside == 0);
+    CHECK(features.rim > 150);  // most of the rim's circumference (about 330 pixels)
+    const SphereLines all = wire_sphere_lines("all");
+    CHECK(all.inside > 1000);  // `edges: all` keeps the full triangle wireframe
 }
 
 // Where a hidden edge meets a visible one (at the silhouette's corners),

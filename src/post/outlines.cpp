@@ -64,6 +64,10 @@ struct EdgeTest {
     uint8_t enabled;
 };
 
+// Relative 1/z by which a surface continued over an edge may still be in
+// front of the other and count as crossing it.
+constexpr float kCrossingTolerance = 1e-4f;
+
 // Flags for the pair (p, q); `p_out` and `q_out` are the pixels beyond p
 // and beyond q on the same line, or kOffImage.
 uint8_t classify_pair(const Surfaces& s, const EdgeTest& test, size_t p_out, size_t p, size_t q,
@@ -79,15 +83,24 @@ uint8_t classify_pair(const Surfaces& s, const EdgeTest& test, size_t p_out, siz
         if (far == kOffImage || id_near == kNoObject || s.id[far] != id_near) return iz_near;
         return 2.0f * iz_near - s.inverse_depth[far];
     };
-    const float miss_p = std::fabs(predict(p_out, iz_p, id_p) - iz_q);
-    const float miss_q = std::fabs(predict(q_out, iz_q, id_q) - iz_p);
+    const float continued_p = predict(p_out, iz_p, id_p), continued_q = predict(q_out, iz_q, id_q);
+    const float miss_p = std::fabs(continued_p - iz_q);
+    const float miss_q = std::fabs(continued_q - iz_p);
     const bool jump = std::min(miss_p, miss_q) > test.relative_jump * std::max(iz_p, iz_q);
+    // Two surfaces really cross where each, continued over the line, goes
+    // behind the other (a smaller 1/z). Along a silhouette close to another
+    // surface (an object just above a floor) the front one, continued,
+    // stays in front, so no intersection line is drawn there, however
+    // small the depth gap. The tolerance absorbs rounding on a flush contact.
+    const float behind_tolerance = kCrossingTolerance * std::max(iz_p, iz_q);
+    const bool crossing =
+        continued_p <= iz_q + behind_tolerance && continued_q <= iz_p + behind_tolerance;
 
     uint8_t flags = 0;
     if (jump) flags |= edge_bit(LineKind::silhouette, with_lower);
     if (id_p != id_q) flags |= edge_bit(LineKind::boundary, with_lower);
     if (p_surface && q_surface && !jump) {
-        if (id_p != id_q) flags |= edge_bit(LineKind::intersection, with_lower);
+        if (id_p != id_q && crossing) flags |= edge_bit(LineKind::intersection, with_lower);
         if (test.enabled & both_directions(LineKind::crease)) {
             const glm::vec3& np = s.normal[p];
             const glm::vec3& nq = s.normal[q];

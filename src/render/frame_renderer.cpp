@@ -42,6 +42,7 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       // Tiles hold whole pixels of the k x k sample grid.
       rasterizer_(scene.output.width * side_, scene.output.height * side_,
                   kTileSize - kTileSize % side_),
+      feature_edges_(world),
       hidden_edges_(world),
       coverage_tested_(coverage_tested_triangles(world)) {
     if (scene.output.writes(Pass::motion)) previous_.emplace(scene, world);
@@ -80,7 +81,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         if (want_lines || plan.hidden_edges)
             fit(sample_lines_, rasterizer_.width(), rasterizer_.height());
     }
-    const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_};
+    const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);
+    const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_, edge_mask};
     ShadeTarget shade_out{
         per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
         per_sample ? sample_depth_ : out.depth,
@@ -115,9 +117,9 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         alpha.test());
     if (!per_sample) return;
     ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
-    if (plan.hidden_edges && !world_.edge_mask.empty())
-        hidden_edges_.draw(vertices.clip, inputs, plan, side_, sample_depth_, sample_color_,
-                           sample_lines_);
+    if (plan.hidden_edges && !edge_mask.empty())
+        hidden_edges_.draw(vertices.clip, inputs, plan, edge_mask, side_, sample_depth_,
+                           sample_color_, sample_lines_);
     if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_, lines);
     resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
                          {out.color, out.depth, want_alpha ? &out.alpha : nullptr,

@@ -13,6 +13,7 @@
 #include "core/image.hpp"
 #include "core/thread_pool.hpp"
 #include "raster/rasterizer.hpp"
+#include "render/feature_edge_stage.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/hidden_edge_stage.hpp"
 #include "render/outline_stage.hpp"
@@ -55,6 +56,7 @@ class FrameRenderer {
     ShadowStage shadows_;
     VertexStage vertices_;
     Rasterizer rasterizer_;
+    FeatureEdgeStage feature_edges_;
     HiddenEdgeStage hidden_edges_;
     OutlineStage outlines_;
     // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).

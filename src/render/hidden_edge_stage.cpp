@@ -17,8 +17,9 @@ constexpr float kHiddenDepthTolerance = 1e-2f;
 }  // namespace
 
 void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& frame,
-                           const StylePlan& plan, int samples_per_side, const DepthImage& depth,
-                           ColorImage& color, ColorImage& lines) {
+                           const StylePlan& plan, std::span<const uint8_t> edge_mask,
+                           int samples_per_side, const DepthImage& depth, ColorImage& color,
+                           ColorImage& lines) {
     const int width = color.width, height = color.height;
     coverage_.assign(static_cast<size_t>(width) * height, 0.0f);
     line_color_.assign(static_cast<size_t>(width) * height, glm::vec3(0));
@@ -44,7 +45,7 @@ void HiddenEdgeStage::draw(std::span<const glm::vec4> clip, const FrameInputs& f
         if (!style.wireframe || !style.wire_hidden) continue;
         const float half = 0.5f * style.wire.width * static_cast<float>(samples_per_side);
         for (int e = 0; e < 3; ++e) {
-            if (!(world_.edge_mask[tri] & (1u << e))) continue;
+            if (!(edge_mask[tri] & (1u << e))) continue;
             glm::vec4 a = clip[world_.indices[3 * tri + (e + 1) % 3]];
             glm::vec4 b = clip[world_.indices[3 * tri + (e + 2) % 3]];
             if (!clip_segment_to_near(a, b)) continue;

@@ -18,13 +18,15 @@ class HiddenEdgeStage {
   public:
     explicit HiddenEdgeStage(const World& world) : world_(world) {}
 
-    // `clip` holds every world vertex in clip space; `depth` and `color` are
+    // `clip` holds every world vertex in clip space; `edge_mask` the edges
+    // to draw (render/feature_edge_stage.hpp); `depth` and `color` are
     // the shaded images at sample resolution (`samples_per_side` per pixel
     // side). `lines` holds the visible strokes the shading stage drew
     // (premultiplied RGBA, per sample): hidden edges go under them, so a
     // visible line always wins where the two meet, and are added to them.
     void draw(std::span<const glm::vec4> clip, const FrameInputs& frame, const StylePlan& plan,
-              int samples_per_side, const DepthImage& depth, ColorImage& color, ColorImage& lines);
+              std::span<const uint8_t> edge_mask, int samples_per_side, const DepthImage& depth,
+              ColorImage& color, ColorImage& lines);
 
   private:
     const World& world_;

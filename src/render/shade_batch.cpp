@@ -246,9 +246,9 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         LayerInputs& l = out[i];
         l = LayerInputs{b.lanes.albedo_at(i), glm::vec2(0), 0.0f, 0.0f};
         const SurfaceSample s = pixel_sample(b, i, side);
-        if (style.wireframe && !in.world.edge_mask.empty())
+        if (style.wireframe && !in.edge_mask.empty())
             l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
-                                   in.world.edge_mask[s.triangle]);
+                                   in.edge_mask[s.triangle]);
         if (!style.hatching) continue;
         const HatchingState& h = *style.hatching;
         const float size = static_cast<float>(h.tam->params.size);

@@ -29,6 +29,9 @@ struct ShadeInputs {
     const TransformedVertices& vertices;
     std::span<const ShadeLight> lights;
     int samples_per_side;  // k: the rasterizer runs at k times the output's width and height
+    // Per triangle, this frame's wireframe edges (render/feature_edge_stage.hpp);
+    // empty without wireframes.
+    std::span<const uint8_t> edge_mask;
 };
 
 // One of two kinds of target: finished pixels (`pixels` set, `depth` of the

@@ -72,6 +72,8 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         s.wire.color = evaluate(d.wireframe.color, at);
         s.wire_fill_shading = d.wireframe.fill_shading;
         s.wire_hidden = d.wireframe.hidden;
+        s.wire_all_edges = d.wireframe.all_edges;
+        s.wire_crease_cosine = std::cos(glm::radians(d.wireframe.crease_angle));
         s.wire_hidden_color = evaluate(d.wireframe.hidden_color, at);
         s.wire_fill = evaluate(d.wireframe.fill_color, at);
     }

@@ -1,7 +1,9 @@
 #include "render/world.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 
 #include <glm/geometric.hpp>
@@ -47,17 +49,26 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     return m;
 }
 
-// Faces whose normals differ by less than this are one flat polygon.
-constexpr float kCoplanarCosine = 0.9998f;  // about 1 degree
-
-// Feature-edge bits for a part's triangles (see World::edge_mask). Edges are
-// matched by their end positions, so split vertices (seams) still pair up.
-void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
-    using Point = std::array<float, 3>;
+// Edge neighbours and fold cosines of a part's triangles (see
+// World::edge_neighbor), whose first triangle has the world index `first`.
+// Edges are matched by their end positions, so split vertices (seams)
+// still pair up; positions are snapped to a millionth of the part's size
+// first, because a seam's two copies are often computed apart (cos 0 and
+// cos 2π differ in the last bit) and would read as a boundary.
+void append_edge_adjacency(const MeshPart& part, uint32_t first, World& world) {
+    using Point = std::array<int64_t, 3>;
     using EdgeKey = std::pair<Point, Point>;
+    glm::vec3 lo(std::numeric_limits<float>::max()), hi(std::numeric_limits<float>::lowest());
+    for (const glm::vec3& p : part.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const float extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
+    const double cell = extent > 0 && std::isfinite(extent) ? extent * 1e-6 : 1.0;
     auto point = [&](uint32_t i) {
         const glm::vec3& p = part.positions[i];
-        return Point{p.x, p.y, p.z};
+        auto snap = [&](float v) { return static_cast<int64_t>(std::llround(v / cell)); };
+        return Point{snap(p.x), snap(p.y), snap(p.z)};
     };
     auto key = [&](uint32_t a, uint32_t b) {
         Point pa = point(a), pb = point(b);
@@ -76,16 +87,18 @@ void append_edge_masks(const MeshPart& part, std::vector<uint8_t>& masks) {
     }
     for (uint32_t t = 0; t < triangles; ++t) {
         const uint32_t* v = &part.indices[3 * t];
-        uint8_t mask = 0;
         for (int e = 0; e < 3; ++e) {
             const auto& faces = edge_faces[key(v[(e + 1) % 3], v[(e + 2) % 3])];
-            bool feature = faces.size() != 2;
-            for (uint32_t other : faces)
-                if (other != t && glm::dot(face_normal[t], face_normal[other]) < kCoplanarCosine)
-                    feature = true;
-            if (feature) mask |= static_cast<uint8_t>(1u << e);
+            uint32_t neighbor = World::kNoNeighbor;
+            float cosine = -2.0f;
+            if (faces.size() == 2) {
+                const uint32_t other = faces[0] == t ? faces[1] : faces[0];
+                neighbor = first + other;
+                cosine = glm::dot(face_normal[t], face_normal[other]);
+            }
+            world.edge_neighbor.push_back(neighbor);
+            world.edge_cosine.push_back(cosine);
         }
-        masks.push_back(mask);
     }
 }
 
@@ -260,7 +273,10 @@ World build_world(const SceneDesc& scene) {
             world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);
             world.cull_back.resize(world.cull_back.size() + d.triangle_count,
                                    world.materials[d.material].double_sided ? 0 : 1);
-            if (wireframes) append_edge_masks(part, world.edge_mask);
+            if (wireframes)
+                append_edge_adjacency(
+                    part, static_cast<uint32_t>(world.triangle_draw.size() - d.triangle_count),
+                    world);
             world.draws.push_back(d);
         }
     }

@@ -80,11 +80,15 @@ struct World {
     std::vector<uint32_t> indices;        // global vertex indices, three per triangle
     std::vector<uint32_t> triangle_draw;  // per triangle
     std::vector<uint8_t> cull_back;       // per triangle
-    // Per triangle, bit i set when the edge opposite vertex i is a feature
-    // edge (a mesh boundary, or a fold between faces that are not coplanar);
-    // wireframes draw those and skip the diagonals that split flat polygons.
-    // Filled only when some style draws wireframes, else empty.
-    std::vector<uint8_t> edge_mask;
+    // Per triangle edge, three per triangle (edge i opposite vertex i): the
+    // triangle across it, kNoNeighbor at a mesh boundary or where more than
+    // two faces meet, and the cosine of the angle between the two faces'
+    // normals at rest (-2 without a neighbour). The wireframe's edges are
+    // picked from these each frame (render/feature_edge_stage.hpp). Filled
+    // only when some style draws wireframes, else empty.
+    static constexpr uint32_t kNoNeighbor = 0xffffffffu;
+    std::vector<uint32_t> edge_neighbor;
+    std::vector<float> edge_cosine;
 
     size_t triangle_count() const { return triangle_draw.size(); }
 };

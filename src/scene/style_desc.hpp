@@ -86,6 +86,11 @@ struct WireframeDesc {
     Animated<glm::vec3> color = glm::vec3(0);
     bool hidden = false;  // also draw edges behind surfaces
     Animated<glm::vec3> hidden_color = glm::vec3(0.6f);
+    // Which edges: the features an illustrator draws (silhouettes, creases
+    // sharper than `crease_angle`, boundaries), or every triangle edge but
+    // the diagonals inside flat polygons.
+    bool all_edges = false;
+    float crease_angle = 30.0f;  // degrees between the faces' normals
     // What the faces show: their shading, or one flat colour (wireframe "alone").
     bool fill_shading = true;
     Animated<glm::vec3> fill_color = glm::vec3(1);

@@ -149,7 +149,8 @@ void apply_wireframe(const Field& f, WireframeDesc& w) {
         w.enabled = f.boolean();
         return;
     }
-    f.check_keys({"enabled", "width", "color", "hidden", "hidden_color", "fill", "fill_color"});
+    f.check_keys({"enabled", "width", "color", "hidden", "hidden_color", "fill", "fill_color",
+                  "edges", "crease_angle"});
     w.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
     if (f.has("width")) w.width = f["width"].animated_number(0.25, 64);
     if (f.has("color")) w.color = f["color"].animated_color3();
@@ -157,6 +158,9 @@ void apply_wireframe(const Field& f, WireframeDesc& w) {
     if (f.has("hidden_color")) w.hidden_color = f["hidden_color"].animated_color3();
     if (f.has("fill")) w.fill_shading = f["fill"].choice({"shading", "color"}) == "shading";
     if (f.has("fill_color")) w.fill_color = f["fill_color"].animated_color3();
+    if (f.has("edges")) w.all_edges = f["edges"].choice({"features", "all"}) == "all";
+    if (f.has("crease_angle"))
+        w.crease_angle = static_cast<float>(f["crease_angle"].number(0, 180));
 }
 
 bool looks_like_path(const std::string& text) {

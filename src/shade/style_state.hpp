@@ -36,7 +36,9 @@ struct StyleState {
     bool wireframe = false;
     WireframeStyle wire;
     bool wire_fill_shading = true;
-    bool wire_hidden = false;  // also draw edges behind surfaces
+    bool wire_hidden = false;         // also draw edges behind surfaces
+    bool wire_all_edges = false;      // every edge, not only the features
+    float wire_crease_cosine = 0.0f;  // folds whose normals' cosine is below this are creases
     glm::vec3 wire_hidden_color{0.6f};
     glm::vec3 wire_fill{1};
 };
