@@ -39,6 +39,7 @@ StylePlan plan_styles(const SceneDesc& scene) {
             plan.hidden_edges || (style->wireframe.enabled && style->wireframe.hidden);
     }
     plan.outlines = scene.style.outlines.any();
+    plan.occlusion = scene.style.occlusion.enabled;
     return plan;
 }
 
@@ -86,6 +87,10 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     if (plan_.outlines)
         in.outlines =
             evaluate_outlines(scene_.style.outlines, at, static_cast<float>(samples_per_side_));
+    if (plan_.occlusion) {
+        const OcclusionDesc& o = scene_.style.occlusion;
+        in.occlusion = {facet::evaluate(o.radius, at), facet::evaluate(o.strength, at), o.samples};
+    }
     // Given straight, used premultiplied like every colour in the frame.
     const glm::vec4 background = scene_.style.background.value_or(scene_.output.background);
     in.background = glm::vec4(glm::vec3(background) * background.a, background.a);

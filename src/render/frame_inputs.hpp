@@ -9,6 +9,7 @@
 #include <glm/vec4.hpp>
 
 #include "anim/frame_state.hpp"
+#include "post/ambient_occlusion.hpp"
 #include "post/outlines.hpp"
 #include "render/camera.hpp"
 #include "render/style_eval.hpp"
@@ -25,6 +26,7 @@ struct StylePlan {
     bool any_gouraud = false;            // some style lights vertices
     bool hidden_edges = false;           // some style draws hidden wireframe edges
     bool outlines = false;               // the scene's style draws outlines
+    bool occlusion = false;              // the scene's style darkens corners (ambient occlusion)
 };
 
 StylePlan plan_styles(const SceneDesc& scene);
@@ -35,6 +37,7 @@ struct FrameInputs {
     std::vector<Material> materials;  // the world's, with this frame's animated values
     std::vector<StyleState> styles;   // StylePlan::styles at this frame
     OutlineStyle outlines;            // when StylePlan::outlines; widths in sample pixels
+    OcclusionStyle occlusion;         // when StylePlan::occlusion
     glm::vec4 background;             // linear RGBA behind everything, premultiplied
     // Near..far of the visible scene's bounding sphere, for grey depth
     // views (the depth PNG, unless output.depth_range is set).

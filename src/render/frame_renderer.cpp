@@ -73,7 +73,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const bool want_alpha = passes.has(Pass::alpha), want_lines = passes.has(Pass::lines);
     if (want_alpha) fit(out.alpha, width, height);
     if (want_lines) fit(out.lines, width, height);
-    const bool per_sample = plan.outlines || plan.hidden_edges || want_lines;
+    const bool want_gbuffer = plan.outlines || plan.occlusion;
+    const bool per_sample = want_gbuffer || plan.hidden_edges || want_lines;
     if (per_sample) {
         fit(sample_color_, rasterizer_.width(), rasterizer_.height());
         fit(sample_depth_, rasterizer_.width(), rasterizer_.height());
@@ -83,10 +84,12 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     }
     const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);
     const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_, edge_mask};
-    ShadeTarget shade_out{
-        per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
-        per_sample ? sample_depth_ : out.depth,
-        plan.outlines ? &outlines_.gbuffer(rasterizer_.width(), rasterizer_.height()) : nullptr};
+    if (want_gbuffer &&
+        (gbuffer_.width != rasterizer_.width() || gbuffer_.height != rasterizer_.height()))
+        gbuffer_.reset(rasterizer_.width(), rasterizer_.height());
+    ShadeTarget shade_out{per_sample ? nullptr : &out.color, per_sample ? &sample_color_ : nullptr,
+                          per_sample ? sample_depth_ : out.depth,
+                          want_gbuffer ? &gbuffer_ : nullptr};
     if (want_alpha && !per_sample) shade_out.pixels_over_nothing = &out.alpha;
     if (want_lines || (per_sample && plan.hidden_edges)) shade_out.line_samples = &sample_lines_;
 
@@ -117,10 +120,12 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
         alpha.test());
     if (!per_sample) return;
     ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
+    if (plan.occlusion)
+        occlusion_.apply(gbuffer_, inputs.camera, inputs.occlusion, sample_color_, pool_);
     if (plan.hidden_edges && !edge_mask.empty())
         hidden_edges_.draw(vertices.clip, inputs, plan, edge_mask, side_, sample_depth_,
                            sample_color_, sample_lines_);
-    if (plan.outlines) outlines_.draw(inputs.outlines, sample_color_, pool_, lines);
+    if (plan.outlines) outlines_.draw(inputs.outlines, gbuffer_, sample_color_, pool_, lines);
     resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
                          {out.color, out.depth, want_alpha ? &out.alpha : nullptr,
                           want_lines ? &out.lines : nullptr},

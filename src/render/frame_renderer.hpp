@@ -16,6 +16,7 @@
 #include "render/feature_edge_stage.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/hidden_edge_stage.hpp"
+#include "render/occlusion_stage.hpp"
 #include "render/outline_stage.hpp"
 #include "render/pose_stage.hpp"
 #include "render/previous_frame_stage.hpp"
@@ -58,6 +59,8 @@ class FrameRenderer {
     Rasterizer rasterizer_;
     FeatureEdgeStage feature_edges_;
     HiddenEdgeStage hidden_edges_;
+    OutlineBuffers gbuffer_;  // depth, normal and object per sample, for 7c and 9
+    OcclusionStage occlusion_;
     OutlineStage outlines_;
     // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).
     std::vector<uint8_t> coverage_tested_;

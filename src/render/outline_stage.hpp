@@ -10,16 +10,12 @@ namespace facet {
 
 class OutlineStage {
   public:
-    // The G-buffer for this frame's shading, `width` x `height` samples.
-    OutlineBuffers& gbuffer(int width, int height);
-
     // Lines from the G-buffer over `color` (the same size), and over
     // `lines` (premultiplied strokes alone, the lines pass) when given.
-    void draw(const OutlineStyle& style, ColorImage& color, ThreadPool& pool,
-              ColorImage* lines = nullptr);
+    void draw(const OutlineStyle& style, const OutlineBuffers& gbuffer, ColorImage& color,
+              ThreadPool& pool, ColorImage* lines = nullptr);
 
   private:
-    OutlineBuffers buffers_;
     OutlineScratch scratch_;
     ColorImage lines_;
 };

@@ -281,7 +281,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return style_of[a] < style_of[b]; });
     ShadeBatch b;
-    b.want_normal = in.plan.outlines;  // the G-buffer keeps the normal
+    b.want_normal = in.plan.outlines || in.plan.occlusion;  // the G-buffer keeps the normal
     b.want_wire = want_wire;
     int fragment[kLanes];
     for (int first = 0; first < f.count;) {

@@ -80,6 +80,15 @@ struct OutlinesDesc {
     }
 };
 
+// Screen-space ambient occlusion over the shading (post/ambient_occlusion.hpp):
+// corners and contacts darken, which grounds a model on its floor.
+struct OcclusionDesc {
+    bool enabled = false;
+    Animated<float> radius = 0.5f;    // scene units
+    Animated<float> strength = 1.0f;  // 0 none, 1 the paper's
+    int samples = 16;                 // taps per sample
+};
+
 struct WireframeDesc {
     bool enabled = false;
     Animated<float> width = 1.0f;
@@ -126,6 +135,7 @@ struct StyleDesc {
     ToonDesc toon;
     std::optional<HatchingDesc> hatching;
     OutlinesDesc outlines;
+    OcclusionDesc occlusion;
     WireframeDesc wireframe;
 
     std::vector<std::string> chain;  // the presets it extends, nearest last

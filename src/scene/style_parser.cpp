@@ -144,6 +144,18 @@ void apply_outlines(const Field& f, OutlinesDesc& o) {
         o.depth_threshold = static_cast<float>(f["depth_threshold"].number(0.0001, 10));
 }
 
+void apply_occlusion(const Field& f, OcclusionDesc& o) {
+    if (f.is_scalar()) {
+        o.enabled = f.boolean();
+        return;
+    }
+    f.check_keys({"enabled", "radius", "strength", "samples"});
+    o.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
+    if (f.has("radius")) o.radius = f["radius"].animated_number(0.001, 1000);
+    if (f.has("strength")) o.strength = f["strength"].animated_number(0, 10);
+    if (f.has("samples")) o.samples = f["samples"].integer(4, 64);
+}
+
 void apply_wireframe(const Field& f, WireframeDesc& w) {
     if (f.is_scalar()) {
         w.enabled = f.boolean();
@@ -203,10 +215,11 @@ const char* shading_model_name(ShadingModel model) {
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,
                        std::vector<std::string>& visiting) {
-    f.check_keys({"name",       "description", "extends",   "shading",  "depth_range", "base_color",
-                  "background", "shadows",     "palette",   "cool",     "warm",        "alpha",
-                  "beta",       "ambient",     "cels",      "specular", "shininess",   "toon",
-                  "hatching",   "outlines",    "wireframe", "cel_color"});
+    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range",
+                  "base_color", "background",  "shadows",  "palette",  "cool",
+                  "warm",       "alpha",       "beta",     "ambient",  "cels",
+                  "specular",   "shininess",   "toon",     "hatching", "outlines",
+                  "wireframe",  "cel_color",   "occlusion"});
     if (f.has("extends")) {
         const std::string path = find_style(f["extends"], context.base_dir, context.style_dirs);
         if (std::find(visiting.begin(), visiting.end(), path) != visiting.end())
@@ -259,6 +272,7 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
     if (f.has("hatching")) apply_hatching(f["hatching"], style.hatching);
     if (f.has("outlines")) apply_outlines(f["outlines"], style.outlines);
     if (f.has("wireframe")) apply_wireframe(f["wireframe"], style.wireframe);
+    if (f.has("occlusion")) apply_occlusion(f["occlusion"], style.occlusion);
 }
 
 namespace {

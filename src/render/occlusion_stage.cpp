@@ -1,0 +1,17 @@
+#include "render/occlusion_stage.hpp"
+
+namespace facet {
+
+void OcclusionStage::apply(const OutlineBuffers& gbuffer, const CameraMatrices& camera,
+                           const OcclusionStyle& style, ColorImage& samples, ThreadPool& pool) {
+    ambient_occlusion(gbuffer, camera.view, camera.projection, style, factor_, scratch_, pool);
+    pool.parallel_for(static_cast<size_t>(samples.height), [&](size_t row) {
+        const size_t first = row * static_cast<size_t>(samples.width);
+        for (size_t i = first; i < first + static_cast<size_t>(samples.width); ++i) {
+            glm::vec4& c = samples.pixels[i];
+            c = glm::vec4(glm::vec3(c) * factor_[i], c.a);
+        }
+    });
+}
+
+}  // namespace facet

@@ -1,0 +1,80 @@
+// Ambient occlusion (style `occlusion`): corners and contacts darken, open
+// faces keep their colour, and the result is the same for any thread count.
+#include <catch2/catch.hpp>
+
+#include <string>
+
+#include <glm/mat4x4.hpp>
+
+#include "core/half.hpp"
+#include "core/thread_pool.hpp"
+#include "render/frame_renderer.hpp"
+#include "render/world.hpp"
+#include "support.hpp"
+
+namespace {
+
+// A white floor and a wall standing on it across z = -1 (its front face at
+// z = -0.9), unlit, seen from the front and above.
+facet::FrameImages render_corner(const std::string& occlusion, unsigned threads) {
+    facet::test::TempDir dir("occlusion");
+    const std::string text = R"(output: { size: [240, 160], samples: 4, background: [0, 0, 0, 1] }
+camera: { position: [0, 2.2, 4], target: [0, 0.2, -0.5], fov: 40 }
+style: { shading: unlit, occlusion: )" +
+                             occlusion +
+                             R"( }
+objects:
+  - name: floor
+    primitive: { type: plane, size: 8 }
+    material: { color: [0.8, 0.8, 0.8] }
+  - name: wall
+    primitive: { type: cube, size: 1 }
+    scale: [4, 2, 0.2]
+    translate: [0, 1, -1]
+    material: { color: [0.8, 0.8, 0.8] }
+)";
+    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
+    facet::SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const facet::SceneDesc scene = facet::load_scene(path, options);
+    const facet::World world = facet::build_world(scene);
+    facet::ThreadPool pool(threads);
+    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameImages images;
+    renderer.render(1, 0, images);
+    return images;
+}
+
+// The red value of the pixel that shows world point p.
+float value_at(const facet::FrameImages& images, glm::vec3 p) {
+    const glm::vec4 clip = images.projection * images.view * glm::vec4(p, 1.0f);
+    const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(images.color.width);
+    const float y = (0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(images.color.height);
+    return facet::to_float(images.color.at(static_cast<int>(x), static_cast<int>(y))).r;
+}
+
+}  // namespace
+
+TEST_CASE("occlusion darkens the corner where a wall meets the floor, not open faces",
+          "[render][occlusion]") {
+    const facet::FrameImages plain = render_corner("false", 2);
+    const facet::FrameImages occluded = render_corner("{ radius: 0.5 }", 2);
+    const glm::vec3 corner(0.3f, 0.0f, -0.85f);    // floor, 5 cm in front of the wall
+    const glm::vec3 open_floor(0.3f, 0.0f, 1.2f);  // floor, 2 m in front of it
+    const glm::vec3 open_wall(0.3f, 1.6f, -0.9f);  // the wall's face, 1.6 m up
+    REQUIRE(value_at(plain, corner) == Approx(0.8f).margin(0.01));
+    CHECK(value_at(occluded, corner) < 0.8f * value_at(plain, corner));
+    CHECK(value_at(occluded, open_floor) == Approx(value_at(plain, open_floor)).margin(0.01));
+    CHECK(value_at(occluded, open_wall) == Approx(value_at(plain, open_wall)).margin(0.01));
+    // Darker the nearer the corner.
+    CHECK(value_at(occluded, corner) < value_at(occluded, {0.3f, 0.0f, -0.6f}));
+    // Strength scales it: none at 0.
+    const facet::FrameImages none = render_corner("{ radius: 0.5, strength: 0 }", 2);
+    CHECK(facet::to_float_image(none.color).pixels == facet::to_float_image(plain.color).pixels);
+}
+
+TEST_CASE("occlusion is the same for any thread count", "[render][occlusion]") {
+    const facet::FrameImages one = render_corner("{ radius: 0.5 }", 1);
+    const facet::FrameImages three = render_corner("{ radius: 0.5 }", 3);
+    CHECK(facet::to_float_image(one.color).pixels == facet::to_float_image(three.color).pixels);
+}
