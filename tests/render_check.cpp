@@ -19,8 +19,6 @@
 namespace facet::test {
 namespace fs = std::filesystem;
 
-namespace {
-
 FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
     const World world = build_world(scene);
     ThreadPool pool(threads);
@@ -29,6 +27,16 @@ FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
     renderer.render(frame, 0, images);
     return images;
 }
+
+FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame,
+                        unsigned threads) {
+    SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const std::string path = write_text((fs::path(folder) / "scene.yaml").string(), yaml);
+    return render_images(load_scene(path, options), frame, threads);
+}
+
+namespace {
 
 // The pass's picture: its PNG view, or for the float-only passes one made
 // here. Position: each axis from [-4, 4] m to [0, 1]; motion: 0.5 plus

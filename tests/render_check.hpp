@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "core/image.hpp"
+#include "render/frame_renderer.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet::test {
@@ -33,5 +34,14 @@ void check_render(const RenderCase& c);
 // One frame of a loaded scene, rendered on `threads` threads, as linear
 // float colour (for tests that compute what each pixel must be).
 ColorImage render_color(const SceneDesc& scene, int frame = 1, unsigned threads = 1);
+
+// Every image of one frame of a loaded scene.
+FrameImages render_images(const SceneDesc& scene, int frame = 1, unsigned threads = 2);
+
+// The same for a scene given as YAML text: written to `folder`/scene.yaml
+// (so relative asset paths resolve there) and loaded with the shipped
+// styles.
+FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame = 1,
+                        unsigned threads = 2);
 
 }  // namespace facet::test

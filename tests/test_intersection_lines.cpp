@@ -6,9 +6,7 @@
 #include <string>
 
 #include "core/half.hpp"
-#include "core/thread_pool.hpp"
-#include "render/frame_renderer.hpp"
-#include "render/world.hpp"
+#include "render_check.hpp"
 #include "support.hpp"
 
 namespace {
@@ -40,16 +38,8 @@ objects:
     material: { color: [1, 1, 1] }
     translate: [0, )" + std::to_string(cube_y) +
                              ", 0]\n";
-    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
-    facet::SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    const facet::SceneDesc scene = facet::load_scene(path, options);
-    const facet::World world = facet::build_world(scene);
-    facet::ThreadPool pool(2);
-    facet::FrameRenderer renderer(scene, world, pool);
-    facet::FrameImages images;
-    renderer.render(1, 0, images);
-    const facet::ColorImage image = facet::to_float_image(images.color);
+    const facet::ColorImage image =
+        facet::to_float_image(facet::test::render_yaml(dir.path(), text).color);
     RedLines red;
     for (int y = 0; y < image.height; ++y)
         for (int x = 0; x < image.width; ++x) {

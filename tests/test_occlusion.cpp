@@ -7,9 +7,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "core/half.hpp"
-#include "core/thread_pool.hpp"
-#include "render/frame_renderer.hpp"
-#include "render/world.hpp"
+#include "render_check.hpp"
 #include "support.hpp"
 
 namespace {
@@ -33,16 +31,7 @@ objects:
     translate: [0, 1, -1]
     material: { color: [0.8, 0.8, 0.8] }
 )";
-    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
-    facet::SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    const facet::SceneDesc scene = facet::load_scene(path, options);
-    const facet::World world = facet::build_world(scene);
-    facet::ThreadPool pool(threads);
-    facet::FrameRenderer renderer(scene, world, pool);
-    facet::FrameImages images;
-    renderer.render(1, 0, images);
-    return images;
+    return facet::test::render_yaml(dir.path(), text, 1, threads);
 }
 
 // The red value of the pixel that shows world point p.

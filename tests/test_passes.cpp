@@ -13,6 +13,7 @@
 #include "render/frame_renderer.hpp"
 #include "render/render_job.hpp"
 #include "render/world.hpp"
+#include "render_check.hpp"
 #include "render_hashes.hpp"
 #include "support.hpp"
 
@@ -52,14 +53,7 @@ SceneOptions with_styles() {
 
 FrameImages render_text(const test::TempDir& dir, const std::string& yaml, int frame,
                         unsigned threads = 2) {
-    const SceneDesc scene =
-        load_scene(test::write_text(dir.file("scene.yaml"), yaml), with_styles());
-    const World world = build_world(scene);
-    ThreadPool pool(threads);
-    FrameRenderer renderer(scene, world, pool);
-    FrameImages images;
-    renderer.render(frame, 0, images);
-    return images;
+    return test::render_yaml(dir.path(), yaml, frame, threads);
 }
 
 // The image centre is at (100, 50); q is a pixel centre relative to it, y up.

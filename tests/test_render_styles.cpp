@@ -87,16 +87,7 @@ facet::ColorImage cube_wireframe(bool hidden) {
     facet::test::TempDir dir("wire-hidden");
     const std::string text =
         std::string(kWireCube) + "    hidden: " + (hidden ? "true" : "false") + "\n";
-    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
-    facet::SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    const facet::SceneDesc scene = facet::load_scene(path, options);
-    const facet::World world = facet::build_world(scene);
-    facet::ThreadPool pool(1);
-    facet::FrameRenderer renderer(scene, world, pool);
-    facet::FrameImages images;
-    renderer.render(1, 0, images);
-    return facet::to_float_image(images.color);
+    return facet::to_float_image(facet::test::render_yaml(dir.path(), text, 1, 1).color);
 }
 
 bool is_black(const glm::vec4& c) {
@@ -146,16 +137,8 @@ style:
   outlines: { silhouette: { width: 1.5, color: [0, 0, 0] } }
   wireframe: { width: 1.5, color: [0, 0, 0], fill: color, fill_color: [1, 1, 1], edges: )" +
                              edges + " }\n";
-    const std::string path = facet::test::write_text(dir.file("s.yaml"), text);
-    facet::SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
-    const facet::SceneDesc scene = facet::load_scene(path, options);
-    const facet::World world = facet::build_world(scene);
-    facet::ThreadPool pool(2);
-    facet::FrameRenderer renderer(scene, world, pool);
-    facet::FrameImages images;
-    renderer.render(1, 0, images);
-    const facet::ColorImage image = facet::to_float_image(images.color);
+    const facet::ColorImage image =
+        facet::to_float_image(facet::test::render_yaml(dir.path(), text).color);
     // The sphere's radius on screen: focal length times 1 / distance.
     const float distance = std::sqrt(0.3f * 0.3f + 0.8f * 0.8f + 4.0f * 4.0f);
     const float focal = 80.0f / std::tan(glm::radians(20.0f));
