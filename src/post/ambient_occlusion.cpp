@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/integer_hash.hpp"
@@ -24,14 +25,18 @@ bool is_surface(float depth) {
 
 // View-space position of the buffer sample (x, y) at linear depth `depth`,
 // for a perspective or an orthographic projection.
+// `centre` is where in its cell the buffer's value was taken (0.5: the
+// middle; a pixel-level buffer made from each pixel's first sample of k x k
+// has it at 0.5 / k).
 struct Unproject {
     float width, height;
     glm::mat4 projection;
     bool orthographic;
+    float centre;
 
     glm::vec3 operator()(float x, float y, float depth) const {
-        const float ndc_x = (x + 0.5f) / width * 2.0f - 1.0f;
-        const float ndc_y = 1.0f - (y + 0.5f) / height * 2.0f;
+        const float ndc_x = (x + centre) / width * 2.0f - 1.0f;
+        const float ndc_y = 1.0f - (y + centre) / height * 2.0f;
         if (orthographic)
             return {(ndc_x - projection[3][0]) / projection[0][0],
                     (ndc_y - projection[3][1]) / projection[1][1], -depth};
@@ -45,8 +50,21 @@ struct Unproject {
     }
 };
 
+// The taps' directions on a spiral, before each sample's own turn: the
+// trigonometry once per frame, not once per tap.
+std::vector<glm::vec2> spiral_directions(int samples) {
+    std::vector<glm::vec2> directions;
+    for (int i = 0; i < samples; ++i) {
+        const float along = (static_cast<float>(i) + 0.5f) / static_cast<float>(samples);
+        const float angle = along * kSpiralTurns * 2.0f * std::numbers::pi_v<float>;
+        directions.push_back({std::cos(angle), std::sin(angle)});
+    }
+    return directions;
+}
+
 float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const glm::mat3& to_view,
-                   const OcclusionStyle& style, int x, int y) {
+                   const OcclusionStyle& style, const std::vector<glm::vec2>& spiral, int x,
+                   int y) {
     const size_t at = b.index(x, y);
     const float depth = b.depth[at];
     if (!is_surface(depth)) return 1.0f;
@@ -66,14 +84,17 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
     const float jitter =
         static_cast<float>(hash32(static_cast<uint32_t>(y), static_cast<uint32_t>(x) + 7u) >> 8) /
         16777216.0f;
+    const float turn_cos = std::cos(turn), turn_sin = std::sin(turn);
+    const float r2 = style.radius * style.radius;
     float sum = 0.0f;
     int counted = 0;
     for (int i = 0; i < style.samples; ++i) {
         const float along = (static_cast<float>(i) + jitter) / static_cast<float>(style.samples);
-        const float angle = along * kSpiralTurns * 2.0f * std::numbers::pi_v<float> + turn;
         const float reach = along * radius_samples;
-        const int sx = x + static_cast<int>(std::lround(reach * std::cos(angle)));
-        const int sy = y + static_cast<int>(std::lround(reach * std::sin(angle)));
+        const glm::vec2 u = spiral[static_cast<size_t>(i)];
+        const float dx = u.x * turn_cos - u.y * turn_sin, dy = u.x * turn_sin + u.y * turn_cos;
+        const int sx = x + static_cast<int>(std::floor(reach * dx + 0.5f));
+        const int sy = y + static_cast<int>(std::floor(reach * dy + 0.5f));
         ++counted;
         if (sx < 0 || sy < 0 || sx >= b.width || sy >= b.height) continue;
         const float tap_depth = b.depth[b.index(sx, sy)];
@@ -81,7 +102,6 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
         const glm::vec3 v =
             unproject(static_cast<float>(sx), static_cast<float>(sy), tap_depth) - p;
         const float vv = glm::dot(v, v);
-        const float r2 = style.radius * style.radius;
         if (!(vv > 0.0f) || vv > r2) continue;  // beyond the radius: not this point's
         // How far above the tangent plane the tap rises, as the cosine of
         // its direction with the normal, fading to nothing at the radius.
@@ -94,51 +114,95 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
 
 }  // namespace
 
-void ambient_occlusion(const OutlineBuffers& buffers, const glm::mat4& view,
+void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, const glm::mat4& view,
                        const glm::mat4& projection, const OcclusionStyle& style,
-                       std::vector<float>& factor, std::vector<float>& scratch, ThreadPool& pool) {
-    const int w = buffers.width, h = buffers.height;
+                       OcclusionScratch& scratch, std::vector<float>& factor, ThreadPool& pool) {
+    // Occlusion changes slowly across a surface, so it is found per pixel,
+    // from each pixel's first sample (a quarter of the work and of the
+    // memory the taps wander over at 2 x 2 samples), then handed to every
+    // sample from the neighbouring pixel at the nearest depth, which keeps
+    // silhouettes sharp and anti-aliased.
+    const int k = std::max(samples_per_side, 1);
+    const int w = samples.width / k, h = samples.height / k;
+    OutlineBuffers& pixels = scratch.pixels;
+    if (pixels.width != w || pixels.height != h) pixels.reset(w, h);
+    pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < w; ++x) {
+            const size_t from = samples.index(x * k, y * k), to = pixels.index(x, y);
+            pixels.depth[to] = samples.depth[from];
+            pixels.normal[to] = samples.normal[from];
+        }
+    });
     const size_t n = static_cast<size_t>(w) * static_cast<size_t>(h);
-    scratch.assign(n, 1.0f);
-    factor.assign(n, 1.0f);
+    std::vector<float>& raw = scratch.raw;
+    std::vector<float>& blurred = scratch.blurred;
+    raw.assign(n, 1.0f);
+    blurred.assign(n, 1.0f);
     const Unproject unproject{static_cast<float>(w), static_cast<float>(h), projection,
-                              projection[3][3] == 1.0f};
+                              projection[3][3] == 1.0f, 0.5f / static_cast<float>(k)};
     const glm::mat3 to_view(view);
+    const std::vector<glm::vec2> spiral = spiral_directions(style.samples);
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < w; ++x)
-            scratch[buffers.index(x, y)] = occlusion_at(buffers, unproject, to_view, style, x, y);
+            raw[pixels.index(x, y)] = occlusion_at(pixels, unproject, to_view, style, spiral, x, y);
     });
-    // A separable box blur, 9 samples each way, over samples of the same
+    // A separable box blur, 9 pixels each way, over pixels of the same
     // surface (depth within 2%), so the taps' noise averages out and edges
-    // stay sharp: rows from `scratch` into `factor`, then columns back.
+    // stay sharp: rows from `raw` into `blurred`, then columns back.
     auto blur = [&](const std::vector<float>& from, std::vector<float>& to, int step_x,
                     int step_y) {
         pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
             const int y = static_cast<int>(row);
             for (int x = 0; x < w; ++x) {
-                const size_t at = buffers.index(x, y);
-                const float depth = buffers.depth[at];
+                const size_t at = pixels.index(x, y);
+                const float depth = pixels.depth[at];
                 if (!is_surface(depth)) {
                     to[at] = 1.0f;
                     continue;
                 }
                 float sum = 0.0f, weight = 0.0f;
-                for (int k = -kBlurReach; k <= kBlurReach; ++k) {
-                    const int sx = x + k * step_x, sy = y + k * step_y;
+                for (int r = -kBlurReach; r <= kBlurReach; ++r) {
+                    const int sx = x + r * step_x, sy = y + r * step_y;
                     if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
-                    const size_t other = buffers.index(sx, sy);
-                    if (!(std::fabs(buffers.depth[other] - depth) < 0.02f * depth)) continue;
+                    const size_t other = pixels.index(sx, sy);
+                    if (!(std::fabs(pixels.depth[other] - depth) < 0.02f * depth)) continue;
                     sum += from[other];
                     weight += 1.0f;
                 }
-                to[at] = sum / weight;  // the sample itself always counts
+                to[at] = sum / weight;  // the pixel itself always counts
             }
         });
     };
-    blur(scratch, factor, 1, 0);
-    blur(factor, scratch, 0, 1);
-    factor.swap(scratch);
+    blur(raw, blurred, 1, 0);
+    blur(blurred, raw, 0, 1);
+    // Each sample takes the value of the pixel, among its own and the eight
+    // around it, whose depth is nearest its own (the first on a tie).
+    factor.assign(static_cast<size_t>(samples.width) * static_cast<size_t>(samples.height), 1.0f);
+    pool.parallel_for(static_cast<size_t>(samples.height), [&](size_t row) {
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < samples.width; ++x) {
+            const size_t at = samples.index(x, y);
+            const float depth = samples.depth[at];
+            if (!is_surface(depth)) continue;
+            const int px = std::min(x / k, w - 1), py = std::min(y / k, h - 1);
+            float best_gap = std::numeric_limits<float>::infinity();
+            float value = 1.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = px + dx, qy = py + dy;
+                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+                    const size_t q = pixels.index(qx, qy);
+                    const float gap = std::fabs(pixels.depth[q] - depth);
+                    if (gap < best_gap) {
+                        best_gap = gap;
+                        value = raw[q];
+                    }
+                }
+            factor[at] = value;
+        }
+    });
 }
 
 }  // namespace facet

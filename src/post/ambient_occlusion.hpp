@@ -13,7 +13,7 @@
 // gets darker; an open face keeps A = 1.
 //
 // Determinism: the taps of a spiral are turned and spaced by a hash of the
-// sample's coordinates, and a 9 x 9 depth-aware box blur averages the
+// pixel's coordinates, and a 9 x 9 depth-aware box blur averages the
 // noise, so the result depends on nothing but the buffers, not on threads
 // or earlier frames.
 #include <vector>
@@ -31,11 +31,18 @@ struct OcclusionStyle {
     int samples = 16;       // taps per sample
 };
 
-// `factor` gets one value in [0, 1] per buffer sample (1: open, and on the
-// background). `view` turns the buffer's world-space normals to view space;
-// `projection` is the camera's, for the buffer's whole size.
-void ambient_occlusion(const OutlineBuffers& buffers, const glm::mat4& view,
+// Buffers kept from frame to frame.
+struct OcclusionScratch {
+    OutlineBuffers pixels;  // depth and normal of each pixel's first sample
+    std::vector<float> raw, blurred;
+};
+
+// `factor` gets one value in [0, 1] per sample of `samples` (1: open, and
+// on the background), a buffer of `samples_per_side` x `samples_per_side`
+// samples per pixel. `view` turns the buffer's world-space normals to view
+// space; `projection` is the camera's.
+void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, const glm::mat4& view,
                        const glm::mat4& projection, const OcclusionStyle& style,
-                       std::vector<float>& factor, std::vector<float>& scratch, ThreadPool& pool);
+                       OcclusionScratch& scratch, std::vector<float>& factor, ThreadPool& pool);
 
 }  // namespace facet

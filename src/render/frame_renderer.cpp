@@ -121,7 +121,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     if (!per_sample) return;
     ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
     if (plan.occlusion)
-        occlusion_.apply(gbuffer_, inputs.camera, inputs.occlusion, sample_color_, pool_);
+        occlusion_.apply(gbuffer_, side_, inputs.camera, inputs.occlusion, sample_color_, pool_);
     if (plan.hidden_edges && !edge_mask.empty())
         hidden_edges_.draw(vertices.clip, inputs, plan, edge_mask, side_, sample_depth_,
                            sample_color_, sample_lines_);

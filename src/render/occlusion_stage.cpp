@@ -2,9 +2,11 @@
 
 namespace facet {
 
-void OcclusionStage::apply(const OutlineBuffers& gbuffer, const CameraMatrices& camera,
-                           const OcclusionStyle& style, ColorImage& samples, ThreadPool& pool) {
-    ambient_occlusion(gbuffer, camera.view, camera.projection, style, factor_, scratch_, pool);
+void OcclusionStage::apply(const OutlineBuffers& gbuffer, int samples_per_side,
+                           const CameraMatrices& camera, const OcclusionStyle& style,
+                           ColorImage& samples, ThreadPool& pool) {
+    ambient_occlusion(gbuffer, samples_per_side, camera.view, camera.projection, style, scratch_,
+                      factor_, pool);
     pool.parallel_for(static_cast<size_t>(samples.height), [&](size_t row) {
         const size_t first = row * static_cast<size_t>(samples.width);
         for (size_t i = first; i < first + static_cast<size_t>(samples.width); ++i) {

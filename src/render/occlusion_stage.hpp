@@ -17,11 +17,12 @@ class OcclusionStage {
   public:
     // `samples` and `gbuffer` have the same size; the background (alpha 0)
     // is left alone.
-    void apply(const OutlineBuffers& gbuffer, const CameraMatrices& camera,
+    void apply(const OutlineBuffers& gbuffer, int samples_per_side, const CameraMatrices& camera,
                const OcclusionStyle& style, ColorImage& samples, ThreadPool& pool);
 
   private:
-    std::vector<float> factor_, scratch_;  // reused from frame to frame
+    OcclusionScratch scratch_;  // reused from frame to frame
+    std::vector<float> factor_;
 };
 
 }  // namespace facet
