@@ -34,6 +34,9 @@ struct Material {
     glm::vec3 emissive = {0, 0, 0};
     // Shown as its colour alone, without lights (KHR_materials_unlit).
     bool unlit = false;
+    // Shows only the shadows cast on it, over the background: a floor that
+    // grounds a model on any backdrop or in a transparent render.
+    bool shadow_catcher = false;
     // glTF alphaMode: opaque ignores alpha; mask keeps the samples whose
     // alpha (this times the texture's) reaches alpha_cutoff; blend keeps a
     // share of samples equal to the alpha, in an ordered pattern

@@ -5,6 +5,7 @@
 #include <cstring>
 
 #include "shade/layers.hpp"
+#include "shade/lighting_batch.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
 
@@ -121,6 +122,7 @@ template <bool Single>
         b.any_texture = b.any_texture || m.texture != nullptr;
         b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
         b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
+        b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
     }
 }
 
@@ -130,7 +132,7 @@ template <bool Single>
                                                    const Needs& needs, const LaneGroup* groups,
                                                    int group_count, ShadeBatch& b) {
     CornerLanes c;
-    b.any_texture = b.any_vertex_colors = b.any_emission = false;
+    b.any_texture = b.any_vertex_colors = b.any_emission = b.any_shadow_catcher = false;
     if (group_count == 1)
         gather_groups<true>(in, style, needs, groups, group_count, b, c);
     else
@@ -221,6 +223,42 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
                                 b.sample.bary[1][i] * in.world.colors[c[1]] +
                                 b.sample.bary[2][i] * in.world.colors[c[2]];
         for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= color[a];
+    }
+}
+
+// Shadow catchers: the share of the light the shadows take at each point,
+// from the same lights lit twice, with and without their shadow maps, and
+// compared by the diffuse light's luminance. The lane then shows the
+// background darkened by that share, which covers it by as much. Only the
+// lit models know positions and normals; with the others nothing shows.
+void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
+    const glm::vec4 background = in.frame.background;
+    const bool lit = needs_of(style, false).light_terms;
+    SurfaceBatch open = b.lanes.surface;
+    if (lit) {
+        open.ambient = simd::splat(0.0f);
+        open.diffuse = simd::splat(1.0f);
+        open.specular = simd::splat(0.0f);
+        open.receives_shadow = simd::splat(0.0f);
+    }
+    SurfaceBatch shadowed = open;
+    shadowed.receives_shadow = b.lanes.surface.receives_shadow;
+    LightingBatch with{}, without{};
+    if (lit) {
+        with = light_surface_batch(shadowed, in.frame.camera.position, in.lights, Highlight::blinn);
+        without = light_surface_batch(open, in.frame.camera.position, in.lights, Highlight::blinn);
+    }
+    for (int i = 0; i < b.count; ++i) {
+        if (!b.material[i]->shadow_catcher) continue;
+        float shadow = 0.0f;
+        if (lit) {
+            const float full =
+                0.2126f * without.dr[i] + 0.7152f * without.dg[i] + 0.0722f * without.db[i];
+            const float kept = 0.2126f * with.dr[i] + 0.7152f * with.dg[i] + 0.0722f * with.db[i];
+            if (full > 0.0f) shadow = std::clamp(1.0f - kept / full, 0.0f, 1.0f);
+        }
+        for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - shadow);
+        b.coverage[i] = shadow;
     }
 }
 
@@ -321,6 +359,8 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
         for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
     }
     if (b.any_emission) apply_emission(style, b);
+    b.coverage = simd::splat(1.0f);
+    if (b.any_shadow_catcher) apply_shadow_catchers(in, style, b);
 }
 
 }  // namespace facet

@@ -32,7 +32,11 @@ struct ShadeBatch {
     uint32_t object[simd::kLanes];
     SurfaceSamples sample;
     simd::vf normal[3];  // on the viewer's side, any length, as the G-buffer keeps it
-    simd::vf color[3];   // linear RGB, the result
+    simd::vf color[3];   // linear RGB over the background, the result
+    // How much of the background the lane hides: 1, but for shadow
+    // catchers the shadow's strength (their colour is then the background
+    // darkened by it). The alpha pass shows color - background * (1 - coverage).
+    simd::vf coverage;
     simd::vf pixel_depth;
     float wire[simd::kLanes];  // wireframe line coverage drawn over each lane, 0..1
     glm::vec3 wire_color{0.0f};
@@ -41,7 +45,7 @@ struct ShadeBatch {
     const Material* material[simd::kLanes];
     bool has_uvs[simd::kLanes];
     bool has_colors[simd::kLanes];
-    bool any_texture, any_vertex_colors, any_emission;
+    bool any_texture, any_vertex_colors, any_emission, any_shadow_catcher;
     SurfaceLanes lanes;
 };
 

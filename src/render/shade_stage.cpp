@@ -84,6 +84,7 @@ struct RowChunk {
     int px0, py, count;   // first pixel (in the tile), row, pixels in the chunk
     uint32_t id[kLanes];  // per pixel: a triangle id, kNoTriangle or kMixedPixel
     vf color[4];          // RGBA of the pixels written here
+    vf coverage;          // how much of the background each hides (ShadeBatch::coverage)
     vf depth;
 };
 
@@ -110,7 +111,9 @@ struct RowChunk {
     const vi lane_bit = {1, 2, 4, 8, 16, 32, 64, 128};
     const vi mask = (simd::splat_i(static_cast<int32_t>(mine)) & lane_bit) != simd::splat_i(0);
     for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
-    chunk.color[3] = mask ? simd::splat(1.0f) : chunk.color[3];
+    const float background_alpha = in.frame.background.a;
+    chunk.color[3] = mask ? b.coverage + (1.0f - b.coverage) * background_alpha : chunk.color[3];
+    chunk.coverage = mask ? b.coverage : chunk.coverage;
     chunk.depth = mask ? (side == 1 ? b.sample.w : b.pixel_depth) : chunk.depth;
 }
 
@@ -143,24 +146,32 @@ struct RowChunk {
 #endif
 }
 
+// The colour a surface shows over nothing, from its colour over the
+// background and how much of the background it hides.
+glm::vec4 over_nothing(const glm::vec3& color, float coverage, const glm::vec4& background) {
+    if (coverage == 1.0f) return {color, 1.0f};  // exactly, for opaque surfaces
+    return {color - glm::vec3(background) * (1.0f - coverage), coverage};
+}
+
 // The alpha pass's copy of a chunk: the pixels that show a surface as they
 // are, the background ones transparent. Mixed pixels come later.
-void write_chunk_over_nothing(const ShadeTarget& out, int x, int y, const RowChunk& chunk,
-                              unsigned shown) {
+void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& background, int x, int y,
+                              const RowChunk& chunk, unsigned shown) {
     Rgba16F* pixels = &out.pixels_over_nothing->at(x, y);
     for (int i = 0; i < chunk.count; ++i) {
         if (chunk.id[i] == kMixedPixel) continue;
-        pixels[i] = (shown >> i) & 1 ? to_half(glm::vec4(chunk.color[0][i], chunk.color[1][i],
-                                                         chunk.color[2][i], chunk.color[3][i]))
+        const glm::vec3 color(chunk.color[0][i], chunk.color[1][i], chunk.color[2][i]);
+        pixels[i] = (shown >> i) & 1 ? to_half(over_nothing(color, chunk.coverage[i], background))
                                      : to_half(glm::vec4(0.0f));
     }
 }
 
 [[gnu::always_inline]] inline void write_chunk(const TileVisibility& tile, const ShadeTarget& out,
-                                               int side, const RowChunk& chunk, bool any_mixed,
+                                               const glm::vec4& background, int side,
+                                               const RowChunk& chunk, bool any_mixed,
                                                unsigned shown) {
     const int x = tile.x0 / side + chunk.px0, y = tile.y0 / side + chunk.py;
-    if (out.pixels_over_nothing) write_chunk_over_nothing(out, x, y, chunk, shown);
+    if (out.pixels_over_nothing) write_chunk_over_nothing(out, background, x, y, chunk, shown);
     Rgba16F* colors = &out.pixels->at(x, y);
     float* depths = &out.depth.at(x, y);
     if (chunk.count == kLanes && !any_mixed) {
@@ -237,6 +248,7 @@ void write_chunk_over_nothing(const ShadeTarget& out, int x, int y, const RowChu
         for (chunk.px0 = 0; chunk.px0 < pixels_x; chunk.px0 += kLanes) {
             chunk.count = std::min(kLanes, pixels_x - chunk.px0);
             for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
+            chunk.coverage = simd::splat(0.0f);
             chunk.depth = simd::splat(kInfinity);
             bool any_mixed = false;
             const unsigned shown_at_start = chunk_ids(tile, side, chunk, any_mixed);
@@ -258,7 +270,7 @@ void write_chunk_over_nothing(const ShadeTarget& out, int x, int y, const RowChu
                 shade_chunk_style(in, raster, tile, style, mine, chunk);
                 shown &= ~mine;
             }
-            write_chunk(tile, out, side, chunk, any_mixed, shown_at_start);
+            write_chunk(tile, out, bg, side, chunk, any_mixed, shown_at_start);
             if (any_mixed)
                 for (int i = 0; i < chunk.count; ++i)
                     if (chunk.id[i] == kMixedPixel)
@@ -315,13 +327,18 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     const int side = f.side;
     const float per_sample = 1.0f / static_cast<float>(side * side);
     const glm::vec4 bg = in.frame.background;
-    std::vector<glm::vec4> sums(static_cast<size_t>(f.pixels_x * f.pixels_y), glm::vec4(0));
+    const size_t pixel_count = static_cast<size_t>(f.pixels_x * f.pixels_y);
+    std::vector<glm::vec4> sums(pixel_count, glm::vec4(0));
+    std::vector<glm::vec4> nothing_sums(out.pixels_over_nothing ? pixel_count : 0, glm::vec4(0));
     shade_fragments(f, raster, in, false, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
             const float weight = static_cast<float>(f.samples[at]) * per_sample;
-            sums[f.pixel[at]] +=
-                glm::vec4(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f) * weight;
+            const glm::vec3 color(b.color[0][i], b.color[1][i], b.color[2][i]);
+            const float coverage = b.coverage[i];
+            sums[f.pixel[at]] += glm::vec4(color, coverage + (1.0f - coverage) * bg.a) * weight;
+            if (out.pixels_over_nothing)
+                nothing_sums[f.pixel[at]] += over_nothing(color, coverage, bg) * weight;
         }
     });
     for (int at = 0; at < f.count; ++at) {
@@ -331,7 +348,8 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
             sums[f.pixel[at]] + bg * (static_cast<float>(f.empty[f.pixel[at]]) * per_sample);
         const int x = tile.x0 / side + px, y = tile.y0 / side + py;
         out.pixels->at(x, y) = to_half(color);
-        if (out.pixels_over_nothing) out.pixels_over_nothing->at(x, y) = to_half(sums[f.pixel[at]]);
+        if (out.pixels_over_nothing)
+            out.pixels_over_nothing->at(x, y) = to_half(nothing_sums[f.pixel[at]]);
         out.depth.at(x, y) = nearest_sample_depth(tile, raster, side, px, py);
     }
 }
@@ -346,7 +364,8 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
         f, raster, in, out.line_samples != nullptr, [&](const ShadeBatch& b, const int* fragment) {
             for (int i = 0; i < b.count; ++i) {
                 const int at = fragment[i];
-                const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], 1.0f);
+                // rgb over the background, a the share of it hidden (post/resolve.hpp).
+                const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], b.coverage[i]);
                 const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
                 const glm::vec4 stroke(b.wire_color * b.wire[i], b.wire[i]);
                 for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)

@@ -163,8 +163,9 @@ struct MaterialDesc {
     std::optional<TextureWrap> wrap;
     std::optional<glm::vec2> uv_scale;  // texture repeats across the surface
     std::optional<bool> double_sided;
-    std::optional<glm::vec3> emissive;  // linear RGB added to the shaded colour
-    std::optional<bool> unlit;          // the colour alone, without lights
+    std::optional<glm::vec3> emissive;   // linear RGB added to the shaded colour
+    std::optional<bool> unlit;           // the colour alone, without lights
+    std::optional<bool> shadow_catcher;  // only the shadows on it, over the background
 };
 
 // Which keys apply to which type: docs/scene-format.md, "Primitives". The

@@ -295,7 +295,8 @@ CameraDesc parse_camera(const Field& f, bool named, const std::string& base_dir,
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
     f.check_keys({"color", "ambient", "diffuse", "specular", "ka", "kd", "ks", "shininess",
-                  "texture", "wrap", "uv_scale", "double_sided", "emissive", "unlit"});
+                  "texture", "wrap", "uv_scale", "double_sided", "emissive", "unlit",
+                  "shadow_catcher"});
     if (f.has("color")) m.color = f["color"].animated_color3();
     // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
     auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
@@ -324,6 +325,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     if (f.has("double_sided")) m.double_sided = f["double_sided"].boolean();
     if (f.has("emissive")) m.emissive = f["emissive"].color3();
     if (f.has("unlit")) m.unlit = f["unlit"].boolean();
+    if (f.has("shadow_catcher")) m.shadow_catcher = f["shadow_catcher"].boolean();
     return m;
 }
 
