@@ -89,11 +89,12 @@ std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& forma
         else if (c < 3)
             throw Error(ExitCode::io_failure, path + ": no " + name + " channel");
     }
+    const float gain = exposure_gain(display);
     for (size_t p = 0; p < pixels; ++p) {
         glm::vec4 colour(1.0f);
         for (int c = 0; c < 4; ++c)
             if (channel[c]) colour[c] = (*channel[c])[p];
-        colour = display_color(colour, display);
+        colour = display_color(colour, display, gain);
         for (int c = 0; c < 3; ++c) {
             const double v = std::isfinite(colour[c]) ? std::clamp<double>(colour[c], 0, 1) : 0;
             rgb[p * 3 + static_cast<size_t>(c)] =

@@ -37,7 +37,8 @@ float filmic_curve(float x) {
     if (!(x > 0.0f)) return 0.0f;
     const float stops = std::log2(x / 0.18f);
     const float t = std::clamp((stops - kMinStops) / (kMaxStops - kMinStops), 0.0f, 1.0f);
-    const float lo = logistic(0.0f), hi = logistic(1.0f);
+    // The curve's ends, computed once: this runs per channel of every pixel.
+    static const float lo = logistic(0.0f), hi = logistic(1.0f);
     const float display = (logistic(t) - lo) / (hi - lo);
     return srgb_to_linear(display);
 }
@@ -77,25 +78,35 @@ const char* tonemap_name(Tonemap tonemap) {
     return "none";
 }
 
-glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform) {
+float exposure_gain(const DisplayTransform& transform) {
+    // exp2 of a whole number of stops is exact, so +1 doubles exactly.
+    return std::exp2(transform.exposure);
+}
+
+glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform,
+                        float gain) {
     const float a = premultiplied.a;
     if (!(a > 0.0f) || transform.is_identity()) return premultiplied;
-    // exp2 of a whole number of stops is exact, so +1 doubles exactly.
-    const float gain = std::exp2(transform.exposure);
     const glm::vec3 straight = glm::vec3(premultiplied) / a * gain;
     return {tone(straight, transform.tonemap) * a, a};
 }
 
+glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform) {
+    return display_color(premultiplied, transform, exposure_gain(transform));
+}
+
 ColorImage apply_display_transform(const ColorImage& image, const DisplayTransform& transform) {
+    const float gain = exposure_gain(transform);
     ColorImage out = image;
-    for (glm::vec4& c : out.pixels) c = display_color(c, transform);
+    for (glm::vec4& c : out.pixels) c = display_color(c, transform, gain);
     return out;
 }
 
 HalfColorImage apply_display_transform(const HalfColorImage& image,
                                        const DisplayTransform& transform) {
+    const float gain = exposure_gain(transform);
     HalfColorImage out = image;
-    for (Rgba16F& c : out.pixels) c = to_half(display_color(to_float(c), transform));
+    for (Rgba16F& c : out.pixels) c = to_half(display_color(to_float(c), transform, gain));
     return out;
 }
 

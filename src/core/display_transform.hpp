@@ -27,6 +27,10 @@ const char* tonemap_name(Tonemap tonemap);
 // The curve applies to the straight colour, so a half-covered edge pixel
 // gets the same tone as the surface it belongs to.
 glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform);
+// The same with the exposure's factor computed once for many pixels.
+float exposure_gain(const DisplayTransform& transform);
+glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform,
+                        float gain);
 
 // The whole image, pixel by pixel. Callers skip the copy when the
 // transform is the identity.

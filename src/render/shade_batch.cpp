@@ -252,9 +252,10 @@ void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, Shade
         if (!b.material[i]->shadow_catcher) continue;
         float shadow = 0.0f;
         if (lit) {
-            const float full =
-                0.2126f * without.dr[i] + 0.7152f * without.dg[i] + 0.0722f * without.db[i];
-            const float kept = 0.2126f * with.dr[i] + 0.7152f * with.dg[i] + 0.0722f * with.db[i];
+            auto luminance = [i](const LightingBatch& l) {  // Rec. 709 weights
+                return 0.2126f * l.dr[i] + 0.7152f * l.dg[i] + 0.0722f * l.db[i];
+            };
+            const float full = luminance(without), kept = luminance(with);
             if (full > 0.0f) shadow = std::clamp(1.0f - kept / full, 0.0f, 1.0f);
         }
         for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - shadow);
