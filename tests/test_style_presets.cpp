@@ -374,6 +374,20 @@ TEST_CASE("bad style values name file, line and key", "[style]") {
         check_error_at(message, style, line_col(text, "0.2"), "toon.bands.1.0");
         CHECK_THAT(message, Contains("increase"));
     }
+    SECTION("an unknown hatching space") {
+        const std::string text = "style: { hatching: { space: sideways } }\n" + kMinimalObjects;
+        const std::string path = d.scene(text);
+        const std::string message = load_error(path, d.options());
+        check_error_at(message, path, line_col(text, "sideways"), "style.hatching.space");
+        CHECK_THAT(message, Contains("object"));  // the choices are listed
+    }
+    SECTION("a zero hatching axis") {
+        const std::string text =
+            "style: { hatching: { direction: axis, axis: [0, 0, 0] } }\n" + kMinimalObjects;
+        const std::string path = d.scene(text);
+        const std::string message = load_error(path, d.options());
+        check_error_at(message, path, line_col(text, "[0, 0, 0]"), "style.hatching.axis");
+    }
     SECTION("an unknown shading model") {
         const std::string text = "style: { shading: cartoon }\n" + kMinimalObjects;
         const std::string path = d.scene(text);

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "render/hatch_charts.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
 #include "shade/texture_lod.hpp"
@@ -283,24 +284,19 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
     const int side = in.samples_per_side;
     for (int i = 0; i < b.count; ++i) {
         LayerInputs& l = out[i];
-        l = LayerInputs{b.lanes.albedo_at(i), glm::vec2(0), 0.0f, 0.0f};
+        l.albedo = b.lanes.albedo_at(i);
+        l.wire = 0.0f;
+        l.hatch.count = 0;
         const SurfaceSample s = pixel_sample(b, i, side);
         if (style.wireframe && !in.edge_mask.empty())
             l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
                                    in.edge_mask[s.triangle]);
         if (!style.hatching) continue;
-        const HatchingState& h = *style.hatching;
-        const float size = static_cast<float>(h.tam->params.size);
-        if (h.screen_space || !b.has_uvs[i]) {
-            const float tile_samples = h.tile_pixels * static_cast<float>(side);
-            l.hatch_uv = glm::vec2(b.x[i], b.y[i]) / tile_samples;
-            l.hatch_lod = std::max(0.0f, std::log2(size / h.tile_pixels));
-        } else {
-            const CornerUvs c = corner_uvs(in.world, s.triangle, glm::vec2(h.scale));
-            const TextureLookup t = texture_lookup(c.uv[0], c.uv[1], c.uv[2], s, glm::vec2(size));
-            l.hatch_uv = t.uv;
-            l.hatch_lod = t.lod;
-        }
+        // pixel_sample's derivatives are per output pixel already.
+        const HatchPoint point{
+            s.triangle,  s.bary, s.ddx, s.ddy, glm::vec2(b.x[i], b.y[i]) / static_cast<float>(side),
+            b.has_uvs[i]};
+        l.hatch = hatch_footprint(in.world, *style.hatching, point);
     }
 }
 

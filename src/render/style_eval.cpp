@@ -15,9 +15,9 @@ TamParams tam_params(const HatchingDesc& h) {
     TamParams p = h.pencil ? TamParams::pencil() : TamParams{};
     p.levels = h.levels;
     p.seed = static_cast<uint32_t>(h.seed);
-    p.hatch_angle = h.angle;
+    p.hatch_angle = 0;  // along the tile's u: the lookup turns them (shade/hatch_mapping.hpp)
     p.stroke_width = h.stroke_width;
-    p.cross_from_level = std::min(p.cross_from_level, h.levels - 1);
+    p.cross_from_level = h.levels / 2;  // cross strokes in the darker half
     return p;
 }
 
@@ -58,11 +58,17 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         HatchingState h;
         h.tam = &tams.get(tam_params(*d.hatching));
         h.strength = evaluate(d.hatching->strength, at);
+        h.white = evaluate(d.hatching->white, at);
         if (d.hatching->ink) h.ink = evaluate(*d.hatching->ink, at);
-        h.screen_space = d.hatching->screen_space;
+        h.space = d.hatching->space;
+        h.direction = d.hatching->direction;
+        h.axis = d.hatching->axis;
+        h.angle = glm::radians(d.hatching->angle);
         h.scale = d.hatching->scale;
         h.tile_pixels = d.hatching->tile_pixels;
         h.pencil = d.hatching->pencil;
+        if (d.hatching->wash) h.wash = evaluate(*d.hatching->wash, at);
+        h.paper = evaluate(d.hatching->paper, at);
         h.additive = d.hatching->additive;
         s.hatching = h;
     }

@@ -12,6 +12,7 @@
 #include "anim/gltf_pose.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
+#include "render/principal_directions.hpp"
 
 namespace facet {
 namespace {
@@ -179,8 +180,11 @@ World build_world(const SceneDesc& scene) {
     World world;
     // Feature edges cost a pass over every edge; only wireframes need them.
     bool wireframes = scene.style.wireframe.enabled;
-    for (const ObjectDesc& obj : scene.objects)
+    bool hatching = scene.style.hatching.has_value();
+    for (const ObjectDesc& obj : scene.objects) {
         wireframes = wireframes || (obj.style && obj.style->wireframe.enabled);
+        hatching = hatching || (obj.style && obj.style->hatching);
+    }
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
@@ -278,6 +282,11 @@ World build_world(const SceneDesc& scene) {
                 append_edge_adjacency(
                     part, static_cast<uint32_t>(world.triangle_draw.size() - d.triangle_count),
                     world);
+            if (hatching) {
+                const std::vector<glm::vec3> directions = principal_directions(part);
+                world.hatch_directions.insert(world.hatch_directions.end(), directions.begin(),
+                                              directions.end());
+            }
             world.draws.push_back(d);
         }
     }

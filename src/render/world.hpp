@@ -90,6 +90,11 @@ struct World {
     std::vector<uint32_t> edge_neighbor;
     std::vector<float> edge_cosine;
 
+    // Per vertex, model space: the direction hatching strokes follow, its
+    // length the confidence in it (render/principal_directions.hpp). Filled
+    // only when some style hatches, else empty.
+    std::vector<glm::vec3> hatch_directions;
+
     size_t triangle_count() const { return triangle_draw.size(); }
 };
 

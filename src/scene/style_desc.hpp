@@ -48,16 +48,43 @@ struct ToonDesc {
 
 // Strokes laid over the shading where it is dark (tonal art maps, Praun et
 // al. 2001), in the object's UV space or in screen space.
+// Where hatching strokes are laid out (docs/styles.md, "hatching").
+enum class HatchSpace {
+    object,  // planes of the object's own space, blended by the normal: no UVs needed
+    uv,      // the texture coordinates (object space where a mesh has none)
+    screen,  // the image: strokes stay put while the surface moves under them
+};
+
+// Which way the strokes run.
+enum class HatchDirection {
+    curvature,  // along the surface's least bend (along a tube); `uv`'s way where flat
+    uv,         // along the texture's u, else along `axis`
+    axis,       // along `axis`, in the object's own space
+    fixed,      // at `angle` in the layout space alone
+};
+
 struct HatchingDesc {
-    int levels = 6;
-    float scale = 8;                         // uv space: tiles per UV unit
-    float tile_pixels = 128;                 // screen space: output pixels per tile
-    bool screen_space = false;               // also used for objects without UVs
-    float angle = 45;                        // degrees, the first stroke direction
-    float stroke_width = 1.5f;               // pixels at the tile's size
+    // Many levels: each adds few strokes, so a stroke fades in over a narrow
+    // band of tone and reads as a line, not a fading hair.
+    int levels = 24;
+    HatchSpace space = HatchSpace::object;
+    HatchDirection direction = HatchDirection::curvature;
+    glm::vec3 axis{0, 1, 0};                 // the object's own axis
+    float scale = 8;                         // object and uv space: tiles per unit
+    float tile_pixels = 160;                 // the tile's size on screen, in output pixels
+    float angle = 0;                         // degrees, from the direction
+    float stroke_width = 1.5f;               // pixels
     std::optional<Animated<glm::vec3>> ink;  // unset: the object's colour, darkened
     Animated<float> strength = 1.0f;         // 0 no strokes .. 1 full
-    bool pencil = false;                     // pencil strokes over paper grain
+    // The share of its full light at and above which a surface gets no
+    // strokes: lit faces stay paper, as an illustrator leaves them.
+    Animated<float> white = 1.0f;
+    bool pencil = false;  // pencil strokes over paper grain
+    // Set: the strokes go on a flat wash, the paper tinted by the object's
+    // colour by this much (0 paper, 1 the full colour), and carry the tone
+    // alone. Unset: they go over the shading.
+    std::optional<Animated<float>> wash;
+    Animated<glm::vec3> paper = glm::vec3(0.96f, 0.95f, 0.92f);
     int seed = 1;
     // How strokes meet the colour: `ink` blends towards the ink by the
     // stroke coverage; `add` adds ink x coverage, as seed 000's listing adds

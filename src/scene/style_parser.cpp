@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <glm/geometric.hpp>
+
 #include "core/input_file.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
@@ -89,20 +91,41 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
             hatching = HatchingDesc{};
         return;
     }
-    f.check_keys({"levels", "scale", "tile_pixels", "space", "angle", "stroke_width", "ink",
-                  "strength", "pencil", "seed", "blend"});
+    f.check_keys({"levels", "scale", "tile_pixels", "space", "direction", "axis", "angle",
+                  "stroke_width", "ink", "strength", "white", "pencil", "wash", "paper", "seed",
+                  "blend"});
     if (!hatching) hatching = HatchingDesc{};
     HatchingDesc& h = *hatching;
-    if (f.has("levels")) h.levels = f["levels"].integer(2, 12);
+    if (f.has("levels")) h.levels = f["levels"].integer(2, 32);
     if (f.has("scale")) h.scale = static_cast<float>(f["scale"].number(0.01, 1000));
     if (f.has("tile_pixels")) h.tile_pixels = static_cast<float>(f["tile_pixels"].number(4, 4096));
-    if (f.has("space")) h.screen_space = f["space"].choice({"uv", "screen"}) == "screen";
+    if (f.has("space")) {
+        const std::string space = f["space"].choice({"object", "uv", "screen"});
+        h.space = space == "object" ? HatchSpace::object
+                  : space == "uv"   ? HatchSpace::uv
+                                    : HatchSpace::screen;
+    }
+    if (f.has("direction")) {
+        const std::string d = f["direction"].choice({"curvature", "uv", "axis", "fixed"});
+        h.direction = d == "curvature" ? HatchDirection::curvature
+                      : d == "uv"      ? HatchDirection::uv
+                      : d == "axis"    ? HatchDirection::axis
+                                       : HatchDirection::fixed;
+    }
+    if (f.has("axis")) {
+        h.axis = f["axis"].vec3();
+        if (!(glm::dot(h.axis, h.axis) > 0.0f)) f["axis"].fail("axis must not be [0, 0, 0]");
+        h.axis = glm::normalize(h.axis);
+    }
     if (f.has("angle")) h.angle = static_cast<float>(f["angle"].number(-360, 360));
     if (f.has("stroke_width"))
         h.stroke_width = static_cast<float>(f["stroke_width"].number(0.25, 16));
     if (f.has("ink")) h.ink = f["ink"].animated_color3();
     if (f.has("strength")) h.strength = f["strength"].animated_number(0, 1);
     if (f.has("pencil")) h.pencil = f["pencil"].boolean();
+    if (f.has("white")) h.white = f["white"].animated_number(0.05, 1);
+    if (f.has("wash")) h.wash = f["wash"].animated_number(0, 1);
+    if (f.has("paper")) h.paper = f["paper"].animated_color3();
     if (f.has("seed")) h.seed = f["seed"].integer(0, 1000000);
     if (f.has("blend")) h.additive = f["blend"].choice({"ink", "add"}) == "add";
 }

@@ -20,9 +20,13 @@ glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInpu
         // relative to its own colour's, so dark colours are not all ink.
         const float lit = luminance(color) / std::max(luminance(in.albedo), 1e-4f);
         const float tone = palette_tone >= 0 ? palette_hatch_tone(style.palette, palette_tone)
-                                             : std::clamp(lit, 0.0f, 1.0f);
-        const float coverage = tam_coverage(*h.tam, tone, in.hatch_uv, in.hatch_lod) * h.strength;
-        if (h.pencil) color *= tam_paper_shade(*h.tam, in.hatch_uv, in.hatch_lod);
+                                             : std::clamp(lit / h.white, 0.0f, 1.0f);
+        const float coverage = hatch_coverage(*h.tam, tone, in.hatch) * h.strength;
+        // A wash: the paper tinted by the object's colour, flat, so the
+        // strokes alone say how much light falls (as in a pen drawing
+        // coloured with watercolour).
+        if (h.wash) color = h.paper * (glm::vec3(1.0f) + (in.albedo - glm::vec3(1.0f)) * *h.wash);
+        if (h.pencil) color *= hatch_paper_shade(*h.tam, in.hatch);
         const glm::vec3 ink = h.ink ? *h.ink : palette_ink(style.palette, in.albedo);
         color =
             h.additive ? add_hatching(color, ink, coverage) : apply_hatching(color, ink, coverage);

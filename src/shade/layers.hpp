@@ -4,6 +4,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "shade/hatch_mapping.hpp"
 #include "shade/style_state.hpp"
 
 namespace facet {
@@ -12,10 +13,9 @@ namespace facet {
 // No default values: the shading stage keeps eight of these per batch and
 // fills them only for styles with layers.
 struct LayerInputs {
-    glm::vec3 albedo;  // the object colour, for the default ink
-    glm::vec2 hatch_uv;
-    float hatch_lod;
-    float wire;  // wireframe line coverage, 0..1
+    glm::vec3 albedo;      // the object colour, for the default ink
+    HatchFootprint hatch;  // where the strokes are read (styles with hatching)
+    float wire;            // wireframe line coverage, 0..1
 };
 
 inline bool has_layers(const StyleState& style) {

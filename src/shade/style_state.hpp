@@ -18,11 +18,17 @@ namespace facet {
 struct HatchingState {
     const TonalArtMap* tam = nullptr;
     float strength = 1;
+    float white = 1;  // the lit share that gets no strokes
     std::optional<glm::vec3> ink;
-    bool screen_space = false;
-    float scale = 8;          // tiles per UV unit
-    float tile_pixels = 128;  // screen space: output pixels per tile
+    HatchSpace space = HatchSpace::object;
+    HatchDirection direction = HatchDirection::curvature;
+    glm::vec3 axis{0, 1, 0};
+    float angle = 0;          // radians, from the direction
+    float scale = 8;          // object and uv space: tiles per unit
+    float tile_pixels = 160;  // the tile's size on screen, in output pixels
     bool pencil = false;
+    std::optional<float> wash;  // set: strokes on the paper tinted this much, not the shading
+    glm::vec3 paper{1.0f};
     bool additive = false;  // strokes add ink x coverage instead of blending to it
 };
 

@@ -13,7 +13,7 @@ namespace facet {
 
 TamParams TamParams::pencil() {
     TamParams p;
-    p.max_darkness = 0.75f;  // graphite never gets as dark as ink
+    p.max_darkness = 0.65f;  // graphite never gets as dark as ink
     p.stroke_width = 1.0f;
     p.edge_softness = 1.5f;
     p.pressure_min = 0.35f;
@@ -53,6 +53,7 @@ void validate(const TamParams& p) {
     check(p.stroke_length > 0.0f && p.stroke_length <= 1.0f, "stroke_length must be in (0, 1]");
     check(p.length_jitter >= 0.0f && p.length_jitter < 1.0f, "length_jitter must be in [0, 1)");
     check(p.taper >= 0.0f && p.taper <= 0.5f, "taper must be in [0, 0.5]");
+    check(p.curvature >= 0.0f && p.curvature <= 0.25f, "curvature must be in [0, 0.25]");
     check(p.pressure_min > 0.0f && p.pressure_min <= p.pressure_max && p.pressure_max <= 1.0f,
           "pressures must satisfy 0 < min <= max <= 1");
     check(p.candidates >= 1, "candidates must be >= 1");
@@ -81,10 +82,25 @@ void sin_cos(double radians, double& s, double& c) {
     c = cos_sum;
 }
 
+// A stroke is a quadratic Bézier curve from `start` through `bend` to
+// `start + chord`, flattened into kStrokeSegments straight pieces.
+constexpr int kStrokeSegments = 4;
+
 struct Stroke {
     float x0, y0;  // start, in tiles
     float dx, dy;  // start to end, in tiles
+    float bend;    // the control point's offset from the chord's middle, along
+                   // its left normal, as a fraction of the chord's length
     float pressure;
+
+    // Point i of the flattened curve (0 .. kStrokeSegments), in tiles.
+    void point(int i, float& x, float& y) const {
+        const float t = static_cast<float>(i) / kStrokeSegments;
+        // B(t) = chord·t + 2t(1 − t)·offset, the offset at the chord's middle.
+        const float arc = 2.0f * t * (1.0f - t) * bend;
+        x = x0 + dx * t - dy * arc;
+        y = y0 + dy * t + dx * arc;
+    }
 };
 
 // Cells per side of the coarse density grid that candidates are judged on.
@@ -119,43 +135,70 @@ struct WorkImage {
 };
 
 // Calls visit(texel index, alpha) for every texel the stroke touches at a
-// mip of `size` texels: a capsule of the stroke's width with an
-// anti-aliased edge, faded at both ends, wrapped around the tile.
+// mip of `size` texels: the texels within half the stroke's width of the
+// curve, with an anti-aliased edge, faded at both ends, wrapped around the
+// tile. Each texel counts once, at its distance from the nearest segment,
+// so the joints between segments are not darker than the rest.
 template <typename Visit>
 void for_each_stroke_texel(const Stroke& s, int size, const TamParams& p, Visit&& visit) {
     const float r = static_cast<float>(size);
-    const float x0 = s.x0 * r, y0 = s.y0 * r, dx = s.dx * r, dy = s.dy * r;
+    float px[kStrokeSegments + 1], py[kStrokeSegments + 1];
+    float lo_x = 1e30f, hi_x = -1e30f, lo_y = 1e30f, hi_y = -1e30f;
+    for (int i = 0; i <= kStrokeSegments; ++i) {
+        s.point(i, px[i], py[i]);
+        px[i] *= r;
+        py[i] *= r;
+        lo_x = std::min(lo_x, px[i]), hi_x = std::max(hi_x, px[i]);
+        lo_y = std::min(lo_y, py[i]), hi_y = std::max(hi_y, py[i]);
+    }
     const float half = 0.5f * p.stroke_width;
     const float soft = p.edge_softness;
     const float reach = half + 0.5f * soft;  // no coverage beyond this distance
-    const float len2 = dx * dx + dy * dy;
     const int mask = size - 1;
-    const int row_lo = static_cast<int>(std::floor(std::min(y0, y0 + dy) - reach));
-    const int row_hi = static_cast<int>(std::ceil(std::max(y0, y0 + dy) + reach));
-    for (int py = row_lo; py <= row_hi; ++py) {
-        const float cy = static_cast<float>(py) + 0.5f;
-        // The part of the segment within `reach` of this row bounds the columns.
-        float t_lo = 0.0f, t_hi = 1.0f;
-        if (std::fabs(dy) > 1e-6f) {
-            const float ta = (cy - reach - y0) / dy, tb = (cy + reach - y0) / dy;
-            t_lo = std::clamp(std::min(ta, tb), 0.0f, 1.0f);
-            t_hi = std::clamp(std::max(ta, tb), 0.0f, 1.0f);
+    const int row_lo = static_cast<int>(std::floor(lo_y - reach));
+    const int row_hi = static_cast<int>(std::ceil(hi_y + reach));
+    for (int row = row_lo; row <= row_hi; ++row) {
+        const float cy = static_cast<float>(row) + 0.5f;
+        // The parts of the segments within `reach` of this row bound the columns.
+        float col_min = 1e30f, col_max = -1e30f;
+        for (int k = 0; k < kStrokeSegments; ++k) {
+            const float ay = py[k], sy = py[k + 1] - py[k];
+            float t_lo = 0.0f, t_hi = 1.0f;
+            if (std::fabs(sy) > 1e-6f) {
+                const float ta = (cy - reach - ay) / sy, tb = (cy + reach - ay) / sy;
+                t_lo = std::max(std::min(ta, tb), 0.0f);
+                t_hi = std::min(std::max(ta, tb), 1.0f);
+                if (t_lo > t_hi) continue;
+            } else if (std::fabs(cy - ay) > reach) {
+                continue;
+            }
+            const float xa = px[k] + t_lo * (px[k + 1] - px[k]);
+            const float xb = px[k] + t_hi * (px[k + 1] - px[k]);
+            col_min = std::min(col_min, std::min(xa, xb));
+            col_max = std::max(col_max, std::max(xa, xb));
         }
-        const float xa = x0 + t_lo * dx, xb = x0 + t_hi * dx;
-        const int col_lo = static_cast<int>(std::floor(std::min(xa, xb) - reach - 0.5f));
-        const int col_hi = static_cast<int>(std::ceil(std::max(xa, xb) + reach));
-        for (int px = col_lo; px <= col_hi; ++px) {
-            const float cx = static_cast<float>(px) + 0.5f;
-            float t = len2 > 0.0f ? ((cx - x0) * dx + (cy - y0) * dy) / len2 : 0.0f;
-            t = std::clamp(t, 0.0f, 1.0f);
-            const float ox = x0 + t * dx - cx, oy = y0 + t * dy - cy;
-            const float d = std::sqrt(ox * ox + oy * oy);
+        if (col_min > col_max) continue;
+        const int col_lo = static_cast<int>(std::floor(col_min - reach - 0.5f));
+        const int col_hi = static_cast<int>(std::ceil(col_max + reach));
+        for (int col = col_lo; col <= col_hi; ++col) {
+            const float cx = static_cast<float>(col) + 0.5f;
+            float best = 1e30f, along = 0.0f;  // squared distance, curve parameter there
+            for (int k = 0; k < kStrokeSegments; ++k) {
+                const float sx = px[k + 1] - px[k], sy = py[k + 1] - py[k];
+                const float len2 = sx * sx + sy * sy;
+                float t = len2 > 0.0f ? ((cx - px[k]) * sx + (cy - py[k]) * sy) / len2 : 0.0f;
+                t = std::clamp(t, 0.0f, 1.0f);
+                const float ox = px[k] + t * sx - cx, oy = py[k] + t * sy - cy;
+                const float d2 = ox * ox + oy * oy;
+                if (d2 < best) best = d2, along = (static_cast<float>(k) + t) / kStrokeSegments;
+            }
+            const float d = std::sqrt(best);
             const float edge = soft > 0.0f ? std::clamp((reach - d) / soft, 0.0f, 1.0f)
                                            : (d <= half ? 1.0f : 0.0f);
             const float ends =
-                p.taper > 0.0f ? std::min(1.0f, std::min(t, 1.0f - t) / p.taper) : 1.0f;
+                p.taper > 0.0f ? std::min(1.0f, std::min(along, 1.0f - along) / p.taper) : 1.0f;
             const float alpha = s.pressure * edge * ends;
-            if (alpha > 0.0f) visit(static_cast<size_t>(py & mask) * size + (px & mask), alpha);
+            if (alpha > 0.0f) visit(static_cast<size_t>(row & mask) * size + (col & mask), alpha);
         }
     }
 }
@@ -199,7 +242,12 @@ Stroke random_stroke(const TamParams& p, uint32_t candidate, bool cross) {
     sin_cos(static_cast<double>(degrees) * (std::numbers::pi / 180.0), s, c);
     const float dx = static_cast<float>(c) * length, dy = static_cast<float>(s) * length;
     const float pressure = p.pressure_min + (p.pressure_max - p.pressure_min) * unit(4);
-    return {centre_u - 0.5f * dx, centre_v - 0.5f * dy, dx, dy, pressure};
+    // The curve's middle lies halfway between the chord's and the control
+    // point, so a bow of `curvature` needs twice that offset.
+    const float bend = 2.0f * p.curvature * (2.0f * unit(5) - 1.0f);
+    // Centred on the curve's middle, not the chord's.
+    const float mid_x = centre_u + 0.5f * dy * bend, mid_y = centre_v - 0.5f * dx * bend;
+    return {mid_x - 0.5f * dx, mid_y - 0.5f * dy, dx, dy, bend, pressure};
 }
 
 uint8_t to_byte(float v) {

@@ -15,6 +15,8 @@
 // - Each image is filled until its mean coverage reaches its level's
 //   target; each new stroke is the best of a few random candidates (the one
 //   that darkens most where it is still light), as in their §4.2.
+// - Strokes are slight arcs (quadratic Bézier curves, flattened into a few
+//   segments) with tapered ends and a jittered length and angle.
 // - Darker levels add cross strokes at `cross_angle` to the hatching.
 // - Pencil: lighter, softer strokes whose deposit follows a paper grain
 //   (graphite catches on the peaks), and the grain itself for the paper.
@@ -40,14 +42,17 @@ struct TamParams {
     int levels = 6;  // K tone levels, lightest first
     int size = 256;  // finest mip, a power of two in [16, 2048]
     uint32_t seed = 1;
-    float max_darkness = 0.9f;  // mean coverage of the darkest level; level i gets (i+1)/K of it
+    float max_darkness = 0.8f;  // mean coverage of the darkest level; level i gets (i+1)/K of it
 
-    float stroke_width = 1.5f;   // pixels, at every mip level
-    float edge_softness = 1.0f;  // anti-aliasing ramp across a stroke's edge, in pixels
-    float stroke_length = 0.3f;  // fraction of the tile
-    float length_jitter = 0.3f;  // each stroke's length varies by up to this fraction
-    float taper = 0.15f;         // fraction of the length over which each end fades out
-    float pressure_min = 1.0f;   // each stroke's darkness, drawn in [min, max]
+    float stroke_width = 1.5f;    // pixels, at every mip level
+    float edge_softness = 1.0f;   // anti-aliasing ramp across a stroke's edge, in pixels
+    float stroke_length = 0.4f;   // fraction of the tile
+    float length_jitter = 0.25f;  // each stroke's length varies by up to this fraction
+    float taper = 0.06f;          // fraction of the length over which each end fades out
+    // How far each stroke bows from its chord, as a fraction of its length,
+    // drawn in [-curvature, curvature]: a hand's strokes are slight arcs.
+    float curvature = 0.04f;
+    float pressure_min = 1.0f;  // each stroke's darkness, drawn in [min, max]
     float pressure_max = 1.0f;
 
     float hatch_angle = 45.0f;  // degrees from +u towards +v (u right, v down)
