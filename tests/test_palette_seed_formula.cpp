@@ -1,4 +1,4 @@
-// The palette preset against seed 000's formula computed here, pixel by
+// The palette-seed preset against seed 000's formula computed here, pixel by
 // pixel: a sphere lit by one directional light, each pixel's normal found by
 // intersecting its ray with the ideal sphere, c = a·k + t·warm + (1-t)·cool
 // with t = (1 + n·l)/2, then the cels: the seed's c' = c·q (the preset's
@@ -24,7 +24,7 @@ const glm::vec3 kToLight = glm::normalize(glm::vec3(1, 1, 1));  // towards the l
 std::string sphere_scene(const std::string& cel_color) {
     return "output: { size: [" + std::to_string(kWidth) + ", " + std::to_string(kHeight) +
            "], frames: 1, samples: 1 }\n"
-           "style: { extends: palette, cel_color: " +
+           "style: { extends: palette-seed, cel_color: " +
            cel_color +
            ", hatching: false, specular: 0 }\n"
            "camera: { position: [0, 0, " +
@@ -35,7 +35,7 @@ std::string sphere_scene(const std::string& cel_color) {
            "    material: { color: [0.9, 0.35, 0.1] }\n";
 }
 
-// The seed's colour before cels at the unit normal n (styles/palette.yaml's values).
+// The seed's colour before cels at the unit normal n (styles/palette-seed.yaml's values).
 glm::vec3 seed_color(const glm::vec3& n) {
     const float t = (1 + glm::dot(n, kToLight)) / 2;
     const glm::vec3 cool = glm::vec3(0, 0, 0.4f) + 0.2f * kColor;

@@ -27,7 +27,7 @@ const std::set<std::string> kCovered = {
     "blinn-phong",      "blueprint", "clay",        "depth",         "flat",    "gooch",
     "gouraud",          "hatching",  "ink",         "intersections", "normals", "palette",
     "pencil",           "phong",     "toon",        "toon-outline",  "unlit",   "wireframe",
-    "wireframe-shaded", "lit",       "lit-shadows",
+    "wireframe-shaded", "lit",       "lit-shadows", "palette-seed",
 };
 }  // namespace
 
@@ -44,6 +44,7 @@ TEST_CASE("render style: ink",               "[render][style]") { check_render({
 TEST_CASE("render style: intersections",     "[render][style]") { check_render({kScene, 1, "style_intersections.png", {}, {}, "intersections"}); }
 TEST_CASE("render style: normals",           "[render][style]") { check_render({kScene, 1, "style_normals.png", {}, {}, "normals"}); }
 TEST_CASE("render style: palette",           "[render][style]") { check_render({kScene, 1, "style_palette.png", {}, {}, "palette"}); }
+TEST_CASE("render style: palette-seed",      "[render][style]") { check_render({kScene, 1, "style_palette-seed.png", {}, {}, "palette-seed"}); }
 TEST_CASE("render style: pencil",            "[render][style]") { check_render({kScene, 1, "style_pencil.png", {}, {}, "pencil"}); }
 TEST_CASE("render style: phong",             "[render][style]") { check_render({kScene, 1, "style_phong.png", {}, {}, "phong"}); }
 TEST_CASE("render style: toon",              "[render][style]") { check_render({kScene, 1, "style_toon.png", {}, {}, "toon"}); }

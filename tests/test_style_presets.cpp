@@ -284,8 +284,8 @@ TEST_CASE("every shipped preset loads and describes itself", "[style]") {
     std::sort(names.begin(), names.end());
     CHECK(names.size() >= 19);
     for (const char* wanted :
-         {"phong", "gouraud", "flat", "palette", "gooch", "toon", "toon-outline", "hatching",
-          "pencil", "ink", "blueprint", "clay", "wireframe", "depth", "normals"})
+         {"phong", "gouraud", "flat", "palette", "palette-seed", "gooch", "toon", "toon-outline",
+          "hatching", "pencil", "ink", "blueprint", "clay", "wireframe", "depth", "normals"})
         CHECK(std::find(names.begin(), names.end(), wanted) != names.end());
 
     const auto listed = facet::list_style_presets({FACET_STYLES_DIR});
@@ -306,16 +306,29 @@ TEST_CASE("every shipped preset loads and describes itself", "[style]") {
     }
 }
 
-TEST_CASE("the palette preset carries the seed-000 defaults", "[style]") {
-    const StyleDesc s =
-        facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette.yaml", {FACET_STYLES_DIR});
+TEST_CASE("the palette-seed preset and the palette model carry the seed-000 values", "[style]") {
+    // The model's own defaults are the seed's; the `palette` preset tunes them.
+    const StyleDesc model;
+    CHECK(same(model.cool.value, {0, 0, 0.4f}));
+    CHECK(same(model.warm.value, {0.4f, 0.4f, 0}));
+    CHECK(close_to(model.alpha.value, 0.2f));
+    CHECK(close_to(model.beta.value, 0.6f));
+    CHECK(close_to(model.ambient.value, 0.2f));
+    CHECK(close_to(model.hatch_below.value, 0.5f));
+    CHECK(!model.cels_keep_hue);
+    const StyleDesc s = facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette-seed.yaml",
+                                               {FACET_STYLES_DIR});
     CHECK(s.shading == ShadingModel::palette);
     CHECK(same(s.cool.value, {0, 0, 0.4f}));
     CHECK(same(s.warm.value, {0.4f, 0.4f, 0}));
     CHECK(close_to(s.alpha.value, 0.2f));
     CHECK(close_to(s.beta.value, 0.6f));
+    CHECK(close_to(s.ambient.value, 0.2f));
+    CHECK(close_to(s.hatch_below.value, 0.5f));
+    CHECK(!s.cels_keep_hue);
     CHECK(s.cels.value == 4);
     CHECK(s.hatching.has_value());
+    CHECK(s.hatching->additive);
 }
 
 // ---------------------------------------------------------------------------

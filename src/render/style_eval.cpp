@@ -36,6 +36,7 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
     // steps 2, 3, 4, 5, 6).
     p.cels = static_cast<int>(std::lround(evaluate(d.cels, at)));
     p.cels_keep_hue = d.cels_keep_hue;
+    p.hatch_below = evaluate(d.hatch_below, at);
     p.specular = evaluate(d.specular, at);
     p.shininess = evaluate(d.shininess, at);
 

@@ -156,6 +156,8 @@ struct StyleDesc {
     // Seed 000's c' = c.q (false), or c' = c.q/|c|, which keeps |c'| = q
     // and the hue (true; `cel_color: keep_hue`).
     bool cels_keep_hue = false;
+    // The tone q/√3 under which the palette model hatches (the seed: 0.5).
+    Animated<float> hatch_below = 0.5f;
     Animated<float> specular = 1.0f;
     Animated<float> shininess = 32.0f;
 

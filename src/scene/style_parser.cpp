@@ -238,11 +238,11 @@ const char* shading_model_name(ShadingModel model) {
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,
                        std::vector<std::string>& visiting) {
-    f.check_keys({"name",       "description", "extends",  "shading",  "depth_range",
-                  "base_color", "background",  "shadows",  "palette",  "cool",
-                  "warm",       "alpha",       "beta",     "ambient",  "cels",
-                  "specular",   "shininess",   "toon",     "hatching", "outlines",
-                  "wireframe",  "cel_color",   "occlusion"});
+    f.check_keys({"name",       "description", "extends",   "shading",    "depth_range",
+                  "base_color", "background",  "shadows",   "palette",    "cool",
+                  "warm",       "alpha",       "beta",      "ambient",    "cels",
+                  "specular",   "shininess",   "toon",      "hatching",   "outlines",
+                  "wireframe",  "cel_color",   "occlusion", "hatch_below"});
     if (f.has("extends")) {
         const std::string path = find_style(f["extends"], context.base_dir, context.style_dirs);
         if (std::find(visiting.begin(), visiting.end(), path) != visiting.end())
@@ -289,6 +289,7 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
     if (f.has("cels")) style.cels = f["cels"].animated_number(0, 64);
     if (f.has("cel_color"))
         style.cels_keep_hue = f["cel_color"].choice({"seed", "keep_hue"}) == "keep_hue";
+    if (f.has("hatch_below")) style.hatch_below = f["hatch_below"].animated_number(0, 1);
     if (f.has("specular")) style.specular = f["specular"].animated_number(0, 100);
     if (f.has("shininess")) style.shininess = f["shininess"].animated_number(1, 100000);
     if (f.has("toon")) apply_toon(f["toon"], style.toon);
