@@ -138,4 +138,11 @@ void check_render(const RenderCase& c) {
     CHECK(outlier_fraction <= c.tolerance.outliers);
 }
 
+glm::vec4 pixel_at(const FrameImages& images, const HalfColorImage& image, glm::vec3 p) {
+    const glm::vec4 clip = images.projection * images.view * glm::vec4(p, 1.0f);
+    const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(image.width);
+    const float y = (0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(image.height);
+    return to_float(image.at(static_cast<int>(x), static_cast<int>(y)));
+}
+
 }  // namespace facet::test

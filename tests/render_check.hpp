@@ -44,4 +44,7 @@ FrameImages render_images(const SceneDesc& scene, int frame = 1, unsigned thread
 FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame = 1,
                         unsigned threads = 2);
 
+// The pixel of `image` (one of `images`' passes) that shows world point p.
+glm::vec4 pixel_at(const FrameImages& images, const HalfColorImage& image, glm::vec3 p);
+
 }  // namespace facet::test

@@ -36,10 +36,7 @@ objects:
 
 // The red value of the pixel that shows world point p.
 float value_at(const facet::FrameImages& images, glm::vec3 p) {
-    const glm::vec4 clip = images.projection * images.view * glm::vec4(p, 1.0f);
-    const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(images.color.width);
-    const float y = (0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(images.color.height);
-    return facet::to_float(images.color.at(static_cast<int>(x), static_cast<int>(y))).r;
+    return facet::test::pixel_at(images, images.color, p).r;
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include "render_check.hpp"
 #include "support.hpp"
 
+using facet::test::pixel_at;
+
 namespace {
 
 // A cube (its centre at `cube_y`, 0.5 above the floor by default) over a
@@ -43,14 +45,6 @@ objects:
     material: { color: [0.9, 0.5, 0.2] }
 )";
     return facet::test::render_yaml(dir.path(), text, 1, threads);
-}
-
-glm::vec4 pixel_at(const facet::FrameImages& images, const facet::HalfColorImage& image,
-                   glm::vec3 p) {
-    const glm::vec4 clip = images.projection * images.view * glm::vec4(p, 1.0f);
-    const float x = (clip.x / clip.w * 0.5f + 0.5f) * static_cast<float>(image.width);
-    const float y = (0.5f - clip.y / clip.w * 0.5f) * static_cast<float>(image.height);
-    return facet::to_float(image.at(static_cast<int>(x), static_cast<int>(y)));
 }
 
 const glm::vec3 kInShadow(0.0f, 0.0f, 0.4f);  // under the cube, in front of it

@@ -37,6 +37,10 @@ struct Material {
     // Shows only the shadows cast on it, over the background: a floor that
     // grounds a model on any backdrop or in a transparent render.
     bool shadow_catcher = false;
+    // From fade_start to fade_end (model units from the object's origin;
+    // off when end <= start) the surface fades into the background, so a
+    // floor ends softly instead of at a hard horizon line.
+    float fade_start = 0, fade_end = 0;
     // glTF alphaMode: opaque ignores alpha; mask keeps the samples whose
     // alpha (this times the texture's) reaches alpha_cutoff; blend keeps a
     // share of samples equal to the alpha, in an ordered pattern

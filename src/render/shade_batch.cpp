@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstring>
 
+#include <glm/geometric.hpp>
+
 #include "render/hatch_charts.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
@@ -27,8 +29,11 @@ Needs needs_of(const StyleState& style, bool gbuffer_normal) {
     const bool lit = m == ShadingModel::flat || m == ShadingModel::phong ||
                      m == ShadingModel::blinn_phong || m == ShadingModel::palette ||
                      m == ShadingModel::gooch || m == ShadingModel::toon;
-    return {lit, lit || m == ShadingModel::normal || gbuffer_normal, lit,
-            m == ShadingModel::gouraud};
+    // Gouraud lights the vertices, but looks up shadows per pixel, which
+    // needs the pixel's position and normal.
+    const bool gouraud = m == ShadingModel::gouraud;
+    return {lit || gouraud, lit || gouraud || m == ShadingModel::normal || gbuffer_normal, lit,
+            gouraud};
 }
 
 // The lanes that show the same triangle id: most batches hold one or two
@@ -72,7 +77,8 @@ template <bool Single>
 // terms, of each group's triangle, as lanes.
 struct CornerLanes {
     vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
-    vf back{};  // every group sets it; zero for the compiler's sake
+    vf direct[3][3];  // Gouraud with shadows: the lights' direct diffuse part
+    vf back{};        // every group sets it; zero for the compiler's sake
 };
 
 template <bool Single>
@@ -97,6 +103,8 @@ template <bool Single>
                 if (needs.vertex_light) {
                     put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
                     put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
+                    if (!v.direct.empty())
+                        put<Single>(c.direct[k][a], mask, v.direct[corners[k]][a], first);
                 }
             }
         put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
@@ -107,8 +115,9 @@ template <bool Single>
             put<Single>(s.diffuse, mask, m.diffuse, first);
             put<Single>(s.specular, mask, m.specular, first);
             put<Single>(s.shininess, mask, m.shininess, first);
-            put<Single>(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
         }
+        if (needs.position)
+            put<Single>(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
         for (int a = 0; a < 3; ++a)
             put<Single>(b.lanes.albedo[a], mask,
                         style.base_color ? (*style.base_color)[a] : m.color[a], first);
@@ -124,6 +133,48 @@ template <bool Single>
         b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
         b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
         b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
+        b.any_fade = b.any_fade || m.fade_end > m.fade_start;
+    }
+}
+
+// The share of the direct light that shadows take from each lane: every
+// light lit twice at the lane, with and without its shadow map, and the
+// diffuse light's luminance (Rec. 709) compared. Ambient, material
+// coefficients and highlights are left out: this is the lights' share.
+vf shadow_share(const ShadeInputs& in, const SurfaceBatch& surface) {
+    SurfaceBatch open = surface;
+    open.ambient = simd::splat(0.0f);
+    open.diffuse = simd::splat(1.0f);
+    open.specular = simd::splat(0.0f);
+    open.receives_shadow = simd::splat(0.0f);
+    SurfaceBatch shadowed = open;
+    shadowed.receives_shadow = surface.receives_shadow;
+    const glm::vec3 eye = in.frame.camera.position;
+    const LightingBatch with = light_surface_batch(shadowed, eye, in.lights, Highlight::blinn);
+    const LightingBatch without = light_surface_batch(open, eye, in.lights, Highlight::blinn);
+    auto luminance = [](const LightingBatch& l) {
+        return 0.2126f * l.dr + 0.7152f * l.dg + 0.0722f * l.db;
+    };
+    const vf full = luminance(without), kept = luminance(with);
+    const vf zero = simd::splat(0.0f), one = simd::splat(1.0f);
+    const vf share = one - kept / (full > zero ? full : one);
+    return full > zero ? simd::vmin(simd::vmax(share, zero), one) : zero;
+}
+
+// Gouraud with shadows: the vertices were lit without shadows, since a
+// shadow sampled only at the vertices is as coarse as the mesh (a 6 m pole
+// darkening from top to base, a shadow missing from a 4-vertex floor).
+// Each pixel takes out the share of the direct light its own shadow
+// lookups say is blocked (the lighting stays per vertex, the shadow edge
+// does not).
+template <typename Interpolate>
+void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolate&& interpolate,
+                         ShadeBatch& b) {
+    const vf share = shadow_share(in, b.lanes.surface);
+    const vf kept = simd::splat(1.0f) - share;
+    for (int a = 0; a < 3; ++a) {
+        b.lanes.vertex_diffuse[a] -= share * interpolate(c.direct, a);
+        b.lanes.vertex_specular[a] *= kept;
     }
 }
 
@@ -134,6 +185,7 @@ template <bool Single>
                                                    int group_count, ShadeBatch& b) {
     CornerLanes c;
     b.any_texture = b.any_vertex_colors = b.any_emission = b.any_shadow_catcher = false;
+    b.any_fade = false;
     if (group_count == 1)
         gather_groups<true>(in, style, needs, groups, group_count, b, c);
     else
@@ -160,11 +212,13 @@ template <bool Single>
     if (needs.position)
         s.px = interpolate(c.p, 0), s.py = interpolate(c.p, 1), s.pz = interpolate(c.p, 2);
     b.lanes.depth = b.sample.w;
-    if (needs.vertex_light)
+    if (needs.vertex_light) {
         for (int a = 0; a < 3; ++a) {
             b.lanes.vertex_diffuse[a] = interpolate(c.diffuse, a);
             b.lanes.vertex_specular[a] = interpolate(c.specular, a);
         }
+        if (!in.vertices.direct.empty()) shadow_vertex_light(in, c, interpolate, b);
+    }
 }
 
 // The depth of the nearest sample of a pixel of side x side samples centred
@@ -231,36 +285,38 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
 // from the same lights lit twice, with and without their shadow maps, and
 // compared by the diffuse light's luminance. The lane then shows the
 // background darkened by that share, which covers it by as much. Only the
-// lit models know positions and normals; with the others nothing shows.
+// lit models and Gouraud know positions and normals; with the others
+// nothing shows.
 void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     const glm::vec4 background = in.frame.background;
-    const bool lit = needs_of(style, false).light_terms;
-    SurfaceBatch open = b.lanes.surface;
-    if (lit) {
-        open.ambient = simd::splat(0.0f);
-        open.diffuse = simd::splat(1.0f);
-        open.specular = simd::splat(0.0f);
-        open.receives_shadow = simd::splat(0.0f);
-    }
-    SurfaceBatch shadowed = open;
-    shadowed.receives_shadow = b.lanes.surface.receives_shadow;
-    LightingBatch with{}, without{};
-    if (lit) {
-        with = light_surface_batch(shadowed, in.frame.camera.position, in.lights, Highlight::blinn);
-        without = light_surface_batch(open, in.frame.camera.position, in.lights, Highlight::blinn);
-    }
+    const vf share =
+        needs_of(style, false).position ? shadow_share(in, b.lanes.surface) : simd::splat(0.0f);
     for (int i = 0; i < b.count; ++i) {
         if (!b.material[i]->shadow_catcher) continue;
-        float shadow = 0.0f;
-        if (lit) {
-            auto luminance = [i](const LightingBatch& l) {  // Rec. 709 weights
-                return 0.2126f * l.dr[i] + 0.7152f * l.dg[i] + 0.0722f * l.db[i];
-            };
-            const float full = luminance(without), kept = luminance(with);
-            if (full > 0.0f) shadow = std::clamp(1.0f - kept / full, 0.0f, 1.0f);
-        }
-        for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - shadow);
-        b.coverage[i] = shadow;
+        for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - share[i]);
+        b.coverage[i] = share[i];
+    }
+}
+
+// Fading materials: by the distance of the point from the object's origin
+// (model space, at rest), the colour goes to the background and the
+// coverage with it (smoothstep from fade_start to fade_end), as a shadow
+// catcher's does.
+void apply_fades(const ShadeInputs& in, ShadeBatch& b) {
+    const glm::vec4 background = in.frame.background;
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        if (!(m.fade_end > m.fade_start)) continue;
+        const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
+        const glm::vec3 p = b.sample.bary[0][i] * in.world.positions[c[0]] +
+                            b.sample.bary[1][i] * in.world.positions[c[1]] +
+                            b.sample.bary[2][i] * in.world.positions[c[2]];
+        const float t =
+            std::clamp((glm::length(p) - m.fade_start) / (m.fade_end - m.fade_start), 0.0f, 1.0f);
+        const float kept = 1.0f - t * t * (3.0f - 2.0f * t);
+        for (int a = 0; a < 3; ++a)
+            b.color[a][i] = background[a] + (b.color[a][i] - background[a]) * kept;
+        b.coverage[i] *= kept;
     }
 }
 
@@ -358,6 +414,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     if (b.any_emission) apply_emission(style, b);
     b.coverage = simd::splat(1.0f);
     if (b.any_shadow_catcher) apply_shadow_catchers(in, style, b);
+    if (b.any_fade) apply_fades(in, b);
 }
 
 }  // namespace facet

@@ -45,7 +45,7 @@ struct ShadeBatch {
     const Material* material[simd::kLanes];
     bool has_uvs[simd::kLanes];
     bool has_colors[simd::kLanes];
-    bool any_texture, any_vertex_colors, any_emission, any_shadow_catcher;
+    bool any_texture, any_vertex_colors, any_emission, any_shadow_catcher, any_fade;
     SurfaceLanes lanes;
 };
 

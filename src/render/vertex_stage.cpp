@@ -14,9 +14,10 @@ constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thre
 }
 
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
-// batch lighting as per-pixel shading.
+// batch lighting as per-pixel shading. `direct`: the lights come without
+// their shadow maps, and the direct diffuse light is kept apart too.
 void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
-                        std::span<const ShadeLight> lights) {
+                        std::span<const ShadeLight> lights, bool direct) {
     for (size_t start = first; start < last; start += simd::kLanes) {
         const int count = static_cast<int>(std::min<size_t>(simd::kLanes, last - start));
         SurfaceBatch s;
@@ -37,6 +38,11 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
             light_surface_batch(s, frame.camera.position, lights, Highlight::blinn);
         for (int i = 0; i < count; ++i)
             out_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
+        if (!direct) continue;
+        s.ambient = simd::splat(0.0f);
+        const LightingBatch d =
+            light_surface_batch(s, frame.camera.position, lights, Highlight::blinn);
+        for (int i = 0; i < count; ++i) out_.direct[start + i] = {d.dr[i], d.dg[i], d.db[i]};
     }
 }
 
@@ -49,6 +55,12 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
     out_.world_position.resize(count);
     out_.world_normal.resize(count);
     out_.lit.resize(light_vertices ? count : 0);
+    // Shadows on Gouraud surfaces are looked up per pixel (render/shade_batch.cpp).
+    const bool shadows = std::any_of(lights.begin(), lights.end(),
+                                     [](const ShadeLight& l) { return l.shadow != nullptr; });
+    std::vector<ShadeLight> open(lights.begin(), lights.end());
+    for (ShadeLight& l : open) l.shadow = nullptr;
+    out_.direct.resize(light_vertices && shadows ? count : 0);
 
     struct DrawTransform {
         glm::mat4 model;
@@ -70,7 +82,7 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
             const float len = glm::length(n);
             out_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
         }
-        if (light_vertices) light(first, last, frame, lights);
+        if (light_vertices) light(first, last, frame, open, shadows);
     });
     return out_;
 }

@@ -31,6 +31,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     if (desc.emissive) m.emissive = *desc.emissive;
     if (desc.unlit) m.unlit = *desc.unlit;
     if (desc.shadow_catcher) m.shadow_catcher = *desc.shadow_catcher;
+    if (desc.fade) m.fade_start = desc.fade->x, m.fade_end = desc.fade->y;
     if (desc.uv_scale) m.uv_scale = *desc.uv_scale;
     if (desc.texture) {
         auto& slot = textures[*desc.texture];

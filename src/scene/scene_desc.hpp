@@ -166,6 +166,7 @@ struct MaterialDesc {
     std::optional<glm::vec3> emissive;   // linear RGB added to the shaded colour
     std::optional<bool> unlit;           // the colour alone, without lights
     std::optional<bool> shadow_catcher;  // only the shadows on it, over the background
+    std::optional<glm::vec2> fade;       // [start, end]: fades into the background between
 };
 
 // Which keys apply to which type: docs/scene-format.md, "Primitives". The

@@ -296,7 +296,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
     f.check_keys({"color", "ambient", "diffuse", "specular", "ka", "kd", "ks", "shininess",
                   "texture", "wrap", "uv_scale", "double_sided", "emissive", "unlit",
-                  "shadow_catcher"});
+                  "shadow_catcher", "fade"});
     if (f.has("color")) m.color = f["color"].animated_color3();
     // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
     auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
@@ -326,6 +326,12 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     if (f.has("emissive")) m.emissive = f["emissive"].color3();
     if (f.has("unlit")) m.unlit = f["unlit"].boolean();
     if (f.has("shadow_catcher")) m.shadow_catcher = f["shadow_catcher"].boolean();
+    if (f.has("fade")) {
+        const glm::vec2 fade = f["fade"].vec2();
+        if (!(fade.x >= 0.0f && fade.y > fade.x && std::isfinite(fade.y)))
+            f["fade"].fail("must be [start, end] with 0 <= start < end");
+        m.fade = fade;
+    }
     return m;
 }
 
