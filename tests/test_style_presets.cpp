@@ -307,26 +307,22 @@ TEST_CASE("every shipped preset loads and describes itself", "[style]") {
 }
 
 TEST_CASE("the palette-seed preset and the palette model carry the seed-000 values", "[style]") {
+    auto check_seed_values = [](const StyleDesc& s) {
+        CHECK(same(s.cool.value, {0, 0, 0.4f}));
+        CHECK(same(s.warm.value, {0.4f, 0.4f, 0}));
+        CHECK(close_to(s.alpha.value, 0.2f));
+        CHECK(close_to(s.beta.value, 0.6f));
+        CHECK(close_to(s.ambient.value, 0.2f));
+        CHECK(close_to(s.hatch_below.value, 0.5f));
+        CHECK(!s.cels_keep_hue);
+        CHECK(s.cels.value == 4);
+    };
     // The model's own defaults are the seed's; the `palette` preset tunes them.
-    const StyleDesc model;
-    CHECK(same(model.cool.value, {0, 0, 0.4f}));
-    CHECK(same(model.warm.value, {0.4f, 0.4f, 0}));
-    CHECK(close_to(model.alpha.value, 0.2f));
-    CHECK(close_to(model.beta.value, 0.6f));
-    CHECK(close_to(model.ambient.value, 0.2f));
-    CHECK(close_to(model.hatch_below.value, 0.5f));
-    CHECK(!model.cels_keep_hue);
+    check_seed_values(StyleDesc{});
     const StyleDesc s = facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette-seed.yaml",
                                                {FACET_STYLES_DIR});
     CHECK(s.shading == ShadingModel::palette);
-    CHECK(same(s.cool.value, {0, 0, 0.4f}));
-    CHECK(same(s.warm.value, {0.4f, 0.4f, 0}));
-    CHECK(close_to(s.alpha.value, 0.2f));
-    CHECK(close_to(s.beta.value, 0.6f));
-    CHECK(close_to(s.ambient.value, 0.2f));
-    CHECK(close_to(s.hatch_below.value, 0.5f));
-    CHECK(!s.cels_keep_hue);
-    CHECK(s.cels.value == 4);
+    check_seed_values(s);
     CHECK(s.hatching.has_value());
     CHECK(s.hatching->additive);
 }

@@ -57,6 +57,9 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     const PosedVertices posed = pose_.pose(inputs.state);
     const auto shadow_maps = shadows_.render(inputs.state, posed, pool_);
     const std::vector<ShadeLight> lights = make_shade_lights(inputs.state.lights, shadow_maps);
+    std::vector<ShadeLight> shadow_lights;
+    for (const ShadeLight& l : lights)
+        if (l.shadow) shadow_lights.push_back(l);
     const TransformedVertices& vertices =
         vertices_.transform(inputs, posed, lights, plan.any_gouraud, pool_);
     rasterizer_.set_geometry(raster_input(world_, vertices, posed, coverage_tested_), pool_);
@@ -83,7 +86,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
             fit(sample_lines_, rasterizer_.width(), rasterizer_.height());
     }
     const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);
-    const ShadeInputs shade_in{world_, inputs, plan, vertices, lights, side_, edge_mask};
+    const ShadeInputs shade_in{world_, inputs,        plan,  vertices,
+                               lights, shadow_lights, side_, edge_mask};
     if (want_gbuffer &&
         (gbuffer_.width != rasterizer_.width() || gbuffer_.height != rasterizer_.height()))
         gbuffer_.reset(rasterizer_.width(), rasterizer_.height());

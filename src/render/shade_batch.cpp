@@ -137,11 +137,12 @@ template <bool Single>
     }
 }
 
-// The share of the direct light that shadows take from each lane: every
-// light lit twice at the lane, with and without its shadow map, and the
-// diffuse light's luminance (Rec. 709) compared. Ambient, material
+// The share of the direct light of `lights` that shadows take from each
+// lane: the lights lit twice at the lane, with and without their shadow
+// maps, and the diffuse light's luminance (Rec. 709) compared. Ambient, material
 // coefficients and highlights are left out: this is the lights' share.
-vf shadow_share(const ShadeInputs& in, const SurfaceBatch& surface) {
+vf shadow_share(const ShadeInputs& in, std::span<const ShadeLight> lights,
+                const SurfaceBatch& surface) {
     SurfaceBatch open = surface;
     open.ambient = simd::splat(0.0f);
     open.diffuse = simd::splat(1.0f);
@@ -150,8 +151,8 @@ vf shadow_share(const ShadeInputs& in, const SurfaceBatch& surface) {
     SurfaceBatch shadowed = open;
     shadowed.receives_shadow = surface.receives_shadow;
     const glm::vec3 eye = in.frame.camera.position;
-    const LightingBatch with = light_surface_batch(shadowed, eye, in.lights, Highlight::blinn);
-    const LightingBatch without = light_surface_batch(open, eye, in.lights, Highlight::blinn);
+    const LightingBatch with = light_surface_batch(shadowed, eye, lights, Highlight::blinn);
+    const LightingBatch without = light_surface_batch(open, eye, lights, Highlight::blinn);
     auto luminance = [](const LightingBatch& l) {
         return 0.2126f * l.dr + 0.7152f * l.dg + 0.0722f * l.db;
     };
@@ -164,13 +165,14 @@ vf shadow_share(const ShadeInputs& in, const SurfaceBatch& surface) {
 // Gouraud with shadows: the vertices were lit without shadows, since a
 // shadow sampled only at the vertices is as coarse as the mesh (a 6 m pole
 // darkening from top to base, a shadow missing from a 4-vertex floor).
-// Each pixel takes out the share of the direct light its own shadow
-// lookups say is blocked (the lighting stays per vertex, the shadow edge
-// does not).
+// Each pixel takes out the share of the shadow-casting lights' direct light
+// that its own shadow lookups find blocked (the lighting stays per vertex,
+// the shadow edge does not). Lights without shadows add nothing to that
+// share, so only the casting ones are lit here.
 template <typename Interpolate>
 void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolate&& interpolate,
                          ShadeBatch& b) {
-    const vf share = shadow_share(in, b.lanes.surface);
+    const vf share = shadow_share(in, in.shadow_lights, b.lanes.surface);
     const vf kept = simd::splat(1.0f) - share;
     for (int a = 0; a < 3; ++a) {
         b.lanes.vertex_diffuse[a] -= share * interpolate(c.direct, a);
@@ -289,8 +291,8 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
 // nothing shows.
 void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     const glm::vec4 background = in.frame.background;
-    const vf share =
-        needs_of(style, false).position ? shadow_share(in, b.lanes.surface) : simd::splat(0.0f);
+    const vf share = needs_of(style, false).position ? shadow_share(in, in.lights, b.lanes.surface)
+                                                     : simd::splat(0.0f);
     for (int i = 0; i < b.count; ++i) {
         if (!b.material[i]->shadow_catcher) continue;
         for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - share[i]);

@@ -28,6 +28,9 @@ struct ShadeInputs {
     const StylePlan& plan;
     const TransformedVertices& vertices;
     std::span<const ShadeLight> lights;
+    // The lights that cast shadows, with their maps (Gouraud looks their
+    // shadows up per pixel).
+    std::span<const ShadeLight> shadow_lights;
     int samples_per_side;  // k: the rasterizer runs at k times the output's width and height
     // Per triangle, this frame's wireframe edges (render/feature_edge_stage.hpp);
     // empty without wireframes.

@@ -14,10 +14,11 @@ constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thre
 }
 
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
-// batch lighting as per-pixel shading. `direct`: the lights come without
-// their shadow maps, and the direct diffuse light is kept apart too.
+// batch lighting as per-pixel shading. With `casting` (the shadow-casting
+// lights, without their maps), `lights` come without their maps too, and
+// the casting lights' direct diffuse light is kept apart.
 void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
-                        std::span<const ShadeLight> lights, bool direct) {
+                        std::span<const ShadeLight> lights, std::span<const ShadeLight> casting) {
     for (size_t start = first; start < last; start += simd::kLanes) {
         const int count = static_cast<int>(std::min<size_t>(simd::kLanes, last - start));
         SurfaceBatch s;
@@ -38,10 +39,10 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
             light_surface_batch(s, frame.camera.position, lights, Highlight::blinn);
         for (int i = 0; i < count; ++i)
             out_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
-        if (!direct) continue;
+        if (casting.empty()) continue;
         s.ambient = simd::splat(0.0f);
         const LightingBatch d =
-            light_surface_batch(s, frame.camera.position, lights, Highlight::blinn);
+            light_surface_batch(s, frame.camera.position, casting, Highlight::blinn);
         for (int i = 0; i < count; ++i) out_.direct[start + i] = {d.dr[i], d.dg[i], d.db[i]};
     }
 }
@@ -56,11 +57,12 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
     out_.world_normal.resize(count);
     out_.lit.resize(light_vertices ? count : 0);
     // Shadows on Gouraud surfaces are looked up per pixel (render/shade_batch.cpp).
-    const bool shadows = std::any_of(lights.begin(), lights.end(),
-                                     [](const ShadeLight& l) { return l.shadow != nullptr; });
-    std::vector<ShadeLight> open(lights.begin(), lights.end());
-    for (ShadeLight& l : open) l.shadow = nullptr;
-    out_.direct.resize(light_vertices && shadows ? count : 0);
+    std::vector<ShadeLight> open(lights.begin(), lights.end()), casting;
+    for (ShadeLight& l : open) {
+        if (l.shadow) casting.push_back(l), casting.back().shadow = nullptr;
+        l.shadow = nullptr;
+    }
+    out_.direct.resize(light_vertices && !casting.empty() ? count : 0);
 
     struct DrawTransform {
         glm::mat4 model;
@@ -82,7 +84,7 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
             const float len = glm::length(n);
             out_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
         }
-        if (light_vertices) light(first, last, frame, open, shadows);
+        if (light_vertices) light(first, last, frame, open, casting);
     });
     return out_;
 }

@@ -24,8 +24,9 @@ struct TransformedVertices {
     BulkVector<glm::vec3> world_normal;  // unit, +Y for a zero normal
     BulkVector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
     // Gouraud with shadow-casting lights (else empty): `lit` is then without
-    // shadows, and this is its direct diffuse light (without the ambient
-    // term), which each pixel's own shadow lookups scale down.
+    // shadows, and this is the direct diffuse light of the lights that cast
+    // them (without the ambient term), which each pixel's own shadow lookups
+    // scale down.
     BulkVector<glm::vec3> direct;
 };
 
@@ -41,7 +42,7 @@ class VertexStage {
 
   private:
     void light(size_t first, size_t last, const FrameInputs& frame,
-               std::span<const ShadeLight> lights, bool direct);
+               std::span<const ShadeLight> lights, std::span<const ShadeLight> casting);
 
     const World& world_;
     TransformedVertices out_;
