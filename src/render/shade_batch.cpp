@@ -336,9 +336,11 @@ void apply_emission(const StyleState& style, ShadeBatch& b) {
     }
 }
 
-// What the layers need, lane by lane: wire coverage and stroke coordinates.
+// What the layers need, lane by lane: wire coverage, and (after shading,
+// from `shaded`) where to read the strokes. Lanes whose tone draws no
+// strokes skip the footprint, unless pencil shades the paper there too.
 void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBatch& b,
-                  LayerInputs (&out)[kLanes]) {
+                  const ShadedLanes* shaded, LayerInputs (&out)[kLanes]) {
     const int side = in.samples_per_side;
     for (int i = 0; i < b.count; ++i) {
         LayerInputs& l = out[i];
@@ -349,12 +351,17 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         if (style.wireframe && !in.edge_mask.empty())
             l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
                                    in.edge_mask[s.triangle]);
-        if (!style.hatching) continue;
+        if (!style.hatching || !shaded) continue;
+        const HatchingState& h = *style.hatching;
+        const bool strokes =
+            h.strength > 0.0f &&
+            hatch_tone(style, shaded->color_at(i), l.albedo, shaded->palette_tone[i]) < 1.0f;
+        if (!strokes && !h.pencil) continue;
         // pixel_sample's derivatives are per output pixel already.
         const HatchPoint point{
             s.triangle,  s.bary, s.ddx, s.ddy, glm::vec2(b.x[i], b.y[i]) / static_cast<float>(side),
             b.has_uvs[i]};
-        l.hatch = hatch_footprint(in.world, *style.hatching, point);
+        l.hatch = hatch_footprint(in.world, h, point);
     }
 }
 
@@ -362,12 +369,12 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
 void finish_layers(const ShadeInputs& in, const StyleState& style, const ShadingContext& context,
                    ShadeBatch& b) {
     LayerInputs layers[kLanes];
-    layer_inputs(in, style, b, layers);
-    if (b.want_wire && style.wireframe) {
-        for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
-        b.wire_color = style.wire.color;
-    }
     if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
+        layer_inputs(in, style, b, nullptr, layers);
+        if (b.want_wire) {
+            for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
+            b.wire_color = style.wire.color;
+        }
         for (int i = 0; i < b.count; ++i) {
             const glm::vec3 c =
                 style.wire_fill + (style.wire.color - style.wire_fill) * layers[i].wire;
@@ -377,6 +384,11 @@ void finish_layers(const ShadeInputs& in, const StyleState& style, const Shading
     }
     ShadedLanes shaded;
     shade_lanes(style, context, b.lanes, shaded);
+    layer_inputs(in, style, b, &shaded, layers);
+    if (b.want_wire && style.wireframe) {
+        for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
+        b.wire_color = style.wire.color;
+    }
     for (int i = 0; i < b.count; ++i) {
         const glm::vec3 c =
             apply_layers(style, shaded.color_at(i), layers[i], shaded.palette_tone[i]);

@@ -11,16 +11,18 @@ float luminance(const glm::vec3& c) {
 
 }  // namespace
 
+float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone) {
+    if (palette_tone >= 0) return palette_hatch_tone(style.palette, palette_tone);
+    // Relative to the object's own colour, so dark colours are not all ink.
+    const float lit = luminance(color) / std::max(luminance(albedo), 1e-4f);
+    return std::clamp(lit / style.hatching->white, 0.0f, 1.0f);
+}
+
 glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
                        float palette_tone) {
     if (style.hatching) {
         const HatchingState& h = *style.hatching;
-        // The palette model hatches its own dark cels (seed 000); other
-        // models hatch by how much light the surface gets, the brightness
-        // relative to its own colour's, so dark colours are not all ink.
-        const float lit = luminance(color) / std::max(luminance(in.albedo), 1e-4f);
-        const float tone = palette_tone >= 0 ? palette_hatch_tone(style.palette, palette_tone)
-                                             : std::clamp(lit / h.white, 0.0f, 1.0f);
+        const float tone = hatch_tone(style, color, in.albedo, palette_tone);
         const float coverage = hatch_coverage(*h.tam, tone, in.hatch) * h.strength;
         // A wash: the paper tinted by the object's colour, flat, so the
         // strokes alone say how much light falls (as in a pen drawing

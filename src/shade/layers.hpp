@@ -22,9 +22,13 @@ inline bool has_layers(const StyleState& style) {
     return style.hatching.has_value() || style.wireframe;
 }
 
-// `palette_tone` is the palette model's cel tone (>= 0), which hatches by
-// cels as seed 000 does; other models hatch by how much light the surface
-// gets (-1).
+// The tone a point is hatched at, 1 (white, no strokes) .. 0. `palette_tone`
+// is the palette model's cel tone (>= 0), which hatches by cels as seed 000
+// does; other models hatch by how much light the surface gets (-1): the
+// brightness relative to its own colour's, over the style's white point.
+float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone);
+
+// `palette_tone` as for hatch_tone.
 glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
                        float palette_tone);
 
