@@ -45,7 +45,10 @@ glm::vec3 onto_plane(glm::vec3 v, glm::vec3 n) {
 
 // The object's axis along the surface; where the surface faces along the
 // axis (a floor, for the up axis), a second axis square to it takes over
-// smoothly, so the direction never vanishes.
+// smoothly. The sum still vanishes at a few points of a closed surface
+// (tilted about 14° from facing the axis), where the strokes turn round
+// the point: any direction field on a sphere has such points, and these
+// keep them off the flat floors the fallback is for.
 glm::vec3 axis_direction(glm::vec3 axis, glm::vec3 n) {
     const glm::vec3 helper = std::fabs(axis.x) < 0.9f ? glm::vec3(1, 0, 0) : glm::vec3(0, 0, 1);
     const glm::vec3 second = glm::normalize(glm::cross(glm::cross(axis, helper), axis));

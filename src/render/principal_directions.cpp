@@ -64,7 +64,11 @@ glm::mat3 curvature_tensor(const MeshPart& part, const std::vector<uint32_t>& ne
         normal_matrix += glm::outerProduct(row, row);
         rhs += row * kappa;
     }
-    if (!(std::fabs(glm::determinant(normal_matrix)) > 1e-9f)) return glm::mat3(0.0f);
+    // Edges along fewer than three directions leave the fit undetermined: the
+    // determinant is then rounding noise, so it is judged against the
+    // matrix's own scale, not an absolute threshold.
+    const float scale = (normal_matrix[0][0] + normal_matrix[1][1] + normal_matrix[2][2]) / 3.0f;
+    if (!(glm::determinant(normal_matrix) > 1e-3f * scale * scale * scale)) return glm::mat3(0.0f);
     const glm::vec3 abc = glm::inverse(normal_matrix) * rhs;
     return abc.x * glm::outerProduct(t1, t1) +
            abc.y * (glm::outerProduct(t1, t2) + glm::outerProduct(t2, t1)) +

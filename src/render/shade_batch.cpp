@@ -77,8 +77,9 @@ template <bool Single>
 // terms, of each group's triangle, as lanes.
 struct CornerLanes {
     vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
-    vf direct[3][3];  // Gouraud with shadows: the lights' direct diffuse part
-    vf back{};        // every group sets it; zero for the compiler's sake
+    // Gouraud with shadows: the shadow-casting lights' direct light.
+    vf direct_diffuse[3][3], direct_specular[3][3];
+    vf back{};  // every group sets it; zero for the compiler's sake
 };
 
 template <bool Single>
@@ -103,8 +104,11 @@ template <bool Single>
                 if (needs.vertex_light) {
                     put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
                     put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
-                    if (!v.direct.empty())
-                        put<Single>(c.direct[k][a], mask, v.direct[corners[k]][a], first);
+                    if (!v.direct.empty()) {
+                        const LightingResult& d = v.direct[corners[k]];
+                        put<Single>(c.direct_diffuse[k][a], mask, d.diffuse[a], first);
+                        put<Single>(c.direct_specular[k][a], mask, d.specular[a], first);
+                    }
                 }
             }
         put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
@@ -138,45 +142,57 @@ template <bool Single>
 }
 
 // The share of the direct light of `lights` that shadows take from each
-// lane: the lights lit twice at the lane, with and without their shadow
-// maps, and the diffuse light's luminance (Rec. 709) compared. Ambient, material
-// coefficients and highlights are left out: this is the lights' share.
-vf shadow_share(const ShadeInputs& in, std::span<const ShadeLight> lights,
-                const SurfaceBatch& surface) {
+// lane, per colour channel: the lights lit twice at the lane, with and
+// without their shadow maps, and the diffuse light compared. Ambient,
+// material coefficients and highlights are left out: this is the lights'
+// share.
+struct ShadowShare {
+    vf channel[3];  // red, green, blue
+    vf luminance;   // the same by the light's Rec. 709 luminance
+};
+
+ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> lights,
+                         const SurfaceBatch& surface) {
     SurfaceBatch open = surface;
     open.ambient = simd::splat(0.0f);
     open.diffuse = simd::splat(1.0f);
     open.specular = simd::splat(0.0f);
+    open.shininess = simd::splat(1.0f);  // unused without specular, but read
     open.receives_shadow = simd::splat(0.0f);
     SurfaceBatch shadowed = open;
     shadowed.receives_shadow = surface.receives_shadow;
     const glm::vec3 eye = in.frame.camera.position;
     const LightingBatch with = light_surface_batch(shadowed, eye, lights, Highlight::blinn);
     const LightingBatch without = light_surface_batch(open, eye, lights, Highlight::blinn);
-    auto luminance = [](const LightingBatch& l) {
-        return 0.2126f * l.dr + 0.7152f * l.dg + 0.0722f * l.db;
-    };
-    const vf full = luminance(without), kept = luminance(with);
     const vf zero = simd::splat(0.0f), one = simd::splat(1.0f);
-    const vf share = one - kept / (full > zero ? full : one);
-    return full > zero ? simd::vmin(simd::vmax(share, zero), one) : zero;
+    auto share = [&](vf kept, vf full) {
+        const vf s = one - kept / (full > zero ? full : one);
+        return full > zero ? simd::vmin(simd::vmax(s, zero), one) : zero;
+    };
+    auto luminance = [](vf r, vf g, vf b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; };
+    ShadowShare out;
+    out.channel[0] = share(with.dr, without.dr);
+    out.channel[1] = share(with.dg, without.dg);
+    out.channel[2] = share(with.db, without.db);
+    out.luminance =
+        share(luminance(with.dr, with.dg, with.db), luminance(without.dr, without.dg, without.db));
+    return out;
 }
 
 // Gouraud with shadows: the vertices were lit without shadows, since a
 // shadow sampled only at the vertices is as coarse as the mesh (a 6 m pole
 // darkening from top to base, a shadow missing from a 4-vertex floor).
-// Each pixel takes out the share of the shadow-casting lights' direct light
-// that its own shadow lookups find blocked (the lighting stays per vertex,
-// the shadow edge does not). Lights without shadows add nothing to that
-// share, so only the casting ones are lit here.
+// Each pixel takes out, channel by channel, the share of the
+// shadow-casting lights' direct light (diffuse and highlight) that its own
+// shadow lookups find blocked (the lighting stays per vertex, the shadow
+// edge does not). Lights without shadows keep all of theirs.
 template <typename Interpolate>
 void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolate&& interpolate,
                          ShadeBatch& b) {
-    const vf share = shadow_share(in, in.shadow_lights, b.lanes.surface);
-    const vf kept = simd::splat(1.0f) - share;
+    const ShadowShare share = shadow_share(in, in.shadow_lights, b.lanes.surface);
     for (int a = 0; a < 3; ++a) {
-        b.lanes.vertex_diffuse[a] -= share * interpolate(c.direct, a);
-        b.lanes.vertex_specular[a] *= kept;
+        b.lanes.vertex_diffuse[a] -= share.channel[a] * interpolate(c.direct_diffuse, a);
+        b.lanes.vertex_specular[a] -= share.channel[a] * interpolate(c.direct_specular, a);
     }
 }
 
@@ -291,8 +307,9 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
 // nothing shows.
 void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     const glm::vec4 background = in.frame.background;
-    const vf share = needs_of(style, false).position ? shadow_share(in, in.lights, b.lanes.surface)
-                                                     : simd::splat(0.0f);
+    const vf share = needs_of(style, false).position
+                         ? shadow_share(in, in.lights, b.lanes.surface).luminance
+                         : simd::splat(0.0f);
     for (int i = 0; i < b.count; ++i) {
         if (!b.material[i]->shadow_catcher) continue;
         for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - share[i]);
@@ -353,9 +370,8 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
                                    in.edge_mask[s.triangle]);
         if (!style.hatching || !shaded) continue;
         const HatchingState& h = *style.hatching;
-        const bool strokes =
-            h.strength > 0.0f &&
-            hatch_tone(style, shaded->color_at(i), l.albedo, shaded->palette_tone[i]) < 1.0f;
+        const bool strokes = h.strength > 0.0f && hatch_tone(style, shaded->color_at(i), l.albedo,
+                                                             shaded->palette_tone[i]) < 1.0f;
         if (!strokes && !h.pencil) continue;
         // pixel_sample's derivatives are per output pixel already.
         const HatchPoint point{

@@ -16,7 +16,7 @@ constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thre
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
 // batch lighting as per-pixel shading. With `casting` (the shadow-casting
 // lights, without their maps), `lights` come without their maps too, and
-// the casting lights' direct diffuse light is kept apart.
+// the casting lights' direct light is kept apart.
 void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
                         std::span<const ShadeLight> lights, std::span<const ShadeLight> casting) {
     for (size_t start = first; start < last; start += simd::kLanes) {
@@ -43,7 +43,8 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
         s.ambient = simd::splat(0.0f);
         const LightingBatch d =
             light_surface_batch(s, frame.camera.position, casting, Highlight::blinn);
-        for (int i = 0; i < count; ++i) out_.direct[start + i] = {d.dr[i], d.dg[i], d.db[i]};
+        for (int i = 0; i < count; ++i)
+            out_.direct[start + i] = {{d.dr[i], d.dg[i], d.db[i]}, {d.sr[i], d.sg[i], d.sb[i]}};
     }
 }
 

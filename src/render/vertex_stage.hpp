@@ -24,10 +24,10 @@ struct TransformedVertices {
     BulkVector<glm::vec3> world_normal;  // unit, +Y for a zero normal
     BulkVector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
     // Gouraud with shadow-casting lights (else empty): `lit` is then without
-    // shadows, and this is the direct diffuse light of the lights that cast
-    // them (without the ambient term), which each pixel's own shadow lookups
-    // scale down.
-    BulkVector<glm::vec3> direct;
+    // shadows, and this is the direct light (diffuse and highlight, without
+    // the ambient term) of the lights that cast them, which each pixel's own
+    // shadow lookups scale down.
+    BulkVector<LightingResult> direct;
 };
 
 class VertexStage {

@@ -40,9 +40,10 @@ struct HatchChart {
 };
 
 struct HatchTap {
-    glm::vec2 uv;  // in [0, 1), already rotated, scaled and wrapped
-    float lod;     // log2 of the finest mip's texels per output pixel
-    float weight;
+    glm::vec2 uv;   // in [0, 1), already rotated, scaled and wrapped
+    float lod;      // log2 of the finest mip's texels per output pixel
+    float weight;   // the tap's share; a point's shares sum to 1
+    float strokes;  // how much of its strokes show: less where the chart is seen edge-on
 };
 
 struct HatchFootprint {
@@ -50,7 +51,9 @@ struct HatchFootprint {
     int count;
 };
 
-// Appends a chart's taps. `target_lod` is the lod the octaves aim at,
+// Appends a chart's taps. In object and uv space (`octaves`), strokes
+// fade out where the chart is seen edge-on (its screen footprint more than
+// 3:1, gone at 8:1) instead of stretching into streaks. `target_lod` is the lod the octaves aim at,
 // log2(tam size / tile pixels): the tile then covers between tile_pixels/2
 // and tile_pixels pixels. Without `octaves` (screen space, where the
 // coordinates are already in pixels) the chart keeps its own scale.
