@@ -62,8 +62,7 @@ objects:
 TEST_CASE("intersection lines: none along a silhouette just above a floor", "[render][outline]") {
     // 6 cm above the floor, about three pixels here: the cube's lower edges
     // pass within a few thousandths of the floor's depth, and nothing
-    // crosses. (Closer than a pixel, an image cannot tell hovering from
-    // touching: docs/styles.md.)
+    // crosses.
     CHECK(red_lines(0.56f).pixels == 0);
     CHECK(red_lines(0.9f).pixels == 0);
 }
@@ -74,8 +73,15 @@ TEST_CASE("intersection lines: along the waterline of a cube sunk into the floor
     CHECK(sunk.pixels > 100);  // the waterline round the cube's visible sides
     // Only low on the cube, never at its top edges against the floor.
     CHECK(sunk.first_row > (sunk.cube_top + sunk.cube_bottom) / 2);
-    // Resting flush, the bottom edges are where the surfaces meet; the top
-    // half of the cube never gets a line.
+}
+
+TEST_CASE("intersection lines: none on a cube resting on the floor", "[render][outline]") {
+    // Resting flush, the cube's base touches the floor but nothing passes
+    // through it: no line at its lower edges (which the image alone cannot
+    // tell from a waterline) nor anywhere on its silhouette.
     const RedLines resting = red_lines(0.5f);
-    CHECK(resting.first_row > (resting.cube_top + resting.cube_bottom) / 2);
+    REQUIRE(resting.cube_bottom > resting.cube_top);  // the cube is in view
+    CHECK(resting.pixels == 0);
+    // Sunk by 2 mm, a fifth of a pixel here, it does pass through.
+    CHECK(red_lines(0.498f).pixels > 100);
 }

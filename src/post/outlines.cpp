@@ -56,6 +56,14 @@ struct Surfaces {
     const std::vector<float>& inverse_depth;
     const std::vector<uint32_t>& id;
     const std::vector<glm::vec3>& normal;
+    const std::vector<uint64_t>* crossing_pairs;
+
+    bool may_cross(uint32_t a, uint32_t b) const {
+        if (!crossing_pairs) return true;
+        const uint64_t key =
+            a < b ? (static_cast<uint64_t>(a) << 32) | b : (static_cast<uint64_t>(b) << 32) | a;
+        return std::binary_search(crossing_pairs->begin(), crossing_pairs->end(), key);
+    }
 };
 
 struct EdgeTest {
@@ -100,7 +108,8 @@ uint8_t classify_pair(const Surfaces& s, const EdgeTest& test, size_t p_out, siz
     if (jump) flags |= edge_bit(LineKind::silhouette, with_lower);
     if (id_p != id_q) flags |= edge_bit(LineKind::boundary, with_lower);
     if (p_surface && q_surface && !jump) {
-        if (id_p != id_q && crossing) flags |= edge_bit(LineKind::intersection, with_lower);
+        if (id_p != id_q && crossing && s.may_cross(id_p, id_q))
+            flags |= edge_bit(LineKind::intersection, with_lower);
         if (test.enabled & both_directions(LineKind::crease)) {
             const glm::vec3& np = s.normal[p];
             const glm::vec3& nq = s.normal[q];
@@ -146,7 +155,7 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
                         static_cast<float>(std::cos(static_cast<double>(style.crease_angle) *
                                                     (std::numbers::pi / 180.0))),
                         enabled};
-    const Surfaces s{scratch.inverse_depth, scratch.id, b.normal};
+    const Surfaces s{scratch.inverse_depth, scratch.id, b.normal, b.crossing_pairs};
     const size_t stride = static_cast<size_t>(w);
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
         const int y = static_cast<int>(row);

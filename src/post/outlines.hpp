@@ -53,6 +53,10 @@ struct OutlineBuffers {
     std::vector<float> depth;         // linear view depth; +inf (not in (0, inf)) = background
     std::vector<glm::vec3> normal;    // world or view space, one space per frame; any length
     std::vector<uint32_t> object_id;  // ignored on background pixels
+    // Set: intersection lines only between these object pairs (sorted keys,
+    // the smaller id in the high 32 bits), the ones that really cross. An
+    // image alone cannot tell flush contact from crossing.
+    const std::vector<uint64_t>* crossing_pairs = nullptr;
 
     // Sets the size and fills everything with background.
     void reset(int w, int h);

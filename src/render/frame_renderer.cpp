@@ -2,6 +2,7 @@
 
 #include "post/resolve.hpp"
 #include "render/alpha_coverage.hpp"
+#include "render/crossing_stage.hpp"
 #include "render/shade_lights.hpp"
 #include "render/shade_stage.hpp"
 
@@ -129,7 +130,15 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     if (plan.hidden_edges && !edge_mask.empty())
         hidden_edges_.draw(vertices.clip, inputs, plan, edge_mask, side_, sample_depth_,
                            sample_color_, sample_lines_);
-    if (plan.outlines) outlines_.draw(inputs.outlines, gbuffer_, sample_color_, pool_, lines);
+    if (plan.outlines) {
+        // Stage 8b: intersection lines only where objects really cross.
+        std::vector<uint64_t> crossing;
+        if (inputs.outlines.intersection.enabled)
+            crossing = crossing_object_pairs(world_, vertices);
+        gbuffer_.crossing_pairs = inputs.outlines.intersection.enabled ? &crossing : nullptr;
+        outlines_.draw(inputs.outlines, gbuffer_, sample_color_, pool_, lines);
+        gbuffer_.crossing_pairs = nullptr;
+    }
     resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
                          {out.color, out.depth, want_alpha ? &out.alpha : nullptr,
                           want_lines ? &out.lines : nullptr},
