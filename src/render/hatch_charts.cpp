@@ -118,8 +118,8 @@ float angle_of(glm::vec2 v) {
     return glm::dot(v, v) > 0.0f ? std::atan2(v.y, v.x) : 0.0f;
 }
 
-void object_charts(const HatchingState& h, const Triangle& t, glm::vec3 dir, float target_lod,
-                   HatchFootprint& out) {
+void object_charts(const HatchingState& h, const Triangle& t, glm::vec3 dir, float turn,
+                   float target_lod, HatchFootprint& out) {
     float share[3], total = 0.0f;
     for (int a = 0; a < 3; ++a) {
         const float n2 = t.normal[a] * t.normal[a];
@@ -139,14 +139,14 @@ void object_charts(const HatchingState& h, const Triangle& t, glm::vec3 dir, flo
         chart.coords = glm::vec2(t.position[i], t.position[j]) * h.scale;
         chart.ddx = glm::vec2(t.dpdx[i], t.dpdx[j]) * h.scale;
         chart.ddy = glm::vec2(t.dpdy[i], t.dpdy[j]) * h.scale;
-        chart.angle = angle_of(glm::vec2(dir[i], dir[j])) + h.angle;
+        chart.angle = angle_of(glm::vec2(dir[i], dir[j])) + turn;
         chart.weight = share[a] / kept;
         add_hatch_chart(chart, size, target_lod, true, out);
     }
 }
 
 void uv_chart(const HatchingState& h, const HatchPoint& pt, const Triangle& t, glm::vec3 dir,
-              float target_lod, HatchFootprint& out) {
+              float turn, float target_lod, HatchFootprint& out) {
     const glm::vec2 e1 = (t.uv[1] - t.uv[0]) * h.scale, e2 = (t.uv[2] - t.uv[0]) * h.scale;
     HatchChart chart;
     chart.coords =
@@ -154,13 +154,13 @@ void uv_chart(const HatchingState& h, const HatchPoint& pt, const Triangle& t, g
     chart.ddx = e1 * pt.ddx.y + e2 * pt.ddx.z;
     chart.ddy = e1 * pt.ddy.y + e2 * pt.ddy.z;
     const glm::vec2 ab = edge_coordinates(t, dir);
-    chart.angle = angle_of(ab.x * e1 + ab.y * e2) + h.angle;
+    chart.angle = angle_of(ab.x * e1 + ab.y * e2) + turn;
     chart.weight = 1.0f;
     add_hatch_chart(chart, h.tam->params.size, target_lod, true, out);
 }
 
 void screen_chart(const HatchingState& h, const HatchPoint& pt, const Triangle& t, glm::vec3 dir,
-                  float target_lod, HatchFootprint& out) {
+                  float turn, float target_lod, HatchFootprint& out) {
     HatchChart chart;
     chart.coords = pt.pixel / h.tile_pixels;
     chart.ddx = glm::vec2(1.0f / h.tile_pixels, 0.0f);
@@ -173,33 +173,36 @@ void screen_chart(const HatchingState& h, const HatchPoint& pt, const Triangle& 
     glm::vec2 step(0.0f);
     if (std::fabs(det) > 0.0f)
         step = glm::vec2(j22 * ab.x - j12 * ab.y, j11 * ab.y - j21 * ab.x) / det;
-    chart.angle = angle_of(step) + h.angle;
+    chart.angle = angle_of(step) + turn;
     chart.weight = 1.0f;
     add_hatch_chart(chart, h.tam->params.size, target_lod, false, out);
 }
 
 }  // namespace
 
-HatchFootprint hatch_footprint(const World& world, const HatchingState& h, const HatchPoint& pt) {
+HatchFootprint hatch_footprint(const World& world, const HatchingState& h, const HatchPoint& pt,
+                               HatchLayer layer) {
     HatchFootprint out;
     out.count = 0;
     const Triangle t = gather(world, pt);
     const float target_lod = std::log2(static_cast<float>(h.tam->params.size) / h.tile_pixels);
-    // `fixed`: the layout space's own first axis, turned by `angle` alone.
-    const glm::vec3 dir =
-        h.direction == HatchDirection::fixed ? glm::vec3(0.0f) : stroke_direction(world, h, pt, t);
+    // `fixed`, and the paper: the layout space's own first axis (turned by
+    // `angle` for strokes). Paper grain does not turn with the strokes.
+    const bool field = layer == HatchLayer::strokes && h.direction != HatchDirection::fixed;
+    const glm::vec3 dir = field ? stroke_direction(world, h, pt, t) : glm::vec3(0.0f);
+    const float turn = layer == HatchLayer::strokes ? h.angle : 0.0f;
     switch (h.space) {
         case HatchSpace::screen:
-            screen_chart(h, pt, t, dir, target_lod, out);
+            screen_chart(h, pt, t, dir, turn, target_lod, out);
             break;
         case HatchSpace::uv:
             if (pt.has_uvs) {
-                uv_chart(h, pt, t, dir, target_lod, out);
+                uv_chart(h, pt, t, dir, turn, target_lod, out);
                 break;
             }
             [[fallthrough]];
         case HatchSpace::object:
-            object_charts(h, t, dir, target_lod, out);
+            object_charts(h, t, dir, turn, target_lod, out);
             break;
     }
     return out;

@@ -22,7 +22,12 @@ struct HatchPoint {
     bool has_uvs;
 };
 
+// What a footprint is for: strokes follow the direction field; the paper
+// grain (pencil) is laid out the same way but never turned, so it does not
+// change where strokes begin.
+enum class HatchLayer { strokes, paper };
+
 HatchFootprint hatch_footprint(const World& world, const HatchingState& style,
-                               const HatchPoint& point);
+                               const HatchPoint& point, HatchLayer layer);
 
 }  // namespace facet

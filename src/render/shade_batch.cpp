@@ -354,8 +354,8 @@ void apply_emission(const StyleState& style, ShadeBatch& b) {
 }
 
 // What the layers need, lane by lane: wire coverage, and (after shading,
-// from `shaded`) where to read the strokes. Lanes whose tone draws no
-// strokes skip the footprint, unless pencil shades the paper there too.
+// from `shaded`) where to read the strokes and the paper. Lanes whose tone
+// draws no strokes skip the strokes' footprint; only pencil reads paper.
 void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBatch& b,
                   const ShadedLanes* shaded, LayerInputs (&out)[kLanes]) {
     const int side = in.samples_per_side;
@@ -364,6 +364,7 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         l.albedo = b.lanes.albedo_at(i);
         l.wire = 0.0f;
         l.hatch.count = 0;
+        l.paper.count = 0;
         const SurfaceSample s = pixel_sample(b, i, side);
         if (style.wireframe && !in.edge_mask.empty())
             l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
@@ -377,7 +378,8 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         const HatchPoint point{
             s.triangle,  s.bary, s.ddx, s.ddy, glm::vec2(b.x[i], b.y[i]) / static_cast<float>(side),
             b.has_uvs[i]};
-        l.hatch = hatch_footprint(in.world, h, point);
+        if (strokes) l.hatch = hatch_footprint(in.world, h, point, HatchLayer::strokes);
+        if (h.pencil) l.paper = hatch_footprint(in.world, h, point, HatchLayer::paper);
     }
 }
 

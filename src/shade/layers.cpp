@@ -28,7 +28,7 @@ glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInpu
         // strokes alone say how much light falls (as in a pen drawing
         // coloured with watercolour).
         if (h.wash) color = h.paper * (glm::vec3(1.0f) + (in.albedo - glm::vec3(1.0f)) * *h.wash);
-        if (h.pencil) color *= hatch_paper_shade(*h.tam, in.hatch);
+        if (h.pencil) color *= hatch_paper_shade(*h.tam, in.paper);
         const glm::vec3 ink = h.ink ? *h.ink : palette_ink(style.palette, in.albedo);
         color =
             h.additive ? add_hatching(color, ink, coverage) : apply_hatching(color, ink, coverage);

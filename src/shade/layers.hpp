@@ -15,6 +15,7 @@ namespace facet {
 struct LayerInputs {
     glm::vec3 albedo;      // the object colour, for the default ink
     HatchFootprint hatch;  // where the strokes are read (styles with hatching)
+    HatchFootprint paper;  // where the paper grain is read (pencil)
     float wire;            // wireframe line coverage, 0..1
 };
 
