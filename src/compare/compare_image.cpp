@@ -5,6 +5,7 @@
 #include <fstream>
 #include <limits>
 
+#include "core/color.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "output/encoders.hpp"
@@ -215,8 +216,8 @@ double sequence_white(const std::vector<std::string>& ref_paths) {
         std::vector<float> luminance;
         luminance.reserve(image.samples.size() / 3);
         for (size_t i = 0; i + 2 < image.samples.size(); i += 3) {
-            const float y = 0.2126f * image.samples[i] + 0.7152f * image.samples[i + 1] +
-                            0.0722f * image.samples[i + 2];
+            const float y =
+                rec709_luminance(image.samples[i], image.samples[i + 1], image.samples[i + 2]);
             if (std::isfinite(y) && y > 0) luminance.push_back(y);
         }
         if (luminance.empty()) continue;

@@ -10,4 +10,11 @@ float srgb_to_linear(float c);
 // for building the encoder's lookup table.
 double linear_to_srgb(double c);
 
+// Relative luminance of linear RGB, Rec. 709 weights; for floats or SIMD
+// lanes alike.
+template <typename T>
+T rec709_luminance(const T& r, const T& g, const T& b) {
+    return 0.2126f * r + 0.7152f * g + 0.0722f * b;
+}
+
 }  // namespace facet

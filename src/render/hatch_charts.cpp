@@ -178,14 +178,13 @@ void screen_chart(const HatchingState& h, const HatchPoint& pt, const Triangle& 
     add_hatch_chart(chart, h.tam->params.size, target_lod, false, out);
 }
 
-}  // namespace
+// What a footprint is for (see hatch_footprints).
+enum class HatchLayer { strokes, paper };
 
-HatchFootprint hatch_footprint(const World& world, const HatchingState& h, const HatchPoint& pt,
-                               HatchLayer layer) {
-    HatchFootprint out;
+// One layer's charts at the gathered point.
+void layer_charts(const World& world, const HatchingState& h, const HatchPoint& pt,
+                  const Triangle& t, HatchLayer layer, HatchFootprint& out) {
     out.count = 0;
-    const Triangle t = gather(world, pt);
-    const float target_lod = std::log2(static_cast<float>(h.tam->params.size) / h.tile_pixels);
     // `fixed`, and the paper: the layout space's own first axis (turned by
     // `angle` for strokes). Paper grain does not turn with the strokes.
     const bool field = layer == HatchLayer::strokes && h.direction != HatchDirection::fixed;
@@ -193,19 +192,27 @@ HatchFootprint hatch_footprint(const World& world, const HatchingState& h, const
     const float turn = layer == HatchLayer::strokes ? h.angle : 0.0f;
     switch (h.space) {
         case HatchSpace::screen:
-            screen_chart(h, pt, t, dir, turn, target_lod, out);
+            screen_chart(h, pt, t, dir, turn, h.target_lod, out);
             break;
         case HatchSpace::uv:
             if (pt.has_uvs) {
-                uv_chart(h, pt, t, dir, turn, target_lod, out);
+                uv_chart(h, pt, t, dir, turn, h.target_lod, out);
                 break;
             }
             [[fallthrough]];
         case HatchSpace::object:
-            object_charts(h, t, dir, turn, target_lod, out);
+            object_charts(h, t, dir, turn, h.target_lod, out);
             break;
     }
-    return out;
+}
+
+}  // namespace
+
+void hatch_footprints(const World& world, const HatchingState& h, const HatchPoint& pt,
+                      HatchFootprint* strokes, HatchFootprint* paper) {
+    const Triangle t = gather(world, pt);
+    if (strokes) layer_charts(world, h, pt, t, HatchLayer::strokes, *strokes);
+    if (paper) layer_charts(world, h, pt, t, HatchLayer::paper, *paper);
 }
 
 }  // namespace facet

@@ -22,12 +22,11 @@ struct HatchPoint {
     bool has_uvs;
 };
 
-// What a footprint is for: strokes follow the direction field; the paper
-// grain (pencil) is laid out the same way but never turned, so it does not
-// change where strokes begin.
-enum class HatchLayer { strokes, paper };
-
-HatchFootprint hatch_footprint(const World& world, const HatchingState& style,
-                               const HatchPoint& point, HatchLayer layer);
+// The footprints asked for (null: not wanted), from one gathering of the
+// point's triangle: the strokes', which follow the direction field, and the
+// paper grain's (pencil), laid out the same way but never turned, so it
+// does not change where strokes begin.
+void hatch_footprints(const World& world, const HatchingState& style, const HatchPoint& point,
+                      HatchFootprint* strokes, HatchFootprint* paper);
 
 }  // namespace facet

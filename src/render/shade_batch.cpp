@@ -6,9 +6,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/color.hpp"
 #include "render/hatch_charts.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
+#include "shade/style_math.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
 
@@ -169,13 +171,12 @@ ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> ligh
         const vf s = one - kept / (full > zero ? full : one);
         return full > zero ? simd::vmin(simd::vmax(s, zero), one) : zero;
     };
-    auto luminance = [](vf r, vf g, vf b) { return 0.2126f * r + 0.7152f * g + 0.0722f * b; };
     ShadowShare out;
     out.channel[0] = share(with.dr, without.dr);
     out.channel[1] = share(with.dg, without.dg);
     out.channel[2] = share(with.db, without.db);
-    out.luminance =
-        share(luminance(with.dr, with.dg, with.db), luminance(without.dr, without.dg, without.db));
+    out.luminance = share(rec709_luminance(with.dr, with.dg, with.db),
+                          rec709_luminance(without.dr, without.dg, without.db));
     return out;
 }
 
@@ -330,9 +331,7 @@ void apply_fades(const ShadeInputs& in, ShadeBatch& b) {
         const glm::vec3 p = b.sample.bary[0][i] * in.world.positions[c[0]] +
                             b.sample.bary[1][i] * in.world.positions[c[1]] +
                             b.sample.bary[2][i] * in.world.positions[c[2]];
-        const float t =
-            std::clamp((glm::length(p) - m.fade_start) / (m.fade_end - m.fade_start), 0.0f, 1.0f);
-        const float kept = 1.0f - t * t * (3.0f - 2.0f * t);
+        const float kept = 1.0f - smoothstep(m.fade_start, m.fade_end, glm::length(p));
         for (int a = 0; a < 3; ++a)
             b.color[a][i] = background[a] + (b.color[a][i] - background[a]) * kept;
         b.coverage[i] *= kept;
@@ -365,21 +364,22 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         l.wire = 0.0f;
         l.hatch.count = 0;
         l.paper.count = 0;
+        l.hatch_tone = 1.0f;
         const SurfaceSample s = pixel_sample(b, i, side);
         if (style.wireframe && !in.edge_mask.empty())
             l.wire = wire_coverage(edge_distances(s.bary, s.ddx, s.ddy), style.wire.width,
                                    in.edge_mask[s.triangle]);
         if (!style.hatching || !shaded) continue;
         const HatchingState& h = *style.hatching;
-        const bool strokes = h.strength > 0.0f && hatch_tone(style, shaded->color_at(i), l.albedo,
-                                                             shaded->palette_tone[i]) < 1.0f;
+        l.hatch_tone = hatch_tone(style, shaded->color_at(i), l.albedo, shaded->palette_tone[i]);
+        const bool strokes = h.strength > 0.0f && l.hatch_tone < 1.0f;
         if (!strokes && !h.pencil) continue;
         // pixel_sample's derivatives are per output pixel already.
         const HatchPoint point{
             s.triangle,  s.bary, s.ddx, s.ddy, glm::vec2(b.x[i], b.y[i]) / static_cast<float>(side),
             b.has_uvs[i]};
-        if (strokes) l.hatch = hatch_footprint(in.world, h, point, HatchLayer::strokes);
-        if (h.pencil) l.paper = hatch_footprint(in.world, h, point, HatchLayer::paper);
+        hatch_footprints(in.world, h, point, strokes ? &l.hatch : nullptr,
+                         h.pencil ? &l.paper : nullptr);
     }
 }
 
@@ -408,8 +408,7 @@ void finish_layers(const ShadeInputs& in, const StyleState& style, const Shading
         b.wire_color = style.wire.color;
     }
     for (int i = 0; i < b.count; ++i) {
-        const glm::vec3 c =
-            apply_layers(style, shaded.color_at(i), layers[i], shaded.palette_tone[i]);
+        const glm::vec3 c = apply_layers(style, shaded.color_at(i), layers[i]);
         for (int a = 0; a < 3; ++a) b.color[a][i] = c[a];
     }
 }

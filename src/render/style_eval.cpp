@@ -67,6 +67,7 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         h.angle = glm::radians(d.hatching->angle);
         h.scale = d.hatching->scale;
         h.tile_pixels = d.hatching->tile_pixels;
+        h.target_lod = std::log2(static_cast<float>(h.tam->params.size) / h.tile_pixels);
         h.pencil = d.hatching->pencil;
         if (d.hatching->wash) h.wash = evaluate(*d.hatching->wash, at);
         h.paper = evaluate(d.hatching->paper, at);

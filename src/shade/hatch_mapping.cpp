@@ -6,6 +6,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "shade/style_math.hpp"
+
 namespace facet {
 namespace {
 
@@ -52,9 +54,7 @@ float anisotropy_fade(glm::vec2 ddx, glm::vec2 ddy) {
     const float radius = std::sqrt(0.25f * (a - b) * (a - b) + c * c);
     const float major = mean + radius, minor = mean - radius;
     if (!(minor > 0.0f)) return major > 0.0f ? 0.0f : 1.0f;
-    const float ratio = std::sqrt(major / minor);
-    const float t = std::clamp((ratio - 3.0f) / 5.0f, 0.0f, 1.0f);
-    return 1.0f - t * t * (3.0f - 2.0f * t);
+    return 1.0f - smoothstep(3.0f, 8.0f, std::sqrt(major / minor));
 }
 
 }  // namespace

@@ -2,28 +2,22 @@
 
 #include <algorithm>
 
+#include "core/color.hpp"
+
 namespace facet {
-namespace {
-
-float luminance(const glm::vec3& c) {
-    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;  // Rec. 709, linear
-}
-
-}  // namespace
 
 float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone) {
     if (palette_tone >= 0) return palette_hatch_tone(style.palette, palette_tone);
     // Relative to the object's own colour, so dark colours are not all ink.
-    const float lit = luminance(color) / std::max(luminance(albedo), 1e-4f);
+    const float lit = rec709_luminance(color.x, color.y, color.z) /
+                      std::max(rec709_luminance(albedo.x, albedo.y, albedo.z), 1e-4f);
     return std::clamp(lit / style.hatching->white, 0.0f, 1.0f);
 }
 
-glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
-                       float palette_tone) {
+glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in) {
     if (style.hatching) {
         const HatchingState& h = *style.hatching;
-        const float tone = hatch_tone(style, color, in.albedo, palette_tone);
-        const float coverage = hatch_coverage(*h.tam, tone, in.hatch) * h.strength;
+        const float coverage = hatch_coverage(*h.tam, in.hatch_tone, in.hatch) * h.strength;
         // A wash: the paper tinted by the object's colour, flat, so the
         // strokes alone say how much light falls (as in a pen drawing
         // coloured with watercolour).

@@ -16,6 +16,7 @@ struct LayerInputs {
     glm::vec3 albedo;      // the object colour, for the default ink
     HatchFootprint hatch;  // where the strokes are read (styles with hatching)
     HatchFootprint paper;  // where the paper grain is read (pencil)
+    float hatch_tone;      // hatch_tone() of the point (styles with hatching)
     float wire;            // wireframe line coverage, 0..1
 };
 
@@ -29,8 +30,7 @@ inline bool has_layers(const StyleState& style) {
 // brightness relative to its own colour's, over the style's white point.
 float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone);
 
-// `palette_tone` as for hatch_tone.
-glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in,
-                       float palette_tone);
+// The layers over a shading model's colour.
+glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in);
 
 }  // namespace facet

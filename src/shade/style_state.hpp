@@ -26,6 +26,7 @@ struct HatchingState {
     float angle = 0;          // radians, from the direction
     float scale = 8;          // object and uv space: tiles per unit
     float tile_pixels = 160;  // the tile's size on screen, in output pixels
+    float target_lod = 0;     // log2(tam size / tile_pixels): the lod the octaves aim at
     bool pencil = false;
     std::optional<float> wash;  // set: strokes on the paper tinted this much, not the shading
     glm::vec3 paper{1.0f};
