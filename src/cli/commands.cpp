@@ -18,6 +18,7 @@
 #include "cli/farm_commands.hpp"
 #include "cli/inspect_commands.hpp"
 #include "cli/options.hpp"
+#include "cli/preview_command.hpp"
 #include "cli/progress.hpp"
 #include "cli/render_args.hpp"
 #include "cli/shell_docs.hpp"
@@ -670,6 +671,9 @@ int run_command_line(int argc, char** argv) {
     VideoArgs video_args;
     CLI::App* video = add_video_command(app, video_args);
 
+    RenderArgs preview_args;
+    CLI::App* preview = add_preview_command(app, preview_args);
+
     MergeArgs merge_args;
     CLI::App* merge = add_merge_command(app, merge_args);
     FarmArgs slurm_args, openjd_args;
@@ -692,6 +696,7 @@ int run_command_line(int argc, char** argv) {
         sub->allow_extras();
     render_args.command_line.assign(argv, argv + argc);
     merge_args.command_line = render_args.command_line;
+    preview_args.command_line = render_args.command_line;
     try {
         check_subcommand_name(app, argc, argv);
         if (argc > 2 && std::string(argv[1]) == "farm")
@@ -717,6 +722,7 @@ int run_command_line(int argc, char** argv) {
         if (bench->parsed()) return bench_command(bench_args);
         if (sheet->parsed()) return sheet_command(sheet_args);
         if (video->parsed()) return video_command(video_args);
+        if (preview->parsed()) return preview_command(preview_args);
         if (merge->parsed()) return merge_command(merge_args);
         if (farm->parsed())
             return farm_command(farm->get_subcommand("openjd")->parsed() ? openjd_args : slurm_args,

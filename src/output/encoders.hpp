@@ -88,6 +88,8 @@ struct DecodedPng {
     std::vector<uint16_t> samples;
 };
 DecodedPng read_png(const std::string& path);
+// The same from a PNG file's bytes in memory; `what` names them in errors.
+DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what);
 
 // A decoded EXR: every channel as float, by name.
 struct DecodedExr {

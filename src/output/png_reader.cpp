@@ -5,11 +5,10 @@
 
 namespace facet {
 
-DecodedPng read_png(const std::string& path) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path.c_str()))
-        throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
+namespace {
+
+// The rest of a read once libpng has the header: `path` names the file in errors.
+DecodedPng finish_reading(png_image& image, const std::string& path) {
     DecodedPng out;
     out.width = static_cast<int>(image.width);
     out.height = static_cast<int>(image.height);
@@ -34,6 +33,24 @@ DecodedPng read_png(const std::string& path) {
     }
     png_image_free(&image);
     return out;
+}
+
+}  // namespace
+
+DecodedPng read_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_file(&image, path.c_str()))
+        throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
+    return finish_reading(image, path);
+}
+
+DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
+        throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + image.message);
+    return finish_reading(image, what);
 }
 
 }  // namespace facet

@@ -26,6 +26,8 @@ const Image<Rgba16F>& rgba_image(Pass pass, const FrameImages& images) {
     return pass == Pass::alpha ? images.alpha : pass == Pass::lines ? images.lines : images.color;
 }
 
+}  // namespace
+
 std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const FrameImages& images,
                                      const PassFileFacts& facts) {
     const int level = out.png_compression;
@@ -56,8 +58,6 @@ std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const Fra
     }
     return {};
 }
-
-}  // namespace
 
 std::vector<ExrChannel> exr_pass_channels(Pass pass, const FrameImages& images, bool layered) {
     std::vector<ExrChannel> c;

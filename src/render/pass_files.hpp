@@ -36,6 +36,10 @@ void encode_frame_files(
     const OutputDesc& out, const FrameImages& images, const PassFileFacts& facts,
     const std::function<void(const PassFile&, const std::vector<uint8_t>&)>& write);
 
+// The PNG view of one pass (not position or motion, which have none: empty).
+std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const FrameImages& images,
+                                     const PassFileFacts& facts);
+
 // What each object and material id stands for, for the manifest: scene
 // object i has id i + 1, World material i id i + 1 (0 is the background).
 // Materials without a name in their file are named "OBJECT:N", N counting

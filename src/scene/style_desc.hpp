@@ -168,6 +168,7 @@ struct StyleDesc {
     WireframeDesc wireframe;
 
     std::vector<std::string> chain;  // the presets it extends, nearest last
+    std::vector<std::string> files;  // the preset files read: the chain's, then its own
     SourceLocation where;
 };
 

@@ -313,6 +313,7 @@ StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
     StyleContext own = context;
     own.base_dir = fs::path(path).parent_path().string();
     apply_style_layer(root, style, own, visiting);
+    style.files.push_back(path);
     visiting.pop_back();
     return style;
 }

@@ -1,0 +1,114 @@
+#include "preview/tweaks.hpp"
+
+#include <charconv>
+#include <filesystem>
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::vector<std::string> split_path(const std::string& path) {
+    std::vector<std::string> parts;
+    size_t start = 0;
+    for (;;) {
+        const size_t dot = path.find('.', start);
+        parts.push_back(path.substr(start, dot == std::string::npos ? dot : dot - start));
+        if (dot == std::string::npos) return parts;
+        start = dot + 1;
+    }
+}
+
+std::string shell_quoted(const std::string& text) {
+    std::string out = "'";
+    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+// How the style file names the style it extends: a preset's name when it
+// is found in the preset folders, else the file's absolute path.
+std::string extends_name(const std::string& file, const std::vector<std::string>& style_dirs) {
+    std::error_code ec;
+    const fs::path folder = fs::weakly_canonical(fs::path(file).parent_path(), ec);
+    for (const std::string& dir : style_dirs)
+        if (fs::weakly_canonical(dir, ec) == folder) return fs::path(file).stem().string();
+    return fs::weakly_canonical(file, ec).string();
+}
+
+}  // namespace
+
+std::string yaml_number(float value) {
+    if (value == 0.0f) value = 0.0f;  // no "-0"
+    char buffer[32];
+    const auto result = std::to_chars(buffer, buffer + sizeof buffer, value);
+    return std::string(buffer, result.ptr);
+}
+
+std::string yaml_vector(const glm::vec3& v) {
+    return "[" + yaml_number(v.x) + ", " + yaml_number(v.y) + ", " + yaml_number(v.z) + "]";
+}
+
+std::string yaml_value(const TweakValue& value) {
+    if (const float* f = std::get_if<float>(&value)) return yaml_number(*f);
+    if (const int* i = std::get_if<int>(&value)) return std::to_string(*i);
+    if (const glm::vec3* v = std::get_if<glm::vec3>(&value)) return yaml_vector(*v);
+    std::string quoted = "\"";
+    for (char c : std::get<std::string>(value))
+        quoted += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
+    return quoted + "\"";
+}
+
+std::vector<Override> tweak_overrides(const Tweaks& tweaks) {
+    std::vector<Override> out;
+    // The preset first: style.* values are a layer over whichever preset it is.
+    if (auto it = tweaks.find("style"); it != tweaks.end())
+        out.push_back({"style", yaml_value(it->second), "preview panel: style"});
+    for (const auto& [path, value] : tweaks)
+        if (path != "style") out.push_back({path, yaml_value(value), "preview panel: " + path});
+    return out;
+}
+
+std::string define_arguments(const std::vector<Override>& overrides) {
+    std::string out;
+    for (const Override& o : overrides)
+        out += (out.empty() ? "" : " ") + std::string("-D ") + shell_quoted(o.path + "=" + o.value);
+    return out;
+}
+
+std::string style_file_yaml(const SceneDesc& scene, const Tweaks& tweaks,
+                            const std::vector<std::string>& style_dirs) {
+    std::string text = "# Written by facet preview from the scene " + scene.path + ".\n";
+    if (auto it = tweaks.find("style"); it != tweaks.end())
+        text += "extends: " + std::get<std::string>(it->second) + "\n";
+    else if (!scene.style.files.empty())
+        text += "extends: " + extends_name(scene.style.files.back(), style_dirs) + "\n";
+    else
+        text += "# The scene's style is written in the scene itself: add these keys to it.\n";
+    // Paths arrive sorted, so keys that share a parent are neighbours: each
+    // line opens only the parents the previous line did not.
+    std::vector<std::string> open;
+    std::string scene_values;
+    for (const auto& [path, value] : tweaks) {
+        if (path == "style") continue;
+        if (path.rfind("style.", 0) != 0) {
+            scene_values += "#   -D " + path + "=" + yaml_value(value) + "\n";
+            continue;
+        }
+        const std::vector<std::string> parts = split_path(path.substr(6));
+        size_t shared = 0;
+        while (shared < open.size() && shared + 1 < parts.size() && open[shared] == parts[shared])
+            ++shared;
+        open.resize(shared);
+        for (size_t i = shared; i + 1 < parts.size(); ++i) {
+            text += std::string(2 * i, ' ') + parts[i] + ":\n";
+            open.push_back(parts[i]);
+        }
+        text += std::string(2 * (parts.size() - 1), ' ') + parts.back() + ": " + yaml_value(value) +
+                "\n";
+    }
+    if (!scene_values.empty())
+        text += "# Scene values, not part of a style (give them with -D):\n" + scene_values;
+    return text;
+}
+
+}  // namespace facet

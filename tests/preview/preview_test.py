@@ -1,0 +1,252 @@
+#!/usr/bin/env python3
+"""facet preview under Xvfb (docs/preview.md): the window shows facet's own
+render, reloads an edited scene, shows a broken scene's error over the last
+image without closing, and its keys write snapshots and print cameras that
+`facet render` reproduces bit for bit.
+
+    preview_test.py FACET    (exit 77: skipped, Xvfb, xdotool or xwd missing)
+"""
+import os
+import re
+import select
+import shutil
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+
+import numpy as np
+import yaml
+from skimage import io as skio
+
+FACET = os.path.abspath(sys.argv[1])
+WAIT = 120  # seconds for any one thing to happen (sanitizer builds are slow)
+WIDTH, HEIGHT = 320, 240
+
+
+def scene_text(color, camera=None, broken=False):
+    camera = camera or "camera:\n  position: [0, 1.5, 4]\n  target: [0, 0.3, 0]\n"
+    material = "colour" if broken else "color"  # a misspelt key: an error at its line
+    return f"""output:
+  size: [{WIDTH}, {HEIGHT}]
+  frames: 1-12
+  samples: 4
+{camera}objects:
+  - primitive: cube
+    rotate: {{ keys: {{ 1: [0, 0, 0], 12: [0, 90, 0] }} }}
+    material: {{ {material}: {color} }}
+  - primitive: plane
+    scale: [4, 1, 4]
+    translate: [0, -0.5, 0]
+"""
+
+
+def write_atomically(path, text):
+    # As editors do: a new file renamed over the old one.
+    with open(path + ".tmp", "w") as f:
+        f.write(text)
+    os.replace(path + ".tmp", path)
+
+
+def read_xwd(data):
+    """An X window dump (XWD, version 7) of a 24/32-bit TrueColor window as RGB."""
+    header = np.frombuffer(data[:100], dtype=">u4")
+    header_size, version, _, depth, width, height = header[:6]
+    byte_order, bits_per_pixel, bytes_per_line = header[7], header[11], header[12]
+    masks = header[14:17]
+    colormap_entries = header[19]
+    assert version == 7 and bits_per_pixel == 32, f"unexpected XWD: depth {depth}, {bits_per_pixel} bpp"
+    start = int(header_size) + 12 * int(colormap_entries)
+    rows = np.frombuffer(data[start:start + int(bytes_per_line) * int(height)],
+                         dtype="<u4" if byte_order == 0 else ">u4")
+    pixels = rows.reshape(int(height), int(bytes_per_line) // 4)[:, :int(width)]
+    channels = []
+    for mask in masks:
+        shift = (int(mask) & -int(mask)).bit_length() - 1
+        channels.append((pixels & int(mask)) >> shift)
+    return np.stack(channels, axis=-1).astype(np.uint8)
+
+
+class Preview:
+    """A running `facet preview`, its stderr lines collected as they come."""
+
+    def __init__(self, args, cwd, env):
+        self.process = subprocess.Popen([FACET, "preview", *args], cwd=cwd, env=env,
+                                        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        self.lines, self.stdout = [], []
+        self.lock = threading.Lock()
+        threading.Thread(target=self._read, args=(self.process.stderr, self.lines), daemon=True).start()
+        threading.Thread(target=self._read, args=(self.process.stdout, self.stdout), daemon=True).start()
+
+    def _read(self, stream, into):
+        for line in stream:
+            with self.lock:
+                into.append(line.rstrip("\n"))
+
+    def wait_for(self, pattern, after=0, into=None):
+        """The first line from index `after` on matching `pattern`, and its index."""
+        into = self.lines if into is None else into
+        deadline = time.time() + WAIT
+        while time.time() < deadline:
+            with self.lock:
+                for i in range(after, len(into)):
+                    if re.search(pattern, into[i]):
+                        return into[i], i
+            assert self.process.poll() is None, f"preview exited ({self.process.returncode}):\n" + "\n".join(self.lines)
+            time.sleep(0.05)
+        raise AssertionError(f"no line matching {pattern!r} within {WAIT} s; stderr:\n" + "\n".join(self.lines))
+
+    def count(self):
+        with self.lock:
+            return len(self.lines)
+
+
+def render(cwd, out, *extra):
+    subprocess.run([FACET, "render", "scene.yaml", "-f", "1", "-o", out, "-q", "--overwrite", *extra],
+                   cwd=cwd, check=True)
+    return os.path.join(cwd, out, "scene", "color.0001.png")
+
+
+def main():
+    missing = [tool for tool in ("Xvfb", "xdotool", "xwd") if not shutil.which(tool)]
+    if missing:
+        print("SKIP: " + ", ".join(missing) + " not installed (scripts/setup.sh --tests installs them)")
+        return 77
+    work = tempfile.mkdtemp(prefix="facet-preview-")
+    read_fd, write_fd = os.pipe()
+    xvfb = subprocess.Popen(["Xvfb", "-displayfd", str(write_fd), "-screen", "0", "1280x1024x24",
+                             "-nolisten", "tcp"], pass_fds=(write_fd,), stderr=subprocess.DEVNULL)
+    os.close(write_fd)
+    ready, _, _ = select.select([read_fd], [], [], 30)
+    assert ready, "Xvfb did not start"
+    display = ":" + os.read(read_fd, 16).decode().strip()
+    env = dict(os.environ, DISPLAY=display)
+    # Sanitizer builds: Mesa's OpenGL driver, loaded and unloaded at run
+    # time, and D-Bus leave allocations that LeakSanitizer cannot name or
+    # that are not facet's. The preview's own code is leak-checked in
+    # facet_tests (test_preview.cpp); here the other sanitizers stay on.
+    env["ASAN_OPTIONS"] = ":".join(filter(None, [os.environ.get("ASAN_OPTIONS"), "detect_leaks=0"]))
+    try:
+        run_checks(work, env)
+    finally:
+        xvfb.terminate()
+        xvfb.wait()
+        shutil.rmtree(work, ignore_errors=True)
+    print("preview: all checks passed")
+    return 0
+
+
+def screenshot(window, env, keep_as=None):
+    """The window's pixels; FACET_PREVIEW_SHOTS=DIR also keeps them as DIR/NAME.png."""
+    dump = subprocess.run(["xwd", "-silent", "-id", window], env=env, check=True, capture_output=True).stdout
+    shot = read_xwd(dump)
+    if keep_as and os.environ.get("FACET_PREVIEW_SHOTS"):
+        skio.imsave(os.path.join(os.environ["FACET_PREVIEW_SHOTS"], keep_as + ".png"), shot,
+                    check_contrast=False)
+    return shot
+
+
+def image_area(shot):
+    return shot[:HEIGHT, :WIDTH]
+
+
+def run_checks(work, env):
+    scene = os.path.join(work, "scene.yaml")
+    write_atomically(scene, scene_text("[0.8, 0.2, 0.1]"))
+    red = skio.imread(render(work, "ref-red"))
+    preview = Preview(["scene.yaml", "-o", "snapshots"], work, env)
+    try:
+        window = subprocess.run(["xdotool", "search", "--sync", "--name", "facet preview - scene.yaml"],
+                                env=env, check=True, capture_output=True, text=True).stdout.split()[0]
+
+        # 1. The window shows the scene's final image, pixel for pixel.
+        _, at = preview.wait_for(r"^preview: frame 1: final")
+        shot = screenshot(window, env, "loaded")
+        assert shot.shape[0] >= HEIGHT and shot.shape[1] > WIDTH, f"window {shot.shape}"
+        assert np.array_equal(image_area(shot), red), \
+            f"the window's image differs from facet render's: {np.abs(image_area(shot).astype(int) - red).max()}"
+        print("ok: the window shows facet render's image")
+
+        # 2. An edit (the cube's colour) reloads and re-renders.
+        write_atomically(scene, scene_text("[0.1, 0.3, 0.9]"))
+        blue = skio.imread(render(work, "ref-blue"))
+        _, at = preview.wait_for(r"^preview: reloading", at + 1)
+        _, at = preview.wait_for(r"^preview: frame 1: final", at + 1)
+        shot = image_area(screenshot(window, env, "edited"))
+        assert not np.array_equal(shot, red), "the window still shows the red cube"
+        assert np.array_equal(shot, blue), "the window does not show the edited scene"
+        print("ok: an edited colour shows")
+
+        # 3. A broken scene: its error over the last image; the window stays.
+        write_atomically(scene, scene_text("[0.1, 0.3, 0.9]", broken=True))
+        line, at = preview.wait_for(r"^preview: error: ", at + 1)
+        assert re.search(r"scene\.yaml:\d+:\d+: .*colour", line), f"error without file:line:col: {line}"
+        time.sleep(1.0)  # a redraw or two
+        shot = image_area(screenshot(window, env, "error"))
+        changed_rows = np.nonzero(np.any(shot != blue, axis=(1, 2)))[0]
+        assert len(changed_rows) > 0, "no error shown over the image"
+        assert changed_rows[0] == 0 and changed_rows[-1] < HEIGHT // 2, \
+            f"the error covers rows {changed_rows[0]}..{changed_rows[-1]}, not a band at the top"
+        band = shot[:changed_rows[-1] + 1]
+        reddish = (band[..., 0] > 180) & (band[..., 1] < 140) & (band[..., 2] < 140)
+        assert reddish.sum() > 50, "the error band has no red text"
+        assert np.array_equal(shot[changed_rows[-1] + 1:], blue[changed_rows[-1] + 1:]), \
+            "the last good image is not kept below the error"
+        assert preview.process.poll() is None, "the preview closed on an error"
+        print(f"ok: the error shows over rows 0..{changed_rows[-1]} and the window stays")
+
+        # 4. Fixed again: the error goes, the image comes back.
+        write_atomically(scene, scene_text("[0.1, 0.3, 0.9]"))
+        _, at = preview.wait_for(r"^preview: the scene loads again", at + 1)
+        time.sleep(1.0)
+        assert np.array_equal(image_area(screenshot(window, env)), blue), "the error stays after the fix"
+        print("ok: a fixed scene clears the error")
+
+        # 5. S writes a snapshot through render's writers: the same bytes.
+        subprocess.run(["xdotool", "key", "--window", window, "s"], env=env, check=True)
+        _, at = preview.wait_for(r"^preview: snapshot of frame 1: wrote", at + 1)
+        with open(os.path.join(work, "snapshots", "scene", "color.0001.png"), "rb") as f:
+            snapshot = f.read()
+        with open(os.path.join(work, "ref-blue", "scene", "color.0001.png"), "rb") as f:
+            assert snapshot == f.read(), "the snapshot differs from facet render's file"
+        print("ok: the snapshot equals facet render's file")
+
+        # 6. Orbit with the mouse, print the camera (C), snapshot: pasting
+        # the printed camera into the scene renders the snapshot exactly.
+        # One step at a time: SDL takes a button only once the pointer has
+        # entered its window.
+        for step in (["mousemove", "--window", window, "160", "120"], ["mousedown", "1"],
+                     ["mousemove_relative", "--", "30", "-12"], ["mousemove_relative", "--", "30", "-12"],
+                     ["mouseup", "1"]):
+            subprocess.run(["xdotool", *step], env=env, check=True)
+            time.sleep(0.2)
+        printed = len(preview.stdout)
+        subprocess.run(["xdotool", "key", "--window", window, "c"], env=env, check=True)
+        preview.wait_for(r"^  far: ", printed, into=preview.stdout)
+        with preview.lock:
+            camera_text = "\n".join(line for line in preview.stdout[printed:] if not line.startswith("#")) + "\n"
+        camera = yaml.safe_load(camera_text)["camera"]
+        assert camera["position"] != [0, 1.5, 4], f"the drag did not move the camera: {camera}\n" + "\n".join(preview.lines)
+        _, at = preview.wait_for(r"^preview: frame 1: final", at + 1)
+        subprocess.run(["xdotool", "key", "--window", window, "s"], env=env, check=True)
+        _, at = preview.wait_for(r"^preview: snapshot of frame 1: wrote", at + 1)
+        write_atomically(scene, scene_text("[0.1, 0.3, 0.9]", camera=camera_text))
+        moved = render(work, "ref-moved")
+        with open(moved, "rb") as a, open(os.path.join(work, "snapshots", "scene", "color.0001.png"), "rb") as b:
+            assert a.read() == b.read(), "the printed camera does not render the snapshot"
+        print(f"ok: the printed camera ({camera['position']}) renders the snapshot")
+
+        # 7. Q closes the window; the preview ends with 0.
+        # The window may be gone before xdotool sends the key's release.
+        subprocess.run(["xdotool", "key", "--window", window, "q"], env=env, stderr=subprocess.DEVNULL)
+        assert preview.process.wait(timeout=WAIT) == 0, f"exit code {preview.process.returncode}"
+        print("ok: q quits with 0")
+    finally:
+        if preview.process.poll() is None:
+            preview.process.kill()
+            preview.process.wait()
+
+
+if __name__ == "__main__":
+    sys.exit(main())
