@@ -66,6 +66,25 @@ bool final_image(const PreviewUpdate& u) {
     return u.image && u.image->last_step;
 }
 
+// Asks for `request` and waits for its last step: the image, and every
+// step on the way (with the scene when one was loaded).
+struct Rendered {
+    PreviewImage image;
+    std::vector<PreviewStep> steps;
+    std::shared_ptr<const SceneDesc> scene;
+};
+
+Rendered render_view(PreviewWorker& worker, const PreviewRequest& request) {
+    worker.request(request);
+    Rendered out;
+    for (PreviewUpdate& u : updates_until(worker, final_image)) {
+        if (u.scene) out.scene = u.scene;
+        out.steps.insert(out.steps.end(), u.steps.begin(), u.steps.end());
+        if (u.image) out.image = *u.image;
+    }
+    return out;
+}
+
 bool has_error(const PreviewUpdate& u) {
     return u.error && !u.error->empty();
 }
@@ -218,9 +237,11 @@ TEST_CASE("the panel's values leave as -D arguments and as a style file that mea
                Contains("outlines:\n  silhouette:\n    color: [0.2, 0, 0]\n    width: 2.5\n"));
     CHECK_THAT(yaml, Contains("#   -D lights.0.color=[1, 0.9, 0.8]"));
     SceneOptions with_file = with_styles();
-    with_file.overrides.push_back(
-        {"style", "\"" + write_text(dir.file("look.yaml"), yaml) + "\"", ""});
-    const StyleDesc& from_file = load(path, with_file).style;
+    std::string look = "\"";
+    look += write_text(dir.file("look.yaml"), yaml);
+    with_file.overrides.push_back({"style", look + "\"", ""});
+    const SceneDesc with_look = load(path, with_file);
+    const StyleDesc& from_file = with_look.style;
     const StyleDesc& from_overrides = tweaked.style;
     CHECK(from_file.shading == from_overrides.shading);
     CHECK(from_file.alpha.value == from_overrides.alpha.value);
@@ -240,17 +261,10 @@ TEST_CASE("the preview renders a quarter image, then full size, then the scene's
     PreviewWorker worker(path, with_styles(), 2);
     PreviewRequest request;
     request.frame = kSceneFirstFrame;
-    worker.request(request);
-    std::vector<PreviewStep> steps;
-    std::optional<PreviewImage> last;
-    std::shared_ptr<const SceneDesc> scene;
-    for (PreviewUpdate& u : updates_until(worker, final_image)) {
-        if (u.scene) scene = u.scene;
-        steps.insert(steps.end(), u.steps.begin(), u.steps.end());
-        if (u.image) last = u.image;
-    }
-    REQUIRE(scene);
-    CHECK(scene->output.samples == 4);
+    const Rendered rendered = render_view(worker, request);
+    const std::vector<PreviewStep>& steps = rendered.steps;
+    REQUIRE(rendered.scene);
+    CHECK(rendered.scene->output.samples == 4);
     REQUIRE(steps.size() == 3);
     CHECK(steps[0].step == "quarter");
     CHECK((steps[0].width == 16 && steps[0].height == 12));
@@ -258,8 +272,8 @@ TEST_CASE("the preview renders a quarter image, then full size, then the scene's
     CHECK((steps[1].width == 64 && steps[1].height == 48));
     CHECK(steps[2].step == "final");
     for (const PreviewStep& step : steps) CHECK(step.frame == 1);
-    REQUIRE(last);
-    CHECK(last->step == "final");
+    const PreviewImage& last = rendered.image;
+    CHECK(last.step == "final");
     // The final image is the pixels of the PNG facet render writes.
     const RunResult render =
         run_facet("render '" + path + "' -f 1 -q -o '" + dir.file("out") + "'");
@@ -268,18 +282,39 @@ TEST_CASE("the preview renders a quarter image, then full size, then the scene's
     REQUIRE(png.channels == 3);
     bool same = true;
     for (size_t p = 0; p < png.samples.size() / 3; ++p)
-        for (int c = 0; c < 3; ++c) same = same && last->rgba[p * 4 + c] == png.samples[p * 3 + c];
+        for (int c = 0; c < 3; ++c) same = same && last.rgba[p * 4 + c] == png.samples[p * 3 + c];
     CHECK(same);
 
     // A live request (a drag, or playing) gets one small step.
     request.live = true;
-    worker.request(request);
-    std::vector<PreviewStep> live;
-    for (PreviewUpdate& u : updates_until(worker, final_image))
-        live.insert(live.end(), u.steps.begin(), u.steps.end());
+    const std::vector<PreviewStep> live = render_view(worker, request).steps;
     REQUIRE(live.size() == 1);
     CHECK_THAT(live[0].step, Contains("live 1/2"));
     CHECK((live[0].width == 32 && live[0].height == 24));
+}
+
+TEST_CASE("the preview shows any pass as its PNG shows it", "[preview]") {
+    TempDir dir("preview-pass");
+    const std::string path = write_text(dir.file("scene.yaml"), kScene);
+    PreviewWorker worker(path, with_styles(), 2);
+    PreviewRequest request;
+    request.frame = 2;
+    request.pass = Pass::depth;  // not among the scene's passes: rendered for the window anyway
+    const PreviewImage last = render_view(worker, request).image;
+    const RunResult render =
+        run_facet("render '" + path + "' -f 2 -q --passes depth -o '" + dir.file("out") + "'");
+    REQUIRE(render.exit_code == 0);
+    const DecodedPng png = read_png(dir.file("out/scene/depth.0002.png"));
+    REQUIRE((png.channels == 1 && png.bit_depth == 16));
+    REQUIRE(last.rgba.size() == png.samples.size() * 4);
+    size_t differing = 0, grey = 0;
+    for (size_t p = 0; p < png.samples.size(); ++p) {
+        const uint8_t* shown = &last.rgba[p * 4];
+        differing += shown[0] != png.samples[p] >> 8;
+        grey += shown[0] == shown[1] && shown[1] == shown[2] && shown[3] == 255;
+    }
+    CHECK(differing == 0);
+    CHECK(grey == png.samples.size());
 }
 
 TEST_CASE("the preview shows a broken scene's error and renders again once it is fixed",
@@ -289,8 +324,7 @@ TEST_CASE("the preview shows a broken scene's error and renders again once it is
     PreviewWorker worker(path, with_styles(), 1);
     PreviewRequest request;
     request.frame = 2;
-    worker.request(request);
-    updates_until(worker, final_image);
+    render_view(worker, request);
 
     std::string broken = kScene;
     broken.replace(broken.find("color:"), 6, "colr:");
@@ -326,12 +360,13 @@ TEST_CASE(
     snapshot.out_dir = dir.file("snapshots");
     snapshot.command_line = {"facet", "preview", path};
     worker.snapshot(snapshot);
-    std::string message;
+    PreviewMessage message;
     updates_until(worker, [&](const PreviewUpdate& u) {
         if (!u.messages.empty()) message = u.messages.front();
-        return !message.empty();
+        return !message.text.empty();
     });
-    CHECK_THAT(message, Contains("snapshot of frame 3: wrote color.0003.png"));
+    CHECK_THAT(message.text, Contains("snapshot of frame 3: wrote color.0003.png"));
+    CHECK_FALSE(message.failed);
     const RunResult render = run_facet("render '" + path + "' -f 3 -q -o '" + dir.file("out") +
                                        "' -D 'objects.0.material.color=[0.1, 0.3, 0.9]'");
     REQUIRE(render.exit_code == 0);

@@ -193,7 +193,8 @@ void wind_section(PreviewState& state) {
         const ObjectDesc& object = scene.objects[i];
         if (!object.cloth) continue;
         const std::string key = "objects." + std::to_string(i) + ".cloth.wind";
-        ImGui::Text("%s", object.name.c_str());
+        ImGui::TextUnformatted(object.name.empty() ? ("objects." + std::to_string(i)).c_str()
+                                                   : object.name.c_str());
         edit_float(state, "wind m/s", key + ".strength", object.cloth->wind_strength, 0, 30);
         edit_direction(state, key + ".direction", object.cloth->wind_direction);
     }

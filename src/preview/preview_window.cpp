@@ -155,6 +155,7 @@ class Window {
         glClear(GL_COLOR_BUFFER_BIT);
         ImGui_ImplOpenGL2_RenderDrawData(ImGui::GetDrawData());
         SDL_GL_SwapWindow(window_);
+        glFinish();  // on screen before the loop says it is
     }
 
   private:
@@ -208,6 +209,8 @@ class PreviewSession {
             worker_.request(preview_request(state_));
             if (redraw_ > 0 || seconds_between(last_draw_, now) > 0.5) {
                 draw();
+                for (const PreviewMessage& line : shown_lines_) say(line.text, line.failed);
+                shown_lines_.clear();
                 last_draw_ = now;
                 if (redraw_ > 0) --redraw_;
             }
@@ -216,8 +219,16 @@ class PreviewSession {
     }
 
   private:
-    void say(const std::string& line) const {
-        if (!options_.quiet) std::fprintf(stderr, "preview: %s\n", line.c_str());
+    // One line per event on standard error; -q leaves only failures.
+    void say(const std::string& line, bool failure = false) const {
+        if (!options_.quiet || failure) std::fprintf(stderr, "preview: %s\n", line.c_str());
+    }
+
+    // A line about what the window shows is printed once it is on screen:
+    // after the next draw, which the change asked for.
+    void say_when_shown(const std::string& line, bool failure = false) {
+        shown_lines_.push_back({line, failure});
+        redraw_ = std::max(redraw_, 1);
     }
 
     void handle(const SDL_Event& event) {
@@ -356,9 +367,9 @@ class PreviewSession {
         if (update.watch) watch_.watch(*update.watch);
         if (update.error && *update.error != state_.error) {
             if (!update.error->empty())
-                say("error: " + *update.error);
+                say_when_shown("error: " + *update.error, true);
             else if (!state_.error.empty())
-                say("the scene loads again");
+                say_when_shown("the scene loads again");
             state_.error = *update.error;
             redraw_ = 3;
         }
@@ -371,12 +382,12 @@ class PreviewSession {
             state_.step = text;
             const bool live = image.step.rfind("live", 0) == 0;
             if (image.last_step && !live)
-                say("frame " + std::to_string(image.frame) + ": " + state_.step);
+                say_when_shown("frame " + std::to_string(image.frame) + ": " + state_.step);
             redraw_ = 3;
         }
-        for (const std::string& message : update.messages) {
-            say(message);
-            state_.message = message;
+        for (const PreviewMessage& message : update.messages) {
+            say(message.text, message.failed);
+            state_.message = message.text;
             redraw_ = 3;
         }
     }
@@ -487,15 +498,17 @@ class PreviewSession {
 
     void write_style() {
         if (!state_.scene) return;
+        bool failed = false;
         try {
             write_file_atomically(
                 state_.style_file,
                 style_file_yaml(*state_.scene, state_.tweaks, options_.scene_options.style_dirs));
             state_.message = "wrote " + state_.style_file;
         } catch (const std::exception& e) {
-            state_.message = e.what();
+            state_.message = std::string("style file not written: ") + e.what();
+            failed = true;
         }
-        say(state_.message);
+        say(state_.message, failed);
     }
 
     void draw() {
@@ -540,8 +553,12 @@ class PreviewSession {
     }
 
     void draw_status(float height) {
-        std::string text = "frame " + std::to_string(current_frame(state_));
-        if (!state_.step.empty()) text += "  " + state_.step;
+        std::string text = state_.scene ? "frame " + std::to_string(current_frame(state_))
+                                        : std::string("loading");
+        if (!state_.step.empty())
+            text += "  " + state_.step;
+        else if (state_.scene && state_.error.empty())
+            text += "  rendering";
         if (state_.playing) text += "  playing";
         if (!state_.message.empty()) text += "  |  " + state_.message;
         ImGui::GetForegroundDrawList()->AddText(ImVec2(8, height - kStatusHeight + 5),
@@ -554,6 +571,7 @@ class PreviewSession {
     PreviewWorker worker_;
     FileWatch watch_;
     bool quit_ = false;
+    std::vector<PreviewMessage> shown_lines_;  // said after the next draw
     bool dragging_ = false;     // a mouse button went down over the image and is held
     bool slider_held_ = false;  // an ImGui widget is being dragged or typed into
     Clock::time_point last_wheel_;

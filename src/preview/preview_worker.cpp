@@ -12,6 +12,7 @@
 #include "render/framing_shapes.hpp"
 #include "render/pass_files.hpp"
 #include "render/render_job.hpp"
+#include "render/render_memory.hpp"
 #include "render/world.hpp"
 
 namespace facet {
@@ -216,17 +217,24 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
         auto scene = std::make_shared<const SceneDesc>(load_scene(scene_path_, options));
         std::shared_ptr<const World> world = loaded.world;
         if (!same_world) world = std::make_shared<const World>(build_world(*scene));
+        // As render does: a size or sample count the machine cannot hold is
+        // an error to show, not a crash.
+        check_render_memory(*scene, *world, loaded.pool.size());
         loaded.renderers.clear();
         loaded.scene = scene;
         loaded.world = world;
         loaded.settings = settings;
         loaded.files_version = request.files_version;
         loaded.camera = camera;
-        loaded.framing = framing_shapes(*scene, *world);
-        if (!same_world)
+        // What `frame:` fits depends on the meshes, not on where the camera
+        // is (an animated mesh is posed over every frame for it): made again
+        // only with the world, or when a framing camera comes back.
+        if (!same_world || loaded.framing.empty()) loaded.framing = framing_shapes(*scene, *world);
+        if (!same_world) {
             loaded.world_has_file_cameras =
                 std::any_of(world->file_cameras.begin(), world->file_cameras.end(),
                             [](const FileCamera& c) { return c.rig != nullptr; });
+        }
         publish([&](PreviewUpdate& u) {
             u.scene = scene;
             u.watch = scene_watch_list(*scene);
@@ -300,7 +308,9 @@ void PreviewWorker::render_step(const PreviewRequest& request, int step) {
 void PreviewWorker::write_snapshot(const SnapshotRequest& snapshot) {
     const std::string error = load(snapshot.view);
     if (!error.empty()) {
-        publish([&](PreviewUpdate& u) { u.messages.push_back("snapshot not written: " + error); });
+        publish([&](PreviewUpdate& u) {
+            u.messages.push_back({"snapshot not written: " + error, true});
+        });
         return;
     }
     const SceneDesc& scene = *loaded_->scene;
@@ -328,12 +338,12 @@ void PreviewWorker::write_snapshot(const SnapshotRequest& snapshot) {
         std::string list;
         for (const std::string& f : files) list += (list.empty() ? "" : ", ") + f;
         publish([&](PreviewUpdate& u) {
-            u.messages.push_back("snapshot of frame " + std::to_string(frame) + ": wrote " + list +
-                                 " in " + result.output_dir);
+            u.messages.push_back({"snapshot of frame " + std::to_string(frame) + ": wrote " + list +
+                                  " in " + result.output_dir});
         });
     } catch (const std::exception& e) {
         publish([&](PreviewUpdate& u) {
-            u.messages.push_back(std::string("snapshot not written: ") + e.what());
+            u.messages.push_back({std::string("snapshot not written: ") + e.what(), true});
         });
     }
 }

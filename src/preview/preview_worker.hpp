@@ -71,6 +71,12 @@ struct PreviewStep {
     double render_ms = 0;
 };
 
+// A snapshot's outcome, for the status line and standard error.
+struct PreviewMessage {
+    std::string text;
+    bool failed = false;  // printed even with -q
+};
+
 // What came in since the last take().
 struct PreviewUpdate {
     std::optional<PreviewImage> image;  // the newest
@@ -80,7 +86,7 @@ struct PreviewUpdate {
     std::optional<WatchList> watch;
     // After a load or render: the error, or "" when the last one worked.
     std::optional<std::string> error;
-    std::vector<std::string> messages;  // snapshots written or failed
+    std::vector<PreviewMessage> messages;  // snapshots written or failed
 };
 
 class PreviewWorker {

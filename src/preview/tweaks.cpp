@@ -45,7 +45,15 @@ std::string yaml_number(float value) {
 }
 
 std::string yaml_vector(const glm::vec3& v) {
-    return "[" + yaml_number(v.x) + ", " + yaml_number(v.y) + ", " + yaml_number(v.z) + "]";
+    // Appended piece by piece: gcc 12 warns falsely (-Wrestrict) about
+    // "literal" + a temporary string.
+    std::string text = "[";
+    text += yaml_number(v.x);
+    text += ", ";
+    text += yaml_number(v.y);
+    text += ", ";
+    text += yaml_number(v.z);
+    return text + "]";
 }
 
 std::string yaml_value(const TweakValue& value) {
@@ -70,8 +78,11 @@ std::vector<Override> tweak_overrides(const Tweaks& tweaks) {
 
 std::string define_arguments(const std::vector<Override>& overrides) {
     std::string out;
-    for (const Override& o : overrides)
-        out += (out.empty() ? "" : " ") + std::string("-D ") + shell_quoted(o.path + "=" + o.value);
+    for (const Override& o : overrides) {
+        if (!out.empty()) out += " ";
+        out += "-D ";
+        out += shell_quoted(o.path + "=" + o.value);
+    }
     return out;
 }
 
