@@ -116,7 +116,17 @@ TEST_CASE("the preview camera pans by a share of the view's height and dollies i
     const ViewCamera closer = dolly(camera, 0.5f);
     CHECK(glm::length(closer.position - glm::vec3(0, 0, 2.5f)) < 1e-5f);
     CHECK(closer.near == Approx(0.05f));
-    CHECK(closer.far == Approx(50.0f));
+    CHECK(closer.far == Approx(97.5f));  // what was 100 away from the camera still is in range
+    const ViewCamera farther = dolly(camera, 2.0f);
+    CHECK(farther.near == Approx(0.1f));
+    CHECK(farther.far == Approx(105.0f));
+    // A camera looking straight down its `up` still pans and orbits.
+    const ViewCamera top{{0, 5, 0}, {0, 0, 0}, {0, 1, 0}, 90, 0.1f, 100};
+    const ViewCamera slid = pan(top, 0.5f, 0);
+    CHECK(std::isfinite(slid.target.x + slid.target.y + slid.target.z));
+    CHECK(glm::length(slid.target) == Approx(5.0f));
+    const ViewCamera tilted = orbit(top, 0, -30);
+    CHECK(degrees_from(tilted.position, {0, 1, 0}) == Approx(30).margin(1e-3));
 }
 
 TEST_CASE("the printed camera reads back as exactly the camera shown", "[preview]") {
@@ -231,7 +241,8 @@ TEST_CASE("the panel's values leave as -D arguments and as a style file that mea
 
     // The style file: extends the scene's preset by name, nests the keys,
     // and lists the light as a scene value.
-    const std::string yaml = style_file_yaml(tweaked, tweaks, {FACET_STYLES_DIR});
+    const std::string yaml =
+        style_file_yaml(tweaked, tweaks, {FACET_STYLES_DIR}, dir.file("look.yaml"));
     CHECK_THAT(yaml, Contains("extends: palette\n"));
     CHECK_THAT(yaml,
                Contains("outlines:\n  silhouette:\n    color: [0.2, 0, 0]\n    width: 2.5\n"));
@@ -252,6 +263,46 @@ TEST_CASE("the panel's values leave as -D arguments and as a style file that mea
     CHECK(from_file.outlines.silhouette.enabled);
     CHECK(from_file.outlines.silhouette.width.value == 2.5f);
     CHECK(from_file.outlines.silhouette.color.value == glm::vec3(0.2f, 0, 0));
+}
+
+TEST_CASE("a style file written from the panel keeps the look's own keys and never extends itself",
+          "[preview]") {
+    TempDir dir("preview-style-file");
+    write_text(dir.file("look.yaml"), "extends: palette\nalpha: 0.1\ncels: 5\n");
+    const std::string path =
+        write_text(dir.file("scene.yaml"), "style: look.yaml\n" + kMinimalObjects);
+    const std::string inline_path = write_text(
+        dir.file("inline.yaml"), "style: { extends: palette, cels: 2 }\n" + kMinimalObjects);
+    Tweaks tweaks;
+    tweaks["style.alpha"] = 0.3f;
+    SceneOptions options = with_styles();
+    options.overrides = tweak_overrides(tweaks);
+
+    // Written back over the scene's own style: its keys stay, the value changes.
+    const std::string own =
+        style_file_yaml(load(path, options), tweaks, {FACET_STYLES_DIR}, dir.file("look.yaml"));
+    CHECK_THAT(own, Contains("extends: palette"));
+    CHECK_THAT(own, !Contains("extends: look"));
+    write_text(dir.file("look.yaml"), own);
+    const StyleDesc rewritten = load(path).style;
+    CHECK(rewritten.alpha.value == 0.3f);
+    CHECK(rewritten.cels.value == 5.0f);
+
+    // An inline style written out: its keys and the panel's values.
+    const std::string out = style_file_yaml(load(inline_path, options), tweaks, {FACET_STYLES_DIR},
+                                            dir.file("inline-look.yaml"));
+    write_text(dir.file("inline-look.yaml"), out);
+    const StyleDesc from_inline =
+        load(write_text(dir.file("uses.yaml"), "style: inline-look.yaml\n" + kMinimalObjects))
+            .style;
+    CHECK(from_inline.shading == ShadingModel::palette);
+    CHECK(from_inline.cels.value == 2.0f);
+    CHECK(from_inline.alpha.value == 0.3f);
+
+    // A preset the scene's style extends is not written over.
+    CHECK_THROWS_WITH(style_file_yaml(load(path, options), tweaks, {FACET_STYLES_DIR},
+                                      std::string(FACET_STYLES_DIR) + "/palette.yaml"),
+                      Contains("a preset the scene's style extends"));
 }
 
 TEST_CASE("the preview renders a quarter image, then full size, then the scene's samples",
@@ -348,6 +399,54 @@ TEST_CASE("the preview shows a broken scene's error and renders again once it is
     CHECK(cleared);
 }
 
+TEST_CASE("after a failed load the file the error is in is watched", "[preview]") {
+    TempDir dir("preview-error-watch");
+    write_text(dir.file("looks/broken.yaml"), "extends: toon\nalpah: 0.3\n");
+    const std::string path =
+        write_text(dir.file("scene.yaml"), "style: looks/broken.yaml\n" + kMinimalObjects);
+    PreviewWorker worker(path, with_styles(), 1);
+    worker.request({});
+    std::optional<WatchList> watched;
+    std::string error;
+    for (PreviewUpdate& u : updates_until(worker, has_error)) {
+        if (u.watch) watched = u.watch;
+        if (u.error) error = *u.error;
+    }
+    CHECK_THAT(error, Contains("broken.yaml:2:1"));
+    REQUIRE(watched);
+    auto names = [&](const std::string& file) {
+        return std::any_of(watched->files.begin(), watched->files.end(), [&](const auto& f) {
+            return fs::weakly_canonical(f) == fs::weakly_canonical(file);
+        });
+    };
+    CHECK(names(path));
+    CHECK(names(dir.file("looks/broken.yaml")));
+}
+
+TEST_CASE("moving the camera after an unnoticed edit keeps the world with its own objects",
+          "[preview]") {
+    TempDir dir("preview-splice");
+    const std::string path = write_text(
+        dir.file("scene.yaml"), kScene + "  - primitive: sphere\n    translate: [1, 0, 0]\n");
+    PreviewWorker worker(path, with_styles(), 1);
+    PreviewRequest request;
+    request.frame = 1;
+    const Rendered before = render_view(worker, request);
+    REQUIRE(before.scene);
+    CHECK(before.scene->objects.size() == 2);
+    // The file loses an object; the watch has not said so yet (same
+    // files_version) when the camera moves.
+    write_text(path, kScene);
+    const ViewCamera view{{0, 2, 5}, {0, 0, 0}, {0, 1, 0}, 40, 0.1f, 100};
+    request.camera = camera_override(view, before.scene->cameras.front());
+    const Rendered moved = render_view(worker, request);
+    REQUIRE(moved.scene);
+    CHECK(moved.scene->objects.size() == 2);  // the world's objects
+    CHECK(moved.scene->cameras.front().position.value == view.position);
+    CHECK(moved.image.camera_moved);
+    CHECK(moved.image.width == 64);
+}
+
 TEST_CASE(
     "a preview snapshot writes the files facet render writes, with the tweaks in the manifest",
     "[preview]") {
@@ -386,12 +485,19 @@ TEST_CASE("facet preview refuses to start without a display, a scene or one came
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("needs a display"));
     CHECK_THAT(r.output, Contains("DISPLAY"));
-    r = run_facet("preview '" + dir.file("missing.yaml") + "'");
+    // With a display named (any: these fail before opening it).
+    const std::string display = "env DISPLAY=:none ";
+    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + dir.file("missing.yaml") +
+                    "' 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("no such file"));
-    r = run_facet("preview '" + path + "' --camera a,b");
+    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + path +
+                    "' --camera a,b 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("one camera"));
-    r = run_facet("preview '" + path + "' -f 99");
+    // The display is checked first: before the scene file or the options.
+    r = run_command(headless + "'" + FACET_EXECUTABLE + "' preview '" + dir.file("missing.yaml") +
+                    "' 2>&1");
     CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains("needs a display"));
 }

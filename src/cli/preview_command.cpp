@@ -19,17 +19,16 @@ CLI::App* add_preview_command(CLI::App& app, RenderArgs& args) {
 }
 
 int preview_command(const RenderArgs& args) {
+    require_display();
     // A scene that does not load opens the window with its error, to be
     // fixed while it is open; a scene file that is not there is a typo.
     require_input_file(args.scene, "scene");
     PreviewOptions options;
     options.scene = args.scene;
     options.scene_options = scene_options(args);
-    const bool frames_asked = !args.frames.frames.empty() || args.frames.single ||
-                              args.frames.start || args.frames.end || args.frames.jump;
-    if (frames_asked)
-        options.frames =
-            resolve_frames(args.frames, load_scene(args.scene, options.scene_options).output);
+    // Resolved against each loaded scene, as render resolves them.
+    const FrameSelection frames = args.frames;
+    options.frames = [frames](const OutputDesc& output) { return resolve_frames(frames, output); };
     const std::vector<std::string> cameras = split_list(args.cameras);
     if (cameras.size() > 1 || args.cameras == "all")
         fail_input(command_line("--camera " + args.cameras), "",

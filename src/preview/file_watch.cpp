@@ -36,6 +36,7 @@ WatchList scene_watch_list(const SceneDesc& scene) {
     for (const ObjectDesc& object : scene.objects) {
         if (object.style)
             for (const std::string& file : object.style->files) add_unique(list.files, file);
+        if (object.material.texture) add_unique(list.files, *object.material.texture);
         if (object.mesh.empty()) continue;
         add_unique(list.files, object.mesh);
         const std::string folder = fs::path(object.mesh).parent_path().string();
@@ -45,10 +46,26 @@ WatchList scene_watch_list(const SceneDesc& scene) {
     return list;
 }
 
-void FileWatch::watch(WatchList list) {
-    list_ = std::move(list);
-    accepted_ = stamps();
-    previous_ = accepted_;
+FileWatch::FileWatch(std::vector<std::string> skipped_folders) {
+    for (const std::string& folder : skipped_folders) {
+        std::error_code ec;
+        skipped_.push_back(fs::weakly_canonical(folder, ec).string());
+    }
+}
+
+void FileWatch::watch(const WatchList& list) {
+    if (list == list_ && !previous_.empty()) return;
+    list_ = list;
+    std::vector<Stamp> now = stamps();
+    std::vector<Stamp> accepted = now;
+    for (Stamp& stamp : accepted) {
+        auto known =
+            std::lower_bound(accepted_.begin(), accepted_.end(), stamp.path,
+                             [](const Stamp& s, const std::string& path) { return s.path < path; });
+        if (known != accepted_.end() && known->path == stamp.path) stamp = *known;
+    }
+    accepted_ = std::move(accepted);
+    previous_ = std::move(now);
 }
 
 bool FileWatch::poll() {
@@ -58,6 +75,13 @@ bool FileWatch::poll() {
     if (!settled || now == accepted_) return false;
     accepted_ = std::move(now);
     return true;
+}
+
+bool FileWatch::skipped(const fs::path& folder) const {
+    if (skipped_.empty()) return false;
+    std::error_code ec;
+    const std::string path = fs::weakly_canonical(folder, ec).string();
+    return std::find(skipped_.begin(), skipped_.end(), path) != skipped_.end();
 }
 
 std::vector<FileWatch::Stamp> FileWatch::stamps() const {
@@ -71,7 +95,8 @@ std::vector<FileWatch::Stamp> FileWatch::stamps() const {
             const bool hidden = ignored_name(it->path().filename().string());
             std::error_code type_error;
             if (it->is_directory(type_error)) {
-                if (hidden || it.depth() + 1 > kMaxFolderDepth) it.disable_recursion_pending();
+                if (hidden || it.depth() + 1 > kMaxFolderDepth || skipped(it->path()))
+                    it.disable_recursion_pending();
             } else if (!hidden && it->is_regular_file(type_error)) {
                 paths.push_back(it->path().string());
             }

@@ -6,6 +6,10 @@
 
 namespace facet {
 
+// Throws facet::Error (invalid_input, exit code 2) when neither DISPLAY
+// nor WAYLAND_DISPLAY is set: checked before anything else is done.
+void require_display();
+
 // Opens the window and runs until it is closed. Throws facet::Error
 // (invalid_input, exit code 2) when there is no display to open it on.
 int run_preview(const PreviewOptions& options);

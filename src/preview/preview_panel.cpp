@@ -172,8 +172,15 @@ void style_section(PreviewState& state) {
 void lights_section(PreviewState& state) {
     const SceneDesc& scene = *state.scene;
     if (scene.lights.empty()) {
+        ImGui::TextWrapped("The scene has no lights (lights: []).");
+        return;
+    }
+    // Only the light a scene without `lights:` gets follows the camera; it
+    // has no key to override.
+    if (scene.lights.front().camera_relative) {
         ImGui::TextWrapped(
-            "No lights: key in the scene (its default key light follows the camera).");
+            "The scene's default key light, which follows the camera: give the scene lights: "
+            "to change them here.");
         return;
     }
     for (size_t i = 0; i < scene.lights.size(); ++i) {
@@ -183,7 +190,7 @@ void lights_section(PreviewState& state) {
         if (!light.kelvin) edit_color(state, "colour", key + ".color", light.color);
         edit_float(state, "intensity", key + ".intensity", light.intensity, 0, 10);
         if (light.type == LightType::directional || light.type == LightType::spot)
-            if (!light.camera_relative) edit_direction(state, key + ".direction", light.direction);
+            edit_direction(state, key + ".direction", light.direction);
     }
 }
 

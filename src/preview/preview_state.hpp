@@ -2,6 +2,7 @@
 // What the preview window shows and the panel edits: one plain record the
 // window's parts share (preview_window.cpp, preview_panel.cpp).
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -20,8 +21,11 @@ namespace facet {
 struct PreviewOptions {
     std::string scene;
     SceneOptions scene_options;  // the command line's overrides and the preset folders
-    std::vector<int> frames;     // the frames the slider walks; empty: the scene's
-    std::string camera;          // the camera shown first, by name; "": the first
+    // The frames the slider walks, from the scene as loaded (they follow
+    // edits of its frame range); unset: the scene's own. Throws
+    // facet::Error for a choice the scene cannot give.
+    std::function<std::vector<int>(const OutputDesc&)> frames;
+    std::string camera;  // the camera shown first, by name; "": the first
     unsigned threads = 0;
     std::string out_dir = "out";  // where snapshots go, as `facet render -o`
     bool quiet = false;

@@ -53,6 +53,19 @@ PreviewRequest preview_request(const PreviewState& state) {
     return request;
 }
 
+// The preview needs a display; say so plainly instead of SDL's message.
+void require_display() {
+    const auto set = [](const char* name) {
+        const char* value = std::getenv(name);
+        return value && *value;
+    };
+    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER"))
+        throw Error(ExitCode::invalid_input,
+                    "facet preview needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is "
+                    "set (on a machine without one use facet render, or run the preview under "
+                    "xvfb-run)");
+}
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -66,19 +79,6 @@ constexpr double kWheelSettleSeconds = 0.3;  // a wheel turn counts as a drag th
 
 double seconds_between(Clock::time_point a, Clock::time_point b) {
     return std::chrono::duration<double>(b - a).count();
-}
-
-// The preview needs a display; say so plainly instead of SDL's message.
-void require_display() {
-    const auto set = [](const char* name) {
-        const char* value = std::getenv(name);
-        return value && *value;
-    };
-    if (!set("DISPLAY") && !set("WAYLAND_DISPLAY") && !set("SDL_VIDEODRIVER"))
-        throw Error(ExitCode::invalid_input,
-                    "facet preview needs a display, and neither DISPLAY nor WAYLAND_DISPLAY is "
-                    "set (on a machine without one use facet render, or run the preview under "
-                    "xvfb-run)");
 }
 
 // SDL, its OpenGL context, ImGui and the image's texture, made and
@@ -178,10 +178,10 @@ class PreviewSession {
     explicit PreviewSession(const PreviewOptions& options)
         : options_(options),
           window_("facet preview - " + std::filesystem::path(options.scene).filename().string()),
-          worker_(options.scene, options.scene_options, options.threads) {
+          worker_(options.scene, options.scene_options, options.threads),
+          watch_({options.out_dir}) {
         for (const auto& preset : list_style_presets(options.scene_options.style_dirs))
             state_.presets.push_back(preset.first);
-        state_.frames = options.frames;
         const std::filesystem::path scene(options.scene);
         state_.style_file = (scene.parent_path() / (scene.stem().string() + "-look.yaml")).string();
         watch_.watch({{options.scene}, {}});
@@ -215,6 +215,9 @@ class PreviewSession {
                 if (redraw_ > 0) --redraw_;
             }
         }
+        // Gone at once; the worker then finishes its step and any snapshot
+        // asked for before it is stopped.
+        SDL_HideWindow(window_.sdl());
         return 0;
     }
 
@@ -243,7 +246,7 @@ class PreviewSession {
                 if (event.window.event == SDL_WINDOWEVENT_CLOSE) quit_ = true;
                 break;
             case SDL_KEYDOWN:
-                if (!io.WantCaptureKeyboard) key(event.key.keysym);
+                if (!io.WantCaptureKeyboard) key(event.key.keysym, event.key.repeat != 0);
                 break;
             case SDL_MOUSEBUTTONDOWN:
                 dragging_ = pointer_over_image();
@@ -267,9 +270,12 @@ class PreviewSession {
         }
     }
 
-    void key(const SDL_Keysym& key) {
+    // A held key repeats only the frame steps: not snapshots or prints.
+    void key(const SDL_Keysym& key, bool repeat) {
         const size_t count = state_.frames.size();
         const size_t step = (key.mod & KMOD_SHIFT) ? 10 : 1;
+        const bool stepping = key.sym == SDLK_LEFT || key.sym == SDLK_RIGHT;
+        if (repeat && !stepping) return;
         switch (key.sym) {
             case SDLK_SPACE:
                 state_.playing = !state_.playing;
@@ -376,7 +382,7 @@ class PreviewSession {
         if (update.image) {
             const PreviewImage& image = *update.image;
             window_.upload(image);
-            if (!state_.view) state_.scene_camera = image.camera;
+            if (!image.camera_moved) state_.scene_camera = image.camera;
             char text[96];
             std::snprintf(text, sizeof text, "%s, %.0f ms", image.step.c_str(), image.render_ms);
             state_.step = text;
@@ -396,7 +402,16 @@ class PreviewSession {
         const bool first = !state_.scene;
         const int frame = state_.scene ? current_frame(state_) : INT_MIN;
         state_.scene = scene;
-        if (options_.frames.empty()) state_.frames = scene->output.frames;
+        state_.frames = scene->output.frames;
+        if (options_.frames) {
+            try {
+                if (std::vector<int> asked = options_.frames(scene->output); !asked.empty())
+                    state_.frames = std::move(asked);
+            } catch (const std::exception& e) {
+                state_.message = e.what();
+                say(std::string("frames: ") + e.what() + " (showing the scene's frames)", true);
+            }
+        }
         auto it = std::find(state_.frames.begin(), state_.frames.end(), frame);
         state_.frame_index = it != state_.frames.end()
                                  ? static_cast<size_t>(it - state_.frames.begin())
@@ -450,7 +465,7 @@ class PreviewSession {
                 const std::string text = define_arguments(request.overrides);
                 std::printf("%s\n", text.empty() ? "# no changes" : text.c_str());
                 std::fflush(stdout);
-                SDL_SetClipboardText(text.c_str());
+                if (!text.empty()) SDL_SetClipboardText(text.c_str());
                 state_.message =
                     text.empty() ? "nothing changed" : "-D arguments printed and copied";
                 break;
@@ -477,8 +492,9 @@ class PreviewSession {
         std::string text = "# the camera at frame " + std::to_string(current_frame(state_)) + "\n";
         std::string body = camera_yaml(camera, desc.name);
         // Indented under `camera:`, or as the item of `cameras:` it replaces.
-        const bool single = desc.key == "camera";
-        text += single ? "camera:\n" : "cameras:  # item " + desc.key.substr(8) + "\n";
+        const std::string key = scene_camera_key(desc);
+        const bool single = key == "camera";
+        text += single ? "camera:\n" : "cameras:  # item " + key.substr(key.find('.') + 1) + "\n";
         bool first_line = true;
         size_t start = 0;
         while (start < body.size()) {
@@ -502,7 +518,8 @@ class PreviewSession {
         try {
             write_file_atomically(
                 state_.style_file,
-                style_file_yaml(*state_.scene, state_.tweaks, options_.scene_options.style_dirs));
+                style_file_yaml(*state_.scene, state_.tweaks, options_.scene_options.style_dirs,
+                                state_.style_file));
             state_.message = "wrote " + state_.style_file;
         } catch (const std::exception& e) {
             state_.message = std::string("style file not written: ") + e.what();

@@ -137,6 +137,11 @@ PreviewUpdate PreviewWorker::take() {
     return out;
 }
 
+bool PreviewWorker::quit_requested() const {
+    std::lock_guard lock(mutex_);
+    return quit_;
+}
+
 bool PreviewWorker::busy() const {
     std::lock_guard lock(mutex_);
     return working_ || pending_ || !snapshots_.empty();
@@ -160,8 +165,8 @@ void PreviewWorker::run() {
             wake_.wait(lock, [&] {
                 return quit_ || pending_ || !snapshots_.empty() || (have && step < steps);
             });
-            if (quit_) return;
-            if (pending_) {
+            if (quit_ && snapshots_.empty()) return;
+            if (pending_ && !quit_) {
                 // The window asks for "the first frame" until it knows it.
                 if (pending_->frame == kSceneFirstFrame && loaded_->scene)
                     pending_->frame = loaded_->scene->output.frames.front();
@@ -178,8 +183,9 @@ void PreviewWorker::run() {
             snapshots.swap(snapshots_);
             working_ = true;
         }
+        // A snapshot asked for is written even when the window is closing.
         for (const SnapshotRequest& snapshot : snapshots) write_snapshot(snapshot);
-        if (!have || step >= steps) continue;
+        if (!have || step >= steps || quit_requested()) continue;
         const std::string error = load(current);
         publish([&](PreviewUpdate& u) { u.error = error; });
         if (!error.empty()) {
@@ -205,18 +211,34 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
     Loaded& loaded = *loaded_;
     const std::string settings = overrides_text(request.overrides);
     const std::string camera = request.camera ? request.camera->value : "";
-    const bool same_world = loaded.world && loaded.settings == settings &&
-                            loaded.files_version == request.files_version &&
-                            (loaded.camera == camera || !loaded.world_has_file_cameras);
-    if (same_world && loaded.camera == camera) return "";
+    const bool same_inputs = loaded.world && loaded.settings == settings &&
+                             loaded.files_version == request.files_version;
+    if (same_inputs && loaded.camera == camera) return "";
+    std::optional<WatchList> watch;  // of the scene read, even if its world then fails
     try {
         SceneOptions options = base_;
         options.overrides.insert(options.overrides.end(), request.overrides.begin(),
                                  request.overrides.end());
         if (request.camera) options.overrides.push_back(*request.camera);
-        auto scene = std::make_shared<const SceneDesc>(load_scene(scene_path_, options));
+        SceneDesc read = load_scene(scene_path_, options);
+        watch = scene_watch_list(read);
+        // Only the camera moved: the world stays, and the cameras just read
+        // go into the scene it was built from. The file may have changed on
+        // disk since (a save the watch has not reported yet); the world
+        // must stay with the objects it was built for. A camera taken from
+        // a glTF file is posed by the world, which is then built again.
+        const bool camera_only = same_inputs && !loaded.world_has_file_cameras &&
+                                 read.cameras.size() == loaded.scene->cameras.size();
+        std::shared_ptr<const SceneDesc> scene;
         std::shared_ptr<const World> world = loaded.world;
-        if (!same_world) world = std::make_shared<const World>(build_world(*scene));
+        if (camera_only) {
+            SceneDesc spliced = *loaded.scene;
+            spliced.cameras = std::move(read.cameras);
+            scene = std::make_shared<const SceneDesc>(std::move(spliced));
+        } else {
+            scene = std::make_shared<const SceneDesc>(std::move(read));
+            world = std::make_shared<const World>(build_world(*scene));
+        }
         // As render does: a size or sample count the machine cannot hold is
         // an error to show, not a crash.
         check_render_memory(*scene, *world, loaded.pool.size());
@@ -229,29 +251,27 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
         // What `frame:` fits depends on the meshes, not on where the camera
         // is (an animated mesh is posed over every frame for it): made again
         // only with the world, or when a framing camera comes back.
-        if (!same_world || loaded.framing.empty()) loaded.framing = framing_shapes(*scene, *world);
-        if (!same_world) {
+        if (!camera_only || loaded.framing.empty()) loaded.framing = framing_shapes(*scene, *world);
+        if (!camera_only)
             loaded.world_has_file_cameras =
                 std::any_of(world->file_cameras.begin(), world->file_cameras.end(),
                             [](const FileCamera& c) { return c.rig != nullptr; });
-        }
         publish([&](PreviewUpdate& u) {
             u.scene = scene;
             u.watch = scene_watch_list(*scene);
         });
         return "";
-    } catch (const Error& e) {
-        // Editing the file the error is in must reload, even when the first
-        // load failed before the watch list was known.
-        if (!e.where().file.empty())
-            publish([&](PreviewUpdate& u) {
-                WatchList list = loaded.scene ? scene_watch_list(*loaded.scene) : WatchList{};
-                list.files.push_back(scene_path_);
-                list.files.push_back(e.where().file);
-                u.watch = list;
-            });
-        return e.what();
     } catch (const std::exception& e) {
+        // Editing the file the error is in must reload: it may be a file
+        // the last good scene did not name (a new mesh, a style it could
+        // not reach), or the first load may have failed.
+        WatchList list = watch          ? *watch
+                         : loaded.scene ? scene_watch_list(*loaded.scene)
+                                        : WatchList{};
+        list.files.push_back(scene_path_);
+        if (const auto* error = dynamic_cast<const Error*>(&e))
+            if (!error->where().file.empty()) list.files.push_back(error->where().file);
+        publish([&](PreviewUpdate& u) { u.watch = list; });
         return e.what();
     }
 }
@@ -283,6 +303,7 @@ void PreviewWorker::render_step(const PreviewRequest& request, int step) {
     PreviewImage image = display_image(request.pass, level_scene->output, images);
     image.frame = frame;
     image.render_ms = render_ms;
+    image.camera_moved = request.camera.has_value();
     image.camera = evaluate_frame(scene, loaded.world->object_bounds, frame, camera,
                                   FrameAssets{loaded.framing, loaded.world->file_cameras,
                                               loaded.world->object_lights})

@@ -53,8 +53,9 @@ struct PreviewImage {
     int frame = 0;
     std::string step;  // "quarter", "full", "final", or "live 1/2" ...
     double render_ms = 0;
-    bool last_step = false;  // nothing more is coming for this request
-    CameraState camera;      // the scene camera at this frame, where orbiting starts
+    bool last_step = false;     // nothing more is coming for this request
+    CameraState camera;         // the camera it was rendered with
+    bool camera_moved = false;  // with the view camera, not the scene's
 };
 
 // Writes the view's frame as `facet render` writes it (render_scene).
@@ -92,7 +93,7 @@ struct PreviewUpdate {
 class PreviewWorker {
   public:
     PreviewWorker(std::string scene_path, SceneOptions base, unsigned threads);
-    ~PreviewWorker();
+    ~PreviewWorker();  // after the step in progress and the snapshots asked for
     PreviewWorker(const PreviewWorker&) = delete;
     PreviewWorker& operator=(const PreviewWorker&) = delete;
 
@@ -111,6 +112,7 @@ class PreviewWorker {
     void render_step(const PreviewRequest& request, int step);
     void write_snapshot(const SnapshotRequest& snapshot);
     void publish(const std::function<void(PreviewUpdate&)>& change);
+    bool quit_requested() const;
 
     const std::string scene_path_;
     const SceneOptions base_;

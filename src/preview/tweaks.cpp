@@ -3,6 +3,8 @@
 #include <charconv>
 #include <filesystem>
 
+#include "core/error.hpp"
+
 namespace facet {
 namespace {
 
@@ -86,25 +88,32 @@ std::string define_arguments(const std::vector<Override>& overrides) {
     return out;
 }
 
-std::string style_file_yaml(const SceneDesc& scene, const Tweaks& tweaks,
-                            const std::vector<std::string>& style_dirs) {
-    std::string text = "# Written by facet preview from the scene " + scene.path + ".\n";
-    if (auto it = tweaks.find("style"); it != tweaks.end())
-        text += "extends: " + std::get<std::string>(it->second) + "\n";
-    else if (!scene.style.files.empty())
-        text += "extends: " + extends_name(scene.style.files.back(), style_dirs) + "\n";
-    else
-        text += "# The scene's style is written in the scene itself: add these keys to it.\n";
-    // Paths arrive sorted, so keys that share a parent are neighbours: each
-    // line opens only the parents the previous line did not.
+namespace {
+
+bool same_file(const std::string& a, const std::string& b) {
+    std::error_code ec;
+    return fs::weakly_canonical(a, ec) == fs::weakly_canonical(b, ec);
+}
+
+// The light and wind values: scene values, not a style's, listed so that
+// nothing changed in the panel is silently left out of the file.
+std::string scene_values_comment(const Tweaks& tweaks) {
+    std::string lines;
+    for (const auto& [path, value] : tweaks)
+        if (path != "style" && path.rfind("style.", 0) != 0)
+            lines += "#   -D " + path + "=" + yaml_value(value) + "\n";
+    return lines.empty() ? ""
+                         : "# Scene values, not part of a style (give them with -D):\n" + lines;
+}
+
+// The style.* values nested as a style file nests them. Paths arrive
+// sorted, so keys that share a parent are neighbours: each line opens
+// only the parents the previous line did not.
+std::string nested_style_keys(const Tweaks& tweaks) {
+    std::string text;
     std::vector<std::string> open;
-    std::string scene_values;
     for (const auto& [path, value] : tweaks) {
-        if (path == "style") continue;
-        if (path.rfind("style.", 0) != 0) {
-            scene_values += "#   -D " + path + "=" + yaml_value(value) + "\n";
-            continue;
-        }
+        if (path.rfind("style.", 0) != 0) continue;
         const std::vector<std::string> parts = split_path(path.substr(6));
         size_t shared = 0;
         while (shared < open.size() && shared + 1 < parts.size() && open[shared] == parts[shared])
@@ -117,9 +126,59 @@ std::string style_file_yaml(const SceneDesc& scene, const Tweaks& tweaks,
         text += std::string(2 * (parts.size() - 1), ' ') + parts.back() + ": " + yaml_value(value) +
                 "\n";
     }
-    if (!scene_values.empty())
-        text += "# Scene values, not part of a style (give them with -D):\n" + scene_values;
     return text;
+}
+
+std::vector<Override> style_overrides(const Tweaks& tweaks) {
+    std::vector<Override> out;
+    for (const Override& o : tweak_overrides(tweaks))
+        if (o.path.rfind("style.", 0) == 0) out.push_back(o);
+    return out;
+}
+
+}  // namespace
+
+std::string style_file_yaml(const SceneDesc& scene, const Tweaks& tweaks,
+                            const std::vector<std::string>& style_dirs, const std::string& target) {
+    const std::string header = "# Written by facet preview from the scene " + scene.path + ".\n";
+    // The preset files read for the scene's style, its own file last; an
+    // inline style (a mapping in the scene file) has only the presets it extends.
+    const std::vector<std::string>& chain = scene.style.files;
+    const bool inline_style =
+        !scene.style.where.file.empty() && same_file(scene.style.where.file, scene.path);
+    const size_t parents = inline_style || chain.empty() ? chain.size() : chain.size() - 1;
+    for (size_t i = 0; i < parents; ++i)
+        if (same_file(target, chain[i]))
+            fail_input({}, "",
+                       target +
+                           " is a preset the scene's style extends; write the look "
+                           "to a file of its own");
+    const auto preset = tweaks.find("style");
+    if (preset == tweaks.end()) {
+        // The scene's inline style written out, or its own style file
+        // written again: its own keys stay, with the panel's values over
+        // them (a file extending itself would not load).
+        if (inline_style)
+            return header +
+                   style_yaml_with_overrides(scene.path, "style", style_overrides(tweaks)) +
+                   scene_values_comment(tweaks);
+        if (!chain.empty() && same_file(target, chain.back()))
+            return header + style_yaml_with_overrides(chain.back(), "", style_overrides(tweaks)) +
+                   scene_values_comment(tweaks);
+    }
+    std::string extends;
+    if (preset != tweaks.end()) {
+        extends = std::get<std::string>(preset->second);
+        for (const auto& [name, path] : list_style_presets(style_dirs))
+            if (name == extends && same_file(target, path))
+                fail_input({}, "",
+                           target + " is the preset '" + name +
+                               "' itself; write the look to a file of its own");
+    } else if (!chain.empty()) {
+        extends = extends_name(chain.back(), style_dirs);
+    }
+    return header + (extends.empty() ? "" : "extends: " + extends + "\n") +
+           nested_style_keys(tweaks) + scene_values_comment(tweaks);
 }
 
 }  // namespace facet

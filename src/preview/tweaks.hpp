@@ -29,11 +29,17 @@ std::vector<Override> tweak_overrides(const Tweaks& tweaks);
 // POSIX shell.
 std::string define_arguments(const std::vector<Override>& overrides);
 
-// A style preset that extends the scene's style (or the preset chosen in
-// the panel) with the panel's style.* values, nested as a style file
-// nests them. Other tweaks (lights, wind) are scene values and are listed
-// in a comment. `style_dirs`: a preset found there is extended by name.
+// The text of a style preset to write to `target` with the panel's
+// style.* values:
+// - `target` is the scene's own style file, or the scene's style is
+//   written inline: that style's own keys with the values over them;
+// - else a preset that extends the scene's style (or the preset chosen in
+//   the panel; by name when found in `style_dirs`) with the values nested
+//   as a style file nests them.
+// Other tweaks (lights, wind) are scene values, listed in a comment.
+// Throws facet::Error for a target the scene's style extends (every style
+// that extends it would change, or it would extend itself).
 std::string style_file_yaml(const SceneDesc& scene, const Tweaks& tweaks,
-                            const std::vector<std::string>& style_dirs);
+                            const std::vector<std::string>& style_dirs, const std::string& target);
 
 }  // namespace facet

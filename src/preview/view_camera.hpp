@@ -30,8 +30,9 @@ ViewCamera orbit(const ViewCamera& camera, float yaw_degrees, float pitch_degree
 // view's height at the target's distance: +x right, +y up on screen.
 ViewCamera pan(const ViewCamera& camera, float right, float up);
 
-// Moves the camera towards the target (factor < 1) or away; near and far
-// scale with the distance, so what was in range stays in range.
+// Moves the camera towards the target (factor < 1) or away. Far moves by
+// the distance travelled, so what was in range stays in range; near
+// shrinks with the distance coming closer and stays put going away.
 ViewCamera dolly(const ViewCamera& camera, float factor);
 
 // The camera as the scene file writes it, one key per line:
@@ -41,7 +42,10 @@ ViewCamera dolly(const ViewCamera& camera, float factor);
 // Each number is the shortest text that reads back as the same float.
 std::string camera_yaml(const ViewCamera& camera, const std::string& name);
 
-// The override of the scene camera's key ("camera" or "cameras.N") that
+// "camera" or "cameras.N": where the scene file writes this camera.
+std::string scene_camera_key(const CameraDesc& scene_camera);
+
+// The override of the scene camera's key (scene_camera_key) that
 // replaces it with this still camera (a flow mapping of camera_yaml's keys).
 Override camera_override(const ViewCamera& camera, const CameraDesc& scene_camera);
 

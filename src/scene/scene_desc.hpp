@@ -282,6 +282,13 @@ StyleDesc load_style_file(const std::string& path, const std::vector<std::string
 std::string resolved_style_yaml(const std::string& path,
                                 const std::vector<std::string>& style_dirs);
 
+// The style keys of `file` (a preset file; with `key` "style", the scene
+// file's inline `style:` mapping) with `style.*` overrides applied to them,
+// as YAML text, `extends:` kept: a tweaked style written back without
+// losing its own keys (facet preview). Comments are not kept.
+std::string style_yaml_with_overrides(const std::string& file, const std::string& key,
+                                      const std::vector<Override>& overrides);
+
 // The preset files found in the given folders: name -> path, first folder wins.
 std::vector<std::pair<std::string, std::string>> list_style_presets(
     const std::vector<std::string>& style_dirs);

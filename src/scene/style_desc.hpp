@@ -169,7 +169,7 @@ struct StyleDesc {
 
     std::vector<std::string> chain;  // the presets it extends, nearest last
     std::vector<std::string> files;  // the preset files read: the chain's, then its own
-    SourceLocation where;
+    SourceLocation where;  // its own mapping: a preset file's root, or the scene's inline style
 };
 
 const char* shading_model_name(ShadingModel model);

@@ -251,9 +251,11 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
             f["extends"].fail("more than " + std::to_string(kMaxExtendsDepth) +
                               " presets extend one another");
         const std::string name = style.name;
+        const SourceLocation where = style.where;  // this layer's, not the parent's
         style = load_style_chain(path, context, visiting);
         style.chain.push_back(style.name);
         style.name = name;
+        style.where = where;
         style.description.clear();  // a description speaks for its own file only
     }
     if (f.has("name")) style.name = f["name"].text();
@@ -397,6 +399,20 @@ std::string resolved_style_yaml(const std::string& path,
     return "# " + checked.name + ": " + chain +
            "\n# every layer applied; keys not listed take the defaults of docs/styles.md\n" +
            out.c_str() + "\n";
+}
+
+std::string style_yaml_with_overrides(const std::string& file, const std::string& key,
+                                      const std::vector<Override>& overrides) {
+    auto doc = read_yaml_file(file);
+    const YAML::Node style = key.empty() ? doc->root : doc->root[key];
+    // The overrides' paths start with "style.", as the scene reader's style
+    // layer has them.
+    auto layer = read_yaml_text("style: {}", "preview");
+    if (style && style.IsMap()) layer->root["style"] = YAML::Clone(style);
+    apply_overrides(*layer, overrides);
+    YAML::Emitter out;
+    out << layer->root["style"];
+    return std::string(out.c_str()) + "\n";
 }
 
 }  // namespace facet

@@ -28,7 +28,8 @@ WIDTH, HEIGHT = 320, 240
 def scene_text(color, camera=None, broken=False):
     camera = camera or "camera:\n  position: [0, 1.5, 4]\n  target: [0, 0.3, 0]\n"
     material = "colour" if broken else "color"  # a misspelt key: an error at its line
-    return f"""output:
+    return f"""style: look.yaml
+output:
   size: [{WIDTH}, {HEIGHT}]
   frames: 1-12
   fps: 4
@@ -136,12 +137,17 @@ def main():
     # that are not facet's. The preview's own code is leak-checked in
     # facet_tests (test_preview.cpp); here the other sanitizers stay on.
     env["ASAN_OPTIONS"] = ":".join(filter(None, [os.environ.get("ASAN_OPTIONS"), "detect_leaks=0"]))
+    passed = False
     try:
         run_checks(work, env)
+        passed = True
     finally:
         xvfb.terminate()
         xvfb.wait()
-        shutil.rmtree(work, ignore_errors=True)
+        if passed:
+            shutil.rmtree(work, ignore_errors=True)
+        else:
+            print(f"kept {work} (the scene, renders and last screenshot) for a look")
     print("preview: all checks passed")
     return 0
 
@@ -164,7 +170,7 @@ def image_area(shot):
 def shows(window, env, expected, what, keep_as=None):
     """The window's image area once it equals `expected` (the X server may
     show a swap a moment after the preview made it); fails naming `what`."""
-    deadline = time.time() + 10
+    deadline = time.time() + WAIT
     while True:
         shot = image_area(screenshot(window, env, keep_as))
         if np.array_equal(shot, expected):
@@ -180,9 +186,12 @@ def run_checks(work, env):
     os.makedirs(os.path.join(work, "meshes"))
     sail = os.path.join(work, "meshes", "sail.obj")
     write_atomically(sail, sail_obj(0.2))
+    look = os.path.join(work, "look.yaml")
+    write_atomically(look, "extends: blinn-phong\n")
     write_atomically(scene, scene_text("[0.8, 0.2, 0.1]"))
     red = skio.imread(render(work, "ref-red"))
     preview = Preview(["scene.yaml", "-o", "snapshots"], work, env)
+    window = None
     try:
         window = subprocess.run(["xdotool", "search", "--sync", "--name", "facet preview - scene.yaml"],
                                 env=env, check=True, capture_output=True, text=True,
@@ -210,6 +219,14 @@ def run_checks(work, env):
         _, at = preview.wait_for(r"^preview: frame 1: final", at + 1)
         shows(window, env, blue, "the edited mesh")
         print("ok: an edited mesh shows")
+
+        # 2c. And an edit of the style file the scene uses.
+        write_atomically(look, "extends: blinn-phong\nbackground: [0.2, 0.3, 0.45]\n")
+        blue = skio.imread(render(work, "ref-blue"))
+        _, at = preview.wait_for(r"^preview: reloading", at + 1)
+        _, at = preview.wait_for(r"^preview: frame 1: final", at + 1)
+        shows(window, env, blue, "the edited style")
+        print("ok: an edited style file shows")
 
         # 3. A broken scene: its error over the last image; the window stays.
         write_atomically(scene, scene_text("[0.1, 0.3, 0.9]", broken=True))
@@ -264,6 +281,7 @@ def run_checks(work, env):
         subprocess.run(["xdotool", "key", "--window", window, "s"], env=env, check=True, timeout=WAIT)
         _, at = preview.wait_for(r"^preview: snapshot of frame 1: wrote", at + 1)
         write_atomically(scene, scene_text("[0.1, 0.3, 0.9]", camera=camera_text))
+        _, at = preview.wait_for(r"^preview: reloading", at + 1)
         moved = render(work, "ref-moved")
         with open(moved, "rb") as a, open(os.path.join(work, "snapshots", "scene", "color.0001.png"), "rb") as b:
             assert a.read() == b.read(), "the printed camera does not render the snapshot"
@@ -293,6 +311,17 @@ def run_checks(work, env):
                        timeout=WAIT)
         assert preview.process.wait(timeout=WAIT) == 0, f"exit code {preview.process.returncode}"
         print("ok: q quits with 0")
+    except BaseException:
+        # What the preview said, and what the window showed last.
+        with preview.lock:
+            print("preview's standard error:\n  " + "\n  ".join(preview.lines))
+            print("preview's standard output:\n  " + "\n  ".join(preview.stdout))
+        try:
+            skio.imsave(os.path.join(work, "last-screenshot.png"), screenshot(window, env),
+                        check_contrast=False)
+        except Exception as e:  # the window may be gone
+            print(f"no last screenshot: {e}")
+        raise
     finally:
         if preview.process.poll() is None:
             preview.process.kill()
