@@ -192,6 +192,11 @@ void PreviewWorker::run() {
             steps = 0;
             continue;
         }
+        if (current.frame == kSceneFirstFrame) {
+            // Known now: a later request naming the frame is the same view.
+            current.frame = loaded_->scene->output.frames.front();
+            current_key = request_key(current);
+        }
         const int samples = loaded_->scene->output.samples;
         steps = current.live ? 1 : samples > 1 ? 3 : 2;
         try {
