@@ -118,6 +118,11 @@ void PreviewWorker::request(const PreviewRequest& request) {
     {
         std::lock_guard lock(mutex_);
         pending_ = request;
+        // "The first frame" is asked for before the window knows the scene:
+        // it is the view being rendered, not a new one.
+        if (running_stoppable_ && request.frame != kSceneFirstFrame &&
+            request_key(request) != running_key_)
+            stop_.store(true);
     }
     wake_.notify_all();
 }
@@ -199,14 +204,24 @@ void PreviewWorker::run() {
         }
         const int samples = loaded_->scene->output.samples;
         steps = current.live ? 1 : samples > 1 ? 3 : 2;
+        {
+            std::lock_guard lock(mutex_);
+            running_key_ = current_key;
+            running_stoppable_ = !current.live;
+            stop_.store(false);
+        }
+        bool finished = false;
         try {
-            render_step(current, step);
+            finished = render_step(current, step);
         } catch (const std::exception& e) {
             publish([&](PreviewUpdate& u) { u.error = e.what(); });
             steps = 0;
-            continue;
         }
-        ++step;
+        {
+            std::lock_guard lock(mutex_);
+            running_stoppable_ = false;
+        }
+        if (finished) ++step;  // stopped: the newer request is pending
     }
 }
 
@@ -281,7 +296,7 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
     }
 }
 
-void PreviewWorker::render_step(const PreviewRequest& request, int step) {
+bool PreviewWorker::render_step(const PreviewRequest& request, int step) {
     Loaded& loaded = *loaded_;
     const SceneDesc& scene = *loaded.scene;
     Step s = kSteps[step];
@@ -303,7 +318,8 @@ void PreviewWorker::render_step(const PreviewRequest& request, int step) {
     FrameImages images;
     const size_t camera = std::min(request.camera_index, scene.cameras.size() - 1);
     const int frame = resolved_frame(request.frame, scene);
-    renderer->render(frame, camera, images);
+    renderer->render(frame, camera, images, &stop_);
+    if (stop_.load()) return false;
     const double render_ms = ms_since(start);
     PreviewImage image = display_image(request.pass, level_scene->output, images);
     image.frame = frame;
@@ -329,6 +345,7 @@ void PreviewWorker::render_step(const PreviewRequest& request, int step) {
         u.steps.push_back({image.step, image.width, image.height, image.frame, image.render_ms});
         u.image = std::move(image);
     });
+    return true;
 }
 
 void PreviewWorker::write_snapshot(const SnapshotRequest& snapshot) {

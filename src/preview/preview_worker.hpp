@@ -6,6 +6,7 @@
 // uses, in steps (docs/preview.md): a quarter-size image, then full size,
 // then the scene's anti-aliased samples, starting again whenever a newer
 // request arrives between steps.
+#include <atomic>
 #include <climits>
 #include <condition_variable>
 #include <cstdint>
@@ -109,7 +110,7 @@ class PreviewWorker {
     struct Loaded;
     void run();
     std::string load(const PreviewRequest& request);
-    void render_step(const PreviewRequest& request, int step);
+    bool render_step(const PreviewRequest& request, int step);  // false: stopped
     void write_snapshot(const SnapshotRequest& snapshot);
     void publish(const std::function<void(PreviewUpdate&)>& change);
     bool quit_requested() const;
@@ -124,6 +125,12 @@ class PreviewWorker {
     std::vector<SnapshotRequest> snapshots_;
     bool working_ = false;
     bool quit_ = false;
+    // The request the step in progress renders, and whether a newer one
+    // stops it: a still view's steps do, so the window answers at once; a
+    // live step is short and finishes, or a drag would never show one.
+    std::string running_key_;
+    bool running_stoppable_ = false;
+    std::atomic<bool> stop_{false};
     PreviewUpdate outbox_;
 
     // The worker thread's own.

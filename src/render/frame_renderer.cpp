@@ -49,7 +49,9 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
     if (scene.output.writes(Pass::motion)) previous_.emplace(scene, world);
 }
 
-void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
+void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
+                           const std::atomic<bool>* stop) {
+    const auto stopped = [stop] { return stop && stop->load(std::memory_order_relaxed); };
     const StylePlan& plan = evaluator_.plan();
     const PassSet passes = scene_.output.passes;
     const FrameInputs inputs = evaluator_.evaluate(frame, camera_index);
@@ -119,11 +121,12 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out) {
     rasterizer_.draw_tiles(
         pool_,
         [&](const TileVisibility& tile) {
+            if (stopped()) return;  // shading is most of a frame's time
             shade_tile(tile, rasterizer_, shade_in, shade_out);
             if (surface_passes) write_surface_passes(tile, rasterizer_, surface_in, out.surface);
         },
         alpha.test());
-    if (!per_sample) return;
+    if (!per_sample || stopped()) return;
     ColorImage* lines = want_lines ? &sample_lines_ : nullptr;
     if (plan.occlusion)
         occlusion_.apply(gbuffer_, side_, inputs.camera, inputs.occlusion, sample_color_, pool_);

@@ -3,6 +3,7 @@
 // pipeline"): each stage has a header of its own and hands the next a plain
 // record. The renderer owns the stages, which keep their buffers from frame
 // to frame.
+#include <atomic>
 #include <optional>
 #include <vector>
 
@@ -45,7 +46,12 @@ class FrameRenderer {
 
     // Renders into `out`, reusing its buffers when they have the right size
     // (fresh pages cost more to fault in and clear than the shading itself).
-    void render(int frame, size_t camera_index, FrameImages& out);
+    // `stop`, when given and set while the frame renders, skips the tiles
+    // not yet shaded and the stages after them: `out` is then unfinished,
+    // for the caller that set it to throw away (an interactive view that
+    // has moved on). Unset, it changes nothing.
+    void render(int frame, size_t camera_index, FrameImages& out,
+                const std::atomic<bool>* stop = nullptr);
 
   private:
     const SceneDesc& scene_;
