@@ -13,9 +13,9 @@
 #                               (runs the Open Job Description template),
 #                               openimageio-tools (oiiotool reads the
 #                               pass EXRs back: docs/passes.md), and
-#                               xvfb, xdotool, x11-apps (xwd) and Mesa's
-#                               software OpenGL (the preview window's test
-#                               on a virtual display: docs/preview.md)
+#                               xvfb, xdotool and x11-apps (xwd): the
+#                               preview window's test on a virtual display
+#                               (docs/preview.md)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
 #   scripts/setup.sh --sanitize also clang and its sanitizer and libFuzzer
 #                               runtimes, and a second build by clang with
@@ -33,11 +33,11 @@ packages=(g++ cmake make pkg-config
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
           libdeflate-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
-          libsdl2-dev libimgui-dev libgl-dev)
+          libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri)
 for arg in "$@"; do
     case "$arg" in
         --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
-                            xvfb xdotool x11-apps libgl1-mesa-dri) ;;
+                            xvfb xdotool x11-apps) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;

@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/shell_word.hpp"
 #include "farm/chunks.hpp"
 #include "farm/job_scripts.hpp"
 #include "farm_support.hpp"

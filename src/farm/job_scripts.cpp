@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "core/shell_word.hpp"
+
 namespace facet {
 namespace {
 
@@ -37,19 +39,6 @@ std::string yaml_list(const std::vector<std::string>& items) {
     for (size_t i = 0; i < items.size(); ++i) list += (i ? ", " : "") + yaml_string(items[i]);
     return list + "]";
 }
-
-}  // namespace
-
-std::string shell_word(const std::string& text) {
-    const std::string safe =
-        "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_-./=:,+@%";
-    if (!text.empty() && text.find_first_not_of(safe) == std::string::npos) return text;
-    std::string quoted = "'";
-    for (char c : text) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return quoted + "'";
-}
-
-namespace {
 
 // The part of the script that runs as `bash job.sh`: submits the array
 // and the merge job, and with --wait reports how the merge ended.

@@ -44,8 +44,4 @@ struct OpenJobSettings {
 // each task in a session folder of its own.
 std::string openjd_template(const FarmJob& job, const OpenJobSettings& settings);
 
-// `text` as one word for bash: unchanged when it is plainly safe, else in
-// single quotes.
-std::string shell_word(const std::string& text);
-
 }  // namespace facet

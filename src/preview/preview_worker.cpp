@@ -115,13 +115,17 @@ PreviewWorker::~PreviewWorker() {
 }
 
 void PreviewWorker::request(const PreviewRequest& request) {
+    const std::string key = request_key(request);
     {
         std::lock_guard lock(mutex_);
+        // The window asks on every pass of its loop; the same view again
+        // changes nothing and wakes nobody.
+        if (key == requested_key_) return;
+        requested_key_ = key;
         pending_ = request;
         // "The first frame" is asked for before the window knows the scene:
         // it is the view being rendered, not a new one.
-        if (running_stoppable_ && request.frame != kSceneFirstFrame &&
-            request_key(request) != running_key_)
+        if (running_stoppable_ && request.frame != kSceneFirstFrame && key != running_key_)
             stop_.store(true);
     }
     wake_.notify_all();

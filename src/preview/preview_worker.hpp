@@ -122,6 +122,7 @@ class PreviewWorker {
     mutable std::mutex mutex_;
     std::condition_variable wake_;
     std::optional<PreviewRequest> pending_;
+    std::string requested_key_;  // of the last request taken in
     std::vector<SnapshotRequest> snapshots_;
     bool working_ = false;
     bool quit_ = false;

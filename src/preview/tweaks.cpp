@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
+#include "core/shell_word.hpp"
 
 namespace facet {
 namespace {
@@ -19,12 +20,6 @@ std::vector<std::string> split_path(const std::string& path) {
         if (dot == std::string::npos) return parts;
         start = dot + 1;
     }
-}
-
-std::string shell_quoted(const std::string& text) {
-    std::string out = "'";
-    for (char c : text) out += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return out + "'";
 }
 
 // How the style file names the style it extends: a preset's name when it
