@@ -41,7 +41,6 @@ enum class PreviewAction {
     print_defines,
     write_style,
     revert_tweaks,
-    quit,
 };
 
 struct PreviewState {

@@ -476,9 +476,6 @@ class PreviewSession {
             case PreviewAction::revert_tweaks:
                 state_.tweaks.clear();
                 break;
-            case PreviewAction::quit:
-                quit_ = true;
-                break;
             case PreviewAction::none:
                 break;
         }
