@@ -386,7 +386,7 @@ class Reference {
         const std::vector<facet::ShadeLight> lights = facet::make_shade_lights(state.lights);
         for (const facet::Draw& d : world_.draws) {
             const facet::Material& m = world_.materials[d.material];
-            const bool textured = m.texture && d.has_uvs;
+            const bool textured = m.base_color_map && d.has_uvs;
             const Program& p = programs_[textured];
             gl_.UseProgram(p.id);
             set_lights(p, lights, cam.position, view_projection);
@@ -395,12 +395,14 @@ class Reference {
             gl_.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model_matrix));
             gl_.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
             gl_.Uniform3fv(p.albedo, 1, glm::value_ptr(m.color));
-            gl_.Uniform2fv(p.uv_scale, 1, glm::value_ptr(m.uv_scale));
+            gl_.Uniform2fv(p.uv_scale, 1,
+                           glm::value_ptr(glm::vec2(m.base_color_map.transform.linear[0].x,
+                                                    m.base_color_map.transform.linear[1].y)));
             const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
             gl_.Uniform4fv(p.terms, 1, glm::value_ptr(terms));
             if (textured) {
                 gl_.ActiveTexture(GL_TEXTURE0);
-                glBindTexture(GL_TEXTURE_2D, textures_.at(m.texture.get()));
+                glBindTexture(GL_TEXTURE_2D, textures_.at(m.base_color_map.texture.get()));
                 gl_.Uniform1i(p.texture, 0);
             }
             if (m.double_sided)
@@ -468,8 +470,8 @@ class Reference {
     // bytes so the sampler decodes them as facet's do; mipmaps by the GL.
     void make_textures() {
         for (const facet::Material& m : world_.materials) {
-            if (!m.texture || textures_.count(m.texture.get())) continue;
-            const facet::Texture& t = *m.texture;
+            if (!m.base_color_map || textures_.count(m.base_color_map.texture.get())) continue;
+            const facet::Texture& t = *m.base_color_map.texture;
             std::vector<uint8_t> bytes(static_cast<size_t>(t.width) * t.height * 4);
             for (int y = 0; y < t.height; ++y)
                 for (int x = 0; x < t.width; ++x) {
@@ -488,10 +490,14 @@ class Reference {
             gl_.GenerateMipmap(GL_TEXTURE_2D);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
             glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-            const GLint wrap = t.wrap == facet::Wrap::clamp ? GL_CLAMP_TO_EDGE : GL_REPEAT;
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
-            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
-            textures_[m.texture.get()] = id;
+            auto gl_wrap = [](facet::Wrap w) -> GLint {
+                return w == facet::Wrap::clamp    ? GL_CLAMP_TO_EDGE
+                       : w == facet::Wrap::mirror ? GL_MIRRORED_REPEAT
+                                                  : GL_REPEAT;
+            };
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, gl_wrap(t.sampler.wrap_s));
+            glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, gl_wrap(t.sampler.wrap_t));
+            textures_[m.base_color_map.texture.get()] = id;
         }
     }
 

@@ -94,9 +94,11 @@ inline void check_sane(const Mesh& mesh) {
         for (const auto& uv : part.uvs) REQUIRE((std::isfinite(uv.x) && std::isfinite(uv.y)));
     }
     for (const auto& m : mesh.materials)
-        if (m.texture)
-            REQUIRE(m.texture->level(0).srgb8.size() + m.texture->level(0).half.size() ==
-                    static_cast<size_t>(m.texture->width) * m.texture->height);
+        if (m.base_color_map.texture)
+            REQUIRE(m.base_color_map.texture->level(0).srgb8.size() +
+                        m.base_color_map.texture->level(0).half.size() ==
+                    static_cast<size_t>(m.base_color_map.texture->width) *
+                        m.base_color_map.texture->height);
     Bounds b = mesh.bounds();
     REQUIRE_FALSE(b.empty());
     for (int k = 0; k < 3; ++k) {

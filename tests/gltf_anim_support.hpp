@@ -11,8 +11,8 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
-#include "anim/gltf_pose.hpp"
 #include "asset_support.hpp"
+#include "assets/gltf_pose.hpp"
 
 namespace facet::test {
 

@@ -79,7 +79,7 @@ TEST_CASE("assimp reads STL, PLY, FBX, Collada and 3DS files", "[assets][assimp]
         CHECK(glm::length(b.min - c.min) < tolerance);
         CHECK(glm::length(b.max - c.max) < tolerance);
         size_t textured = 0, colored = 0;
-        for (const Material& m : mesh.materials) textured += m.texture ? 1 : 0;
+        for (const Material& m : mesh.materials) textured += m.base_color_map.texture ? 1 : 0;
         for (const MeshPart& p : mesh.parts) colored += p.colors.empty() ? 0 : 1;
         CHECK(textured == c.textured_materials);
         CHECK(colored == c.parts_with_colors);

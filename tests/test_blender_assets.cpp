@@ -10,7 +10,7 @@
 #include <tuple>
 
 #include "anim/frame_state.hpp"
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 #include "core/half.hpp"
 #include "real_asset_support.hpp"
 
@@ -102,7 +102,8 @@ TEST_CASE("Blender's Mapping node scales the texture by 2 through KHR_texture_tr
     TempDir dir("blender");
     const Mesh sphere = load_gltf(blender("textured-sphere.glb"));
     float most_u = 0;
-    for (const glm::vec2& uv : sphere.parts[0].uvs) most_u = std::max(most_u, uv.x);
+    const facet::TextureSlot& slot = sphere.materials.at(sphere.parts[0].material).base_color_map;
+    for (const glm::vec2& uv : sphere.parts[0].uvs) most_u = std::max(most_u, slot.map(uv).x);
     CHECK(most_u == Approx(2).epsilon(1e-3));  // Blender's UVs span 0..1
     // Twice as many checker squares across the sphere as with the scale
     // undone (uv_scale multiplies the transformed coordinates).

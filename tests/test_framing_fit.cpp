@@ -8,7 +8,7 @@
 #include <cmath>
 
 #include "anim/frame_state.hpp"
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 #include "gltf_anim_support.hpp"
 #include "render/camera.hpp"
 #include "render/framing_shapes.hpp"

@@ -1,4 +1,4 @@
-// glTF node animation (src/anim/gltf_pose.cpp): keyframe sampling with
+// glTF node animation (src/assets/gltf_pose.cpp): keyframe sampling with
 // LINEAR, STEP and CUBICSPLINE samplers, rotations, holding before and after
 // the keys, parts nothing moves, and choosing an animation. Files are built
 // here, with answers computed by hand.
@@ -13,8 +13,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "anim/gltf_pose.hpp"
 #include "asset_support.hpp"
+#include "assets/gltf_pose.hpp"
 #include "gltf_anim_support.hpp"
 
 using namespace facet::test;

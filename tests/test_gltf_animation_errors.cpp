@@ -12,8 +12,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "anim/gltf_pose.hpp"
 #include "asset_support.hpp"
+#include "assets/gltf_pose.hpp"
 #include "gltf_anim_support.hpp"
 
 using namespace facet::test;

@@ -13,8 +13,8 @@
 #include <glm/gtc/quaternion.hpp>
 #include <nlohmann/json.hpp>
 
-#include "anim/gltf_pose.hpp"
 #include "asset_support.hpp"
+#include "assets/gltf_pose.hpp"
 #include "gltf_anim_support.hpp"
 
 using namespace facet::test;
@@ -52,16 +52,18 @@ TEST_CASE("glTF real simple_skin bends its upper half", "[gltf][anim][skin][real
 
     // Both joints (nodes 1 and 2) sit at (0, 1) at rest, and both inverse
     // bind matrices translate by (-0.5, -1): every joint matrix is a shift
-    // by -0.5 in x, and so is the whole mesh.
+    // by -0.5 in x, and so is the whole mesh. The loaded parts are that
+    // rest pose already (the skin at rest, §3.7.3.3), and time 0 is it.
     auto start = posed(mesh, 0, 0);
     for (size_t v = 0; v < part.positions.size(); ++v) {
-        require_vec3(start[0].positions[v], part.positions[v] - glm::vec3(0.5f, 0, 0));
+        require_vec3(start[0].positions[v], part.positions[v]);
         CHECK(std::abs(start[0].normals[v].z) == Approx(1));
     }
+    CHECK(mesh.bounds().min.x == Approx(-0.5f));  // the file's x from 0, shifted
     // Node 2's rotation reaches (0, 0, 0.707, 0.707), a quarter turn about
     // +Z, at t = 1 and holds to 1.5; at 4 and 4.5 it is the opposite turn.
-    // Vertices at y = 2 hang on joint 1 alone: (x, 2) -> (x - 0.5, 1) ->
-    // turned about the joint at (0, 1). Vertices at y = 0 hang on joint 0.
+    // Vertices at y = 2 hang on joint 1 alone: (x, 2) at rest turned about
+    // the joint at (0, 1). Vertices at y = 0 hang on joint 0.
     for (auto [t, turn] : std::vector<std::pair<double, double>>{{1.5, 1}, {4.5, -1}}) {
         INFO("t = " << t);
         auto parts = posed(mesh, 0, t);
@@ -70,12 +72,11 @@ TEST_CASE("glTF real simple_skin bends its upper half", "[gltf][anim][skin][real
             const glm::vec3 rest = part.positions[v];
             if (rest.y == 2) {
                 ++top;
-                require_vec3(
-                    parts[0].positions[v],
-                    {static_cast<float>(-turn), static_cast<float>(1 + turn * (rest.x - 0.5)), 0},
-                    1e-5f);
+                require_vec3(parts[0].positions[v],
+                             {static_cast<float>(-turn), static_cast<float>(1 + turn * rest.x), 0},
+                             1e-5f);
             } else if (rest.y == 0) {
-                require_vec3(parts[0].positions[v], rest - glm::vec3(0.5f, 0, 0));
+                require_vec3(parts[0].positions[v], rest);
             }
         }
         CHECK(top >= 2);

@@ -8,7 +8,7 @@
 #include <cmath>
 #include <tuple>
 
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 #include "assets/mesh.hpp"
 #include "real_asset_support.hpp"
 

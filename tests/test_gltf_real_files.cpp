@@ -64,9 +64,9 @@ TEST_CASE("glTF real BoxTextured in all three containers", "[assets][gltf][real]
             for (const auto& part : mesh.parts) {
                 const auto& m = material_of(mesh, part);
                 CHECK(m.name == "Texture");
-                REQUIRE(m.texture != nullptr);
-                CHECK(m.texture->width == tw);
-                CHECK(m.texture->height == th);
+                REQUIRE(m.base_color_map.texture != nullptr);
+                CHECK(m.base_color_map.texture->width == tw);
+                CHECK(m.base_color_map.texture->height == th);
                 CHECK(part.uvs.size() == part.positions.size());
                 glm::vec2 lo(1e30f), hi(-1e30f);
                 for (const auto& uv : part.uvs) {
@@ -131,7 +131,8 @@ TEST_CASE("glTF real small scenes", "[assets][gltf][real]") {
         facet::Mesh mesh = facet::load_gltf(kGltfDir + "simple_skin/simple_skin.gltf");
         check_sane(mesh);
         CHECK(mesh.triangle_count() == 8);
-        require_bounds(mesh, {0, 0, 0}, {1, 2, 0});
+        // The skin at rest: both inverse bind matrices shift by -0.5 in x.
+        require_bounds(mesh, {-0.5f, 0, 0}, {0.5f, 2, 0});
         REQUIRE(mesh.rig != nullptr);
         CHECK(mesh.rig->animations.size() == 1);
     }
@@ -147,7 +148,8 @@ TEST_CASE("glTF real small scenes", "[assets][gltf][real]") {
         check_sane(mesh);
         CHECK(mesh.triangle_count() == 24);
         require_bounds(mesh, {-1.6f, -1.14127f, 0}, {1.6f, 1.05f, 0.01f}, 1e-4f);
-        for (const auto& part : mesh.parts) CHECK(material_of(mesh, part).texture != nullptr);
+        for (const auto& part : mesh.parts)
+            CHECK(material_of(mesh, part).base_color_map.texture != nullptr);
     }
     SECTION("BoxTexcoords: two texture coordinate sets") {
         facet::Mesh mesh = facet::load_gltf(kGltfDir + "BoxTexcoords-glTF/boxTexcoords.gltf");

@@ -82,7 +82,7 @@ TEST_CASE("glTF materials: baseColorFactor, double sided, default", "[assets][gl
     CHECK(paint.color.g == Approx(0.4f));
     CHECK(paint.color.b == Approx(0.6f));
     CHECK(paint.double_sided);
-    CHECK(paint.texture == nullptr);
+    CHECK(paint.base_color_map.texture == nullptr);
     const auto& fallback = material_of(mesh, mesh.parts[1]);
     CHECK(fallback.name != "paint");
     CHECK(fallback.color == glm::vec3(1));  // glTF's default base colour is white
@@ -116,15 +116,17 @@ TEST_CASE("glTF base colour texture from a data URI, with sampler wrap", "[asset
     REQUIRE(mesh.parts.size() == 2);
     const auto& ma = material_of(mesh, mesh.parts[0]);
     const auto& mb = material_of(mesh, mesh.parts[1]);
-    REQUIRE(ma.texture != nullptr);
-    REQUIRE(mb.texture != nullptr);
-    CHECK(ma.texture->width == 3);
-    CHECK(ma.texture->height == 2);
-    CHECK(ma.texture->texel(0, 2, 0) == glm::vec4(1, 1, 1, 1));
-    CHECK(ma.texture->texel(0, 0, 1) == glm::vec4(1, 0, 0, 1));
-    CHECK(ma.texture->wrap == facet::Wrap::clamp);
-    CHECK(mb.texture->wrap == facet::Wrap::repeat);  // the glTF default
+    REQUIRE(ma.base_color_map.texture != nullptr);
+    REQUIRE(mb.base_color_map.texture != nullptr);
+    CHECK(ma.base_color_map.texture->width == 3);
+    CHECK(ma.base_color_map.texture->height == 2);
+    CHECK(ma.base_color_map.texture->texel(0, 2, 0) == glm::vec4(1, 1, 1, 1));
+    CHECK(ma.base_color_map.texture->texel(0, 0, 1) == glm::vec4(1, 0, 0, 1));
+    CHECK(ma.base_color_map.texture->sampler.wrap_s == facet::Wrap::clamp);
+    CHECK(mb.base_color_map.texture->sampler.wrap_s == facet::Wrap::repeat);  // the glTF default
     // Material 0 reads TEXCOORD_0; material 1 asks for TEXCOORD_1. No v flip in glTF.
+    CHECK(ma.base_color_map.uv_set == 0);
+    CHECK(mb.base_color_map.uv_set == 1);
     CHECK(mesh.parts[0].uvs[1] == glm::vec2(1, 0));
-    CHECK(mesh.parts[1].uvs[1] == glm::vec2(0.25f, 0.25f));
+    CHECK(mesh.parts[1].uvs1[1] == glm::vec2(0.25f, 0.25f));
 }

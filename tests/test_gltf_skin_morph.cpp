@@ -1,4 +1,4 @@
-// glTF skinning and morph targets (src/anim/gltf_pose.cpp, loaded by
+// glTF skinning and morph targets (src/assets/gltf_pose.cpp, loaded by
 // src/assets/gltf_rig_loader.cpp), on files built here with answers worked
 // out by hand.
 #include <catch2/catch.hpp>
@@ -11,8 +11,8 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
-#include "anim/gltf_pose.hpp"
 #include "asset_support.hpp"
+#include "assets/gltf_pose.hpp"
 #include "gltf_anim_support.hpp"
 
 using namespace facet::test;
@@ -139,8 +139,7 @@ glm::dvec3 expected_skinned(glm::dvec3 p, const std::vector<float>& influence, d
     return sum;
 }
 
-// The skin file's vertex whose rest position (without the mesh node's +10)
-// is `rest`.
+// The skin file's vertex whose rest position is `rest`.
 int skin_vertex(glm::vec3 rest, bool bent) {
     for (int v = 0; v < 5; ++v)
         if (glm::length(skin_position(v, bent) - rest) < 1e-6f) return v;
@@ -167,10 +166,9 @@ TEST_CASE("glTF two-joint skin bends vertices by the joint's angle", "[gltf][ani
             REQUIRE(mesh.rig->skins.size() == 1);
             const auto& part = mesh.parts[0];
             REQUIRE(part.positions.size() == 5);
-            // The bake keeps the bind pose under the node's transform.
-            const glm::vec3 node_offset(10, 0, 0);
-            auto at = [&](int v) { return kSkinPositions[v] + node_offset; };
-            for (int v = 0; v < 5; ++v) require_vec3(part.positions[v], at(v));
+            // The loaded parts are the skin at rest, where the node's own
+            // +10 plays no part (§3.7.3.3).
+            for (int v = 0; v < 5; ++v) require_vec3(part.positions[v], kSkinPositions[v]);
 
             // Without animation the joints are at their bind pose, and the
             // node's own +10 plays no part (§3.7.3.3).
@@ -219,7 +217,8 @@ TEST_CASE("glTF skinned flat-shaded mesh keeps each split vertex's influences",
         posed_part.positions = parts[0].positions;
         posed_part.normals = parts[0].normals;
         for (size_t i = 0; i < part.positions.size(); ++i) {
-            const int v = skin_vertex(part.positions[i] - glm::vec3(10, 0, 0), true);
+            // The loaded parts are the skin at rest: the node's +10 plays no part.
+            const int v = skin_vertex(part.positions[i], true);
             require_vec3(
                 parts[0].positions[i],
                 glm::vec3(expected_skinned(skin_position(v, true), kInfluences[v], 90 * t)));
@@ -268,17 +267,19 @@ TEST_CASE("glTF morph targets at default and animated weights", "[gltf][anim][mo
         Mesh mesh = make("morph.gltf", nullptr);
         REQUIRE(mesh.rig->parts[0].morph_targets.size() == 2);
         const auto& part = mesh.parts[0];
-        // The bake is the base shape, as before morph targets were read.
-        require_vec3(part.positions[2], {0, 1, 0});
-        auto rest = posed(mesh, -1, 0);
-        require_vec3(rest[0].positions[2], {0, 1, 1});
-        require_vec3(rest[0].positions[0], {0, 0, 0});
+        // The bake is the default weights' shape (§3.7.2.2), so a still
+        // render and the bounds show what the author set.
         const float h = std::sqrt(0.5f);
-        for (const auto& n : rest[0].normals) require_vec3(n, {h, 0, h});
-        // The animation starts at weights (0, 0): exactly the bake.
+        require_vec3(part.positions[2], {0, 1, 1});
+        for (const auto& n : part.normals) require_vec3(n, {h, 0, h});
+        auto rest = posed(mesh, -1, 0);
+        CHECK(rest[0].positions == part.positions);
+        CHECK(rest[0].normals == part.normals);
+        require_vec3(rest[0].positions[0], {0, 0, 0});
+        // The animation starts at weights (0, 0): the base shape, not the bake.
         auto start = posed(mesh, 0, 0);
-        CHECK(start[0].positions == part.positions);
-        CHECK(start[0].normals == part.normals);
+        require_vec3(start[0].positions[2], {0, 1, 0});
+        for (const auto& n : start[0].normals) require_vec3(n, {0, 0, 1});
         // Halfway: weights (0.5, 0.5).
         auto half = posed(mesh, 0, 1);
         require_vec3(half[0].positions[0], {0, 0, 0});

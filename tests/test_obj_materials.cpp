@@ -58,13 +58,13 @@ TEST_CASE("OBJ materials: Kd colour, shininess and map_Kd texture", "[assets][ob
     CHECK(red.color.b == Approx(0.2f));
     CHECK(red.shininess == Approx(64.0f));
     CHECK(red.specular == Approx(0.5f));
-    CHECK(red.texture == nullptr);
+    CHECK(red.base_color_map.texture == nullptr);
 
     const auto& textured = material_of(mesh, *by_name["textured"]);
-    REQUIRE(textured.texture != nullptr);
-    CHECK(textured.texture->width == 2);
-    CHECK(textured.texture->height == 2);
-    const facet::Texture& t = *textured.texture;
+    REQUIRE(textured.base_color_map.texture != nullptr);
+    CHECK(textured.base_color_map.texture->width == 2);
+    CHECK(textured.base_color_map.texture->height == 2);
+    const facet::Texture& t = *textured.base_color_map.texture;
     REQUIRE(t.width == 2);
     REQUIRE(t.height == 2);
     CHECK(t.texel(0, 0, 0) == glm::vec4(1, 0, 0, 1));  // top-left red
@@ -87,8 +87,8 @@ TEST_CASE("OBJ map_Kd written with Windows backslashes is found", "[assets][obj]
     REQUIRE(mesh.parts.size() == 1);
     const auto& mat = material_of(mesh, mesh.parts[0]);
     CHECK(mat.name == "m");
-    REQUIRE(mat.texture != nullptr);
-    CHECK(mat.texture->width == 2);
+    REQUIRE(mat.base_color_map.texture != nullptr);
+    CHECK(mat.base_color_map.texture->width == 2);
 }
 
 TEST_CASE("OBJ faces without a known material use a default material", "[assets][obj]") {

@@ -240,17 +240,19 @@ TEST_CASE("OBJ real spider loads with all five textures", "[assets][obj][real]")
     for (const auto& m : mesh.materials) {
         if (!maps.count(m.name)) continue;
         INFO("material " << m.name);
-        REQUIRE(m.texture != nullptr);
-        CHECK(m.texture->width > 0);
-        CHECK(m.texture->height > 0);
-        CHECK(m.texture->level(0).srgb8.size() + m.texture->level(0).half.size() ==
-              static_cast<size_t>(m.texture->width) * m.texture->height);
+        REQUIRE(m.base_color_map.texture != nullptr);
+        CHECK(m.base_color_map.texture->width > 0);
+        CHECK(m.base_color_map.texture->height > 0);
+        CHECK(m.base_color_map.texture->level(0).srgb8.size() +
+                  m.base_color_map.texture->level(0).half.size() ==
+              static_cast<size_t>(m.base_color_map.texture->width) *
+                  m.base_color_map.texture->height);
         ++textured;
     }
     CHECK(textured == maps.size());
     for (const auto& part : mesh.parts) {
         const auto& m = material_of(mesh, part);
-        if (m.texture) CHECK(part.uvs.size() == part.positions.size());
+        if (m.base_color_map.texture) CHECK(part.uvs.size() == part.positions.size());
     }
 }
 

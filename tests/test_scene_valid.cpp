@@ -190,7 +190,7 @@ objects:
     CHECK(box.material.shininess->value == 64.0f);
     REQUIRE(box.material.texture.has_value());
     CHECK(std::filesystem::equivalent(*box.material.texture, dir.file("textures/wood.png")));
-    CHECK(box.material.wrap == facet::TextureWrap::clamp);
+    CHECK(box.material.wrap == facet::Wrap::clamp);
     CHECK(box.material.double_sided == true);
     REQUIRE(box.spin.has_value());
     CHECK(box.spin->axis == glm::vec3(1, 0, 0));

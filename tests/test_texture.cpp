@@ -125,7 +125,7 @@ facet::Texture grey_row(const std::vector<float>& values, facet::Wrap wrap, bool
     const int n = static_cast<int>(values.size());
     facet::Texture t = facet::Texture::from_linear(vertical ? 1 : n, vertical ? n : 1, texels,
                                                    facet::Texture::Format::half);
-    t.wrap = wrap;
+    t.sampler.wrap_s = t.sampler.wrap_t = wrap;
     return t;
 }
 
@@ -351,7 +351,7 @@ TEST_CASE("bilinear sampling between texel centres", "[assets][texture]") {
     facet::Texture q =
         facet::Texture::from_linear(2, 2, {{0, 0, 0, 1}, {0, 0, 0, 1}, {0, 0, 0, 1}, {1, 1, 1, 1}},
                                     facet::Texture::Format::srgb8);
-    q.wrap = facet::Wrap::clamp;
+    q.sampler.wrap_s = q.sampler.wrap_t = facet::Wrap::clamp;
     CHECK(q.sample({0.5f, 0.5f}).r == Approx(0.25f));
     CHECK(q.sample({0.625f, 0.625f}).r == Approx(0.5625f));  // 0.75 * 0.75
     CHECK(q.sample({0.5f, 0.5f}).a == Approx(1.0f));

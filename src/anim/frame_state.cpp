@@ -1,6 +1,6 @@
 #include "anim/frame_state.hpp"
 
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -124,7 +124,7 @@ std::vector<Material> read_materials(const aiScene& scene, const std::string& pa
                 auto& slot = textures[texture];
                 if (!slot)
                     slot = std::make_shared<Texture>(load_texture(texture, context.textures));
-                mat.texture = slot;
+                mat.base_color_map.texture = slot;
                 if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
             } catch (const Error& e) {
                 std::string message = e.what();

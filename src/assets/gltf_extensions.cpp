@@ -26,6 +26,9 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_materials_emissive_strength", "emission brighter than 1"},
         {"KHR_materials_unlit", "materials shown without lights"},
         {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
+        {"EXT_texture_webp", "WebP textures, decoded by libwebp"},
+        {"EXT_texture_avif", "AVIF textures, decoded by libavif"},
+        {"EXT_mesh_gpu_instancing", "copies of a mesh, each with its own transform"},
     };
     return supported;
 }
@@ -34,7 +37,6 @@ const std::map<std::string, std::string>& supported_extensions() {
 std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
-        {"EXT_texture_webp", "its WebP textures are not read"},
         {"KHR_materials_variants", "only the default material of each part is used"},
     };
     const auto it = effects.find(extension);
@@ -134,49 +136,58 @@ ExtensionLists read_extension_lists(const std::string& path) {
     return {names(doc, "extensionsRequired"), names(doc, "extensionsUsed")};
 }
 
-void check_extensions(const ExtensionLists& lists, const std::string& path, Warnings& warnings) {
+ExtensionCheck check_extensions(const ExtensionLists& lists, const std::string& path,
+                                bool refuse_required) {
     const auto& supported = supported_extensions();
-    for (const std::string& name : lists.required)
-        if (!supported.count(name))
-            bad(path, "requires the glTF extension " + name + ", which facet does not support (" +
-                          what_is_lost(name) + ")");
-    for (const std::string& name : lists.used)
-        if (!supported.count(name) &&
-            std::find(lists.required.begin(), lists.required.end(), name) == lists.required.end())
-            warnings.push_back(
-                file_warning(path, "uses the glTF extension " + name +
-                                       ", which facet ignores: " + what_is_lost(name)));
+    ExtensionCheck check;
+    auto required = [&](const std::string& name) {
+        return std::find(lists.required.begin(), lists.required.end(), name) !=
+               lists.required.end();
+    };
+    for (const std::string& name : lists.required) {
+        if (supported.count(name)) continue;
+        check.ignored.push_back(name);
+        // KTX2 textures with PNG/JPEG fallbacks can still be drawn; that is
+        // checked texture by texture once the file is parsed.
+        if (name == "KHR_texture_basisu") continue;
+        const std::string why = "requires the glTF extension " + name +
+                                ", which facet does not support (" + what_is_lost(name) + ")";
+        if (refuse_required) bad(path, why);
+        check.warnings.push_back(file_warning(path, why + ": it cannot be rendered"));
+    }
+    for (const std::string& name : lists.used) {
+        if (supported.count(name) || required(name)) continue;
+        check.ignored.push_back(name);
+        if (name == "KHR_texture_basisu") continue;
+        check.warnings.push_back(file_warning(
+            path,
+            "uses the glTF extension " + name + ", which facet ignores: " + what_is_lost(name)));
+    }
+    return check;
 }
 
-glm::vec2 UvTransform::apply(glm::vec2 uv) const {
-    // The extension's matrix, translation · rotation · scale, written out:
-    // a positive rotation turns the UVs counter-clockwise, the image
-    // clockwise (glTF KHR_texture_transform).
-    const double c = std::cos(rotation), s = std::sin(rotation);
-    const double u = scale.x * uv.x, v = scale.y * uv.y;
-    return {static_cast<float>(offset.x + c * u + s * v),
-            static_cast<float>(offset.y - s * u + c * v)};
-}
-
-UvTransform texture_transform(const tinygltf::TextureInfo& info, const std::string& path,
-                              const std::string& what) {
-    UvTransform t;
-    t.tex_coord = info.texCoord;
+UvMapping texture_mapping(const tinygltf::TextureInfo& info, const std::string& path,
+                          const std::string& what) {
+    UvMapping mapping;
+    mapping.tex_coord = info.texCoord;
     const auto it = info.extensions.find("KHR_texture_transform");
-    if (it == info.extensions.end()) return t;
+    if (it == info.extensions.end()) return mapping;
     const tinygltf::Value& e = it->second;
     const std::string where = what + " KHR_texture_transform";
     if (!e.IsObject()) bad(path, where + " is not an object");
-    if (e.Has("offset")) t.offset = pair_of(e.Get("offset"), path, where + " offset");
-    if (e.Has("rotation")) t.rotation = finite_number(e.Get("rotation"), path, where + " rotation");
-    if (e.Has("scale")) t.scale = pair_of(e.Get("scale"), path, where + " scale");
+    glm::dvec2 offset(0.0), scale(1.0);
+    double rotation = 0;
+    if (e.Has("offset")) offset = pair_of(e.Get("offset"), path, where + " offset");
+    if (e.Has("rotation")) rotation = finite_number(e.Get("rotation"), path, where + " rotation");
+    if (e.Has("scale")) scale = pair_of(e.Get("scale"), path, where + " scale");
+    mapping.transform = UvTransform::from_trs(offset, rotation, scale);
     if (e.Has("texCoord")) {
         const double set = finite_number(e.Get("texCoord"), path, where + " texCoord");
         if (set < 0 || set > 31 || set != std::floor(set))
             bad(path, where + " texCoord must be a whole number from 0 to 31");
-        t.tex_coord = static_cast<int>(set);
+        mapping.tex_coord = static_cast<int>(set);
     }
-    return t;
+    return mapping;
 }
 
 }  // namespace facet::gltf_detail

@@ -10,6 +10,7 @@
 #include <tiny_gltf.h>
 #include <glm/vec2.hpp>
 
+#include "assets/texture.hpp"
 #include "core/diagnostics.hpp"
 
 namespace facet::gltf_detail {
@@ -35,27 +36,29 @@ struct ExtensionLists {
 // cannot be read: tinygltf then reports why.
 ExtensionLists read_extension_lists(const std::string& path);
 
-// An extension facet does not support is an error (invalid_input, naming
-// it and what it does) when the file requires it, and a warning naming it
-// when the file only uses it.
-void check_extensions(const ExtensionLists& lists, const std::string& path, Warnings& warnings);
+struct ExtensionCheck {
+    std::vector<std::string> ignored;  // listed, but not read by facet
+    Warnings warnings;
+};
 
-// KHR_texture_transform of a textureInfo: uv' = offset + R(rotation)·(scale ∘ uv),
-// and the texture coordinate set it reads.
-struct UvTransform {
-    glm::dvec2 offset = {0, 0};
-    double rotation = 0;  // radians
-    glm::dvec2 scale = {1, 1};
+// An extension facet does not support is an error (invalid_input, naming
+// it and what it does) when the file requires it and `refuse_required` is
+// set (else a warning that the file cannot be rendered), and a warning
+// naming it and what is lost when the file only uses it.
+// KHR_texture_basisu is left to check_basisu_fallbacks (gltf_materials.hpp).
+ExtensionCheck check_extensions(const ExtensionLists& lists, const std::string& path,
+                                bool refuse_required);
+
+// How a textureInfo is read: its texture coordinate set, and its
+// KHR_texture_transform.
+struct UvMapping {
     int tex_coord = 0;
-    bool identity() const {
-        return offset == glm::dvec2(0) && rotation == 0 && scale == glm::dvec2(1);
-    }
-    glm::vec2 apply(glm::vec2 uv) const;
+    UvTransform transform;
 };
 
 // The textureInfo's transform (identity with its texCoord when it has
 // none). Throws invalid_input for values that are not finite.
-UvTransform texture_transform(const tinygltf::TextureInfo& info, const std::string& path,
-                              const std::string& what);
+UvMapping texture_mapping(const tinygltf::TextureInfo& info, const std::string& path,
+                          const std::string& what);
 
 }  // namespace facet::gltf_detail

@@ -26,12 +26,13 @@ struct Material {
     float diffuse = 0.8f;
     float specular = 0.4f;
     float shininess = 32;
-    std::shared_ptr<const Texture> texture;  // multiplies color
-    glm::vec2 uv_scale = {1, 1};             // texture coordinates are multiplied by this
+    TextureSlot base_color_map;  // multiplies color (and alpha)
     bool double_sided = false;
     // Light the surface gives off, linear RGB, added to the shaded colour
-    // of the lit models (glTF emissiveFactor times emissiveStrength).
+    // of the lit models: glTF emissiveFactor times emissiveStrength, times
+    // the emissive map where there is one.
     glm::vec3 emissive = {0, 0, 0};
+    TextureSlot emissive_map;
     // Shown as its colour alone, without lights (KHR_materials_unlit).
     bool unlit = false;
     // Shows only the shadows cast on it, over the background: a floor that
@@ -61,7 +62,8 @@ struct Bounds {
 struct MeshPart {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // one per position, unit length
-    std::vector<glm::vec2> uvs;      // one per position, or empty
+    std::vector<glm::vec2> uvs;      // texture coordinate set 0: one per position, or empty
+    std::vector<glm::vec2> uvs1;     // set 1 (glTF TEXCOORD_1), or empty
     std::vector<glm::vec3>
         colors;  // one per position (linear RGB, multiplies the material's), or empty
     std::vector<uint32_t> indices;  // three per triangle
@@ -101,11 +103,15 @@ struct Mesh {
     std::vector<Material> materials;
     Warnings warnings;  // non-fatal problems found while loading, each naming the file
     // glTF nodes, skins, morph targets and animations, for posing the parts
-    // (anim/gltf_pose.hpp); null when the file has none of them. The parts
+    // (assets/gltf_pose.hpp); null when the file has none of them. The parts
     // above are always the static rest pose.
     std::shared_ptr<const MeshRig> rig;
     std::vector<GltfCamera> cameras;  // a glTF file's, for `facet info`
     std::vector<GltfLight> lights;    // a glTF file's KHR_lights_punctual lights
+    // A glTF file's extension lists, and those of them facet does not read.
+    struct Extensions {
+        std::vector<std::string> used, required, ignored;
+    } extensions;
 
     size_t triangle_count() const;
     size_t vertex_count() const;
@@ -113,7 +119,7 @@ struct Mesh {
 };
 
 // The cameras of a glTF file, with its nodes and animations to place them
-// at any time (anim/gltf_pose.hpp, node_world_matrix).
+// at any time (assets/gltf_pose.hpp, node_world_matrix).
 struct GltfCameras {
     std::vector<GltfCamera> cameras;
     std::shared_ptr<const MeshRig> rig;
@@ -125,6 +131,9 @@ struct GltfCameras {
 struct AssetContext {
     AssetPathPolicy paths;
     TextureBudget* textures = nullptr;  // when set, charged before each texture is decoded
+    // `facet info`: a file that requires an extension facet does not read
+    // is still loaded as far as it can be, the refusal a warning.
+    bool inspect_only = false;
 };
 
 // Loads .obj (with .mtl, through tinyobjloader), .gltf or .glb (through

@@ -223,6 +223,7 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
             out.positions.push_back(part.positions[v]);
             out.normals.push_back(corner_normal[c]);
             if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
+            if (!part.uvs1.empty()) out.uvs1.push_back(part.uvs1[v]);
             if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
             if (source_vertex) source_vertex->push_back(v);
         }
@@ -238,6 +239,7 @@ void validate_part(const MeshPart& part, const std::string& source) {
         throw Error(ExitCode::invalid_input, source + ": index count is not a multiple of 3");
     if (part.normals.size() != part.positions.size() ||
         (!part.uvs.empty() && part.uvs.size() != part.positions.size()) ||
+        (!part.uvs1.empty() && part.uvs1.size() != part.positions.size()) ||
         (!part.colors.empty() && part.colors.size() != part.positions.size()))
         throw Error(ExitCode::invalid_input, source + ": vertex attribute counts differ");
     for (uint32_t i : part.indices)

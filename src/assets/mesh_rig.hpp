@@ -2,7 +2,7 @@
 // What a glTF file says about moving its meshes, kept as plain data beside
 // the baked rest pose: the node tree, skins, morph targets and animations
 // (glTF 2.0 §3.5 nodes, §3.7.3 skins, §3.7.2.2 morph targets, §3.11
-// animations). anim/gltf_pose.hpp turns it into posed vertices.
+// animations). assets/gltf_pose.hpp turns it into posed vertices.
 //
 // Node, skin and animation indices are the file's own, so messages and
 // tools can name them as the file does. Every index and count here was
@@ -48,6 +48,9 @@ struct RigMorphTarget {
 // The un-baked source of Mesh::parts[i], vertex for vertex in the same order.
 struct RigPart {
     int node = -1;  // the node that instantiated the mesh
+    // One copy of EXT_mesh_gpu_instancing: its transform, applied between
+    // the mesh and the node (identity without instancing).
+    glm::dmat4 instance = glm::dmat4(1.0);
     int skin = -1;  // that node's skin, or -1
     // The baked rest transform had a negative determinant, so the loader
     // reversed the part's triangles; posing compares against this.

@@ -405,7 +405,7 @@ Mesh load_obj(const std::string& path, const AssetContext& context) {
                     throw Error(ExitCode::invalid_input, path + ": " + where + ": " + e.what());
                 }
             }
-            mat.texture = slot;
+            mat.base_color_map.texture = slot;
             // map_Kd replaces Kd in most exporters' intent; many write Kd 0 0 0 with a map.
             if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
         }

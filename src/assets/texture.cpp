@@ -1,6 +1,5 @@
 #include "assets/texture.hpp"
 
-#include <stb/stb_image.h>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <limits>
 #include <mutex>
 
+#include "assets/image_decode.hpp"
 #include "core/color.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
@@ -48,60 +48,77 @@ glm::vec4 texel_at(const TextureLevel& l, size_t i, const std::array<float, 256>
     return {half_to_float(h.r), half_to_float(h.g), half_to_float(h.b), half_to_float(h.a)};
 }
 
-// The texel column (or row) at whole texel index i and the one after it,
-// for the wrap mode. Repeat wraps with a mask when the size is a power of
-// two (the usual texture), else with one remainder: the division is the
-// dearest step of a lookup.
-struct TexelPair {
-    int first, second;
-};
-
-TexelPair wrap_pair(int i, int size, Wrap wrap) {
-    if (wrap == Wrap::clamp) {
-        auto clamp = [size](int v) { return v < 0 ? 0 : (v >= size ? size - 1 : v); };
-        return {clamp(i), clamp(i + 1)};
+// A whole texel index wrapped into [0, size). Repeat wraps with a mask
+// when the size is a power of two (the usual texture), else with one
+// remainder: the division is the dearest step of a lookup.
+int wrap_index(int i, int size, Wrap wrap) {
+    switch (wrap) {
+        case Wrap::clamp:
+            return i < 0 ? 0 : (i >= size ? size - 1 : i);
+        case Wrap::mirror: {
+            // Period 2·size: the image, then the image reversed.
+            const int period = 2 * size;
+            int m = i % period;
+            if (m < 0) m += period;
+            return m < size ? m : period - 1 - m;
+        }
+        case Wrap::repeat:
+            break;
     }
-    int first;
-    if ((size & (size - 1)) == 0) {
-        first = i & (size - 1);  // two's complement: right for negative i too
-    } else {
-        first = i % size;
-        if (first < 0) first += size;
-    }
-    return {first, first + 1 == size ? 0 : first + 1};
+    if ((size & (size - 1)) == 0) return i & (size - 1);  // two's complement: right for negative i
+    const int m = i % size;
+    return m < 0 ? m + size : m;
 }
 
-glm::vec4 bilinear(const TextureLevel& l, Wrap wrap, glm::vec2 uv) {
-    const auto& table = srgb8_table();
-    const int width = l.width, height = l.height;
-    // Texel centres sit at half-integer coordinates.
-    float x = uv.x * static_cast<float>(width) - 0.5f;
-    float y = uv.y * static_cast<float>(height) - 0.5f;
-    if (!std::isfinite(x) || !std::isfinite(y)) return texel_at(l, 0, table);
-    if (wrap == Wrap::clamp) {
-        // Clamp before the fmod below: far outside the image the edge texel
-        // must win, not whatever texel the remainder happens to land on.
-        x = std::clamp(x, -1.0f, static_cast<float>(width));
-        y = std::clamp(y, -1.0f, static_cast<float>(height));
-    }
-    // Keep the float->int conversion in range for huge repeat counts (at
-    // 2^24 and beyond every float is whole, so this keeps x's fraction).
+// Texel coordinates of uv (texel centres at half-integers), finite and
+// small enough for the float->int conversions below.
+glm::vec2 texel_coordinates(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
+    float x = uv.x * static_cast<float>(l.width) - 0.5f;
+    float y = uv.y * static_cast<float>(l.height) - 0.5f;
+    // Clamp before the fmod below: far outside the image the edge texel
+    // must win, not whatever texel the remainder happens to land on.
+    if (s.wrap_s == Wrap::clamp) x = std::clamp(x, -1.0f, static_cast<float>(l.width));
+    if (s.wrap_t == Wrap::clamp) y = std::clamp(y, -1.0f, static_cast<float>(l.height));
+    // Keep the conversion in range for huge repeat counts (at 2^24 and
+    // beyond every float is whole, so this keeps x's fraction; 2^24 is a
+    // multiple of every mirrored period up to 2^23).
     constexpr float kWhole = 16777216.0f;
     if (!(std::fabs(x) < kWhole)) x = std::fmod(x, kWhole);
     if (!(std::fabs(y) < kWhole)) y = std::fmod(y, kWhole);
-    const float fx = std::floor(x), fy = std::floor(y);
-    const float tx = x - fx, ty = y - fy;
-    const TexelPair xs = wrap_pair(static_cast<int>(fx), width, wrap);
-    const TexelPair ys = wrap_pair(static_cast<int>(fy), height, wrap);
-    const size_t row_a = static_cast<size_t>(ys.first) * width;
-    const size_t row_b = static_cast<size_t>(ys.second) * width;
-    const glm::vec4 a = texel_at(l, row_a + xs.first, table);
-    const glm::vec4 b = texel_at(l, row_a + xs.second, table);
-    const glm::vec4 c = texel_at(l, row_b + xs.first, table);
-    const glm::vec4 d = texel_at(l, row_b + xs.second, table);
+    return {x, y};
+}
+
+glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
+    const auto& table = srgb8_table();
+    const glm::vec2 t = texel_coordinates(l, s, uv);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
+    // The texel whose square holds the point: floor(x + 0.5) of the centres.
+    const int x = wrap_index(static_cast<int>(std::floor(t.x + 0.5f)), l.width, s.wrap_s);
+    const int y = wrap_index(static_cast<int>(std::floor(t.y + 0.5f)), l.height, s.wrap_t);
+    return texel_at(l, static_cast<size_t>(y) * l.width + x, table);
+}
+
+glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
+    const auto& table = srgb8_table();
+    const glm::vec2 t = texel_coordinates(l, s, uv);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
+    const float fx = std::floor(t.x), fy = std::floor(t.y);
+    const float tx = t.x - fx, ty = t.y - fy;
+    const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
+    const int x0 = wrap_index(ix, l.width, s.wrap_s), x1 = wrap_index(ix + 1, l.width, s.wrap_s);
+    const size_t row_a = static_cast<size_t>(wrap_index(iy, l.height, s.wrap_t)) * l.width;
+    const size_t row_b = static_cast<size_t>(wrap_index(iy + 1, l.height, s.wrap_t)) * l.width;
+    const glm::vec4 a = texel_at(l, row_a + x0, table);
+    const glm::vec4 b = texel_at(l, row_a + x1, table);
+    const glm::vec4 c = texel_at(l, row_b + x0, table);
+    const glm::vec4 d = texel_at(l, row_b + x1, table);
     const glm::vec4 top = a + (b - a) * tx;
     const glm::vec4 bottom = c + (d - c) * tx;
     return top + (bottom - top) * ty;
+}
+
+glm::vec4 filtered(const TextureLevel& l, const Sampler& s, Filter filter, glm::vec2 uv) {
+    return filter == Filter::nearest ? nearest(l, s, uv) : bilinear(l, s, uv);
 }
 
 void store(TextureLevel& l, Texture::Format format, size_t i, const glm::vec4& c) {
@@ -190,19 +207,46 @@ uint64_t Texture::bytes() const {
 
 glm::vec4 Texture::sample(glm::vec2 uv) const {
     if (!levels_) return glm::vec4(1);
-    return bilinear(level(0), wrap, uv);
+    return filtered(level(0), sampler, sampler.mag, uv);
 }
 
 glm::vec4 Texture::sample(glm::vec2 uv, float lod) const {
     if (!levels_) return glm::vec4(1);
-    if (!(lod > 0.0f) || level_count() == 1) return sample(uv);  // also NaN
+    if (!(lod > 0.0f)) return sample(uv);  // also NaN
+    if (!sampler.mipmaps || level_count() == 1) return filtered(level(0), sampler, sampler.min, uv);
     const float top = static_cast<float>(level_count() - 1);
-    if (lod >= top) return bilinear(level(level_count() - 1), wrap, uv);
+    if (lod >= top) return filtered(level(level_count() - 1), sampler, sampler.min, uv);
+    if (sampler.mip == Filter::nearest) {
+        const int chosen = static_cast<int>(std::floor(lod + 0.5f));
+        return filtered(level(chosen), sampler, sampler.min, uv);
+    }
     const int fine_level = static_cast<int>(lod);
     const float t = lod - static_cast<float>(fine_level);
-    const glm::vec4 fine = bilinear(level(fine_level), wrap, uv);
-    const glm::vec4 coarse = bilinear(level(fine_level + 1), wrap, uv);
+    const glm::vec4 fine = filtered(level(fine_level), sampler, sampler.min, uv);
+    const glm::vec4 coarse = filtered(level(fine_level + 1), sampler, sampler.min, uv);
     return fine + (coarse - fine) * t;
+}
+
+UvTransform UvTransform::from_trs(glm::dvec2 offset, double rotation, glm::dvec2 scale) {
+    const double c = std::cos(rotation), s = std::sin(rotation);
+    UvTransform t;
+    t.offset = offset;
+    // Columns: u' = c·sx·u + s·sy·v, v' = −s·sx·u + c·sy·v.
+    t.linear =
+        glm::dmat2(glm::dvec2(c * scale.x, -s * scale.x), glm::dvec2(s * scale.y, c * scale.y));
+    return t;
+}
+
+UvTransform UvTransform::scaled(glm::dvec2 scale) const {
+    UvTransform t;
+    t.offset = offset * scale;
+    t.linear = glm::dmat2(linear[0] * scale, linear[1] * scale);
+    return t;
+}
+
+glm::vec2 UvTransform::apply(glm::vec2 uv) const {
+    return {static_cast<float>(offset.x + linear[0].x * uv.x + linear[1].x * uv.y),
+            static_cast<float>(offset.y + linear[0].y * uv.x + linear[1].y * uv.y)};
 }
 
 uint64_t texture_bytes(int width, int height, int bits) {
@@ -256,36 +300,7 @@ Texture texture_from_pixels(int width, int height, int channels, int bits, const
 
 Texture load_texture(const std::string& path, TextureBudget* budget) {
     const std::vector<uint8_t> bytes = read_input_file(path, "image", kMaxImageFileBytes);
-    if (bytes.size() > static_cast<size_t>(std::numeric_limits<int>::max()))
-        throw Error(ExitCode::invalid_input, path + ": cannot read image: the file is too large");
-    const int size = static_cast<int>(bytes.size());
-    int w = 0, h = 0, channels = 0;
-    if (!stbi_info_from_memory(bytes.data(), size, &w, &h, &channels))
-        throw Error(ExitCode::invalid_input,
-                    path + ": cannot decode image (" + stbi_failure_reason() + ")");
-    const bool is16 = stbi_is_16_bit_from_memory(bytes.data(), size);
-    try {
-        check_size(w, h);
-    } catch (const Error& e) {
-        throw Error(ExitCode::invalid_input, path + ": " + e.what());
-    }
-    if (budget) budget->charge(path, w, h, texture_bytes(w, h, is16 ? 16 : 8));
-    void* data =
-        is16
-            ? static_cast<void*>(stbi_load_16_from_memory(bytes.data(), size, &w, &h, &channels, 0))
-            : static_cast<void*>(stbi_load_from_memory(bytes.data(), size, &w, &h, &channels, 0));
-    if (!data)
-        throw Error(ExitCode::invalid_input,
-                    path + ": cannot decode image (" + stbi_failure_reason() + ")");
-    try {
-        Texture tex =
-            texture_from_pixels(w, h, channels, is16 ? 16 : 8, static_cast<const uint8_t*>(data));
-        stbi_image_free(data);
-        return tex;
-    } catch (const Error& e) {
-        stbi_image_free(data);
-        throw Error(ExitCode::invalid_input, path + ": " + e.what());
-    }
+    return decode_texture(bytes.data(), bytes.size(), path, budget);
 }
 
 struct TextureBudget::State {

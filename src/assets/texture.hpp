@@ -3,13 +3,15 @@
 // "Pyramidal Parametrics"). Texels keep the precision their image had:
 // 8-bit images stay 8-bit sRGB (4 bytes a texel, decoded through a table
 // when sampled), 16-bit ones become half-float linear RGBA (8 bytes). The
-// levels are shared between copies, so a copy that only changes `wrap`
-// costs nothing.
+// levels are shared between copies, so a copy that only changes its
+// sampler costs nothing.
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include <glm/ext/matrix_double2x2.hpp>
+#include <glm/ext/vector_double2.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec4.hpp>
 
@@ -17,7 +19,21 @@
 
 namespace facet {
 
-enum class Wrap { repeat, clamp };
+// What lies past the image's edge, per axis (glTF samplers: REPEAT,
+// CLAMP_TO_EDGE, MIRRORED_REPEAT).
+enum class Wrap { repeat, clamp, mirror };
+enum class Filter { nearest, linear };
+
+// How a texture is read, as a glTF sampler says (§5.26). The defaults are
+// facet's own: repeat, bilinear within a level, linear between levels.
+struct Sampler {
+    Wrap wrap_s = Wrap::repeat;  // along u (image columns)
+    Wrap wrap_t = Wrap::repeat;  // along v (image rows)
+    Filter mag = Filter::linear;
+    Filter min = Filter::linear;  // within a level, when minifying
+    bool mipmaps = true;          // minifying reads the mip chain
+    Filter mip = Filter::linear;  // between two levels of the chain
+};
 
 // One level: exactly one of the two vectors holds its width x height texels,
 // rows top to bottom.
@@ -30,12 +46,28 @@ struct TextureLevel {
 
 class TextureBudget;
 
+// An affine map of texture coordinates, uv' = offset + linear·uv: glTF's
+// KHR_texture_transform (translation · rotation · scale), then a scene
+// material's uv_scale. Double, like the file's numbers; the result is
+// rounded to float once.
+struct UvTransform {
+    glm::dvec2 offset = {0, 0};
+    glm::dmat2 linear = glm::dmat2(1.0);
+    // KHR_texture_transform's T·R·S: a positive rotation (radians) turns
+    // the UVs counter-clockwise, the image clockwise.
+    static UvTransform from_trs(glm::dvec2 offset, double rotation, glm::dvec2 scale);
+    // This map followed by a scale of its result.
+    UvTransform scaled(glm::dvec2 scale) const;
+    bool identity() const { return offset == glm::dvec2(0) && linear == glm::dmat2(1.0); }
+    glm::vec2 apply(glm::vec2 uv) const;
+};
+
 struct Texture {
     enum class Format { srgb8, half };
 
     int width = 0;
     int height = 0;
-    Wrap wrap = Wrap::repeat;
+    Sampler sampler;
 
     // From linear RGBA texels (row by row), stored in `format`.
     static Texture from_linear(int width, int height, const std::vector<glm::vec4>& texels,
@@ -49,12 +81,14 @@ struct Texture {
     // Bytes the texels of every level take.
     uint64_t bytes() const;
 
-    // Bilinear lookup in level 0. uv (0,0) is the top-left corner of the
-    // image, as in glTF and as OBJ files are commonly authored after their v flip.
+    // Lookup in level 0 with the magnification filter. uv (0,0) is the
+    // top-left corner of the image, as in glTF and as OBJ files are
+    // commonly authored after their v flip.
     glm::vec4 sample(glm::vec2 uv) const;
 
-    // Trilinear lookup: `lod` is log2 of the texels one pixel step covers;
-    // 0 or less is level 0, and each step up halves the resolution.
+    // Lookup as the sampler says: `lod` is log2 of the texels one pixel
+    // step covers. 0 or less magnifies level 0; above it minifies, by
+    // default trilinearly, each step up halving the resolution.
     glm::vec4 sample(glm::vec2 uv, float lod) const;
 
   private:
@@ -66,13 +100,24 @@ struct Texture {
     friend Texture texture_from_pixels(int, int, int, int, const uint8_t*);
 };
 
+// How a material reads one of its textures: which of a part's texture
+// coordinate sets (glTF texCoord), mapped by `transform`.
+struct TextureSlot {
+    std::shared_ptr<const Texture> texture;
+    int uv_set = 0;  // 0: MeshPart::uvs, 1: MeshPart::uvs1
+    UvTransform transform;
+    explicit operator bool() const { return texture != nullptr; }
+    glm::vec2 map(glm::vec2 uv) const { return transform.identity() ? uv : transform.apply(uv); }
+};
+
 // Bytes a texture of this size and bit depth takes with its mipmaps, known
 // before decoding, for budgets.
 uint64_t texture_bytes(int width, int height, int bits);
 
-// Reads PNG or JPEG (8 or 16 bit, grey, grey+alpha, RGB, RGBA). Colour
-// channels are taken as sRGB; alpha is linear. The image's size is read
-// first and charged to `budget` (when given) before anything is decoded.
+// Reads an image file (PNG, JPEG, WebP, AVIF and the rest that
+// assets/image_decode.hpp reads; 8 or 16 bit, grey, grey+alpha, RGB, RGBA).
+// Colour channels are taken as sRGB; alpha is linear. The image's size is
+// read first and charged to `budget` (when given) before anything is decoded.
 Texture load_texture(const std::string& path, TextureBudget* budget = nullptr);
 Texture texture_from_pixels(int width, int height, int channels, int bits, const uint8_t* data);
 

@@ -53,6 +53,19 @@ const char* light_type_name(GltfLight::Type type) {
                                                 : "point";
 }
 
+// The materials some part is drawn with, in the file's order: a file's
+// unused materials, and the default one when every part has its own, are
+// not what the file shows.
+std::vector<const Material*> used_materials(const Mesh& mesh) {
+    std::vector<bool> used(mesh.materials.size(), false);
+    for (const MeshPart& part : mesh.parts)
+        if (part.material < used.size()) used[part.material] = true;
+    std::vector<const Material*> out;
+    for (size_t i = 0; i < used.size(); ++i)
+        if (used[i]) out.push_back(&mesh.materials[i]);
+    return out;
+}
+
 MeshFacts mesh_facts(const Mesh& mesh) {
     MeshFacts f;
     for (const MeshPart& part : mesh.parts) {
@@ -82,13 +95,17 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
         {"parts_with_uvs", facts.textured_parts},
         {"bounds", {{"min", {b.min.x, b.min.y, b.min.z}}, {"max", {b.max.x, b.max.y, b.max.z}}}}};
     j["materials"] = Json::array();
-    for (const auto& m : mesh.materials)
-        j["materials"].push_back({{"name", m.name},
-                                  {"color", {m.color.r, m.color.g, m.color.b}},
-                                  {"textured", m.texture != nullptr},
-                                  {"double_sided", m.double_sided},
-                                  {"emissive", {m.emissive.r, m.emissive.g, m.emissive.b}},
-                                  {"unlit", m.unlit}});
+    for (const Material* m : used_materials(mesh))
+        j["materials"].push_back({{"name", m->name},
+                                  {"color", {m->color.r, m->color.g, m->color.b}},
+                                  {"textured", m->base_color_map.texture != nullptr},
+                                  {"emissive_textured", m->emissive_map.texture != nullptr},
+                                  {"double_sided", m->double_sided},
+                                  {"emissive", {m->emissive.r, m->emissive.g, m->emissive.b}},
+                                  {"unlit", m->unlit}});
+    j["extensions"] = {{"used", mesh.extensions.used},
+                       {"required", mesh.extensions.required},
+                       {"ignored", mesh.extensions.ignored}};
     j["animations"] = Json::array();
     if (rig)
         for (const auto& a : rig->animations)
@@ -133,21 +150,32 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
                 b.max.y, b.max.z);
     std::printf("size:       [%g, %g, %g]\n", b.max.x - b.min.x, b.max.y - b.min.y,
                 b.max.z - b.min.z);
-    std::printf("materials:  %zu\n", mesh.materials.size());
-    for (const auto& m : mesh.materials) {
+    const std::vector<const Material*> materials = used_materials(mesh);
+    std::printf("materials:  %zu\n", materials.size());
+    for (const Material* m : materials) {
         std::string extra;
-        if (m.texture) extra += ", textured";
-        if (m.double_sided) extra += ", double-sided";
-        if (m.unlit) extra += ", unlit";
-        if (m.emissive != glm::vec3(0)) {
+        if (m->base_color_map) extra += ", textured";
+        if (m->double_sided) extra += ", double-sided";
+        if (m->unlit) extra += ", unlit";
+        if (m->emissive != glm::vec3(0)) {
             char text[96];
-            std::snprintf(text, sizeof text, ", emissive [%.3g, %.3g, %.3g]", m.emissive.r,
-                          m.emissive.g, m.emissive.b);
+            std::snprintf(text, sizeof text, ", emissive [%.3g, %.3g, %.3g]%s", m->emissive.r,
+                          m->emissive.g, m->emissive.b, m->emissive_map ? " x map" : "");
             extra += text;
         }
         std::printf("  - %s: color [%.3g, %.3g, %.3g]%s\n",
-                    m.name.empty() ? "(unnamed)" : m.name.c_str(), m.color.r, m.color.g, m.color.b,
-                    extra.c_str());
+                    m->name.empty() ? "(unnamed)" : m->name.c_str(), m->color.r, m->color.g,
+                    m->color.b, extra.c_str());
+    }
+    auto list = [](const std::vector<std::string>& names) {
+        std::string text;
+        for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
+        return text.empty() ? std::string("none") : text;
+    };
+    if (!mesh.extensions.used.empty() || !mesh.extensions.required.empty()) {
+        std::printf("extensions: used %s\n", list(mesh.extensions.used).c_str());
+        std::printf("            required %s\n", list(mesh.extensions.required).c_str());
+        std::printf("            not read %s\n", list(mesh.extensions.ignored).c_str());
     }
     const MeshRig* rig = mesh.rig.get();
     std::printf("cameras:    %zu\n", mesh.cameras.size());
@@ -192,6 +220,7 @@ int info_command(const std::string& path, bool allow_outside, bool json) {
     AssetContext assets;
     assets.paths.allow_outside = allow_outside;
     assets.textures = &textures;
+    assets.inspect_only = true;
     const Mesh mesh = load_mesh(path, assets);
     if (json)
         print_mesh_json(path, mesh);

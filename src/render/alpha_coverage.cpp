@@ -30,12 +30,11 @@ bool AlphaCoverage::keep(const void* self, uint32_t triangle, float b1, float b2
     const Draw& draw = world.draws[world.triangle_draw[triangle]];
     const Material& m = c.materials_[draw.material];
     float alpha = m.alpha;
-    if (m.texture && draw.has_uvs) {
-        const uint32_t* corner = &world.indices[3 * static_cast<size_t>(triangle)];
-        const glm::vec2 uv = (1 - b1 - b2) * world.uvs[corner[0]] + b1 * world.uvs[corner[1]] +
-                             b2 * world.uvs[corner[2]];
+    if (m.base_color_map && draw.has_uvs) {
+        const std::array<glm::vec2, 3> c = world.corner_uvs(triangle, m.base_color_map);
+        const glm::vec2 uv = (1 - b1 - b2) * c[0] + b1 * c[1] + b2 * c[2];
         // The finest level: a cut-out's edge stays where the texture draws it.
-        alpha *= m.texture->sample(uv * m.uv_scale, 0.0f).a;
+        alpha *= m.base_color_map.texture->sample(uv, 0.0f).a;
     }
     if (m.alpha_mode == AlphaMode::mask) return alpha >= m.alpha_cutoff;
     return alpha > kBayer4[y & 3][x & 3];

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <tuple>
 
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 
 namespace facet {
 namespace {

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "anim/frame_state.hpp"
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 #include "cloth/cloth.hpp"
 #include "render/world.hpp"
 

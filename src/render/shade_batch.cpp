@@ -135,7 +135,7 @@ template <bool Single>
                 b.has_uvs[lane] = draw.has_uvs;
                 b.has_colors[lane] = draw.has_colors;
             }
-        b.any_texture = b.any_texture || m.texture != nullptr;
+        b.any_texture = b.any_texture || m.base_color_map;
         b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
         b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
         b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
@@ -265,25 +265,23 @@ SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
     return s;
 }
 
-struct CornerUvs {
-    glm::vec2 uv[3];
-};
-
-CornerUvs corner_uvs(const World& world, uint32_t triangle, glm::vec2 scale) {
-    const uint32_t* c = &world.indices[3 * static_cast<size_t>(triangle)];
-    return {{world.uvs[c[0]] * scale, world.uvs[c[1]] * scale, world.uvs[c[2]] * scale}};
+// One texture of a lane's material, looked up with the lane's pixel
+// footprint.
+glm::vec4 sample_slot(const ShadeInputs& in, const ShadeBatch& b, int lane,
+                      const TextureSlot& slot) {
+    const SurfaceSample s = pixel_sample(b, lane, in.samples_per_side);
+    const std::array<glm::vec2, 3> c = in.world.corner_uvs(s.triangle, slot);
+    const TextureLookup t =
+        texture_lookup(c[0], c[1], c[2], s, glm::vec2(slot.texture->width, slot.texture->height));
+    return slot.texture->sample(t.uv, t.lod);
 }
 
 // Textures, lane by lane: trilinear lookups do not vectorise.
 void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
-        if (!m.texture) continue;
-        const SurfaceSample s = pixel_sample(b, i, in.samples_per_side);
-        const CornerUvs c = corner_uvs(in.world, s.triangle, m.uv_scale);
-        const TextureLookup t = texture_lookup(c.uv[0], c.uv[1], c.uv[2], s,
-                                               glm::vec2(m.texture->width, m.texture->height));
-        const glm::vec4 texel = m.texture->sample(t.uv, t.lod);
+        if (!m.base_color_map) continue;
+        const glm::vec4 texel = sample_slot(in, b, i, m.base_color_map);
         for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
     }
 }
@@ -338,16 +336,19 @@ void apply_fades(const ShadeInputs& in, ShadeBatch& b) {
     }
 }
 
-// Unlit materials show their albedo; emission adds to what the model made.
-// Only the models that light a surface: normal and depth views stay
-// measurements.
-void apply_emission(const StyleState& style, ShadeBatch& b) {
+// Unlit materials show their albedo; emission (its factor times its map)
+// adds to what the model made. Only the models that light a surface:
+// normal and depth views stay measurements.
+void apply_emission(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     if (!needs_of(style, false).light_terms && style.model != ShadingModel::gouraud) return;
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
+        glm::vec3 emitted = m.emissive;
+        if (m.emissive_map && emitted != glm::vec3(0))
+            emitted *= glm::vec3(sample_slot(in, b, i, m.emissive_map));
         for (int a = 0; a < 3; ++a) {
             const float base = m.unlit ? b.lanes.albedo[a][i] : b.color[a][i];
-            b.color[a][i] = base + m.emissive[a];
+            b.color[a][i] = base + emitted[a];
         }
     }
 }
@@ -442,7 +443,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
         shade_lanes(style, context, b.lanes, shaded);
         for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
     }
-    if (b.any_emission) apply_emission(style, b);
+    if (b.any_emission) apply_emission(in, style, b);
     b.coverage = simd::splat(1.0f);
     if (b.any_shadow_catcher) apply_shadow_catchers(in, style, b);
     if (b.any_fade) apply_fades(in, b);

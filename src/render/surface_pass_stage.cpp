@@ -62,8 +62,12 @@ FragmentValues fragment_values(const SurfacePassInputs& in, const Rasterizer& ra
     }
     if (passes.has(Pass::position))
         v.position = interpolate<glm::vec3>(in.vertices.world_position, corners, s.bary);
-    if (passes.has(Pass::uv) && draw.has_uvs)
-        v.uv = interpolate<glm::vec2>(world.uvs, corners, s.bary);
+    if (passes.has(Pass::uv) && draw.has_uvs) {
+        // The coordinates the base colour texture reads (set and transform).
+        const std::array<glm::vec2, 3> c =
+            world.corner_uvs(s.triangle, in.frame.materials[draw.material].base_color_map);
+        v.uv = s.bary[0] * c[0] + s.bary[1] * c[1] + s.bary[2] * c[2];
+    }
     if (passes.has(Pass::motion)) {
         // Both ends through the same interpolation of clip positions, so a
         // still point moves by exactly zero.

@@ -9,7 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include "anim/cloth_scene.hpp"
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 #include "assets/primitives.hpp"
 #include "core/error.hpp"
 #include "render/principal_directions.hpp"
@@ -32,7 +32,6 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     if (desc.unlit) m.unlit = *desc.unlit;
     if (desc.shadow_catcher) m.shadow_catcher = *desc.shadow_catcher;
     if (desc.fade) m.fade_start = desc.fade->x, m.fade_end = desc.fade->y;
-    if (desc.uv_scale) m.uv_scale = *desc.uv_scale;
     if (desc.texture) {
         auto& slot = textures[*desc.texture];
         if (!slot) {
@@ -42,12 +41,15 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
                 fail_input(desc.texture_at, "", e.what());
             }
         }
-        m.texture = slot;
+        m.base_color_map.texture = slot;
     }
-    if (desc.wrap && m.texture) {
-        auto copy = std::make_shared<Texture>(*m.texture);
-        copy->wrap = *desc.wrap == TextureWrap::clamp ? Wrap::clamp : Wrap::repeat;
-        m.texture = copy;
+    // Multiplies the coordinates the file's mapping gives.
+    if (desc.uv_scale)
+        m.base_color_map.transform = m.base_color_map.transform.scaled(glm::dvec2(*desc.uv_scale));
+    if (desc.wrap && m.base_color_map) {
+        auto copy = std::make_shared<Texture>(*m.base_color_map.texture);
+        copy->sampler.wrap_s = copy->sampler.wrap_t = *desc.wrap;
+        m.base_color_map.texture = copy;
     }
     return m;
 }
@@ -258,7 +260,7 @@ World build_world(const SceneDesc& scene) {
             d.first_triangle = static_cast<uint32_t>(world.triangle_draw.size());
             d.triangle_count = static_cast<uint32_t>(part.triangle_count());
             d.material = material_base + part.material;
-            d.has_uvs = !part.uvs.empty();
+            d.has_uvs = !part.uvs.empty() || !part.uvs1.empty();
             d.has_colors = !part.colors.empty();
             const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
             world.positions.insert(world.positions.end(), part.positions.begin(),
@@ -268,6 +270,12 @@ World build_world(const SceneDesc& scene) {
                 world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
             else
                 world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
+            if (!part.uvs1.empty() && world.uvs1.empty())
+                world.uvs1.resize(d.first_vertex, glm::vec2(0));
+            if (!part.uvs1.empty())
+                world.uvs1.insert(world.uvs1.end(), part.uvs1.begin(), part.uvs1.end());
+            else if (!world.uvs1.empty())
+                world.uvs1.resize(world.positions.size(), glm::vec2(0));
             if (d.has_colors && world.colors.empty())
                 world.colors.resize(d.first_vertex, glm::vec3(1));
             if (d.has_colors)
@@ -295,6 +303,12 @@ World build_world(const SceneDesc& scene) {
     if (world.positions.size() >= 0xffffffffu)
         throw Error(ExitCode::invalid_input, "the scene has more than 4 billion vertices");
     return world;
+}
+
+std::array<glm::vec2, 3> World::corner_uvs(uint32_t triangle, const TextureSlot& slot) const {
+    const std::vector<glm::vec2>& set = slot.uv_set == 1 && !uvs1.empty() ? uvs1 : uvs;
+    const uint32_t* c = &indices[3 * static_cast<size_t>(triangle)];
+    return {slot.map(set[c[0]]), slot.map(set[c[1]]), slot.map(set[c[2]])};
 }
 
 }  // namespace facet

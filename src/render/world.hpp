@@ -2,6 +2,7 @@
 // Everything a run needs that does not change from frame to frame: meshes
 // and textures loaded once, materials resolved per object, and the
 // concatenated vertex and index arrays the vertex stage transforms.
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -26,7 +27,7 @@ struct Draw {
 };
 
 // An object playing animations stored in its glTF file: its mesh parts
-// are posed every frame (anim/gltf_pose.hpp) instead of using the rest pose.
+// are posed every frame (assets/gltf_pose.hpp) instead of using the rest pose.
 struct AnimatedMesh {
     uint32_t object;
     std::shared_ptr<const Mesh> mesh;
@@ -72,6 +73,9 @@ struct World {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;
     std::vector<glm::vec2> uvs;
+    // Texture coordinate set 1, one per vertex when any draw has it (zero
+    // for the draws that do not), else empty.
+    std::vector<glm::vec2> uvs1;
     // Vertex colours, one per vertex when any draw has them (white for the
     // draws that do not), else empty.
     std::vector<glm::vec3> colors;
@@ -96,6 +100,10 @@ struct World {
     std::vector<glm::vec3> hatch_directions;
 
     size_t triangle_count() const { return triangle_draw.size(); }
+    // The coordinates `slot` reads at a triangle's three corners: its set,
+    // mapped by its transform (which is affine, so mapping the corners
+    // maps every point between them).
+    std::array<glm::vec2, 3> corner_uvs(uint32_t triangle, const TextureSlot& slot) const;
 };
 
 // Loads every mesh and texture the scene names. Errors name the scene file

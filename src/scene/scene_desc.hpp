@@ -12,6 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include "assets/primitives.hpp"
+#include "assets/texture.hpp"
 #include "cloth/cloth_params.hpp"
 #include "core/diagnostics.hpp"
 #include "core/display_transform.hpp"
@@ -151,8 +152,6 @@ struct LightDesc {
 // from above and to the left of the camera towards the scene.
 LightDesc default_key_light();
 
-enum class TextureWrap { repeat, clamp };
-
 // Values the scene sets on an object's material; unset ones keep what the
 // mesh file says (or the defaults for primitives).
 struct MaterialDesc {
@@ -160,7 +159,7 @@ struct MaterialDesc {
     std::optional<Animated<float>> ambient, diffuse, specular, shininess;
     std::optional<std::string> texture;  // resolved against the scene file
     SourceLocation texture_at;
-    std::optional<TextureWrap> wrap;
+    std::optional<Wrap> wrap;           // both axes
     std::optional<glm::vec2> uv_scale;  // texture repeats across the surface
     std::optional<bool> double_sided;
     std::optional<glm::vec3> emissive;   // linear RGB added to the shaded colour

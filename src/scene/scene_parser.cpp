@@ -316,8 +316,10 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
         m.texture_at = f["texture"].where();
     }
     if (f.has("wrap"))
-        m.wrap = f["wrap"].choice({"repeat", "clamp"}) == "clamp" ? TextureWrap::clamp
-                                                                  : TextureWrap::repeat;
+        m.wrap =
+            std::map<std::string, Wrap>{
+                {"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"mirror", Wrap::mirror}}
+                .at(f["wrap"].choice({"repeat", "clamp", "mirror"}));
     if (f.has("uv_scale")) {
         Field s = f["uv_scale"];
         m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();

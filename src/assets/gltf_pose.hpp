@@ -52,14 +52,18 @@ double animations_duration(const Mesh& mesh, const std::vector<int>& animations)
 // vectors are reused from call to call.
 //
 // A part that nothing moves (its node and the node's ancestors are not
-// animated, it has no skin and all its morph weights are 0) comes out
-// bit-identical to Mesh::parts. Otherwise the pose is computed in double:
+// animated, it has no skin and its morph weights are its node's defaults)
+// comes out bit-identical to Mesh::parts. Otherwise the pose is computed in double:
 // a rigid part's node transform, or for a skinned part only its joints
 // (the node's own transform is ignored, §3.7.3.3), after the morph targets.
 void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seconds,
                std::vector<PosedPart>& out);
 // One animation, or -1 for none.
 void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<PosedPart>& out);
+
+// The rest pose (no animation) computed from the rig for every skinned or
+// morphed part: what the glTF loader bakes into Mesh::parts.
+void pose_rest_from_rig(const Mesh& mesh, std::vector<PosedPart>& out);
 
 // The world matrix of one node of `rig` at `seconds` into `animations`
 // (indices into rig.animations, played together, held at their ends).

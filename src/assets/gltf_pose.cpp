@@ -3,7 +3,7 @@
 // Everything is computed in double and rounded to float once at the end, so
 // long hierarchies and large joint counts do not accumulate float error; the
 // build forbids fast-math and contraction, so results are reproducible.
-#include "anim/gltf_pose.hpp"
+#include "assets/gltf_pose.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -295,51 +295,67 @@ void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<Pose
     pose_mesh(mesh, animation < 0 ? std::vector<int>{} : std::vector<int>{animation}, seconds, out);
 }
 
-void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seconds,
-               std::vector<PosedPart>& out) {
+namespace {
+
+// Every node's world transform and morph weights at `seconds` into
+// `animations`; `moved` marks the nodes whose transform differs from rest
+// because they or an ancestor are animated.
+struct NodePose {
+    std::vector<glm::dmat4> world;
+    std::vector<std::vector<double>> weights;
+    std::vector<bool> moved;
+};
+
+NodePose pose_nodes(const Mesh& mesh, const MeshRig& rig, const std::vector<int>& animations,
+                    double seconds) {
+    const size_t node_count = rig.nodes.size();
+    std::vector<NodeTrs> local(node_count);
+    NodePose pose;
+    pose.weights.resize(node_count);
+    std::vector<bool> animated(node_count, false);
+    for (size_t i = 0; i < node_count; ++i) {
+        const RigNode& node = rig.nodes[i];
+        local[i] = {node.translation, node.rotation, node.scale};
+        pose.weights[i] = node.weights;
+    }
+    for (int animation : animations)
+        apply_channels(animation_at(mesh, animation), seconds, local, pose.weights, animated);
+    pose.world.resize(node_count);
+    pose.moved.assign(node_count, false);
+    for (int i : rig.node_order) {
+        const int parent = rig.nodes[i].parent;
+        const glm::dmat4 l = local_matrix(rig.nodes[i], local[i]);
+        pose.world[i] = parent >= 0 ? pose.world[parent] * l : l;
+        pose.moved[i] = animated[i] || (parent >= 0 && pose.moved[parent]);
+    }
+    return pose;
+}
+
+// `from_rig`: every skinned or morphed part is computed from the rig, even
+// where its weights are the defaults the loaded parts were baked with.
+void pose_parts(const Mesh& mesh, const std::vector<int>& animations, double seconds, bool from_rig,
+                std::vector<PosedPart>& out) {
     out.resize(mesh.parts.size());
     const MeshRig* rig = mesh.rig.get();
     if (!rig) {
         for (size_t p = 0; p < mesh.parts.size(); ++p) copy_rest(mesh.parts[p], out[p]);
         return;
     }
-    const size_t node_count = rig->nodes.size();
-    std::vector<NodeTrs> local(node_count);
-    std::vector<std::vector<double>> weights(node_count);
-    std::vector<bool> animated(node_count, false);
-    for (size_t i = 0; i < node_count; ++i) {
-        const RigNode& node = rig->nodes[i];
-        local[i] = {node.translation, node.rotation, node.scale};
-        weights[i] = node.weights;
-    }
-    for (int animation : animations)
-        apply_channels(animation_at(mesh, animation), seconds, local, weights, animated);
-
-    // World transforms, parents first; `moved` marks nodes whose transform
-    // differs from rest because they or an ancestor are animated.
-    std::vector<glm::dmat4> world(node_count);
-    std::vector<bool> moved(node_count, false);
-    for (int i : rig->node_order) {
-        const int parent = rig->nodes[i].parent;
-        const glm::dmat4 l = local_matrix(rig->nodes[i], local[i]);
-        world[i] = parent >= 0 ? world[parent] * l : l;
-        moved[i] = animated[i] || (parent >= 0 && moved[parent]);
-    }
+    const NodePose pose = pose_nodes(mesh, *rig, animations, seconds);
     std::vector<std::vector<glm::dmat4>> joint_matrices(rig->skins.size());
     for (size_t s = 0; s < rig->skins.size(); ++s) {
         const RigSkin& skin = rig->skins[s];
         for (size_t j = 0; j < skin.joints.size(); ++j)
-            joint_matrices[s].push_back(world[skin.joints[j]] * skin.inverse_bind[j]);
+            joint_matrices[s].push_back(pose.world[skin.joints[j]] * skin.inverse_bind[j]);
     }
-
     for (size_t p = 0; p < mesh.parts.size(); ++p) {
         const RigPart& rig_part = rig->parts[p];
-        const std::vector<double>& part_weights = weights[rig_part.node];
-        const bool morphed =
-            !rig_part.morph_targets.empty() &&
-            std::any_of(part_weights.begin(), part_weights.end(), [](double w) { return w != 0; });
+        const std::vector<double>& part_weights = pose.weights[rig_part.node];
+        // The loaded parts hold the default weights' shape.
+        const bool morphed = !rig_part.morph_targets.empty() &&
+                             (from_rig || part_weights != rig->nodes[rig_part.node].weights);
         PosedPart& posed = out[p];
-        if (rig_part.skin < 0 && !moved[rig_part.node] && !morphed) {
+        if (rig_part.skin < 0 && !pose.moved[rig_part.node] && !morphed) {
             copy_rest(mesh.parts[p], posed);
             continue;
         }
@@ -348,9 +364,21 @@ void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seco
         if (rig_part.skin >= 0)
             pose_skinned(rig_part, part_weights, joint_matrices[rig_part.skin], posed);
         else
-            pose_rigid(rig_part, part_weights, world[rig_part.node], posed);
+            pose_rigid(rig_part, part_weights, pose.world[rig_part.node] * rig_part.instance,
+                       posed);
         normals_from_faces(rig_part, mesh.parts[p], posed);
     }
+}
+
+}  // namespace
+
+void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seconds,
+               std::vector<PosedPart>& out) {
+    pose_parts(mesh, animations, seconds, false, out);
+}
+
+void pose_rest_from_rig(const Mesh& mesh, std::vector<PosedPart>& out) {
+    pose_parts(mesh, {}, 0.0, true, out);
 }
 
 glm::dmat4 node_world_matrix(const MeshRig& rig, const std::vector<int>& animations, double seconds,
