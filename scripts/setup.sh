@@ -15,7 +15,10 @@
 #                               pass EXRs back: docs/passes.md), and
 #                               xvfb, xdotool and x11-apps (xwd): the
 #                               preview window's test on a virtual display
-#                               (docs/preview.md)
+#                               (docs/preview.md), and npm's
+#                               @gltf-transform/cli (makes the WebP, AVIF,
+#                               instanced and quantized variants of the
+#                               glTF test files, as real pipelines do)
 #   scripts/setup.sh --bench    also Mesa's OSMesa for the llvmpipe reference
 #   scripts/setup.sh --sanitize also clang and its sanitizer and libFuzzer
 #                               runtimes, and a second build by clang with
@@ -27,16 +30,17 @@ set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${FACET_BUILD_DIR:-$root/build}"
 sanitize=0
+tests=0
 
 packages=(g++ cmake make pkg-config
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
           libdeflate-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
-          libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri)
+          libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri libwebp-dev libavif-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
+        --tests) tests=1; packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
                             xvfb xdotool x11-apps) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
@@ -44,18 +48,31 @@ for arg in "$@"; do
     esac
 done
 
+if [ "$(id -u)" -eq 0 ]; then sudo=(); else sudo=(sudo); fi
 missing=()
 for p in "${packages[@]}"; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then
     echo "setup: installing ${missing[*]}" >&2
-    if [ "$(id -u)" -eq 0 ]; then sudo=(); elif command -v sudo >/dev/null; then sudo=(sudo); else
+    if [ ${#sudo[@]} -gt 0 ] && ! command -v sudo >/dev/null; then
         echo "setup: need root to install: apt-get install ${missing[*]}" >&2; exit 1
     fi
     export DEBIAN_FRONTEND=noninteractive
     "${sudo[@]}" apt-get update -qq
     "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# Test tools from npm, into the machine's global prefix; npm itself comes
+# from Debian when the machine has no Node.js.
+if [ "$tests" = 1 ] && ! command -v gltf-transform >/dev/null; then
+    if ! command -v npm >/dev/null; then
+        echo "setup: installing npm" >&2
+        "${sudo[@]}" apt-get update -qq
+        DEBIAN_FRONTEND=noninteractive "${sudo[@]}" apt-get install -y -qq --no-install-recommends npm >/dev/null
+    fi
+    echo "setup: installing @gltf-transform/cli from npm" >&2
+    npm install -g --no-fund --no-audit @gltf-transform/cli@4 >/dev/null
 fi
 
 if [ ! -f "$build/CMakeCache.txt" ]; then

@@ -206,11 +206,12 @@ TEST_CASE("Blender's features file: colours, emission, its camera and its lights
     CHECK(first.camera.position.z == Approx(6).epsilon(1e-3));
     CHECK(last.camera.position.z == Approx(4).epsilon(1e-3));
     CHECK(first.camera.position.y == Approx(0.5).epsilon(1e-3));
-    // Its point light and sun, Blender's watts times 683.
+    // Its point light and sun: Blender's watts times 683 / 4π candela,
+    // which facet lights as candela / π (kGltfLightUnit).
     REQUIRE(first.lights.size() == 2);
     CHECK(first.lights[0].type == LightType::point);
     CHECK(first.lights[0].position.z == Approx(2).epsilon(1e-3));
-    CHECK(first.lights[0].intensity == Approx(500 * 683 / (4 * M_PI)).epsilon(1e-3));
+    CHECK(first.lights[0].intensity == Approx(500 * 683 / (4 * M_PI) / M_PI).epsilon(1e-3));
     CHECK(first.lights[1].type == LightType::directional);
 }
 

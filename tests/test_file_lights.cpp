@@ -53,8 +53,8 @@ float centre_red(const TempDir& dir, const std::string& file, const std::string&
 
 TEST_CASE("glTF point lights light their object when it asks for them", "[gltf][lights]") {
     TempDir dir("file-lights");
-    const std::string file =
-        lit_file(dir, {{"type", "point"}, {"color", {1, 1, 1}}, {"intensity", 4}}, "point.gltf");
+    const std::string file = lit_file(
+        dir, {{"type", "point"}, {"color", {1, 1, 1}}, {"intensity", 4 * M_PI}}, "point.gltf");
     const Mesh mesh = load_gltf(file);
     REQUIRE(mesh.lights.size() == 1);
     CHECK(mesh.lights[0].name == "Lamp");
@@ -62,7 +62,8 @@ TEST_CASE("glTF point lights light their object when it asks for them", "[gltf][
     CHECK(mesh.warnings.empty());
     // Not asked for: no light at all.
     CHECK(centre_red(dir, file, "") == Approx(0).margin(1e-3));
-    // Intensity 4 at distance 2: 4 / 2² = 1 times the diffuse 0.8 (white quad).
+    // 4π candela at distance 2: 4π / 2² = π lux, which facet lights as
+    // π / π = 1 (kGltfLightUnit), times the diffuse 0.8 (white quad).
     const float lit = centre_red(dir, file, "    lights: true\n");
     CHECK(lit == Approx(0.8f).epsilon(0.01));
     // Scaled.
@@ -79,7 +80,7 @@ TEST_CASE("glTF spot and directional lights shine down their node's -Z", "[gltf]
     const std::string spot =
         lit_file(dir,
                  {{"type", "spot"},
-                  {"intensity", 4},
+                  {"intensity", 4 * M_PI},
                   {"spot", {{"innerConeAngle", 0.2}, {"outerConeAngle", 0.4}}}},
                  "spot.gltf");
     const Mesh mesh = load_gltf(spot);
@@ -89,7 +90,7 @@ TEST_CASE("glTF spot and directional lights shine down their node's -Z", "[gltf]
     CHECK(mesh.lights[0].outer_degrees == Approx(0.4 * 180 / M_PI));
     CHECK(centre_red(dir, spot, "    lights: true\n") == Approx(0.8f).epsilon(0.01));
     const std::string sun =
-        lit_file(dir, {{"type", "directional"}, {"intensity", 0.5}}, "sun.gltf");
+        lit_file(dir, {{"type", "directional"}, {"intensity", 0.5 * M_PI}}, "sun.gltf");
     CHECK(centre_red(dir, sun, "    lights: true\n") == Approx(0.4f).epsilon(0.01));
 }
 

@@ -91,7 +91,7 @@ LightState object_light_state(const ObjectLight& l, const glm::mat4& model) {
     const float length = glm::length(direction);
     s.direction = length > 0 ? direction / length : l.light.direction;
     s.color = l.light.color;
-    s.intensity = l.light.intensity * l.intensity_scale;
+    s.intensity = l.light.intensity * kGltfLightUnit * l.intensity_scale;
     s.range = l.light.range;
     s.inner_angle = l.light.inner_degrees;
     s.outer_angle = l.light.outer_degrees;

@@ -172,16 +172,18 @@ std::shared_ptr<const Texture> TextureCache::texture(int index, std::string& los
 }
 
 // The slot a textureInfo fills: its texture, set and transform. A lost
-// texture leaves the slot empty, with a warning naming the map.
+// texture leaves the slot empty, with a warning naming the map and, in
+// `without`, how the material is drawn then.
 TextureSlot slot_of(const tinygltf::TextureInfo& info, TextureCache& cache, const std::string& path,
-                    const std::string& what, Warnings& warnings) {
+                    const std::string& what, Warnings& warnings,
+                    const std::string& without = "drawn without it") {
     TextureSlot slot;
     if (info.index < 0) return slot;
     const UvMapping mapping = texture_mapping(info, path, what);
     std::string lost, fell_back;
     slot.texture = cache.texture(info.index, lost, fell_back);
     if (!slot.texture) {
-        warnings.push_back(file_warning(path, what + ": " + lost + "; drawn without it"));
+        warnings.push_back(file_warning(path, what + ": " + lost + "; " + without));
         return slot;
     }
     if (!lost.empty())
@@ -255,10 +257,14 @@ Material read_material(const tinygltf::Material& m, size_t index, TextureCache& 
     phong_from_roughness(pbr.roughnessFactor, mat);
     mat.double_sided = m.doubleSided;
     mat.emissive = emission(m, path);
-    // A map under a zero factor shows nothing: it is not decoded.
-    if (mat.emissive != glm::vec3(0))
-        mat.emissive_map =
-            slot_of(m.emissiveTexture, cache, path, what + " emissiveTexture", warnings);
+    // A map under a zero factor shows nothing: it is not decoded. Without
+    // its map, the factor alone would glow all over (a white silhouette
+    // where the map lit a few lamps), so a lost map takes the emission.
+    if (mat.emissive != glm::vec3(0) && m.emissiveTexture.index >= 0) {
+        mat.emissive_map = slot_of(m.emissiveTexture, cache, path, what + " emissiveTexture",
+                                   warnings, "its emission is not drawn");
+        if (!mat.emissive_map) mat.emissive = glm::vec3(0);
+    }
     read_alpha(m, path, mat);
     mat.unlit = m.extensions.count("KHR_materials_unlit") > 0;
     return mat;
@@ -282,22 +288,28 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
     TextureCache cache(model, path, unread, budget);
     std::vector<Material> materials;
     std::set<std::string> undrawn;
-    size_t with_undrawn = 0;
+    std::vector<std::string> with_undrawn;
     for (size_t i = 0; i < model.materials.size(); ++i) {
         materials.push_back(read_material(model.materials[i], i, cache, path, warnings));
         const std::vector<std::string> maps = undrawn_maps(model.materials[i]);
         undrawn.insert(maps.begin(), maps.end());
-        with_undrawn += maps.empty() ? 0 : 1;
+        if (!maps.empty())
+            with_undrawn.push_back(model.materials[i].name.empty()
+                                       ? std::to_string(i)
+                                       : "'" + model.materials[i].name + "'");
     }
     if (!undrawn.empty()) {
-        std::string list;
-        for (const std::string& map : undrawn) list += (list.empty() ? "" : ", ") + map;
+        std::string maps, names;
+        for (const std::string& map : undrawn) maps += (maps.empty() ? "" : ", ") + map;
+        for (size_t i = 0; i < with_undrawn.size() && i < 3; ++i)
+            names += (i ? ", " : "") + with_undrawn[i];
+        if (with_undrawn.size() > 3)
+            names += " and " + std::to_string(with_undrawn.size() - 3) + " more";
         warnings.push_back(file_warning(
-            path, std::to_string(with_undrawn) +
-                      (with_undrawn == 1 ? " material has" : " materials have") +
-                      " maps facet does not draw (" + list +
-                      "): surface detail, occlusion and metal are lost; metal and roughness "
-                      "factors become a Phong highlight"));
+            path, std::string(with_undrawn.size() == 1 ? "material " : "materials ") + names +
+                      " have maps facet does not draw (" + maps +
+                      "; their files are not read): surface detail, occlusion and metal are "
+                      "lost, and metal and roughness factors become a Phong highlight"));
     }
     return materials;
 }

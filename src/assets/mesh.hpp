@@ -82,6 +82,13 @@ struct GltfCamera {
     double zfar = 0;  // 0: infinite
 };
 
+// facet's light intensity for 1 lux (directional) or 1 candela (point,
+// spot) of a KHR_lights_punctual light: 1/π, the normalisation of the
+// Lambertian diffuse, so that a white diffuse surface under E lux shows
+// E/π, as the glTF Sample Viewer and other physically based viewers show it
+// (docs/scene-format.md, "lights").
+constexpr float kGltfLightUnit = 0.318309886183790671538f;
+
 // A light of KHR_lights_punctual, placed by its node's rest transform in
 // the file's world space; it shines down the node's -Z.
 struct GltfLight {
@@ -89,7 +96,7 @@ struct GltfLight {
     std::string name;
     Type type = Type::point;
     glm::vec3 color = {1, 1, 1};                  // linear
-    float intensity = 1;                          // the file's (lux or candela), facet's multiplier
+    float intensity = 1;                          // the file's: lux (directional) or candela
     float range = 0;                              // 0: no limit
     float inner_degrees = 0, outer_degrees = 45;  // spot cone half-angles
     glm::vec3 position = {0, 0, 0};

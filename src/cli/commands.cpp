@@ -96,6 +96,21 @@ std::vector<std::string> split_list(const std::string& text) {
     return items;
 }
 
+void add_strict_flag(CLI::App* cmd, bool& strict) {
+    cmd->add_flag("--strict", strict,
+                  "Treat every warning (a lost texture, an ignored extension, a key without "
+                  "effect) as an error: exit 2 before rendering");
+}
+
+void refuse_warnings(bool strict, const Warnings& scene_warnings, const Warnings& world_warnings) {
+    const size_t count = scene_warnings.size() + world_warnings.size();
+    if (!strict || count == 0) return;
+    const Warning& first = scene_warnings.empty() ? world_warnings.front() : scene_warnings.front();
+    throw Error(ExitCode::invalid_input,
+                "--strict: " + count_of(count, "warning is", "warnings are") +
+                    " an error; the first: " + first.describe());
+}
+
 namespace {
 
 void print_warnings(const SceneDesc& scene, const World& world) {
@@ -190,6 +205,7 @@ int render_command(const RenderArgs& args) {
     check_outputs(scene, options);  // before the slow part: loading meshes
     World world = build_world(scene);
     if (!args.quiet) print_warnings(scene, world);
+    refuse_warnings(args.strict, scene.warnings, world.warnings);
     ProgressReporter progress(stderr, args.quiet);
     options.on_plan = [&](size_t to_render, size_t skipped) {
         if (skipped > 0 && !args.quiet)
@@ -258,6 +274,8 @@ int validate_command(const RenderArgs& args) {
         check_outputs(scene, options);
         World world = build_world(scene);
         warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
+        if (!args.json && !args.quiet && args.strict) print_warnings(scene, world);
+        refuse_warnings(args.strict, scene.warnings, world.warnings);
         check_render_memory(scene, world, available_cores());
         if (args.json) {
             ValidateFacts facts{scene.path,
@@ -533,6 +551,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_flag("--overwrite", args.overwrite,
                   "Start a new manifest when the output folder holds one of other settings");
     add_chunk_options(cmd, args.chunk);
+    add_strict_flag(cmd, args.strict);
     cmd->add_option("--reference", args.comparison.ref,
                     "Compare the output with this reference folder (facet compare)");
     add_comparison_options(cmd, args.comparison, false);
@@ -576,6 +595,7 @@ CLI::App* add_validate_command(CLI::App& app, RenderArgs& args) {
         app.add_subcommand("validate", "Check a scene, its styles and assets; write nothing");
     add_scene_options(cmd, args);
     cmd->add_flag("--json", args.json, "Print the result, every warning and the error as JSON");
+    add_strict_flag(cmd, args.strict);
     add_output_option(cmd, args.out,
                       "Output folder a render would use (checks its manifest's settings)");
     return cmd;

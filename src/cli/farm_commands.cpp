@@ -149,6 +149,7 @@ namespace fs = std::filesystem;
 
 void add_farm_render_options(CLI::App* cmd, FarmArgs& args) {
     add_scene_options(cmd, args.render);
+    add_strict_flag(cmd, args.render.strict);
     add_output_option(cmd, args.render.out,
                       "Output folder of every task (files go to OUTPUT/SCENE/)");
     add_threads_option(cmd, args.render.threads);
@@ -183,6 +184,7 @@ std::vector<std::string> render_words(const FarmArgs& args, bool absolute_paths)
         add("--threads", std::to_string(args.slurm.cpus));  // the task's cores, not the node's
     if (r.overwrite) words.push_back("--overwrite");
     if (r.allow_asset_paths_outside) words.push_back("--allow-asset-paths-outside");
+    if (r.strict) words.push_back("--strict");
     if (r.frames.allow_outside) words.push_back("--allow-outside");
     return words;
 }

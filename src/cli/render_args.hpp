@@ -36,6 +36,7 @@ struct RenderArgs {
     std::vector<std::string> defines;
     bool quiet = false;
     bool allow_asset_paths_outside = false;
+    bool strict = false;  // render, validate, farm: any warning is an error (exit 2)
     bool overwrite = false;
     bool dry_run = false;                   // render: list the files, write none
     std::string video;                      // render: a movie of the colour frames too
@@ -57,5 +58,12 @@ SceneOptions scene_options(const RenderArgs& args);
 void add_scene_options(CLI::App* command, RenderArgs& args);
 
 std::vector<std::string> split_list(const std::string& text);
+
+// --strict: for CI users who want any warning to fail the run.
+void add_strict_flag(CLI::App* command, bool& strict);
+
+// With --strict, the warnings (already printed) become an error naming how
+// many there are and the first (invalid_input, exit 2).
+void refuse_warnings(bool strict, const Warnings& scene_warnings, const Warnings& world_warnings);
 
 }  // namespace facet
