@@ -14,8 +14,11 @@
 
 namespace facet::test {
 
+// `s` as one word for sh: single quotes, each ' written as '\''.
 inline std::string shell_quote(const std::string& s) {
-    return "'" + s + "'";
+    std::string quoted = "'";
+    for (char c : s) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return quoted + "'";
 }
 
 // Renders tests/scenes/shapes.yaml at 320x180 into DIR/shapes/. Returns

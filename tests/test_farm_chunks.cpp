@@ -133,7 +133,7 @@ TEST_CASE("job files quote every word and pass the render options through", "[fa
     const std::string script = slurm_script(job, slurm);
     for (const char* line :
          {"#SBATCH --partition=render\n", "#SBATCH --cpus-per-task=4\n", "#SBATCH --time=30:00\n",
-          "#SBATCH --chdir=/home/me/shots\n", "chunks=6\n", "tasks=0-5\n", "--array=\"$tasks\"%2",
+          "folder=/home/me/shots\n", "--chdir=\"$folder\"", "chunks=6\n", "tasks=0-5\n", "--array=\"$tasks\"%2",
           "--dependency=afterok:\"$array\" --kill-on-invalid-dep=yes",
           "render scenes/spin.yaml -o 'out dir' -D 'style.palette.0=it'\\''s' --frames 1-48",
           "--chunk-from-env --chunks \"$chunks\" --skip-existing", "merge 'out dir/spin'\n",

@@ -44,7 +44,7 @@ glm::vec3 palette_texel(int x, int y) {
 // bottom left to (1,0) at the top right (glTF's top-left origin), set 1
 // the same mirrored in u.
 void quad_mesh(Gltf& g, const json& material) {
-    g.doc["materials"] = {material};
+    g.doc["materials"] = json::array({material});
     g.one_node_scene({{"attributes",
                        {{"POSITION", g.floats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3")},
                         {"NORMAL", g.floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")},
@@ -90,6 +90,22 @@ bool same_images(const FrameImages& a, const FrameImages& b) {
            same(a.surface.material_id, b.surface.material_id) && same(a.surface.uv, b.surface.uv) &&
            same(a.surface.position, b.surface.position) && same(a.surface.motion, b.surface.motion);
 }
+
+// `gltf-transform COMMAND IN OUT`, as a pipeline would run it, then OUT loaded.
+Mesh transformed(const std::string& command, const std::string& in, const std::string& out) {
+    const RunResult made =
+        run_command("gltf-transform " + command + " '" + in + "' '" + out + "' 2>&1");
+    INFO(made.output);
+    REQUIRE(made.exit_code == 0);
+    return load_gltf(out);
+}
+
+bool uses(const Mesh& mesh, const std::string& extension) {
+    const auto& used = mesh.extensions.used;
+    return std::find(used.begin(), used.end(), extension) != used.end();
+}
+
+const char* const kNoGltfTransform = "gltf-transform is not installed (scripts/setup.sh --tests)";
 
 }  // namespace
 
@@ -276,18 +292,12 @@ TEST_CASE("EXT_mesh_gpu_instancing draws every copy, as nodes would", "[gltf][in
 
 TEST_CASE("gltf-transform's instancing renders as the file it came from",
           "[gltf][instancing][tools]") {
-    if (!have_command("gltf-transform"))
-        FACET_SKIP("gltf-transform is not installed (scripts/setup.sh --tests)");
+    if (!have_command("gltf-transform")) FACET_SKIP(kNoGltfTransform);
     TempDir dir("gltf-instancing");
     const std::string nodes = grid_as_nodes(dir.file("nodes.gltf"));
     const std::string instanced = dir.file("instanced.glb");
-    const RunResult made =
-        run_command("gltf-transform instance --min 2 '" + nodes + "' '" + instanced + "' 2>&1");
-    INFO(made.output);
-    REQUIRE(made.exit_code == 0);
-    const Mesh b = load_gltf(instanced);
-    CHECK(std::count(b.extensions.used.begin(), b.extensions.used.end(),
-                     "EXT_mesh_gpu_instancing") == 1);
+    const Mesh b = transformed("instance --min 2", nodes, instanced);
+    CHECK(uses(b, "EXT_mesh_gpu_instancing"));
     CHECK(b.triangle_count() == 9 * 12);
     // Its accessors hold floats of the file's values: the same transforms.
     const FrameImages x = every_pass(dir, nodes), y = every_pass(dir, instanced);
@@ -378,7 +388,7 @@ std::string morph_file(const std::string& path, bool targets, double weight,
     if (targets)
         primitive["targets"] = {{{"POSITION", g.floats({0, 0, 0, 0, 0, 0, 0, 0, 2}, "VEC3")}}};
     g.mesh(primitive);
-    if (targets) g.doc["meshes"][0]["weights"] = {weight};
+    if (targets) g.doc["meshes"][0]["weights"] = json::array({weight});
     json node = {{"mesh", 0}};
     if (!node_weights.is_null()) node["weights"] = node_weights;
     g.scene({g.node(node)});
@@ -476,16 +486,10 @@ TEST_CASE("a skinned mesh rests where its skin puts it, quantized or not", "[glt
     CHECK(mesh.bounds().min.x == Approx(-0.15f));
     CHECK(mesh.bounds().min.y == Approx(-1.0f));
     CHECK(mesh.bounds().max.y == Approx(1.0f));
-    if (!have_command("gltf-transform"))
-        FACET_SKIP("gltf-transform is not installed (scripts/setup.sh --tests)");
+    if (!have_command("gltf-transform")) FACET_SKIP(kNoGltfTransform);
     const std::string quantized = dir.file("quantized.glb");
-    const RunResult made =
-        run_command("gltf-transform quantize '" + file + "' '" + quantized + "' 2>&1");
-    INFO(made.output);
-    REQUIRE(made.exit_code == 0);
-    const Mesh q = load_gltf(quantized);
-    REQUIRE(std::count(q.extensions.used.begin(), q.extensions.used.end(),
-                       "KHR_mesh_quantization") == 1);
+    const Mesh q = transformed("quantize", file, quantized);
+    REQUIRE(uses(q, "KHR_mesh_quantization"));
     // Positions of 14 or 16 bits over a 2-unit box.
     for (int k = 0; k < 3; ++k) {
         CHECK(q.bounds().min[k] == Approx(mesh.bounds().min[k]).margin(1e-3));
@@ -534,22 +538,16 @@ ColorImage unlit_picture(const TempDir& dir, const std::string& file) {
 
 TEST_CASE("WebP and AVIF textures draw as their PNG originals, within the codec's loss",
           "[gltf][texture][tools]") {
-    if (!have_command("gltf-transform"))
-        FACET_SKIP("gltf-transform is not installed (scripts/setup.sh --tests)");
+    if (!have_command("gltf-transform")) FACET_SKIP(kNoGltfTransform);
     TempDir dir("gltf-webp");
     const std::string png = gradient_quad(dir);
     const ColorImage original = unlit_picture(dir, png);
     for (const std::string codec : {"webp", "avif"}) {
         INFO(codec);
         const std::string file = dir.file("gradient-" + codec + ".glb");
-        const RunResult made = run_command("gltf-transform " + codec + " --quality 90 '" + png +
-                                           "' '" + file + "' 2>&1");
-        INFO(made.output);
-        REQUIRE(made.exit_code == 0);
-        const Mesh mesh = load_gltf(file);
+        const Mesh mesh = transformed(codec + " --quality 90", png, file);
         CHECK(mesh.warnings.empty());
-        const std::string extension = codec == "webp" ? "EXT_texture_webp" : "EXT_texture_avif";
-        CHECK(std::count(mesh.extensions.used.begin(), mesh.extensions.used.end(), extension) == 1);
+        CHECK(uses(mesh, codec == "webp" ? "EXT_texture_webp" : "EXT_texture_avif"));
         CHECK(mesh.extensions.ignored.empty());
         REQUIRE(mesh.materials[0].base_color_map.texture != nullptr);
         CHECK(mesh.materials[0].base_color_map.texture->width == 64);
@@ -597,7 +595,7 @@ std::string basisu_file(const TempDir& dir, bool fallback, bool required) {
                        {{"uri", "data:image/ktx2;base64," + base64(ktx2)}}};
     json texture = {{"extensions", {{"KHR_texture_basisu", {{"source", 1}}}}}};
     if (fallback) texture["source"] = 0;
-    g.doc["textures"] = {texture};
+    g.doc["textures"] = json::array({texture});
     quad_mesh(g, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
     g.doc["extensionsUsed"] = {"KHR_texture_basisu"};
     if (required) g.doc["extensionsRequired"] = {"KHR_texture_basisu"};

@@ -201,7 +201,9 @@ CLI::App* add_farm_command(CLI::App& app, FarmArgs& slurm, FarmArgs& openjd) {
     s->add_option("--chunks", slurm.slurm.chunks, "Number of chunks (array tasks)")
         ->required()
         ->check(CLI::Range(1, 100000));
-    s->add_option("--partition", slurm.slurm.partition, "Slurm partition (default: the cluster's)");
+    s->add_option("--partition", slurm.slurm.partition,
+                  "Slurm partition, or several comma-separated (default: the cluster's)");
+    s->add_option("--account", slurm.slurm.account, "Slurm account to charge (default: yours)");
     s->add_option("--cpus", slurm.slurm.cpus, "CPUs per task (--cpus-per-task; sets --threads)")
         ->check(CLI::Range(1, 4096));
     s->add_option("--time", slurm.slurm.time, "Time limit per task, e.g. 30:00 or 2:00:00");
@@ -253,6 +255,10 @@ int farm_command(const FarmArgs& args, bool openjd) {
                          frames.size());
         slurm.chunks = static_cast<int>(frames.size());
     }
+    if (openjd)
+        check_openjd_values(job);
+    else
+        check_slurm_values(job, slurm);
     const std::string text = openjd ? openjd_template(job, args.openjd) : slurm_script(job, slurm);
     if (args.script.empty()) {
         std::printf("%s", text.c_str());

@@ -1,11 +1,79 @@
 #include "farm/job_scripts.hpp"
 
 #include <cstdio>
+#include <regex>
 
+#include "core/error.hpp"
 #include "core/shell_word.hpp"
 
 namespace facet {
 namespace {
+
+// `text` with control characters written as C escapes, for messages.
+std::string printable(const std::string& text) {
+    std::string out;
+    for (unsigned char c : text) {
+        if (c == '\n') {
+            out += "\\n";
+        } else if (c < 0x20 || c == 0x7f) {
+            char escape[8];
+            std::snprintf(escape, sizeof escape, "\\x%02x", c);
+            out += escape;
+        } else {
+            out += static_cast<char>(c);
+        }
+    }
+    return out;
+}
+
+[[noreturn]] void refuse(const std::string& option, const std::string& value,
+                         const std::string& why) {
+    throw Error(ExitCode::invalid_input,
+                "facet farm: " + option + " '" + printable(value) + "': " + why);
+}
+
+bool has_control_character(const std::string& text) {
+    for (unsigned char c : text)
+        if (c < 0x20 || c == 0x7f) return true;
+    return false;
+}
+
+// The option a render word belongs to ("the scene" for the first).
+std::string option_of(const std::vector<std::string>& words, size_t i) {
+    if (i == 0) return "the scene path";
+    if (!words[i].empty() && words[i][0] == '-') return words[i];
+    return words[i - 1];
+}
+
+// Every word the job carries: no control characters.
+void check_words(const FarmJob& job) {
+    for (size_t i = 0; i < job.render_args.size(); ++i)
+        if (has_control_character(job.render_args[i]))
+            refuse(option_of(job.render_args, i), job.render_args[i],
+                   "holds a control character (a newline, tab or escape), which no job file can "
+                   "carry safely");
+    for (const auto& [what, value] :
+         {std::pair<const char*, const std::string&>{"the working folder", job.working_dir},
+          {"the facet program's path", job.facet},
+          {"the job name", job.name}})
+        if (has_control_character(value))
+            refuse(what, value, "holds a control character, which no job file can carry safely");
+}
+
+// Slurm's job and partition names written in #SBATCH lines, which sbatch
+// reads without a shell: only these characters, nothing to quote.
+bool is_slurm_name(const std::string& text) {
+    static const std::regex name("[A-Za-z0-9_.-]+");
+    return std::regex_match(text, name);
+}
+
+// The job name as Slurm shows it: the characters is_slurm_name allows, the
+// others as '_'.
+std::string slurm_job_name(const std::string& name) {
+    std::string out;
+    for (char c : name) out += is_slurm_name(std::string(1, c)) ? c : '_';
+    return out.empty() ? "facet" : out;
+}
 
 std::string join_words(const std::vector<std::string>& words) {
     std::string line;
@@ -58,14 +126,15 @@ std::string slurm_submission(const FarmJob& job, const SlurmSettings& s) {
     t += "script=$(readlink -f \"$0\")\n";
     std::string limit;  // sbatch --array=0-5%M: at most M tasks at once
     if (s.max_running > 0) limit = '%' + std::to_string(s.max_running);
-    t += "array=$(FACET_FARM_STEP=render sbatch --parsable --array=\"$tasks\"" + limit +
-         " \"$script\")\n";
+    t += "folder=" + shell_word(job.working_dir) + "\n";
+    t += "array=$(FACET_FARM_STEP=render sbatch --parsable --chdir=\"$folder\" --array=\"$tasks\"" +
+         limit + " \"$script\")\n";
     t += "array=${array%%;*}\n";
     t += "echo \"facet: render job $array: chunks $tasks of $chunks\"\n";
     t += "# The merge runs once every task succeeded; a failed task cancels it\n";
     t += "# (--kill-on-invalid-dep), so it never waits forever.\n";
-    t += "merge_options=(--job-name=" + shell_word(job.name + "-merge") +
-         " --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes)\n";
+    t += "merge_options=(--job-name=" + shell_word(slurm_job_name(job.name) + "-merge") +
+         " --chdir=\"$folder\" --dependency=afterok:\"$array\" --kill-on-invalid-dep=yes)\n";
     t += "if [[ ${#wait[@]} -eq 0 ]]; then\n";
     t += "    FACET_FARM_STEP=merge sbatch \"${merge_options[@]}\" \"$script\"\n";
     t += "    exit 0\n";
@@ -96,14 +165,51 @@ std::string slurm_submission(const FarmJob& job, const SlurmSettings& s) {
 
 }  // namespace
 
+void check_slurm_values(const FarmJob& job, const SlurmSettings& s) {
+    check_words(job);
+    // sbatch --time: minutes, minutes:seconds, hours:minutes:seconds,
+    // days-hours, days-hours:minutes, days-hours:minutes:seconds.
+    static const std::regex time(
+        "[0-9]+(:[0-9]+){0,2}|[0-9]+-[0-9]+(:[0-9]+){0,2}|UNLIMITED|INFINITE|unlimited|infinite");
+    if (!s.time.empty() && !std::regex_match(s.time, time))
+        refuse("--time", s.time,
+               "expected one of Slurm's formats: MM, MM:SS, HH:MM:SS, D-HH, D-HH:MM, D-HH:MM:SS "
+               "or UNLIMITED");
+    static const std::regex partitions("[A-Za-z0-9_.-]+(,[A-Za-z0-9_.-]+)*");
+    if (!s.partition.empty() && !std::regex_match(s.partition, partitions))
+        refuse("--partition", s.partition,
+               "expected Slurm partition names: letters, digits, '_', '.' and '-', several "
+               "separated by commas");
+    if (!s.account.empty() && !is_slurm_name(s.account))
+        refuse("--account", s.account,
+               "expected a Slurm account name: letters, digits, '_', '.' and '-'");
+}
+
+void check_openjd_values(const FarmJob& job) {
+    check_words(job);
+    for (size_t i = 0; i < job.render_args.size(); ++i)
+        if (job.render_args[i].find("{{") != std::string::npos)
+            refuse(option_of(job.render_args, i), job.render_args[i],
+                   "holds '{{', which Open Job Description reads as the start of a format "
+                   "expression");
+    for (const std::string* value : {&job.working_dir, &job.facet, &job.merge_folder})
+        if (value->find("{{") != std::string::npos)
+            refuse("a path", *value,
+                   "holds '{{', which Open Job Description reads as the start of a format "
+                   "expression");
+}
+
 std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
     const std::string last = std::to_string(s.chunks - 1);
     std::string t;
     t += "#!/bin/bash\n";
-    t += "# " + job.name + ": frames " + job.frames + " (" + std::to_string(job.frame_count) +
-         ") in " + std::to_string(s.chunks) + " chunks on Slurm, then `facet merge` of\n";
-    t += "# their partial manifests into " + job.merge_folder + "/manifest.json.\n";
-    t += "# Written by `facet farm slurm` (facet " + job.version + "); docs/farm.md explains it.\n";
+    t += "# " + shell_word(job.name) + ": frames " + shell_word(job.frames) + " (" +
+         std::to_string(job.frame_count) + ") in " + std::to_string(s.chunks) +
+         " chunks on Slurm, then `facet merge` of\n";
+    t +=
+        "# their partial manifests into " + shell_word(job.merge_folder + "/manifest.json") + ".\n";
+    t += "# Written by `facet farm slurm` (facet " + shell_word(job.version) +
+         "); docs/farm.md explains it.\n";
     t += "#\n";
     t += "#   bash job.sh                submit the render array and the merge job\n";
     t += "#   bash job.sh --wait         the same, then wait for the merge; exit with its code\n";
@@ -113,9 +219,12 @@ std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
     t += "#\n";
     t += "# Relative paths are resolved from the folder facet farm ran in (--chdir).\n";
     t += "# Set FACET to run another facet program than the one recorded here.\n";
-    t += "#SBATCH --job-name=" + job.name + "\n";
-    t += "#SBATCH --chdir=" + job.working_dir + "\n";
+    // sbatch reads these lines itself, without a shell: each value is a
+    // checked name or number. The folder is passed on sbatch's command
+    // line (quoted) and by the `cd` below.
+    t += "#SBATCH --job-name=" + slurm_job_name(job.name) + "\n";
     if (!s.partition.empty()) t += "#SBATCH --partition=" + s.partition + "\n";
+    if (!s.account.empty()) t += "#SBATCH --account=" + s.account + "\n";
     if (s.cpus > 0) t += "#SBATCH --cpus-per-task=" + std::to_string(s.cpus) + "\n";
     if (!s.time.empty()) t += "#SBATCH --time=" + s.time + "\n";
     t += "set -euo pipefail\n";
@@ -148,11 +257,11 @@ std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
                              "{{Task.Param.Frame}}", "--skip-existing"})
         render.push_back(word);
     std::string t;
-    t += "# " + job.name + ": frames " + job.frames + " in chunks of " +
+    t += "# " + shell_word(job.name) + ": frames " + shell_word(job.frames) + " in chunks of " +
          std::to_string(s.chunk_size) + " frames, then `facet merge` of their\n";
-    t += "# partial manifests into " + job.merge_folder + "/manifest.json.\n";
-    t +=
-        "# Written by `facet farm openjd` (facet " + job.version + "); docs/farm.md explains it.\n";
+    t += "# partial manifests into " + shell_word(job.merge_folder + "/manifest.json") + ".\n";
+    t += "# Written by `facet farm openjd` (facet " + shell_word(job.version) +
+         "); docs/farm.md explains it.\n";
     t += "specificationVersion: 'jobtemplate-2023-09'\n";
     t += "extensions:\n  - TASK_CHUNKING\n";
     t += "name: " + yaml_string(job.name) + "\n";

@@ -23,14 +23,30 @@ struct FarmJob {
 
 struct SlurmSettings {
     int chunks = 1;
-    std::string partition;  // "" : the cluster's default
+    std::string partition;  // "" : the cluster's default; one or more names, comma-separated
+    std::string account;    // "" : the user's default
     int cpus = 0;           // per task; 0 : the cluster's default
     std::string time;       // per task, Slurm's format; "" : the partition's limit
     int max_running = 0;    // tasks at once (sbatch --array=...%M); 0 : no limit
 };
 
+// What may reach a job file from the command line (docs/farm.md, "What
+// job files may hold"): --time in one of Slurm's formats, --partition and
+// --account as Slurm names ([A-Za-z0-9_.-], partitions comma-separated),
+// and no control character in any word (a newline would end a line of the
+// script). Throws facet::Error (invalid_input) naming the option and
+// showing the value with its control characters escaped.
+void check_slurm_values(const FarmJob& job, const SlurmSettings& settings);
+
+// The same for OpenJD, which also reads "{{" as the start of a format
+// expression in any string: refused.
+void check_openjd_values(const FarmJob& job);
+
 // A bash script that, run with bash or submitted with sbatch, submits the
-// render array and a merge job that runs after all of it succeeded.
+// render array and a merge job that runs after all of it succeeded. Every
+// value in it, comments included, is a shell word (core/shell_word.hpp);
+// the #SBATCH lines hold only checked names and numbers. Call
+// check_slurm_values first.
 std::string slurm_script(const FarmJob& job, const SlurmSettings& settings);
 
 struct OpenJobSettings {
