@@ -94,7 +94,7 @@ TEST_CASE(
 }
 
 TEST_CASE(
-    "a newline in any value is refused; every other value reaches sbatch and the render "
+    "a newline in any value is refused, and every other value reaches sbatch and the render "
     "intact",
     "[farm][security]") {
     Farm farm;
