@@ -495,6 +495,22 @@ TEST_CASE("facet preview refuses to start without a display, a scene or one came
                     "' --camera a,b 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("one camera"));
+    // A camera the scene lacks, as render refuses it.
+    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + path +
+                    "' --camera nope 2>&1");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains("nope"));
+    // A display named but not there: SDL's reason and exit 2, not an
+    // invisible off-screen window (the test is killed after 20 s if so).
+    for (const char* unreachable :
+         {"env -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER DISPLAY=:77 ",
+          "env -u DISPLAY -u SDL_VIDEODRIVER WAYLAND_DISPLAY=nowhere-77 "}) {
+        INFO(unreachable);
+        r = run_command(std::string(unreachable) + "timeout -s KILL 20 '" + FACET_EXECUTABLE +
+                        "' preview '" + path + "' 2>&1");
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("cannot open a window"));
+    }
     // The display is checked first: before the scene file or the options.
     r = run_command(headless + "'" + FACET_EXECUTABLE + "' preview '" + dir.file("missing.yaml") +
                     "' 2>&1");

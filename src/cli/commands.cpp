@@ -618,7 +618,7 @@ CLI::App* add_video_command(CLI::App& app, VideoArgs& args) {
     cmd->add_option("movie", args.movie, "Movie to write: .mp4, .webm or .gif")->required();
     cmd->add_option("--camera", args.camera, "Camera, when the run has several");
     cmd->add_option("--fps", args.fps, "Frames per second (default: the scene's)")
-        ->check(CLI::Range(0.01, 1000.0));
+        ->check(finite_range(0.01, 1000.0));
     add_quiet_flag(cmd, args.quiet);
     return cmd;
 }

@@ -148,7 +148,6 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
         std::printf("%-5s %s: %s\n", line_tag(r), r.key.label().c_str(), r.reason.c_str());
     };
     CompareReport report = run_compare(request);
-    print_summary(report, args.quiet);
     int code = compare_exit_code(report);
     if (mode) {
         // The reports are written after the update, with the exit code it leaves.
@@ -172,7 +171,10 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
         report.updated = updated.written;
         report.exit_code_after_update = code;
     }
+    // The reports first: a run that cannot write its report has not
+    // passed, and must not say so before it fails.
     if (!request.report_dir.empty()) write_reports(report);
+    print_summary(report, args.quiet);
     return code;
 }
 

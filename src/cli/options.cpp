@@ -1,6 +1,9 @@
 #include "cli/options.hpp"
 
 #include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
 
 #include <CLI/CLI.hpp>
 
@@ -173,6 +176,23 @@ void check_subcommand_name(const CLI::App& app, int argc, char** argv) {
 
 std::string count_of(size_t n, const char* singular, const char* plural) {
     return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
+CLI::Validator finite_range(double min, double max) {
+    char range[96];
+    std::snprintf(range, sizeof range, "a number from %g to %g", min, max);
+    const std::string expected = range;
+    return CLI::Validator(
+        [=](std::string& text) -> std::string {
+            double value = 0;
+            const char* end = text.data() + text.size();
+            const auto [stop, error] = std::from_chars(text.data(), end, value);
+            if (error != std::errc() || stop != end || !std::isfinite(value) || value < min ||
+                value > max)
+                return "expected " + expected + ", got '" + text + "'";
+            return "";
+        },
+        "FLOAT in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
 }
 
 }  // namespace facet

@@ -11,7 +11,8 @@
 
 namespace CLI {
 class App;
-}
+class Validator;
+}  // namespace CLI
 
 namespace facet {
 
@@ -52,6 +53,10 @@ void reject_unknown_arguments(CLI::App* command);
 // argv[1] when it names no subcommand: an error with a did-you-mean and the
 // list of subcommands. Does nothing for options (-h, --version).
 void check_subcommand_name(const CLI::App& app, int argc, char** argv);
+
+// A number option's check: a finite number (NaN and infinity are refused,
+// which CLI::Range lets through) from `min` to `max`.
+CLI::Validator finite_range(double min, double max);
 
 // "1 file", "3 files".
 std::string count_of(size_t n, const char* singular, const char* plural);

@@ -1,11 +1,14 @@
 #include "cli/preview_command.hpp"
 
+#include <optional>
+
 #include <CLI/CLI.hpp>
 
 #include "cli/options.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "preview/preview.hpp"
+#include "render/render_job.hpp"
 
 namespace facet {
 
@@ -33,7 +36,17 @@ int preview_command(const RenderArgs& args) {
     if (cameras.size() > 1 || args.cameras == "all")
         fail_input(command_line("--camera " + args.cameras), "",
                    "the preview shows one camera at a time (the panel switches): give one name");
-    if (!cameras.empty()) options.camera = cameras.front();
+    if (!cameras.empty()) {
+        options.camera = cameras.front();
+        // A name the scene lacks is refused as render refuses it. A scene
+        // that does not load yet is checked by the window, which shows why.
+        std::optional<SceneDesc> scene;
+        try {
+            scene = load_scene(args.scene, options.scene_options);
+        } catch (const Error&) {
+        }
+        if (scene) select_cameras(*scene, cameras);
+    }
     options.threads = args.threads;
     options.out_dir = args.out;
     options.quiet = args.quiet;

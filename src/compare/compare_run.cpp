@@ -146,6 +146,7 @@ class SequenceRun {
                                 "or replaced after the run)");
         if (ref_hash == new_hash) {
             r.status = FileStatus::identical;
+            check_mask_images(pair);
             return false;
         }
         r.status = FileStatus::compared;
@@ -157,6 +158,23 @@ class SequenceRun {
         r.outcome = Outcome::fail;
         r.reason = reason;
         return false;
+    }
+
+    // A mask image of another size than the images is the command's error
+    // whether or not a file differs (MaskBuilder::build throws), so
+    // identical files are measured too when a mask image applies.
+    void check_mask_images(const FilePair& pair) {
+        const auto& masks = request_.thresholds.masks;
+        if (std::none_of(masks.begin(), masks.end(),
+                         [](const CompareMask& m) { return !m.image.empty(); }))
+            return;
+        CompareImage image;
+        try {
+            image = read_compare_image(pair.ref_path, pair.kind);
+        } catch (const Error&) {
+            return;  // identical bytes: the size is only needed to check the masks
+        }
+        masks_.build(pair.key.camera, pair.kind, image.width, image.height);
     }
 
     // A frame decoded only as a changed frame's neighbour (identical in

@@ -28,12 +28,9 @@ std::map<KeyTuple, ManifestFile> manifest_files(const std::string& dir) {
             }
         throw Error(ExitCode::io_failure, dir + ": no manifest.json in this folder" + hint);
     }
-    Manifest m;
-    try {
-        m = read_manifest(manifest.string());
-    } catch (const Error& e) {
-        throw Error(ExitCode::io_failure, e.what());
-    }
+    // A manifest that cannot be read is an I/O failure (exit 4); one that is
+    // not facet's is bad input (exit 2), as in merge and video.
+    Manifest m = read_manifest(manifest.string());
     std::map<KeyTuple, ManifestFile> files;
     for (ManifestFile& f : m.files) {
         // Compare would otherwise read (and an update write or delete)

@@ -197,7 +197,10 @@ MergeReport merge_partial_manifests(const MergeRequest& request) {
     const std::string& folder = request.folder;
     std::error_code ec;
     if (!fs::is_directory(folder, ec))
-        throw Error(ExitCode::io_failure, folder + ": no such folder");
+        throw Error(
+            ExitCode::io_failure,
+            folder + (fs::exists(folder, ec) ? ": not a folder (give the run's OUT/SCENE folder)"
+                                             : ": no such folder"));
     ManifestFolderLock lock(folder);  // no render adds a part while this reads them
     MergeReport report;
     std::vector<NamedManifest> parts = read_parts(folder, report);

@@ -116,10 +116,35 @@ Manifest read_manifest(const std::string& path) {
     return parse_manifest(text.str(), path);
 }
 
+namespace {
+
+// A JSON library message in the manifest's terms: its bracketed code
+// dropped, "key 'x' not found" as "'x' is missing".
+std::string plain_json_error(const nlohmann::json::exception& e) {
+    std::string text = e.what();
+    if (const size_t bracket = text.find("] ");
+        text.rfind("[json.exception", 0) == 0 && bracket != std::string::npos)
+        text.erase(0, bracket + 2);
+    const std::string key = "key '";
+    if (text.rfind(key, 0) == 0 && text.size() > key.size() + 11 &&
+        text.compare(text.size() - 11, 11, "' not found") == 0)
+        return "'" + text.substr(key.size(), text.size() - key.size() - 11) + "' is missing";
+    if (text.find("cannot use at() with") != std::string::npos ||
+        text.find("cannot use operator[]") != std::string::npos)
+        return "an entry is " + text.substr(text.rfind(' ') + 1) + " where an object belongs";
+    return text;
+}
+
+}  // namespace
+
 Manifest parse_manifest(const std::string& text, const std::string& where) {
     const std::string& path = where;
+    std::string entry;  // the part being read, for messages: "files[3]"
     try {
         nlohmann::json j = nlohmann::json::parse(text);
+        if (!j.is_object())
+            throw Error(ExitCode::invalid_input,
+                        path + ": not a facet manifest: not a JSON object");
         Manifest m;
         if (j.contains("facet")) {
             m.facet_version = j["facet"].value("version", "");
@@ -140,25 +165,37 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         for (const auto& o : j.value("overrides", nlohmann::json::array()))
             m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
                                    o.value("origin", "")});
-        for (const auto& f : j.at("frames"))
+        entry = "frames";
+        for (const auto& f : j.at("frames")) {
+            entry = "frames[" + std::to_string(m.frames.size()) + "]";
             m.frames.push_back({f.at("frame").get<int>(), f.value("camera", ""),
                                 f.value("render_ms", 0.0), f.value("encode_ms", 0.0), ""});
-        for (const auto& f : j.at("files"))
+        }
+        entry = "files";
+        for (const auto& f : j.at("files")) {
+            entry = "files[" + std::to_string(m.files.size()) + "]";
             m.files.push_back({f.at("frame").get<int>(), f.value("camera", ""),
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
                                f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
                                f.value("style", m.style)});
+        }
+        entry = "ids";
         for (const char* pass : {"object_id", "material_id"})
             for (const auto& id :
                  j.value("ids", nlohmann::json::object()).value(pass, nlohmann::json::array()))
                 m.ids.push_back({pass, id.at("id").get<uint32_t>(),
                                  id.at("name").get<std::string>(), id.value("object", "")});
+        entry = "";
         m.threads = j.value("threads", 0);
+        entry = "job or part";
         read_job(j, m);
+        entry = "timings";
         if (j.contains("timings")) read_timings(j["timings"], m);
         return m;
     } catch (const nlohmann::json::exception& e) {
-        throw Error(ExitCode::invalid_input, path + ": not a facet manifest: " + e.what());
+        throw Error(ExitCode::invalid_input,
+                    path + ": not a facet manifest: " + (entry.empty() ? "" : entry + ": ") +
+                        plain_json_error(e));
     }
 }
 

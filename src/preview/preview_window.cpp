@@ -87,6 +87,13 @@ class Window {
   public:
     explicit Window(const std::string& title) {
         require_display();
+        // Only a real windowing system: asked for none, SDL would fall back
+        // to its off-screen driver where the named display cannot be
+        // reached, and render forever with no window (SDL_VIDEODRIVER, when
+        // the user sets it, still wins).
+        if (!std::getenv("SDL_VIDEODRIVER"))
+            SDL_SetHint(SDL_HINT_VIDEODRIVER,
+                        std::getenv("WAYLAND_DISPLAY") ? "wayland,x11" : "x11,wayland");
         if (SDL_Init(SDL_INIT_VIDEO) != 0)
             throw Error(ExitCode::invalid_input,
                         std::string("facet preview cannot open a window: ") + SDL_GetError());

@@ -1,0 +1,127 @@
+// Faults found by trying facet as a hostile user would (the reliability
+// issue): each test failed before its fix.
+#include <catch2/catch.hpp>
+
+#include <functional>
+#include <vector>
+
+#include "asset_support.hpp"
+#include "assets/texture.hpp"
+#include "compare_support.hpp"
+#include "support.hpp"
+
+using namespace facet;
+using namespace facet::test;
+using Catch::Matchers::Contains;
+
+namespace {
+
+uint32_t crc32_of(const std::vector<uint8_t>& bytes, size_t from) {
+    uint32_t crc = 0xffffffffu;
+    for (size_t i = from; i < bytes.size(); ++i) {
+        crc ^= bytes[i];
+        for (int k = 0; k < 8; ++k) crc = (crc >> 1) ^ (0xedb88320u & (0u - (crc & 1u)));
+    }
+    return ~crc;
+}
+
+void put_be32(std::vector<uint8_t>& out, uint32_t v) {
+    for (int s = 24; s >= 0; s -= 8) out.push_back(static_cast<uint8_t>(v >> s));
+}
+
+// A PNG signature and IHDR of width x height (8-bit RGB), and no data: a
+// header alone says the size.
+std::vector<uint8_t> png_header(uint32_t width, uint32_t height) {
+    std::vector<uint8_t> png = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    std::vector<uint8_t> chunk = {'I', 'H', 'D', 'R'};
+    put_be32(chunk, width);
+    put_be32(chunk, height);
+    chunk.insert(chunk.end(), {8, 2, 0, 0, 0});
+    put_be32(png, 13);
+    png.insert(png.end(), chunk.begin(), chunk.end());
+    put_be32(png, crc32_of(chunk, 0));
+    return png;
+}
+
+}  // namespace
+
+TEST_CASE("an image too large is refused by its size at any size, before decoding", "[texture]") {
+    TempDir dir("reliability-png");
+    for (uint32_t side : {17000u, 20000u, 65535u, 1000000u}) {
+        INFO(side);
+        const std::string path = write_bytes(dir.file("big.png"), png_header(side, side));
+        require_input_error([&] { load_texture(path); },
+                            "big.png: " + std::to_string(side) + "x" + std::to_string(side) +
+                                " pixels (each side must be 1 to 16384)");
+    }
+}
+
+TEST_CASE("float options refuse NaN and infinity", "[cli]") {
+    for (const char* value : {"nan", "NaN", "inf", "-inf", "1e999", "abc", "24fps"}) {
+        INFO(value);
+        const RunResult r = run_facet(std::string("video /nonexistent out.mp4 --fps ") + value);
+        CHECK(r.exit_code == 2);
+        CHECK_THAT(r.output, Contains("--fps") && Contains("expected a number from 0.01 to 1000"));
+    }
+}
+
+TEST_CASE("compare checks a mask image's size even when every file is identical", "[compare]") {
+    TempDir dir("reliability-mask");
+    const std::string a = render_shapes(dir.file("a"), "-f 1", "color", "png");
+    const std::string b = render_shapes(dir.file("b"), "-f 1", "color", "png");
+    write_png(dir.file("mask.png"), ColorImage(10, 10, glm::vec4(1)));
+    const RunResult r = run_facet("compare '" + a + "' '" + b + "' --no-report --mask-image '" +
+                                  dir.file("mask.png") + "'");
+    CHECK(r.exit_code == 2);
+    CHECK_THAT(r.output, Contains("mask.png"));
+}
+
+TEST_CASE("compare that cannot write its report does not say it passed", "[compare]") {
+    TempDir dir("reliability-report");
+    const std::string a = render_shapes(dir.file("a"), "-f 1", "color", "png");
+    const std::string b = render_shapes(dir.file("b"), "-f 1", "color", "png");
+    write_text(dir.file("a-file"), "not a folder");
+    const RunResult r =
+        run_facet("compare '" + a + "' '" + b + "' -o '" + dir.file("a-file") + "'");
+    CHECK(r.exit_code == 4);
+    CHECK_THAT(r.output, !Contains("passed"));
+}
+
+TEST_CASE("a manifest that is not facet's is exit 2 in compare, merge and video, in its own terms",
+          "[compare][farm][video]") {
+    TempDir dir("reliability-manifest");
+    const std::string a = render_shapes(dir.file("a"), "-f 1", "color", "png");
+    const std::string broken = dir.file("broken");
+    std::filesystem::create_directories(broken);
+    // An entry of "files" that is a list where an object belongs, and one
+    // that lacks its hash.
+    nlohmann::json m = read_json(a + "/manifest.json");
+    for (const auto& [name, edit] :
+         std::vector<std::pair<std::string, std::function<void(nlohmann::json&)>>>{
+             {"array entry", [](nlohmann::json& j) { j["files"][0] = nlohmann::json::array({1}); }},
+             {"no hash", [](nlohmann::json& j) { j["files"][0].erase("sha256"); }},
+             {"not json", [](nlohmann::json& j) { j = "garbage"; }}}) {
+        INFO(name);
+        nlohmann::json edited = m;
+        edit(edited);
+        write_text(broken + "/manifest.json", name == "not json" ? "{ garbage" : edited.dump());
+        for (const std::string& command :
+             {"compare '" + a + "' '" + broken + "' --no-report", "merge '" + broken + "'",
+              "video '" + broken + "' '" + dir.file("m.gif") + "'"}) {
+            INFO(command);
+            const RunResult r = run_facet(command);
+            CHECK(r.exit_code == 2);
+            CHECK_THAT(r.output, Contains("not a facet manifest") && !Contains("json.exception"));
+            if (name == "no hash") CHECK_THAT(r.output, Contains("files[0]: 'sha256' is missing"));
+        }
+    }
+}
+
+TEST_CASE("merge on a file says it is not a folder", "[farm]") {
+    TempDir dir("reliability-merge");
+    const std::string file = write_text(dir.file("passwd"), "root:x:0:0\n");
+    const RunResult r = run_facet("merge '" + file + "'");
+    CHECK(r.exit_code == 4);
+    CHECK_THAT(r.output, Contains("passwd: not a folder"));
+    CHECK_THAT(run_facet("merge '" + dir.file("nothing") + "'").output, Contains("no such folder"));
+}
