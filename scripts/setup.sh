@@ -40,7 +40,7 @@ packages=(g++ cmake make pkg-config
           libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri libwebp-dev libavif-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) tests=1; packages+=(assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
+        --tests) tests=1; packages+=(time assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
                             xvfb xdotool x11-apps) ;;
         --bench) packages+=(libosmesa6-dev) ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;

@@ -125,3 +125,58 @@ TEST_CASE("merge on a file says it is not a folder", "[farm]") {
     CHECK_THAT(r.output, Contains("passwd: not a folder"));
     CHECK_THAT(run_facet("merge '" + dir.file("nothing") + "'").output, Contains("no such folder"));
 }
+
+namespace {
+
+// A PNG of side x side pixels of noise (so it compresses little, as photos).
+std::string noise_png(const TempDir& dir, const std::string& name, int side) {
+    ColorImage image(side, side);
+    uint32_t state = 12345;
+    for (glm::vec4& p : image.pixels) {
+        state = state * 1664525u + 1013904223u;
+        p = {static_cast<float>(state >> 24) / 255.0f,
+             static_cast<float>((state >> 16) & 255) / 255.0f, 0.5f, 1};
+    }
+    return write_png(dir.file(name), image);
+}
+
+// Peak resident kilobytes of `facet ARGS`, and its exit code.
+std::pair<long, int> peak_kb(const std::string& args) {
+    const RunResult r = run_command("/usr/bin/time -f 'PEAK %M' '" + std::string(FACET_EXECUTABLE) +
+                                    "' " + args + " 2>&1 >/dev/null");
+    const size_t at = r.output.rfind("PEAK ");
+    return {at == std::string::npos ? -1 : std::stol(r.output.substr(at + 5)), r.exit_code};
+}
+
+}  // namespace
+
+TEST_CASE("the texture budget bounds peak memory, the decoder's buffers included",
+          "[texture][memory]") {
+    if (!std::filesystem::exists("/usr/bin/time"))
+        FACET_SKIP("/usr/bin/time is not installed (scripts/setup.sh --tests)");
+    TempDir dir("reliability-budget");
+    // 1800² is 17 MB of texels with mips, and stb holds two 13 MB images
+    // while it decodes: within a 64 MB budget. 2600² stays 36 MB, but
+    // decoding it takes 54 MB more: over.
+    noise_png(dir, "fits.png", 1800);
+    noise_png(dir, "over.png", 2600);
+    auto scene = [&](const std::string& texture) {
+        return write_text(
+            dir.file("scene-" + texture + ".yaml"),
+            "assets: { texture_budget_mb: 64 }\nobjects:\n  - primitive: cube\n" +
+                (texture.empty() ? std::string() : "    material: { texture: " + texture + " }\n"));
+    };
+    const auto [baseline, base_code] = peak_kb("validate '" + scene("") + "'");
+    REQUIRE(base_code == 0);
+    REQUIRE(baseline > 0);
+    const auto [fits, fits_code] = peak_kb("validate '" + scene("fits.png") + "'");
+    CHECK(fits_code == 0);
+    INFO("baseline " << baseline << " KB, with the texture " << fits << " KB");
+    // AddressSanitizer's shadow memory and quarantine grow with every
+    // allocation, so only a plain build's peak measures facet's own.
+    if (!kAddressSanitizer) CHECK(fits - baseline <= 64 * 1024);
+    const RunResult over = run_facet("validate '" + scene("over.png") + "'");
+    CHECK(over.exit_code == 2);
+    CHECK_THAT(over.output,
+               Contains("over.png (while decoding)") && Contains("over the texture budget"));
+}

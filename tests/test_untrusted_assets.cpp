@@ -244,12 +244,21 @@ TEST_CASE("textures are charged to one budget until it runs out", "[untrusted]")
     const std::string b = write_png(dir.file("b.png"), image);
     const std::string c = write_png(dir.file("c.png"), image);
     const uint64_t one = texture_bytes(64, 64, 8);
-    TextureBudget budget(2 * one + one / 2);
+    // While it decodes a PNG, stb holds two images of four channels at
+    // most, and the file: charged for that time, then given back.
+    const uint64_t decoding = 2 * 64 * 64 * 4 + fs::file_size(a);
+    TextureBudget budget(2 * one + decoding);
     load_texture(a, &budget);
     load_texture(b, &budget);
     CHECK(budget.used() == 2 * one);
     require_input_error([&] { load_texture(c, &budget); }, "c.png");
     require_input_error([&] { load_texture(c, &budget); }, "a.png");  // the largest so far
+    CHECK(budget.used() == 2 * one);  // the refused texture took nothing
+    // Two fit only with the room to decode the second.
+    TextureBudget tight(2 * one + decoding - 1);
+    load_texture(a, &tight);
+    require_input_error([&] { load_texture(b, &tight); }, "b.png (while decoding)");
+    CHECK(tight.used() == one);
 }
 
 TEST_CASE("the scene's texture budget stops a render with a clear error", "[untrusted]") {

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include <avif/avif.h>
 #include <stb/stb_image.h>
@@ -49,14 +50,51 @@ struct Size {
     throw UndecodableImage(ExitCode::invalid_input, name + ": " + why);
 }
 
+// A charge to the texture budget, given back when this goes out of scope
+// unless kept. The texture's own bytes are kept once it is decoded (a
+// decoder that fails gives them back); what a decoder holds only while it
+// runs (its output buffer, stb's inflated PNG rows, AVIF's planes, the
+// file's bytes) is always given back, so the budget bounds the peak, not
+// only what stays.
+class BudgetCharge {
+  public:
+    BudgetCharge(TextureBudget* budget, std::string name, Size size, uint64_t bytes)
+        : budget_(budget), name_(std::move(name)) {
+        if (budget_) budget_->charge(name_, size.width, size.height, bytes);
+    }
+    BudgetCharge(BudgetCharge&& other) noexcept
+        : budget_(std::exchange(other.budget_, nullptr)), name_(std::move(other.name_)) {}
+    BudgetCharge(const BudgetCharge&) = delete;
+    BudgetCharge& operator=(const BudgetCharge&) = delete;
+    BudgetCharge& operator=(BudgetCharge&&) = delete;
+    ~BudgetCharge() {
+        if (budget_) budget_->release(name_);
+    }
+    void keep() { budget_ = nullptr; }
+
+  private:
+    TextureBudget* budget_;
+    std::string name_;
+};
+
 // Checks the header's size and charges the texture before decoding.
-void admit(const std::string& name, Size size, int bits, TextureBudget* budget) {
+[[nodiscard]] BudgetCharge admit(const std::string& name, Size size, int bits,
+                                 TextureBudget* budget) {
     if (size.width <= 0 || size.height <= 0 || size.width > kMaxImageSide ||
         size.height > kMaxImageSide)
         refuse(name, std::to_string(size.width) + "x" + std::to_string(size.height) +
                          " pixels (each side must be 1 to " + std::to_string(kMaxImageSide) + ")");
-    if (budget)
-        budget->charge(name, size.width, size.height, texture_bytes(size.width, size.height, bits));
+    return BudgetCharge(budget, name, size, texture_bytes(size.width, size.height, bits));
+}
+
+// The charge for what the decoder holds while it runs.
+[[nodiscard]] BudgetCharge while_decoding(const std::string& name, Size size, uint64_t bytes,
+                                          TextureBudget* budget) {
+    return BudgetCharge(budget, name + " (while decoding)", size, bytes);
+}
+
+uint64_t pixels_of(Size size) {
+    return static_cast<uint64_t>(size.width) * static_cast<uint64_t>(size.height);
 }
 
 Texture decode_with_stb(const uint8_t* bytes, size_t size, ImageFormat format,
@@ -76,7 +114,11 @@ Texture decode_with_stb(const uint8_t* bytes, size_t size, ImageFormat format,
                               stbi_failure_reason() + ")");
     }
     const bool is16 = stbi_is_16_bit_from_memory(bytes, length);
-    admit(name, header, is16 ? 16 : 8, budget);
+    BudgetCharge texture = admit(name, header, is16 ? 16 : 8, budget);
+    // stb inflates a PNG's rows whole, then unfilters them into its output:
+    // two images of the file's channels (four at most), and the file.
+    const BudgetCharge decoding =
+        while_decoding(name, header, 2 * pixels_of(header) * 4 * (is16 ? 2 : 1) + size, budget);
     int w = 0, h = 0;
     void* data =
         is16 ? static_cast<void*>(stbi_load_16_from_memory(bytes, length, &w, &h, &channels, 0))
@@ -85,7 +127,10 @@ Texture decode_with_stb(const uint8_t* bytes, size_t size, ImageFormat format,
         undecodable(name, "cannot decode " + image_format_name(format) + " image (" +
                               stbi_failure_reason() + ")");
     std::unique_ptr<void, void (*)(void*)> owned(data, stbi_image_free);
-    return texture_from_pixels(w, h, channels, is16 ? 16 : 8, static_cast<const uint8_t*>(data));
+    Texture decoded =
+        texture_from_pixels(w, h, channels, is16 ? 16 : 8, static_cast<const uint8_t*>(data));
+    texture.keep();
+    return decoded;
 }
 
 Texture decode_webp(const uint8_t* bytes, size_t size, const std::string& name,
@@ -94,14 +139,18 @@ Texture decode_webp(const uint8_t* bytes, size_t size, const std::string& name,
     if (WebPGetFeatures(bytes, size, &features) != VP8_STATUS_OK)
         undecodable(name, "cannot decode WebP image (damaged header)");
     if (features.has_animation) undecodable(name, "animated WebP images are not supported");
-    admit(name, {features.width, features.height}, 8, budget);
+    const Size header{features.width, features.height};
+    BudgetCharge texture = admit(name, header, 8, budget);
+    const BudgetCharge decoding = while_decoding(name, header, pixels_of(header) * 4 + size, budget);
     const int channels = features.has_alpha ? 4 : 3;
     int w = 0, h = 0;
     uint8_t* data = features.has_alpha ? WebPDecodeRGBA(bytes, size, &w, &h)
                                        : WebPDecodeRGB(bytes, size, &w, &h);
     if (!data) undecodable(name, "cannot decode WebP image (damaged data)");
     std::unique_ptr<uint8_t, void (*)(void*)> owned(data, WebPFree);
-    return texture_from_pixels(w, h, channels, 8, data);
+    Texture decoded = texture_from_pixels(w, h, channels, 8, data);
+    texture.keep();
+    return decoded;
 }
 
 Texture decode_avif(const uint8_t* bytes, size_t size, const std::string& name,
@@ -119,7 +168,11 @@ Texture decode_avif(const uint8_t* bytes, size_t size, const std::string& name,
                     std::string("cannot decode AVIF image (") + avifResultToString(result) + ")");
     const avifImage* header = decoder->image;
     const int bits = header->depth > 8 ? 16 : 8;
-    admit(name, {static_cast<int>(header->width), static_cast<int>(header->height)}, bits, budget);
+    const Size header_size{static_cast<int>(header->width), static_cast<int>(header->height)};
+    BudgetCharge texture = admit(name, header_size, bits, budget);
+    // The YUV and alpha planes, the RGBA image and its packed copy.
+    const BudgetCharge decoding = while_decoding(
+        name, header_size, pixels_of(header_size) * (4 + 4 + 4) * (bits / 8) + size, budget);
     result = avifDecoderNextImage(decoder.get());
     if (result != AVIF_RESULT_OK)
         undecodable(name,
@@ -140,8 +193,10 @@ Texture decode_avif(const uint8_t* bytes, size_t size, const std::string& name,
     for (uint32_t y = 0; y < rgb.height; ++y)
         std::memcpy(packed.data() + y * row, rgb.pixels + static_cast<size_t>(y) * rgb.rowBytes,
                     row);
-    return texture_from_pixels(static_cast<int>(rgb.width), static_cast<int>(rgb.height), 4, bits,
-                               packed.data());
+    Texture decoded = texture_from_pixels(static_cast<int>(rgb.width),
+                                          static_cast<int>(rgb.height), 4, bits, packed.data());
+    texture.keep();
+    return decoded;
 }
 
 }  // namespace

@@ -349,4 +349,15 @@ void TextureBudget::charge(const std::string& name, int width, int height, uint6
     s.charged.push_back({name, width, height, bytes});
 }
 
+void TextureBudget::release(const std::string& name) {
+    std::lock_guard lock(state_->mutex);
+    State& s = *state_;
+    for (auto it = s.charged.rbegin(); it != s.charged.rend(); ++it)
+        if (it->name == name) {
+            s.used -= it->bytes;
+            s.charged.erase(std::next(it).base());
+            return;
+        }
+}
+
 }  // namespace facet

@@ -131,6 +131,9 @@ class TextureBudget {
     // names it, its size and the largest textures charged so far when the
     // total would pass the limit.
     void charge(const std::string& name, int width, int height, uint64_t bytes);
+    // Gives back what a charge of `name` took: memory a decoder held only
+    // while it ran.
+    void release(const std::string& name);
     uint64_t used() const;
     uint64_t limit() const { return limit_; }
 
