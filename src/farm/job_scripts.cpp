@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <regex>
+#include <string_view>
 
 #include "core/error.hpp"
 #include "core/shell_word.hpp"
@@ -9,11 +10,16 @@
 namespace facet {
 namespace {
 
-// `text` with control characters written as C escapes, for messages.
-std::string printable(const std::string& text) {
+// `text` with control characters as escapes (\n, \xNN), and each
+// character of `backslashed` behind a backslash: for messages, and for
+// YAML's double-quoted scalars, which read both escapes back.
+std::string escaped(const std::string& text, std::string_view backslashed) {
     std::string out;
     for (unsigned char c : text) {
-        if (c == '\n') {
+        if (backslashed.find(static_cast<char>(c)) != std::string_view::npos) {
+            out += '\\';
+            out += static_cast<char>(c);
+        } else if (c == '\n') {
             out += "\\n";
         } else if (c < 0x20 || c == 0x7f) {
             char escape[8];
@@ -24,6 +30,10 @@ std::string printable(const std::string& text) {
         }
     }
     return out;
+}
+
+std::string printable(const std::string& text) {
+    return escaped(text, "");
 }
 
 [[noreturn]] void refuse(const std::string& option, const std::string& value,
@@ -86,20 +96,7 @@ std::string join_words(const std::vector<std::string>& words) {
 
 // A double-quoted YAML scalar that reads back as exactly `text`.
 std::string yaml_string(const std::string& text) {
-    std::string quoted = "\"";
-    for (unsigned char c : text) {
-        if (c == '"' || c == '\\') {
-            quoted += '\\';
-            quoted += static_cast<char>(c);
-        } else if (c < 0x20 || c == 0x7f) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\x%02x", c);
-            quoted += escape;
-        } else {
-            quoted += static_cast<char>(c);
-        }
-    }
-    return quoted + "\"";
+    return "\"" + escaped(text, "\"\\") + "\"";
 }
 
 std::string yaml_list(const std::vector<std::string>& items) {
