@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <functional>
+#include <set>
+#include <sstream>
 #include <vector>
 
 #include "asset_support.hpp"
@@ -179,4 +181,41 @@ TEST_CASE("the texture budget bounds peak memory, the decoder's buffers included
     CHECK(over.exit_code == 2);
     CHECK_THAT(over.output,
                Contains("over.png (while decoding)") && Contains("over the texture budget"));
+}
+
+TEST_CASE("a full disk leaves the finished images listed and no file of an unfinished one",
+          "[output][disk]") {
+    TempDir dir("reliability-disk");
+    const std::string out = dir.file("small");
+    std::filesystem::create_directories(out);
+    // A 100 KB file system of its own, in a mount namespace of its own:
+    // room for three frames of these four files, not for thirty.
+    const std::string inside = "mount -t tmpfs -o size=100k tmpfs " + shell_quote(out) +
+                               " || exit 77; " + shell_quote(FACET_EXECUTABLE) + " render " +
+                               shell_quote(source_path("tests/scenes/shapes.yaml")) +
+                               " --size 96x54 --frames 1-30 --allow-outside --passes color,depth "
+                               "--formats png,exr -q -o " +
+                               shell_quote(out) + " 2>&1; echo \"EXIT $?\"; ls -1 " +
+                               shell_quote(out + "/shapes") + "; echo MANIFEST; cat " +
+                               shell_quote(out + "/shapes/manifest.json");
+    const RunResult r = run_command("unshare -m sh -c " + shell_quote(inside) + " 2>&1");
+    if (r.exit_code == 77 || r.output.find("EXIT") == std::string::npos)
+        FACET_SKIP("cannot mount a small file system here (needs root): " + r.output);
+    INFO(r.output);
+    CHECK_THAT(r.output, Contains("EXIT 4") && Contains("No space left on device") &&
+                             Contains("images finished are listed in"));
+    const size_t manifest_at = r.output.find("MANIFEST\n");
+    REQUIRE(manifest_at != std::string::npos);
+    const nlohmann::json manifest = nlohmann::json::parse(r.output.substr(manifest_at + 9));
+    std::set<std::string> listed, on_disk;
+    for (const auto& f : manifest["files"]) listed.insert(f["path"].get<std::string>());
+    std::istringstream names(r.output.substr(r.output.find("EXIT 4\n") + 7,
+                                             manifest_at - r.output.find("EXIT 4\n") - 7));
+    for (std::string name; std::getline(names, name);)
+        if (name != "manifest.json") on_disk.insert(name);
+    // Some images finished, every one whole: four files each, all listed,
+    // and nothing else on disk.
+    CHECK(manifest["frames"].size() >= 1);
+    CHECK(listed.size() == 4 * manifest["frames"].size());
+    CHECK(on_disk == listed);
 }

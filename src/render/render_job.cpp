@@ -149,10 +149,11 @@ class Encoder {
         return images;
     }
 
-    // Waits for all queued frames; rethrows the first encoding failure.
-    Manifest finish() {
+    // Waits for all queued frames: the frames written, and the first
+    // encoding failure, if any (the frames queued after it are dropped).
+    Manifest finish(std::exception_ptr& failure) {
         stop();
-        if (failure_) std::rethrow_exception(failure_);
+        if (!failure) failure = failure_;
         return manifest_;
     }
 
@@ -224,6 +225,7 @@ class Encoder {
         const auto start = Clock::now();
         const OutputDesc& out = scene_.output;
         Manifest written;
+        std::vector<std::filesystem::path> on_disk;  // this image's files written so far
         auto write = [&](const std::string& pass, const std::string& format,
                          const std::vector<uint8_t>& bytes) {
             const std::string name =
@@ -231,6 +233,7 @@ class Encoder {
             const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
             prepare_folder(file.parent_path().string());
             write_file_atomically(file.string(), bytes);
+            on_disk.push_back(file);
             written.files.push_back({job.frame, job.camera, pass, format,
                                      path_relative_to_manifest(name, layout_.manifest_dir),
                                      sha256_hex(bytes), scene_.style.name});
@@ -239,10 +242,19 @@ class Encoder {
                               scene_.style.name, job.images.view, job.images.projection};
         const PassFileFacts file_facts{out.depth_range.value_or(job.images.depth_view_range),
                                        png_metadata(facts), exr_metadata(facts)};
-        encode_frame_files(out, job.images, file_facts,
-                           [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
-                               write(file.pass, file.format, bytes);
-                           });
+        try {
+            encode_frame_files(out, job.images, file_facts,
+                               [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
+                                   write(file.pass, file.format, bytes);
+                               });
+        } catch (...) {
+            // No file of an unfinished image stays (a full disk, say): a
+            // rerun with --skip-existing renders the whole image again.
+            std::error_code ignored;
+            for (const std::filesystem::path& file : on_disk)
+                std::filesystem::remove(file, ignored);
+            throw;
+        }
         written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start), host_});
         return written;
     }
@@ -412,6 +424,33 @@ Manifest skip_written_images(const SceneDesc& scene, const OutputLayout& layout,
 
 }  // namespace
 
+namespace {
+
+// After a failure (exit 4 for a full disk): the manifest of the images that
+// were finished, if the disk still takes it, and the failure rethrown with
+// what the user has and how to go on.
+[[noreturn]] void finish_after_failure(RunLedger& ledger, Manifest manifest,
+                                       std::exception_ptr failure) {
+    const size_t finished = manifest.frames.size();
+    std::string listed;
+    try {
+        listed = "; the " + std::to_string(finished) + " images finished are listed in " +
+                 ledger.finish(std::move(manifest));
+    } catch (const Error&) {
+        listed =
+            "; no manifest could be written either: the same command with --skip-existing "
+            "finds the " +
+            std::to_string(finished) + " images finished and renders the rest";
+    }
+    try {
+        std::rethrow_exception(failure);
+    } catch (const Error& e) {
+        throw Error(e.code(), e.what() + listed);
+    }
+}
+
+}  // namespace
+
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written) {
@@ -442,18 +481,25 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
                     on_written);
     size_t rendered = 0;
     auto cancelled = [&] { return options.cancel && options.cancel->load(); };
-    for (const auto& [frame, camera] : todo) {
-        if (cancelled()) break;
-        const auto start = Clock::now();
-        FrameImages images = encoder.take_spare();
-        renderer.render(frame, camera, images);
-        const double render_ms = ms_since(start);
-        const std::string& name = scene.cameras[camera].name;
-        encoder.push({frame, name, render_ms, std::move(images)});
-        ++rendered;
-        if (on_frame) on_frame({frame, rendered, todo.size(), render_ms, name, cameras.size()});
+    // A failure (an encoder's, surfaced by push, or the renderer's) stops
+    // the loop; the images finished before it are still listed.
+    std::exception_ptr failure;
+    try {
+        for (const auto& [frame, camera] : todo) {
+            if (cancelled()) break;
+            const auto start = Clock::now();
+            FrameImages images = encoder.take_spare();
+            renderer.render(frame, camera, images);
+            const double render_ms = ms_since(start);
+            const std::string& name = scene.cameras[camera].name;
+            encoder.push({frame, name, render_ms, std::move(images)});
+            ++rendered;
+            if (on_frame) on_frame({frame, rendered, todo.size(), render_ms, name, cameras.size()});
+        }
+    } catch (...) {
+        failure = std::current_exception();
     }
-    Manifest written = encoder.finish();
+    Manifest written = encoder.finish(failure);
     Manifest manifest = request.header;
     manifest.frames = std::move(written.frames);
     manifest.files = std::move(written.files);
@@ -462,6 +508,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     manifest.files.insert(manifest.files.end(), kept.files.begin(), kept.files.end());
     manifest.threads = static_cast<int>(pool.size());
     manifest.ids = pass_ids(scene, world);
+    if (failure) finish_after_failure(ledger, std::move(manifest), failure);
     result.manifest_path = ledger.finish(std::move(manifest));
     if (rendered < todo.size())
         throw Error(ExitCode::interrupted,
