@@ -16,10 +16,11 @@ using namespace facet::test;
 namespace {
 
 bool have_models() {
-    if (std::filesystem::exists(kAssimpModels + "STL/Wuson.stl")) return true;
-    WARN("skipped: " << kAssimpModels << " is missing (install assimp-testmodels)");
-    return false;
+    return std::filesystem::exists(kAssimpModels + "STL/Wuson.stl");
 }
+
+const std::string kNoModels =
+    kAssimpModels + " is missing (scripts/setup.sh --tests installs assimp-testmodels)";
 
 struct FormatCase {
     const char* file;  // under kAssimpModels
@@ -32,7 +33,7 @@ struct FormatCase {
 }  // namespace
 
 TEST_CASE("assimp reads STL, PLY, FBX, Collada and 3DS files", "[assets][assimp][real]") {
-    if (!have_models()) return;
+    if (!have_models()) FACET_SKIP(kNoModels);
     const FormatCase cases[] = {
         {"STL/Spider_binary.stl", 1312, {-3.11489f, -4, -1.64933f}, {3.11489f, 4, 1.64933f}, 0, 0},
         {"STL/Spider_ascii.stl", 1312, {-3.11489f, -4, -1.64933f}, {3.11489f, 4, 1.64933f}, 0, 0},
@@ -87,7 +88,7 @@ TEST_CASE("assimp reads STL, PLY, FBX, Collada and 3DS files", "[assets][assimp]
 }
 
 TEST_CASE("assimp's meshes wind outwards with matching normals", "[assets][assimp][real]") {
-    if (!have_models()) return;
+    if (!have_models()) FACET_SKIP(kNoModels);
     // Cubes: flat faces, normals along them.
     for (const char* file : {"PLY/cube.ply", "FBX/box.fbx", "3DS/cube_with_diffuse_texture.3DS"}) {
         INFO(file);
@@ -99,7 +100,7 @@ TEST_CASE("assimp's meshes wind outwards with matching normals", "[assets][assim
 }
 
 TEST_CASE("the same model in PLY, STL and OBJ renders the same", "[assets][assimp][real]") {
-    if (!have_models()) return;
+    if (!have_models()) FACET_SKIP(kNoModels);
     TempDir dir("assimp");
     const DepthImage obj = depth_of(dir, kAssimpModels + "OBJ/WusonOBJ.obj", "", 1);
     for (const char* file : {"PLY/Wuson.ply", "STL/Wuson.stl"}) {
@@ -111,7 +112,7 @@ TEST_CASE("the same model in PLY, STL and OBJ renders the same", "[assets][assim
 }
 
 TEST_CASE("assimp files: missing textures warn, broken files are errors", "[assets][assimp]") {
-    if (!have_models()) return;
+    if (!have_models()) FACET_SKIP(kNoModels);
     // Absolute paths of the machine that wrote the file: a warning each.
     const Mesh spider = load_mesh(kAssimpModels + "FBX/spider.fbx");
     REQUIRE(!spider.warnings.empty());

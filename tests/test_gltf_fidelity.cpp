@@ -35,9 +35,11 @@ ColorImage palette_image() {
 // The linear colour a texel of palette_image() decodes to: its 8-bit sRGB
 // value read back (the PNG holds bytes, not the floats).
 glm::vec3 palette_texel(int x, int y) {
-    const std::vector<uint8_t> png = png_bytes(palette_image());
-    const Texture t = decode_texture(png.data(), png.size(), "palette", nullptr);
-    return glm::vec3(t.texel(0, x, y));
+    static const Texture decoded = [] {
+        const std::vector<uint8_t> png = png_bytes(palette_image());
+        return decode_texture(png.data(), png.size(), "palette", nullptr);
+    }();
+    return glm::vec3(decoded.texel(0, x, y));
 }
 
 // A quad from (-1,-1) to (1,1) facing +Z, UV set 0 running (0,1) at the

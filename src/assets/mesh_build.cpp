@@ -118,6 +118,51 @@ CornersAtVertex corners_at_vertices(const std::vector<uint32_t>& indices,
     return c;
 }
 
+// The part rebuilt with one vertex per distinct (vertex, normal), numbered
+// in order of first use, found by sorting the corners rather than hashing
+// them. Returns the steps taken besides sorting.
+uint64_t split_by_normal(MeshPart& part, const std::vector<glm::vec3>& corner_normal,
+                         std::vector<uint32_t>* source_vertex) {
+    const std::vector<uint32_t>& idx = part.indices;
+    struct CornerKey {
+        uint32_t vertex, nx, ny, nz, corner;
+        auto tie() const { return std::tie(vertex, nx, ny, nz, corner); }
+    };
+    std::vector<CornerKey> keys(idx.size());
+    for (size_t c = 0; c < idx.size(); ++c)
+        keys[c] = {idx[c], float_bits(corner_normal[c].x), float_bits(corner_normal[c].y),
+                   float_bits(corner_normal[c].z), static_cast<uint32_t>(c)};
+    std::sort(keys.begin(), keys.end(),
+              [](const CornerKey& a, const CornerKey& b) { return a.tie() < b.tie(); });
+    std::vector<uint32_t> first_use(idx.size());  // per corner: the first corner like it
+    for (size_t i = 0; i < keys.size(); ++i) {
+        const bool same = i > 0 && keys[i].vertex == keys[i - 1].vertex &&
+                          keys[i].nx == keys[i - 1].nx && keys[i].ny == keys[i - 1].ny &&
+                          keys[i].nz == keys[i - 1].nz;
+        first_use[keys[i].corner] = same ? first_use[keys[i - 1].corner] : keys[i].corner;
+    }
+    MeshPart out;
+    out.material = part.material;
+    out.indices.resize(idx.size());
+    std::vector<uint32_t> new_index(idx.size());
+    if (source_vertex) source_vertex->clear();
+    for (size_t c = 0; c < idx.size(); ++c) {
+        if (first_use[c] == c) {
+            const uint32_t v = idx[c];
+            new_index[c] = static_cast<uint32_t>(out.positions.size());
+            out.positions.push_back(part.positions[v]);
+            out.normals.push_back(corner_normal[c]);
+            if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
+            if (!part.uvs1.empty()) out.uvs1.push_back(part.uvs1[v]);
+            if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
+            if (source_vertex) source_vertex->push_back(v);
+        }
+        out.indices[c] = new_index[first_use[c]];
+    }
+    part = std::move(out);
+    return 2 * static_cast<uint64_t>(corner_normal.size());
+}
+
 }  // namespace
 
 // Smooth groups round each vertex, as modelling tools define them: two
@@ -191,47 +236,8 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
         steps += count + edges.size();
     }
 
-    // One output vertex per distinct (vertex, normal), numbered in order of
-    // first use, found by sorting the corners rather than hashing them.
-    struct CornerKey {
-        uint32_t vertex, nx, ny, nz, corner;
-        auto tie() const { return std::tie(vertex, nx, ny, nz, corner); }
-    };
-    std::vector<CornerKey> keys(idx.size());
-    for (size_t c = 0; c < idx.size(); ++c)
-        keys[c] = {idx[c], float_bits(corner_normal[c].x), float_bits(corner_normal[c].y),
-                   float_bits(corner_normal[c].z), static_cast<uint32_t>(c)};
-    std::sort(keys.begin(), keys.end(),
-              [](const CornerKey& a, const CornerKey& b) { return a.tie() < b.tie(); });
-    std::vector<uint32_t> first_use(idx.size());  // per corner: the first corner like it
-    for (size_t i = 0; i < keys.size(); ++i) {
-        const bool same = i > 0 && keys[i].vertex == keys[i - 1].vertex &&
-                          keys[i].nx == keys[i - 1].nx && keys[i].ny == keys[i - 1].ny &&
-                          keys[i].nz == keys[i - 1].nz;
-        first_use[keys[i].corner] = same ? first_use[keys[i - 1].corner] : keys[i].corner;
-    }
-    steps += idx.size();
-    MeshPart out;
-    out.material = part.material;
-    out.indices.resize(idx.size());
-    std::vector<uint32_t> new_index(idx.size());
-    if (source_vertex) source_vertex->clear();
-    for (size_t c = 0; c < idx.size(); ++c) {
-        if (first_use[c] == c) {
-            const uint32_t v = idx[c];
-            new_index[c] = static_cast<uint32_t>(out.positions.size());
-            out.positions.push_back(part.positions[v]);
-            out.normals.push_back(corner_normal[c]);
-            if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
-            if (!part.uvs1.empty()) out.uvs1.push_back(part.uvs1[v]);
-            if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
-            if (source_vertex) source_vertex->push_back(v);
-        }
-        out.indices[c] = new_index[first_use[c]];
-    }
-    steps += idx.size();
+    steps += split_by_normal(part, corner_normal, source_vertex);
     if (work) *work += steps;
-    part = std::move(out);
 }
 
 void validate_part(const MeshPart& part, const std::string& source) {

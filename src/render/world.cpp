@@ -179,15 +179,110 @@ double animation_clock(const AnimatedMesh& mesh, double seconds) {
     return seconds;
 }
 
+namespace {
+
+// Appends a per-vertex stream that only some draws have: `values` for this
+// draw's vertices, or `fill` for draws without it. The stream stays empty
+// until a draw has it, then is filled back to the first vertex.
+template <typename T>
+void append_optional(std::vector<T>& stream, const std::vector<T>& values, size_t first_vertex,
+                     size_t vertex_count, T fill) {
+    if (values.empty()) {
+        if (!stream.empty()) stream.resize(first_vertex + vertex_count, fill);
+        return;
+    }
+    stream.resize(first_vertex, fill);
+    stream.insert(stream.end(), values.begin(), values.end());
+}
+
+// Which per-triangle extras some style needs.
+struct WorldExtras {
+    bool wireframes = false;  // feature edges cost a pass over every edge
+    bool hatching = false;
+};
+
+WorldExtras extras_of(const SceneDesc& scene) {
+    WorldExtras x{scene.style.wireframe.enabled, scene.style.hatching.has_value()};
+    for (const ObjectDesc& obj : scene.objects) {
+        x.wireframes = x.wireframes || (obj.style && obj.style->wireframe.enabled);
+        x.hatching = x.hatching || (obj.style && obj.style->hatching);
+    }
+    return x;
+}
+
+// One part of object `object` as a draw: its vertices, indices and extras
+// appended to the world's arrays.
+void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t material_base,
+                 const WorldExtras& extras) {
+    Draw d;
+    d.object = object;
+    d.first_vertex = static_cast<uint32_t>(world.positions.size());
+    d.vertex_count = static_cast<uint32_t>(part.positions.size());
+    d.first_triangle = static_cast<uint32_t>(world.triangle_draw.size());
+    d.triangle_count = static_cast<uint32_t>(part.triangle_count());
+    d.material = material_base + part.material;
+    d.has_uvs = !part.uvs.empty() || !part.uvs1.empty();
+    d.has_colors = !part.colors.empty();
+    const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
+    world.positions.insert(world.positions.end(), part.positions.begin(), part.positions.end());
+    world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
+    if (part.uvs.empty())
+        world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
+    else
+        world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
+    append_optional(world.uvs1, part.uvs1, d.first_vertex, d.vertex_count, glm::vec2(0));
+    append_optional(world.colors, part.colors, d.first_vertex, d.vertex_count, glm::vec3(1));
+    world.vertex_draw.resize(world.positions.size(), draw_index);
+    for (uint32_t i : part.indices) world.indices.push_back(d.first_vertex + i);
+    world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);
+    world.cull_back.resize(world.cull_back.size() + d.triangle_count,
+                           world.materials[d.material].double_sided ? 0 : 1);
+    if (extras.wireframes) append_edge_adjacency(part, d.first_triangle, world);
+    if (extras.hatching) {
+        const std::vector<glm::vec3> directions = principal_directions(part);
+        world.hatch_directions.insert(world.hatch_directions.end(), directions.begin(),
+                                      directions.end());
+    }
+    world.draws.push_back(d);
+}
+
+// The mesh object `o` shows: its file (loaded once per path, its warnings
+// kept), its cloth's rest pose, or its primitive. Errors point at its key.
+std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
+                                        const AssetContext& assets,
+                                        std::map<std::string, std::shared_ptr<const Mesh>>& meshes,
+                                        World& world) {
+    const ObjectDesc& obj = scene.objects[o];
+    const std::string key = "objects." + std::to_string(o);
+    try {
+        if (!obj.mesh.empty()) {
+            auto& slot = meshes[obj.mesh];
+            if (!slot) {
+                slot = std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
+                world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
+                                      slot->warnings.end());
+            }
+            return slot;
+        }
+        if (obj.cloth) {
+            std::shared_ptr<const ClothModel> model = build_scene_cloth(obj, scene.output);
+            if (obj.visible)
+                world.cloths.push_back({o, static_cast<uint32_t>(world.draws.size()), model});
+            return std::make_shared<Mesh>(cloth_mesh(*model));
+        }
+        return std::make_shared<Mesh>(make_primitive(obj.primitive->spec));
+    } catch (const Error& e) {
+        if (!obj.mesh.empty()) fail_input(obj.mesh_at, key + ".mesh", e.what());
+        if (obj.cloth) fail_input(obj.cloth->where, key + ".cloth", e.what());
+        fail_input(obj.primitive->where, key + ".primitive", e.what());
+    }
+}
+
+}  // namespace
+
 World build_world(const SceneDesc& scene) {
     World world;
-    // Feature edges cost a pass over every edge; only wireframes need them.
-    bool wireframes = scene.style.wireframe.enabled;
-    bool hatching = scene.style.hatching.has_value();
-    for (const ObjectDesc& obj : scene.objects) {
-        wireframes = wireframes || (obj.style && obj.style->wireframe.enabled);
-        hatching = hatching || (obj.style && obj.style->hatching);
-    }
+    const WorldExtras extras = extras_of(scene);
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
@@ -197,36 +292,7 @@ World build_world(const SceneDesc& scene) {
     assets.textures = &texture_budget;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
-        std::shared_ptr<const Mesh> mesh;
-        if (!obj.mesh.empty()) {
-            auto& slot = meshes[obj.mesh];
-            if (!slot) {
-                try {
-                    slot = std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
-                } catch (const Error& e) {
-                    fail_input(obj.mesh_at, "objects." + std::to_string(o) + ".mesh", e.what());
-                }
-                world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
-                                      slot->warnings.end());
-            }
-            mesh = slot;
-        } else if (obj.cloth) {
-            try {
-                std::shared_ptr<const ClothModel> model = build_scene_cloth(obj, scene.output);
-                mesh = std::make_shared<Mesh>(cloth_mesh(*model));
-                if (obj.visible)
-                    world.cloths.push_back({o, static_cast<uint32_t>(world.draws.size()), model});
-            } catch (const Error& e) {
-                fail_input(obj.cloth->where, "objects." + std::to_string(o) + ".cloth", e.what());
-            }
-        } else {
-            try {
-                mesh = std::make_shared<Mesh>(make_primitive(obj.primitive->spec));
-            } catch (const Error& e) {
-                fail_input(obj.primitive->where, "objects." + std::to_string(o) + ".primitive",
-                           e.what());
-            }
-        }
+        const std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, world);
         world.object_bounds.push_back(mesh->bounds());
         if (obj.file_lights)
             for (const GltfLight& light : mesh->lights)
@@ -240,7 +306,6 @@ World build_world(const SceneDesc& scene) {
             world.materials.push_back(resolve_material(m, obj.material, textures, texture_budget));
             world.material_object.push_back(o);
         }
-
         if (obj.animation) {
             const std::string key = "objects." + std::to_string(o) + ".animation";
             try {
@@ -252,52 +317,7 @@ World build_world(const SceneDesc& scene) {
                 fail_input(obj.animation->where, key, e.what());
             }
         }
-        for (const MeshPart& part : mesh->parts) {
-            Draw d;
-            d.object = o;
-            d.first_vertex = static_cast<uint32_t>(world.positions.size());
-            d.vertex_count = static_cast<uint32_t>(part.positions.size());
-            d.first_triangle = static_cast<uint32_t>(world.triangle_draw.size());
-            d.triangle_count = static_cast<uint32_t>(part.triangle_count());
-            d.material = material_base + part.material;
-            d.has_uvs = !part.uvs.empty() || !part.uvs1.empty();
-            d.has_colors = !part.colors.empty();
-            const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
-            world.positions.insert(world.positions.end(), part.positions.begin(),
-                                   part.positions.end());
-            world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
-            if (part.uvs.empty())
-                world.uvs.resize(world.uvs.size() + part.positions.size(), glm::vec2(0));
-            else
-                world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
-            if (!part.uvs1.empty() && world.uvs1.empty())
-                world.uvs1.resize(d.first_vertex, glm::vec2(0));
-            if (!part.uvs1.empty())
-                world.uvs1.insert(world.uvs1.end(), part.uvs1.begin(), part.uvs1.end());
-            else if (!world.uvs1.empty())
-                world.uvs1.resize(world.positions.size(), glm::vec2(0));
-            if (d.has_colors && world.colors.empty())
-                world.colors.resize(d.first_vertex, glm::vec3(1));
-            if (d.has_colors)
-                world.colors.insert(world.colors.end(), part.colors.begin(), part.colors.end());
-            else if (!world.colors.empty())
-                world.colors.resize(world.positions.size(), glm::vec3(1));
-            world.vertex_draw.resize(world.positions.size(), draw_index);
-            for (uint32_t i : part.indices) world.indices.push_back(d.first_vertex + i);
-            world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);
-            world.cull_back.resize(world.cull_back.size() + d.triangle_count,
-                                   world.materials[d.material].double_sided ? 0 : 1);
-            if (wireframes)
-                append_edge_adjacency(
-                    part, static_cast<uint32_t>(world.triangle_draw.size() - d.triangle_count),
-                    world);
-            if (hatching) {
-                const std::vector<glm::vec3> directions = principal_directions(part);
-                world.hatch_directions.insert(world.hatch_directions.end(), directions.begin(),
-                                              directions.end());
-            }
-            world.draws.push_back(d);
-        }
+        for (const MeshPart& part : mesh->parts) append_part(world, part, o, material_base, extras);
     }
     world.file_cameras = load_file_cameras(scene, assets, world.warnings);
     if (world.positions.size() >= 0xffffffffu)
