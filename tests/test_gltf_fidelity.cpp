@@ -728,3 +728,22 @@ TEST_CASE("KHR_lights_punctual: lux and candela are lit as the Lambertian 1/pi s
     CHECK(file_sun.r > 0.1f);
     CHECK(file_sun.r == Approx(scene_sun.r).epsilon(1e-3));
 }
+
+TEST_CASE("every material that reads a lost texture says so", "[gltf][texture]") {
+    TempDir dir("gltf-shared-lost");
+    Gltf g;
+    g.doc["images"] = {{{"uri", "gone.png"}}};
+    g.doc["textures"] = {{{"source", 0}}};
+    quad_mesh(
+        g, {{"name", "First"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    g.doc["materials"].push_back(
+        {{"name", "Second"}, {"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    const Mesh mesh = load_gltf(g.write(dir.file("shared.gltf")));
+    std::string all;
+    for (const Warning& w : mesh.warnings) all += w.describe() + "\n";
+    INFO(all);
+    for (const char* material : {"'First'", "'Second'"})
+        CHECK_THAT(
+            all, Contains(std::string("material ") + material + " baseColorTexture: 'gone.png'") &&
+                     Contains("no such file; drawn without it"));
+}

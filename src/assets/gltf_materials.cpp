@@ -73,17 +73,11 @@ int extension_source(const tinygltf::Texture& t, const char* extension) {
 // A texture's images in the order facet tries them: the formats the
 // extensions add first (what a reader that has them is meant to show),
 // then the core PNG/JPEG `source`, their fallback.
-struct ImageChoice {
-    int image;
-    const char* via;  // the extension, or "source"
-};
-
-std::vector<ImageChoice> image_choices(const tinygltf::Texture& t) {
-    std::vector<ImageChoice> choices;
+std::vector<int> image_choices(const tinygltf::Texture& t) {
+    std::vector<int> choices;
     for (const char* extension : {"EXT_texture_avif", "EXT_texture_webp"})
-        if (const int image = extension_source(t, extension); image >= 0)
-            choices.push_back({image, extension});
-    if (t.source >= 0) choices.push_back({t.source, "source"});
+        if (const int image = extension_source(t, extension); image >= 0) choices.push_back(image);
+    if (t.source >= 0) choices.push_back(t.source);
     return choices;
 }
 
@@ -95,8 +89,14 @@ class TextureCache {
                  TextureBudget* budget)
         : model_(model), path_(path), unread_(unread), budget_(budget) {}
 
-    // The texture, or null with `lost` saying why.
-    std::shared_ptr<const Texture> texture(int index, std::string& lost, std::string& fell_back);
+    // A texture as read: null with `lost` saying why, or drawn, `lost`
+    // then saying why its preferred image gave way to a fallback (empty
+    // when none did). Kept, so every material that reads it is told.
+    struct Read {
+        std::shared_ptr<const Texture> texture;
+        std::string lost;
+    };
+    const Read& texture(int index);
 
   private:
     std::shared_ptr<const Texture> image(int index, std::string& lost);
@@ -105,7 +105,8 @@ class TextureCache {
     const std::string& path_;
     const UnreadImages& unread_;
     TextureBudget* budget_;
-    std::map<int, std::shared_ptr<const Texture>> images_, textures_;
+    std::map<int, std::shared_ptr<const Texture>> images_;
+    std::map<int, Read> textures_;
     std::map<int, std::string> image_errors_;
 };
 
@@ -139,36 +140,31 @@ std::shared_ptr<const Texture> TextureCache::image(int index, std::string& lost)
     }
 }
 
-std::shared_ptr<const Texture> TextureCache::texture(int index, std::string& lost,
-                                                     std::string& fell_back) {
+const TextureCache::Read& TextureCache::texture(int index) {
     if (index < 0 || static_cast<size_t>(index) >= model_.textures.size())
         bad(path_, "material refers to missing texture " + std::to_string(index));
     if (const auto it = textures_.find(index); it != textures_.end()) return it->second;
     const tinygltf::Texture& t = model_.textures[static_cast<size_t>(index)];
-    const std::vector<ImageChoice> choices = image_choices(t);
+    const std::vector<int> choices = image_choices(t);
+    Read read;
     std::shared_ptr<const Texture> decoded;
-    for (const ImageChoice& choice : choices) {
+    for (const int choice : choices) {
         std::string why;
-        decoded = image(choice.image, why);
+        decoded = image(choice, why);
         if (decoded) break;
-        if (!lost.empty()) lost += "; ";
-        lost += why;
-        fell_back = choice.via;
+        read.lost += (read.lost.empty() ? "" : "; ") + why;
     }
-    if (decoded && fell_back.empty()) lost.clear();
     if (choices.empty())
-        lost = t.extensions.count("KHR_texture_basisu")
-                   ? "KTX2 (KHR_texture_basisu) is not supported, and the texture has no "
-                     "PNG/JPEG fallback"
-                   : "the texture has no image";
-    std::shared_ptr<const Texture> out;
+        read.lost = t.extensions.count("KHR_texture_basisu")
+                        ? "KTX2 (KHR_texture_basisu) is not supported, and the texture has no "
+                          "PNG/JPEG fallback"
+                        : "the texture has no image";
     if (decoded) {
         auto copy = std::make_shared<Texture>(*decoded);  // shares the levels
         copy->sampler = sampler_of(model_, t.sampler, path_);
-        out = copy;
+        read.texture = copy;
     }
-    textures_[index] = out;
-    return out;
+    return textures_[index] = read;
 }
 
 // The slot a textureInfo fills: its texture, set and transform. A lost
@@ -180,15 +176,15 @@ TextureSlot slot_of(const tinygltf::TextureInfo& info, TextureCache& cache, cons
     TextureSlot slot;
     if (info.index < 0) return slot;
     const UvMapping mapping = texture_mapping(info, path, what);
-    std::string lost, fell_back;
-    slot.texture = cache.texture(info.index, lost, fell_back);
+    const TextureCache::Read& read = cache.texture(info.index);
+    slot.texture = read.texture;
     if (!slot.texture) {
-        warnings.push_back(file_warning(path, what + ": " + lost + "; " + without));
+        warnings.push_back(file_warning(path, what + ": " + read.lost + "; " + without));
         return slot;
     }
-    if (!lost.empty())
+    if (!read.lost.empty())
         warnings.push_back(
-            file_warning(path, what + ": " + lost + "; its fallback image is drawn instead"));
+            file_warning(path, what + ": " + read.lost + "; its fallback image is drawn instead"));
     slot.transform = mapping.transform;
     slot.uv_set = mapping.tex_coord;
     if (slot.uv_set > 1) {

@@ -141,7 +141,8 @@ Texture decode_webp(const uint8_t* bytes, size_t size, const std::string& name,
     if (features.has_animation) undecodable(name, "animated WebP images are not supported");
     const Size header{features.width, features.height};
     BudgetCharge texture = admit(name, header, 8, budget);
-    const BudgetCharge decoding = while_decoding(name, header, pixels_of(header) * 4 + size, budget);
+    const BudgetCharge decoding =
+        while_decoding(name, header, pixels_of(header) * 4 + size, budget);
     const int channels = features.has_alpha ? 4 : 3;
     int w = 0, h = 0;
     uint8_t* data = features.has_alpha ? WebPDecodeRGBA(bytes, size, &w, &h)
@@ -193,8 +194,8 @@ Texture decode_avif(const uint8_t* bytes, size_t size, const std::string& name,
     for (uint32_t y = 0; y < rgb.height; ++y)
         std::memcpy(packed.data() + y * row, rgb.pixels + static_cast<size_t>(y) * rgb.rowBytes,
                     row);
-    Texture decoded = texture_from_pixels(static_cast<int>(rgb.width),
-                                          static_cast<int>(rgb.height), 4, bits, packed.data());
+    Texture decoded = texture_from_pixels(static_cast<int>(rgb.width), static_cast<int>(rgb.height),
+                                          4, bits, packed.data());
     texture.keep();
     return decoded;
 }
@@ -229,7 +230,7 @@ std::string image_format_name(ImageFormat format) {
         case ImageFormat::ktx2:
             return "KTX2";
         case ImageFormat::other:
-            return "stb_image";
+            return "image";
         case ImageFormat::unknown:
             break;
     }
