@@ -747,3 +747,32 @@ TEST_CASE("every material that reads a lost texture says so", "[gltf][texture]")
             all, Contains(std::string("material ") + material + " baseColorTexture: 'gone.png'") &&
                      Contains("no such file; drawn without it"));
 }
+
+TEST_CASE("what a glTF file holds that facet does not draw is named in a warning", "[gltf]") {
+    TempDir dir("gltf-unread");
+    auto warnings_of = [&](Gltf& g) {
+        std::string all;
+        for (const Warning& w : load_gltf(g.write(dir.file("unread.gltf"))).warnings)
+            all += w.describe() + "\n";
+        return all;
+    };
+    // Vertex colours with alpha below 1.
+    Gltf colours;
+    colours.one_node_scene(
+        {{"attributes",
+          {{"POSITION", colours.floats(kTriangle, "VEC3")},
+           {"COLOR_0", colours.floats({1, 0, 0, 0.5f, 0, 1, 0, 1, 0, 0, 1, 1}, "VEC4")}}}});
+    CHECK_THAT(warnings_of(colours), Contains("COLOR_0's alpha is not read"));
+    // Opaque ones say nothing.
+    Gltf opaque;
+    opaque.one_node_scene(
+        {{"attributes",
+          {{"POSITION", opaque.floats(kTriangle, "VEC3")},
+           {"COLOR_0", opaque.floats({1, 0, 0, 1, 0, 1, 0, 1, 0, 0, 1, 1}, "VEC4")}}}});
+    CHECK(warnings_of(opaque).empty());
+    // A second scene.
+    Gltf scenes;
+    scenes.one_node_scene({{"attributes", {{"POSITION", scenes.floats(kTriangle, "VEC3")}}}});
+    scenes.doc["scenes"].push_back({{"nodes", json::array({0})}});
+    CHECK_THAT(warnings_of(scenes), Contains("has 2 scenes: scene 0 (the default) is drawn"));
+}

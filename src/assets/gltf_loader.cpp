@@ -484,7 +484,8 @@ void NodeWalk::visit(int node_index, const glm::dmat4& parent, int depth) {
 // names none), or with no scene every node that is nobody's child. glTF
 // §3.5.3: nodes form strict trees; a node with several parents would be
 // walked once per path to it, so a few dozen shared levels never finish.
-std::vector<int> root_nodes(const tinygltf::Model& model, const std::string& path) {
+std::vector<int> root_nodes(const tinygltf::Model& model, const std::string& path,
+                            Warnings& warnings) {
     std::vector<int> parents(model.nodes.size(), 0);
     for (const auto& n : model.nodes)
         for (int c : n.children)
@@ -493,7 +494,12 @@ std::vector<int> root_nodes(const tinygltf::Model& model, const std::string& pat
     if (!model.scenes.empty()) {
         const bool valid = model.defaultScene >= 0 &&
                            static_cast<size_t>(model.defaultScene) < model.scenes.size();
-        return model.scenes[valid ? static_cast<size_t>(model.defaultScene) : 0].nodes;
+        const size_t shown = valid ? static_cast<size_t>(model.defaultScene) : 0;
+        if (model.scenes.size() > 1)
+            warnings.push_back(file_warning(
+                path, "has " + std::to_string(model.scenes.size()) + " scenes: scene " +
+                          std::to_string(shown) + " (the default) is drawn, the others are not"));
+        return model.scenes[shown].nodes;
     }
     std::vector<int> roots;
     for (size_t i = 0; i < model.nodes.size(); ++i)
@@ -547,7 +553,7 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     mesh.materials =
         gltf_detail::read_materials(model, path, read.unread, context.textures, mesh.warnings);
     NodeWalk walk(model, path, mesh, rig.get());
-    for (int root : root_nodes(model, path)) walk.visit(root, glm::dmat4(1.0), 0);
+    for (int root : root_nodes(model, path, mesh.warnings)) walk.visit(root, glm::dmat4(1.0), 0);
     if (walk.used_default_material()) {
         Material fallback;
         fallback.name = "default";

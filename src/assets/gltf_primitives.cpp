@@ -59,9 +59,11 @@ std::vector<glm::vec2> read_uvs(const tinygltf::Model& model, const tinygltf::Pr
 }
 
 // COLOR_0 (glTF §3.7.2.1): linear RGB or RGBA, floats or normalised
-// integers. The alpha is read past: facet's surfaces are opaque.
+// integers. The alpha is read past (facet's vertex colours are opaque),
+// with a warning where it is not 1.
 std::vector<glm::vec3> read_vertex_colors(const tinygltf::Model& model, int accessor, size_t count,
-                                          const std::string& path, const std::string& what) {
+                                          const std::string& path, const std::string& what,
+                                          Warnings& warnings) {
     const tinygltf::Accessor& a = accessor_at(model, accessor, path, what + " COLOR_0");
     if (a.type != TINYGLTF_TYPE_VEC3 && a.type != TINYGLTF_TYPE_VEC4)
         bad(path, what + ": COLOR_0 must be VEC3 or VEC4");
@@ -71,10 +73,15 @@ std::vector<glm::vec3> read_vertex_colors(const tinygltf::Model& model, int acce
     if (values.size() / static_cast<size_t>(components) != count)
         bad(path, what + ": COLOR_0 count differs from POSITION count");
     std::vector<glm::vec3> colors(count);
+    bool translucent = false;
     for (size_t i = 0; i < count; ++i) {
         const float* c = &values[i * static_cast<size_t>(components)];
         colors[i] = glm::clamp(glm::vec3(c[0], c[1], c[2]), glm::vec3(0), glm::vec3(1));
+        translucent = translucent || (components == 4 && c[3] < 1.0f);
     }
+    if (translucent)
+        warnings.push_back(file_warning(
+            path, what + ": COLOR_0's alpha is not read: the vertex colours are drawn opaque"));
     return colors;
 }
 
@@ -141,7 +148,7 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
     p.uvs = read_uvs(model, prim, 0, count, path, what);
     p.uvs1 = read_uvs(model, prim, 1, count, path, what);
     if (const auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end())
-        p.colors = read_vertex_colors(model, it->second, count, path, what);
+        p.colors = read_vertex_colors(model, it->second, count, path, what, warnings);
     p.material = default_material;
     if (prim.material >= 0) {
         if (static_cast<size_t>(prim.material) >= model.materials.size())
