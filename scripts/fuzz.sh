@@ -5,7 +5,9 @@
 #   scripts/fuzz.sh                    each harness for 60 s
 #   scripts/fuzz.sh --seconds 600 obj  one harness, longer
 #
-# Harnesses: scene (scene and style loader), obj, gltf, texture. Seeds: the
+# Harnesses: scene (scene and style loader), obj, gltf, texture, manifest
+# (the manifest and run-journal reader), override (-D values applied to a
+# scene). Seeds: the
 # checked-in corpus tests/fuzz/corpus/TARGET, the regression inputs, and
 # scenes/, styles/ and assimp's test models. New finds go to
 # build-sanitize/corpus/TARGET and stay there: the checked-in corpus is the
@@ -21,11 +23,11 @@ targets=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --seconds) seconds="${2:?--seconds needs a number}"; shift 2 ;;
-        scene|obj|gltf|texture) targets+=("$1"); shift ;;
-        *) echo "fuzz.sh: unknown argument '$1' (harnesses: scene obj gltf texture)" >&2; exit 2 ;;
+        scene|obj|gltf|texture|manifest|override) targets+=("$1"); shift ;;
+        *) echo "fuzz.sh: unknown argument '$1' (harnesses: scene obj gltf texture manifest override)" >&2; exit 2 ;;
     esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture manifest override)
 case "$seconds" in ''|*[!0-9]*) echo "fuzz.sh: --seconds needs a whole number" >&2; exit 2 ;; esac
 
 # The sanitizer build (scripts/setup.sh --sanitize) has the harnesses.
@@ -39,10 +41,16 @@ seeds_for() {
         obj) echo "$models/OBJ" ;;
         gltf) echo "$models/glTF2 $models/glTF $root/tests/assets" ;;
         texture) echo "$models/OBJ $models/glTF2/BoxTextured-glTF" ;;
+        manifest|override) ;;
     esac
 }
 
-export ASAN_OPTIONS=detect_leaks=1
+# A freed block waits in AddressSanitizer's quarantine so that a late use
+# of it is caught. The default quarantine (256 MB) and an allocator that
+# keeps freed pages made the harnesses' RSS climb towards the RSS limit
+# over a long run (docs/hardening.md): a 16 MB quarantine still catches a
+# use soon after the free, and freed pages go back to the system.
+export ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=16:thread_local_quarantine_size_kb=256:allocator_release_to_os_interval_ms=500
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 status=0
 for t in "${targets[@]}"; do

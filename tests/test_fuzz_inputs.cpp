@@ -8,6 +8,9 @@
 #include <iterator>
 
 #include "fuzz/fuzz_targets.hpp"
+#include "output/manifest.hpp"
+#include "output/manifest_journal.hpp"
+#include "scene/scene_desc.hpp"
 #include "support.hpp"
 
 namespace {
@@ -34,16 +37,57 @@ size_t replay(const std::string& kind, const std::string& target) {
 }  // namespace
 
 TEST_CASE("fuzz regression inputs load or are refused cleanly", "[fuzz]") {
-    for (const char* target : {"scene", "obj", "gltf", "texture"}) {
+    for (const char* target : {"scene", "obj", "gltf", "texture", "manifest"}) {
         INFO(target);
         CHECK(replay("regressions", target) > 0);
     }
 }
 
 TEST_CASE("the checked-in fuzz corpora load or are refused cleanly", "[fuzz]") {
-    for (const char* target : {"scene", "obj", "gltf", "texture"}) {
+    for (const char* target : {"scene", "obj", "gltf", "texture", "manifest", "override"}) {
         INFO(target);
         CHECK(replay("corpus", target) > 0);
+    }
+}
+
+// Seeds a reader refuses would start the fuzzer from the error paths only.
+TEST_CASE("the manifest and -D seeds are inputs facet accepts", "[fuzz]") {
+    const fs::path corpus = fs::path(FACET_SOURCE_DIR) / "tests/fuzz/corpus";
+    const facet::Manifest whole =
+        facet::read_manifest((corpus / "manifest/two-frames.json").string());
+    CHECK(whole.frames.size() == 2);
+    CHECK(whole.files.size() == 8);
+    const facet::Manifest journal =
+        facet::read_journal((corpus / "manifest/journal.json").string());
+    CHECK(journal.frames.size() == 2);
+    CHECK(journal.files.size() == 8);
+    CHECK(facet::manifest_settings_difference(whole, journal).empty());
+    for (const auto& entry : fs::directory_iterator(corpus / "override")) {
+        INFO(entry.path().string());
+        std::ifstream in(entry.path());
+        facet::SceneOptions options;
+        options.style_dirs = {FACET_STYLES_DIR};
+        for (std::string line; std::getline(in, line);)
+            options.overrides.push_back(facet::parse_define(line));
+        CHECK(options.overrides.size() >= 2);
+        CHECK_NOTHROW(facet::load_scene(FACET_OVERRIDE_SCENE, options));
+    }
+}
+
+TEST_CASE("a manifest number out of its field's range is refused, naming the field", "[fuzz]") {
+    const fs::path found =
+        fs::path(FACET_SOURCE_DIR) / "tests/fuzz/regressions/manifest/float-frame-1e62.json";
+    facet::test::require_input_error([&] { facet::read_manifest(found.string()); },
+                                     "'frame' must be a whole number in range");
+    facet::test::TempDir dir("manifest-range");
+    for (const char* size : {"[64.5, 48]", "[3000000000, 48]", "[-1e400, 1]"}) {
+        INFO(size);
+        std::string text = facet::test::read_file(
+            (fs::path(FACET_SOURCE_DIR) / "tests/fuzz/corpus/manifest/two-frames.json").string());
+        const size_t at = text.find("\"size\": [");
+        text.replace(at, text.find(']', at) - at + 1, std::string("\"size\": ") + size);
+        const std::string path = facet::test::write_text(dir.file("m.json"), text);
+        CHECK_THROWS_AS(facet::read_manifest(path), facet::Error);
     }
 }
 

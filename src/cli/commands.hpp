@@ -16,7 +16,4 @@ std::vector<std::string> default_style_dirs();
 // "1280x720" -> {1280, 720}; throws facet::Error (invalid_input) otherwise.
 std::pair<int, int> parse_size(const std::string& text, const std::string& option);
 
-// "key.path=value" -> Override; throws facet::Error (invalid_input) otherwise.
-Override parse_define(const std::string& text);
-
 }  // namespace facet

@@ -3,10 +3,12 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
 #include <tuple>
+#include <utility>
 
 #include <nlohmann/json.hpp>
 
@@ -26,13 +28,38 @@ using Json = nlohmann::ordered_json;
 // identical frames and files.
 constexpr int kManifestVersion = 2;
 
+// A whole number that fits Int: nlohmann's get<int> of 1e62, or of an
+// integer past int's range, is undefined or wraps, and a hand-edited or
+// damaged manifest may hold either.
+template <typename Int>
+Int whole(const nlohmann::json& v, const char* key) {
+    if (v.is_number_unsigned()) {
+        if (v.get<uint64_t>() <= static_cast<uint64_t>(std::numeric_limits<Int>::max()))
+            return static_cast<Int>(v.get<uint64_t>());
+    } else if (v.is_number_integer()) {
+        const int64_t i = v.get<int64_t>();
+        if (std::cmp_greater_equal(i, std::numeric_limits<Int>::min()) &&
+            std::cmp_less_equal(i, std::numeric_limits<Int>::max()))
+            return static_cast<Int>(i);
+    }
+    throw nlohmann::json::other_error::create(
+        501, std::string("'") + key + "' must be a whole number in range, not " + v.dump(),
+        nullptr);
+}
+
+template <typename Int>
+Int whole_or(const nlohmann::json& object, const char* key, Int fallback) {
+    const auto it = object.find(key);
+    return it == object.end() ? fallback : whole<Int>(*it, key);
+}
+
 void read_timings(const nlohmann::json& t, Manifest& m) {
-    m.threads = t.value("threads", 0);
+    m.threads = whole_or(t, "threads", 0);
     m.host = t.value("host", "");
     m.command_line = t.value("command_line", std::vector<std::string>{});
     std::map<std::pair<std::string, int>, const nlohmann::json*> timings;
     for (const auto& entry : t.at("frames"))
-        timings[{entry.value("camera", ""), entry.at("frame").get<int>()}] = &entry;
+        timings[{entry.value("camera", ""), whole<int>(entry.at("frame"), "frame")}] = &entry;
     for (ManifestFrame& f : m.frames)
         if (auto it = timings.find({f.camera, f.frame}); it != timings.end()) {
             f.render_ms = it->second->value("render_ms", 0.0);
@@ -41,7 +68,7 @@ void read_timings(const nlohmann::json& t, Manifest& m) {
         }
     for (const auto& p : t.value("parts", nlohmann::json::array()))
         m.parts.push_back({p.at("name").get<std::string>(), p.value("host", ""),
-                           p.value("commit", ""), p.value("threads", 0),
+                           p.value("commit", ""), whole_or(p, "threads", 0),
                            p.value("command_line", std::vector<std::string>{})});
 }
 
@@ -60,8 +87,8 @@ void read_job(const nlohmann::json& j, Manifest& m) {
                             j["job"].at("cameras").get<std::vector<std::string>>()};
     if (j.contains("part")) {
         const auto& p = j["part"];
-        m.part = ManifestPart{frames_field(p, "frames"), p.value("chunk_index", -1),
-                              p.value("chunk_count", 0)};
+        m.part = ManifestPart{frames_field(p, "frames"), whole_or(p, "chunk_index", -1),
+                              whole_or(p, "chunk_count", 0)};
     }
 }
 
@@ -153,8 +180,8 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         }
         m.scene = j.at("scene").get<std::string>();
         m.style = j.at("style").get<std::string>();
-        m.width = j.at("size").at(0).get<int>();
-        m.height = j.at("size").at(1).get<int>();
+        m.width = whole<int>(j.at("size").at(0), "size");
+        m.height = whole<int>(j.at("size").at(1), "size");
         m.output_template = j.value("output_template", "");
         m.scene_sha256 = j.value("scene_sha256", "");
         m.fps = j.value("fps", 24.0);
@@ -168,13 +195,13 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         entry = "frames";
         for (const auto& f : j.at("frames")) {
             entry = "frames[" + std::to_string(m.frames.size()) + "]";
-            m.frames.push_back({f.at("frame").get<int>(), f.value("camera", ""),
+            m.frames.push_back({whole<int>(f.at("frame"), "frame"), f.value("camera", ""),
                                 f.value("render_ms", 0.0), f.value("encode_ms", 0.0), ""});
         }
         entry = "files";
         for (const auto& f : j.at("files")) {
             entry = "files[" + std::to_string(m.files.size()) + "]";
-            m.files.push_back({f.at("frame").get<int>(), f.value("camera", ""),
+            m.files.push_back({whole<int>(f.at("frame"), "frame"), f.value("camera", ""),
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
                                f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
                                f.value("style", m.style)});
@@ -183,10 +210,10 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         for (const char* pass : {"object_id", "material_id"})
             for (const auto& id :
                  j.value("ids", nlohmann::json::object()).value(pass, nlohmann::json::array()))
-                m.ids.push_back({pass, id.at("id").get<uint32_t>(),
+                m.ids.push_back({pass, whole<uint32_t>(id.at("id"), "id"),
                                  id.at("name").get<std::string>(), id.value("object", "")});
         entry = "";
-        m.threads = j.value("threads", 0);
+        m.threads = whole_or(j, "threads", 0);
         entry = "job or part";
         read_job(j, m);
         entry = "timings";

@@ -262,6 +262,18 @@ struct Override {
     std::string origin;  // how the user wrote it, for error messages
 };
 
+// `text` as a double-quoted YAML scalar that reads back as exactly `text`
+// (quotes, backslashes and control characters escaped by yaml-cpp's
+// emitter): every piece of YAML facet writes from a user's words (-D values
+// from the command line and the preview panel, job templates) goes
+// through it.
+std::string yaml_quoted(const std::string& text);
+
+// One `-D` as the user typed it, "key.path=value" (split at the first '='),
+// -> Override; throws facet::Error (invalid_input) without a key or a '='.
+// The value is checked when the override is applied to a scene.
+Override parse_define(const std::string& text);
+
 struct SceneOptions {
     std::vector<Override> overrides;
     // Folders searched for style presets by name, in order.

@@ -320,6 +320,20 @@ long list_item_index(const YAML::Node& list, const std::string& part, const Sour
 
 }  // namespace
 
+std::string yaml_quoted(const std::string& text) {
+    YAML::Emitter out;
+    out << YAML::DoubleQuoted << text;
+    return out.c_str();
+}
+
+Override parse_define(const std::string& text) {
+    const size_t eq = text.find('=');
+    if (eq == std::string::npos || eq == 0)
+        fail_input(SourceLocation{"", 0, 0, "command line -D " + text}, "",
+                   "expected key.path=value, e.g. camera.fov=30");
+    return {text.substr(0, eq), text.substr(eq + 1), "command line -D " + text};
+}
+
 void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) {
     for (const Override& ov : overrides) {
         SourceLocation origin{"", 0, 0, ov.origin};

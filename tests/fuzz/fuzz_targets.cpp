@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -9,6 +10,8 @@
 #include "assets/mesh.hpp"
 #include "assets/texture.hpp"
 #include "core/error.hpp"
+#include "output/manifest.hpp"
+#include "output/manifest_journal.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet::fuzz {
@@ -78,6 +81,37 @@ void fuzz_texture(const uint8_t* data, size_t size) {
     expect_loaded_or_error([&] { load_texture(path, &budget); });
 }
 
+void fuzz_manifest(const uint8_t* data, size_t size) {
+    const std::string path = write_input("manifest.json", data, size);
+    expect_loaded_or_error([&] {
+        // What facet reads back it must write back the same: the manifest
+        // of a render that resumes, merges or is compared.
+        const Manifest read = read_manifest(path);
+        const std::string written = manifest_json(read, true);
+        if (manifest_json(parse_manifest(written, path), true) != written) std::abort();
+        if (!manifest_settings_difference(read, read).empty()) std::abort();
+    });
+    // The same bytes as a run's journal (a header line, then one line per image).
+    expect_loaded_or_error([&] { read_journal(path); });
+}
+
+void fuzz_override(const uint8_t* data, size_t size) {
+    // One -D per line, as a farm front-end would pass them, over a scene
+    // with a keyed value, a light, an object and a style to walk into.
+    SceneOptions options;
+    options.style_dirs = {FACET_STYLES_DIR};
+    const std::string text(reinterpret_cast<const char*>(data), size);
+    expect_loaded_or_error([&] {
+        size_t start = 0;
+        while (start <= text.size()) {
+            const size_t end = std::min(text.find('\n', start), text.size());
+            options.overrides.push_back(parse_define(text.substr(start, end - start)));
+            start = end + 1;
+        }
+        load_scene(FACET_OVERRIDE_SCENE, options);
+    });
+}
+
 bool run_target(const std::string& target, const uint8_t* data, size_t size) {
     if (target == "scene")
         fuzz_scene(data, size);
@@ -87,6 +121,10 @@ bool run_target(const std::string& target, const uint8_t* data, size_t size) {
         fuzz_gltf(data, size);
     else if (target == "texture")
         fuzz_texture(data, size);
+    else if (target == "manifest")
+        fuzz_manifest(data, size);
+    else if (target == "override")
+        fuzz_override(data, size);
     else
         return false;
     return true;

@@ -12,12 +12,16 @@
 namespace facet::fuzz {
 
 // The harnesses by name: "scene" (scene and style loader), "obj", "gltf",
-// "texture". Returns false for an unknown name.
+// "texture", "manifest" (manifest and run journal reader: render, compare,
+// merge and video read manifests with it), "override" (the -D parser,
+// applied to a small scene). Returns false for an unknown name.
 bool run_target(const std::string& target, const uint8_t* data, size_t size);
 
 void fuzz_scene(const uint8_t* data, size_t size);
 void fuzz_obj(const uint8_t* data, size_t size);
 void fuzz_gltf(const uint8_t* data, size_t size);
 void fuzz_texture(const uint8_t* data, size_t size);
+void fuzz_manifest(const uint8_t* data, size_t size);
+void fuzz_override(const uint8_t* data, size_t size);
 
 }  // namespace facet::fuzz

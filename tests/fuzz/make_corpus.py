@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes the small hand-made seed files of tests/fuzz/corpus (OBJ, glTF,
-PNG). The scene seeds are copies of scenes/ and styles/ files; fuzz.sh adds
+PNG, a manifest and a run journal, -D lines for
+tests/scenes/fuzz_overridden.yaml). The scene seeds are copies of scenes/ and styles/ files; fuzz.sh adds
 the installed assimp test models as further seeds at run time."""
 import base64, json, os, struct, zlib
 
@@ -83,3 +84,38 @@ text = json.dumps(doc).encode()
 text += b' ' * (-len(text) % 4)
 glb = (struct.pack('<I', len(text)) + b'JSON' + text + struct.pack('<I', len(blob)) + b'BIN\0' + blob)
 out('gltf', 'triangle.glb', b'glTF' + struct.pack('<II', 2, 12 + len(glb)) + glb)
+
+
+# A manifest as facet writes it (two frames of colour and depth), and the
+# same run as a journal: its settings on one line, then a line per image.
+def manifest_entry(frame, kind, fmt):
+    return {'frame': frame, 'camera': 'main', 'pass': kind, 'format': fmt, 'style': 'inline',
+            'path': '%s.%04d.%s' % (kind, frame, fmt), 'sha256': '%064x' % (frame * 7919 + len(kind))}
+
+
+settings = {
+    'manifest_version': 2,
+    'facet': {'version': '0.1.0', 'commit': '26f42cf028c6', 'build': 'Release, avx2, gcc 12.2.0'},
+    'scene': '../../fuzz_overridden.yaml', 'scene_sha256': '%064x' % 12345, 'style': 'inline',
+    'size': [64, 48], 'fps': 24.0, 'display': {'exposure': 0.0, 'tonemap': 'none'},
+    'output_template': '{scene}/{pass}.{frame}.{ext}',
+    'overrides': [{'key': 'output.passes', 'value': '[color,depth]',
+                   'origin': 'command line --passes color,depth'}],
+}
+frames = [{'frame': f, 'camera': 'main'} for f in (1, 2)]
+files = [manifest_entry(f, k, x) for f in (1, 2) for k in ('color', 'depth') for x in ('png', 'exr')]
+out('manifest', 'two-frames.json', json.dumps(dict(settings, frames=frames, files=files), indent=2))
+journal = json.dumps(dict(settings, frames=[], files=[])) + '\n'
+for f in frames:
+    journal += json.dumps(dict(settings, frames=[f], files=[e for e in files if e['frame'] == f['frame']])) + '\n'
+out('manifest', 'journal.json', journal)
+
+# -D values, one per line, for the scene the override harness writes.
+out('override', 'camera-and-size', 'camera.fov=30\noutput.size=[32, 24]\n')
+out('override', 'material-mapping',
+    'objects.0.material={color: [1, 0, 0], shininess: 5}\nlights.0.intensity=0.5\n'
+    'style.occlusion.radius=0.2\n')
+out('override', 'colour-and-keys',
+    'objects.0.material.color=#ff8800\ncamera.fov={keys: {1: 20, 4: 60}}\noutput.frames=2-3\n')
+out('override', 'replaced-list-item',
+    'lights.0={type: point, position: [1, 2, 3], intensity: 4}\nobjects.0.translate=[0, 1, 0]\n')
