@@ -80,20 +80,6 @@ void require_input_error(F&& run, const std::string& needle) {
     require_error(run, facet::ExitCode::invalid_input, needle);
 }
 
-// For inputs a loader may fairly either accept or reject: what `load` returns
-// must pass `check`, and a rejection must be an invalid-input facet::Error
-// whose message contains `needle`.
-template <typename Load, typename Check>
-void require_checked_or_input_error(Load&& load, const std::string& needle, Check&& check) {
-    try {
-        auto loaded = load();
-        check(loaded);
-    } catch (const facet::Error& e) {
-        CHECK(e.code() == facet::ExitCode::invalid_input);
-        CHECK_THAT(e.what(), Catch::Contains(needle));
-    }
-}
-
 struct RunResult {
     int exit_code = -1;
     std::string output;  // stdout and stderr together

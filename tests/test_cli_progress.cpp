@@ -39,8 +39,9 @@ TEST_CASE("progress: in a 40-column terminal the bar fits and is redrawn in plac
     for (const std::string& bar : bars) CHECK(bar.size() <= 39);
     CHECK_THAT(bars.front(), Contains("0/3 0%"));
     CHECK_THAT(bars.back(), Contains("3/3 100%"));
-    CHECK_THAT(bars.back(), Contains("eta 0:00:00"));
-    CHECK_THAT(text, Contains("rendered 3 images in 0:00:0"));
+    CHECK_THAT(bars.back(), Contains("eta 0:00:00"));  // nothing left, however slow
+    // The times are whatever the machine took: only their format is checked.
+    CHECK(std::regex_search(text, std::regex(R"(rendered 3 images in \d+:\d\d:\d\d)")));
 }
 
 TEST_CASE("progress: in a log, one line per image with elapsed time, camera and ETA",
@@ -52,8 +53,11 @@ TEST_CASE("progress: in a log, one line per image with elapsed time, camera and 
     CHECK_THAT(r.output, Contains("rendering 'shapes' to "));
     // Two encoders may finish out of order: the count is of images written.
     CHECK(std::regex_search(
-        r.output, std::regex(R"(\[0:00:0\d\] frame [12] camera main \(1/2, 50%\) rendered in [0-9.]+ ms, wrote color\.000[12]\.png in [0-9.]+ ms, eta 0:00:0\d)")));
+        r.output,
+        std::regex(
+            R"(\[\d+:\d\d:\d\d\] frame [12] camera main \(1/2, 50%\) rendered in [0-9.]+ ms, wrote color\.000[12]\.png in [0-9.]+ ms, eta \d+:\d\d:\d\d)")));
     CHECK(std::regex_search(
         r.output,
-        std::regex(R"(rendered 2 images in 0:00:0\d \([0-9.]+ (ms|s) per image, [0-9.]+ fps\))")));
+        std::regex(
+            R"(rendered 2 images in \d+:\d\d:\d\d \([0-9.]+ (ms|s) per image, [0-9.]+ fps\))")));
 }

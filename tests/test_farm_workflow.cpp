@@ -237,7 +237,11 @@ TEST_CASE("the Slurm script's tasks and merge, run as Slurm runs them, complete 
           single_run(dir, scene, "--frames 2-9 -D 'objects.0.material.color=[0.2, 0.5, 0.9]'"));
 }
 
-TEST_CASE("the OpenJD template, run as a scheduler runs it, completes the job",
+// tests/farm/run_openjd.py is the tests' own runner: it runs the steps and
+// chunks of the templates facet writes, as a scheduler would, and refuses
+// anything else. It is not an OpenJD implementation; the next test checks
+// the template against OpenJD's own model where its CLI is installed.
+TEST_CASE("the OpenJD template, run step by step by the tests' runner, completes the job",
           "[farm][cli][jobs]") {
     test::TempDir dir("farm-openjd");
     const std::string scene = test::write_farm_scene(dir, 11, "[64, 36]");
@@ -261,4 +265,24 @@ TEST_CASE("the OpenJD template, run as a scheduler runs it, completes the job",
     CHECK(r.output.find("merged 3 partial manifests") != std::string::npos);
     CHECK(test::listed_hashes(dir.file("out/spin/manifest.json")) ==
           single_run(dir, scene, "--style toon"));
+}
+
+// OpenJD's own validator (openjd-cli, from PyPI; Debian has no package).
+TEST_CASE("the OpenJD template passes openjd check", "[farm][cli][jobs]") {
+    if (!test::have_command("openjd"))
+        FACET_SKIP(
+            "openjd is missing (pip install openjd-cli); the template is checked by "
+            "tests/farm/run_openjd.py only");
+    test::TempDir dir("farm-openjd-check");
+    test::write_farm_scene(dir, 11, "[64, 36]");
+    const auto made =
+        test::run_command("cd " + shell_quote(dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
+                          " farm openjd spin.yaml --chunk-size 4 -o out --frames 1-11 "
+                          "--script job.yaml 2>&1");
+    INFO(made.output);
+    REQUIRE(made.exit_code == 0);
+    const auto check =
+        test::run_command("openjd check " + shell_quote(dir.file("job.yaml")) + " 2>&1");
+    INFO(check.output);
+    CHECK(check.exit_code == 0);
 }

@@ -5,8 +5,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include <nlohmann/json.hpp>
-
+#include "output/manifest.hpp"
 #include "support.hpp"
 
 using namespace facet;
@@ -19,13 +18,16 @@ camera: { orbit: { radius: 4 } }
 lights: [ { type: directional, direction: [-1, -1, -1] } ]
 objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
 )");
-    // SIGINT once, after 1.5 s, well before 2000 frames are done. (`timeout`
-    // would signal the whole process group as well, i.e. twice, and the
-    // second interrupt is meant to end facet at once.)
+    // SIGINT once, as soon as the first frame's last file is written, well
+    // before 2000 frames are done. (`timeout` would signal the whole
+    // process group as well, i.e. twice, and the second interrupt is meant
+    // to end facet at once.)
+    const std::string first = dir.file("out/long/depth.0001.exr");
     std::string command = "'";
     command += FACET_EXECUTABLE;
     command += "' render '" + scene + "' --out '" + dir.file("out") + "' --quiet 2>&1 & pid=$!; ";
-    command += "sleep 1.5; kill -INT $pid; wait $pid; echo \"exit=$?.\"";
+    command += "for i in $(seq 600); do [ -e '" + first + "' ] && break; sleep 0.1; done; ";
+    command += "kill -INT $pid; wait $pid; echo \"exit=$?.\"";
     FILE* pipe = ::popen(command.c_str(), "r");
     REQUIRE(pipe);
     std::string output;
@@ -37,12 +39,16 @@ objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
     CHECK(output.find("interrupted") != std::string::npos);
 
     const std::filesystem::path folder = dir.file("out/long");
-    std::ifstream in(folder / "manifest.json");
-    REQUIRE(in);
-    nlohmann::json manifest = nlohmann::json::parse(in);
-    const size_t frames = manifest["frames"].size();
+    const Manifest manifest = read_manifest((folder / "manifest.json").string());
+    const size_t frames = manifest.frames.size();
+    CHECK(frames >= 1);
     CHECK(frames < 2000);
-    CHECK(manifest["files"].size() == 4 * frames);
+    REQUIRE(manifest.files.size() == 4 * frames);
+    // Every file listed is whole: on disk with the SHA-256 recorded for it.
+    for (const ManifestFile& file : manifest.files) {
+        INFO(file.path);
+        CHECK(listed_file_problem(folder.string(), file).empty());
+    }
     size_t files = 0;
     for (const auto& entry : std::filesystem::directory_iterator(folder)) {
         const std::string name = entry.path().filename().string();

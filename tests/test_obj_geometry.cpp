@@ -359,9 +359,17 @@ TEST_CASE("OBJ degenerate and non-finite vertices never yield bad normals", "[as
     SECTION("non-finite coordinates") {
         std::string path =
             write_text(dir.file("nan.obj"), "v 0 0 0\nv 1 0 0\nv nan inf 0\nf 1 2 3\n");
-        // If the parser read the values as something finite, the mesh must be sane.
-        require_checked_or_input_error([&] { return facet::load_obj(path); }, "nan.obj",
-                                       check_sane);
+        // tinyobjloader would read the words as 0 and move the vertex.
+        require_input_error([&] { facet::load_obj(path); },
+                            "nan.obj:3:3: 'nan' is not a finite number");
+        const std::string normal = write_text(
+            dir.file("normal.obj"), "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 Inf\nf 1//1 2//1 3//1\n");
+        require_input_error([&] { facet::load_obj(normal); }, "normal.obj:4:8: 'Inf'");
+    }
+    SECTION("a comment after the numbers is not data") {
+        const std::string path = write_text(dir.file("comment.obj"),
+                                            "v 0 0 0 # origin\nv 1 0 0\nv 0 1 0 # apex\nf 1 2 3\n");
+        CHECK(facet::load_obj(path).triangle_count() == 1);
     }
 }
 

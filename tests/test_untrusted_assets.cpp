@@ -7,11 +7,14 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 
 #include "asset_support.hpp"
 #include "assets/mesh.hpp"
+#include "assets/polygon_triangulation.hpp"
 #include "assets/texture.hpp"
 #include "core/input_file.hpp"
 #include "output/atomic_file.hpp"
@@ -131,6 +134,26 @@ TEST_CASE("star polygons are triangulated in bounded time", "[untrusted]") {
     size_t triangles = 0;
     for (const MeshPart& p : mesh.parts) triangles += p.indices.size() / 3;
     CHECK(triangles == 2000u * 248u);
+}
+
+TEST_CASE("a hostile polygon is triangulated in O(n^2) corner tests", "[untrusted]") {
+    // A star: few ears, each found after many misses, O(n^3) corner tests
+    // for plain ear clipping.
+    for (const int tips : {25, 125, 500}) {
+        INFO(tips << " tips");
+        std::vector<glm::dvec3> star;
+        for (int k = 0; k < 2 * tips; ++k) {
+            const double angle = std::numbers::pi * k / tips, r = (k % 2) ? 0.3 : 1.0;
+            star.push_back({r * std::cos(angle), r * std::sin(angle), 0});
+        }
+        uint64_t work = 0;
+        const auto triangles = facet::triangulate_polygon(star, &work);
+        CHECK(triangles.size() == star.size() - 2);
+        // The budget of 8 n^2 ear tests, then one scan of the ring per cut.
+        const uint64_t n = star.size();
+        CHECK(work <= 9 * n * n);
+        CHECK(work > 0);
+    }
 }
 
 // --- Paths inside mesh files ----------------------------------------------------

@@ -8,6 +8,7 @@
 #include "output/encoders.hpp"
 #include "support.hpp"
 #include "video/video_encoder.hpp"
+#include "video_reader.hpp"
 
 using namespace facet::test;
 using Catch::Matchers::Contains;
@@ -54,6 +55,11 @@ TEST_CASE("video: render --video writes an H.264 MP4 of the colour frames", "[vi
     const double error = first_frame_error(v, run + "/color.0001.png");
     INFO("mean error " << error << " codes");
     CHECK(error < 6);
+
+    // The same frames give the same bytes, whether made by render or video.
+    const std::string again = dir.file("again.mp4");
+    REQUIRE(run_facet("video '" + run + "' '" + again + "' -q").exit_code == 0);
+    CHECK(read_file(movie) == read_file(again));
 }
 
 TEST_CASE("video: facet video makes GIF and WebM from a run, deterministically", "[video]") {
@@ -83,6 +89,9 @@ TEST_CASE("video: facet video makes GIF and WebM from a run, deterministically",
     const std::string again = dir.file("again.gif");
     REQUIRE(run_facet("video '" + run + "' '" + again + "' --fps 12 -q").exit_code == 0);
     CHECK(read_file(gif) == read_file(again));
+    const std::string webm_again = dir.file("again.webm");
+    REQUIRE(run_facet("video '" + run + "' '" + webm_again + "' -q").exit_code == 0);
+    CHECK(read_file(webm) == read_file(webm_again));
 }
 
 TEST_CASE("video: bad names and missing runs fail without touching an old movie", "[video]") {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "assets/gltf_field_types.hpp"
 
 namespace facet::gltf_detail {
 namespace {
@@ -61,7 +62,10 @@ std::string json_text(const std::string& path) {
         std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         return text;
     }
-    // GLB: 12-byte header, then a chunk: length, type "JSON", data.
+    // GLB: 12-byte header (magic, version, length), then a chunk: length,
+    // type "JSON", data.
+    if (little_endian(head.data() + 4) == 1)
+        bad(path, "is a glTF 1.0 binary (version 1 in its header); facet reads glTF 2.0 files");
     const uint32_t length = little_endian(head.data() + 12);
     if (std::memcmp(head.data() + 16, "JSON", 4) != 0 || length > (uint32_t(1) << 30)) return "";
     std::string text(length, '\0');
@@ -133,6 +137,7 @@ bool ExtensionLists::lists(const std::string& extension) const {
 ExtensionLists read_extension_lists(const std::string& path) {
     const nlohmann::json doc = nlohmann::json::parse(json_text(path), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return {};
+    check_field_types(doc, path);
     return {names(doc, "extensionsRequired"), names(doc, "extensionsUsed")};
 }
 

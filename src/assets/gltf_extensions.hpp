@@ -33,7 +33,8 @@ struct ExtensionLists {
 // needs compressed geometry can fail tinygltf's own checks of its buffers
 // ("Invalid byteLength") before the extension lists are looked at; reading
 // them first lets the error name the extension. Empty lists when the JSON
-// cannot be read: tinygltf then reports why.
+// cannot be read: tinygltf then reports why. The same read checks the types
+// of the fields facet draws from (check_field_types, gltf_field_types.hpp).
 ExtensionLists read_extension_lists(const std::string& path);
 
 struct ExtensionCheck {

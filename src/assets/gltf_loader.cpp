@@ -468,7 +468,7 @@ void NodeWalk::visit(int node_index, const glm::dmat4& parent, int depth) {
         bad(path_, "scene refers to missing node " + std::to_string(node_index));
     if (on_path_.count(node_index))
         bad(path_, "node hierarchy has a cycle through node " + std::to_string(node_index));
-    if (depth > kMaxNodeDepth)
+    if (depth >= kMaxNodeDepth)  // the root is level 1, at depth 0
         bad(path_, "node hierarchy is deeper than " + std::to_string(kMaxNodeDepth) + " levels");
     on_path_.insert(node_index);
     const tinygltf::Node& node = model_.nodes[static_cast<size_t>(node_index)];

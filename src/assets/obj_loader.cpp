@@ -8,6 +8,7 @@
 #include <numbers>
 #include <optional>
 #include <sstream>
+#include <string_view>
 #include <tuple>
 
 #include <tiny_obj_loader.h>
@@ -15,6 +16,7 @@
 #include <glm/vec2.hpp>
 
 #include "assets/mesh.hpp"
+#include "assets/polygon_triangulation.hpp"
 #include "core/error.hpp"
 
 namespace facet {
@@ -111,15 +113,33 @@ std::string material_name(std::string key) {
     return key;
 }
 
+// A vertex line's word that is not a number ("nan", "inf", "1.0f"):
+// tinyobjloader reads it as 0 without a word, which moves the vertex.
+// Letters other than an exponent's 'e' have no place in a number.
+void check_vertex_words(const std::string& text, size_t from, size_t end, const std::string& path,
+                        int line, size_t line_start) {
+    for (size_t k = from; k < end && text[k] != '#'; ++k) {
+        const char c = text[k];
+        if (!std::isalpha(static_cast<unsigned char>(c)) || c == 'e' || c == 'E') continue;
+        size_t first = text.find_last_of(" \t", k);
+        first = first == std::string::npos || first < from ? from : first + 1;
+        const size_t last = std::min(end, text.find_first_of(" \t\r", k));
+        fail_input(SourceLocation{path, line, static_cast<int>(first - line_start) + 1, ""}, "",
+                   "'" + text.substr(first, last - first) +
+                       "' is not a finite number, which vertex data must be");
+    }
+}
+
 // Rewrites the two kinds of line tinyobjloader misreads: material names with
 // spaces (see above), and "mtllib .\\libs\\a.mtl" from Windows exporters, where
 // it takes each backslash as an escape and drops it. A backslash before a
 // space stays: that is tinyobjloader's escape for a space in the file name.
-std::string normalise_obj_lines(const std::string& text) {
+// Refuses vertex values that are not numbers (check_vertex_words).
+std::string normalise_obj_lines(const std::string& text, const std::string& path) {
     std::string out;
     out.reserve(text.size());
     size_t start = 0;
-    while (start < text.size()) {
+    for (int line = 1; start < text.size(); ++line) {
         size_t end = text.find('\n', start);
         if (end == std::string::npos) end = text.size();
         size_t i = text.find_first_not_of(" \t", start);
@@ -130,6 +150,11 @@ std::string normalise_obj_lines(const std::string& text) {
             for (size_t k = start; k < end; ++k)
                 out += text[k] == '\\' && k + 1 < end && text[k + 1] != ' ' ? '/' : text[k];
         } else {
+            const size_t words = i < end ? text.find_first_of(" \t", i) : end;
+            const std::string_view keyword =
+                words < end ? std::string_view(text).substr(i, words - i) : std::string_view();
+            if (keyword == "v" || keyword == "vn" || keyword == "vt" || keyword == "vp")
+                check_vertex_words(text, words, end, path, line, start);
             out.append(text, start, end - start);
         }
         if (end < text.size()) out += '\n';
@@ -213,127 +238,10 @@ class MtlReader : public tinyobj::MaterialReader {
     std::optional<Error> refusal_;
 };
 
-// Splits a planar polygon into corners.size() - 2 triangles wound like the
-// polygon, by ear clipping in the polygon's own plane. tinyobjloader's
-// built-in triangulation folds concave faces over themselves (it decides
-// convexity from the area of a triangle with the origin), so it is not used.
-std::vector<std::array<size_t, 3>> triangulate_polygon(const std::vector<glm::dvec3>& pts) {
-    const size_t n = pts.size();
-    std::vector<std::array<size_t, 3>> tris;
-    tris.reserve(n - 2);
-    glm::dvec3 normal(0);  // Newell's method: robust for concave outlines
-    for (size_t i = 0; i < n; ++i) normal += glm::cross(pts[i], pts[(i + 1) % n]);
-    const double len = glm::length(normal);
-    if (!(len > 0)) {  // no area at all: any split is as good as another
-        for (size_t i = 1; i + 1 < n; ++i) tris.push_back({0, i, i + 1});
-        return tris;
-    }
-    normal /= len;
-    // Axes with u x v = normal, so the outline runs counter-clockwise in (u, v).
-    glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    glm::dvec3 u = glm::normalize(glm::cross(helper, normal));
-    glm::dvec3 v = glm::cross(normal, u);
-    std::vector<glm::dvec2> p(n);
-    for (size_t i = 0; i < n; ++i) p[i] = {glm::dot(pts[i], u), glm::dot(pts[i], v)};
-
-    if (n == 4) {
-        // Quads split along the shorter diagonal, as tinyobjloader did (in
-        // float, ties to 1-3), so existing renders keep their triangles; the
-        // other diagonal only when that one would leave the quad (concave).
-        auto sq = [&](size_t a, size_t b) {
-            glm::vec3 d = glm::vec3(pts[b]) - glm::vec3(pts[a]);
-            return d.x * d.x + d.y * d.y + d.z * d.z;
-        };
-        auto ccw = [&](size_t a, size_t b, size_t c) {
-            return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x) >
-                   0;
-        };
-        const bool via02 = ccw(0, 1, 2) && ccw(0, 2, 3), via13 = ccw(0, 1, 3) && ccw(1, 2, 3);
-        const bool prefer02 = sq(0, 2) < sq(1, 3);
-        if (via02 && (prefer02 || !via13)) return {{0, 1, 2}, {0, 2, 3}};
-        if (via13) return {{0, 1, 3}, {1, 2, 3}};
-    }
-
-    auto turn = [&](size_t a, size_t b, size_t c) {
-        return (p[b].x - p[a].x) * (p[c].y - p[a].y) - (p[b].y - p[a].y) * (p[c].x - p[a].x);
-    };
-    // A convex outline (every corner turns left, once round) is a fan: most
-    // n-gons exporters write are caps of this kind, and it takes O(n).
-    double angle = 0;
-    bool convex = true;
-    for (size_t i = 0; i < n && convex; ++i) {
-        const size_t a = (i + n - 1) % n, c = (i + 1) % n;
-        convex = turn(a, i, c) > 0;
-        const glm::dvec2 d0 = p[i] - p[a], d1 = p[c] - p[i];
-        angle += std::atan2(d0.x * d1.y - d0.y * d1.x, glm::dot(d0, d1));
-    }
-    if (convex && std::abs(angle - 2 * std::numbers::pi) < 1e-6) {
-        // The fan round the last corner: what ear clipping gives a convex
-        // outline, so files render as they did before this shortcut.
-        for (size_t i = 0; i + 2 < n; ++i) tris.push_back({n - 1, i, i + 1});
-        return tris;
-    }
-
-    std::vector<size_t> prev(n), next(n);
-    for (size_t i = 0; i < n; ++i) {
-        prev[i] = (i + n - 1) % n;
-        next[i] = (i + 1) % n;
-    }
-    // Ear clipping is O(n^2) for a fair outline but O(n^3) for a hostile
-    // one (few ears, each found after many misses). Past a budget of
-    // 8 n^2 corner tests the rest is clipped at the most convex corner,
-    // O(n) a triangle, so no face costs more than O(n^2).
-    size_t tests = 0;
-    const size_t budget = 8 * n * n;
-    auto is_ear = [&](size_t b) {
-        size_t a = prev[b], c = next[b];
-        if (!(turn(a, b, c) > 0)) return false;  // reflex or straight corner
-        for (size_t j = next[c]; j != a; j = next[j]) {
-            ++tests;
-            // Corners repeated by a bridge to a hole coincide with the ear's own.
-            if (p[j] == p[a] || p[j] == p[b] || p[j] == p[c]) continue;
-            if (turn(a, b, j) >= 0 && turn(b, c, j) >= 0 && turn(c, a, j) >= 0) return false;
-        }
-        return true;
-    };
-    auto clip = [&](size_t b) {
-        tris.push_back({prev[b], b, next[b]});
-        next[prev[b]] = next[b];
-        prev[next[b]] = prev[b];
-        return next[b];
-    };
-    size_t remaining = n, at = 0, misses = 0;
-    while (remaining > 3) {
-        if (tests < budget && is_ear(at)) {
-            at = clip(at);
-            --remaining;
-            misses = 0;
-            continue;
-        }
-        at = next[at];
-        if (++misses >= remaining || tests >= budget) {
-            // No clean ear: the outline crosses itself or is degenerate. Clip
-            // the most convex corner so the face still gives n - 2 triangles.
-            size_t best = at;
-            double best_turn = turn(prev[at], at, next[at]);
-            for (size_t j = next[at]; j != at; j = next[j])
-                if (double t = turn(prev[j], j, next[j]); t > best_turn) {
-                    best = j;
-                    best_turn = t;
-                }
-            at = clip(best);
-            --remaining;
-            misses = 0;
-        }
-    }
-    tris.push_back({prev[at], at, next[at]});
-    return tris;
-}
-
 }  // namespace
 
 Mesh load_obj(const std::string& path, const AssetContext& context) {
-    const std::string text = normalise_obj_lines(read_obj_text(path));
+    const std::string text = normalise_obj_lines(read_obj_text(path), path);
     const std::map<std::string, int> libraries = mtllib_lines(text);
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;

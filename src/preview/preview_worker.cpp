@@ -322,7 +322,8 @@ bool PreviewWorker::render_step(const PreviewRequest& request, int step) {
     FrameImages images;
     const size_t camera = std::min(request.camera_index, scene.cameras.size() - 1);
     const int frame = resolved_frame(request.frame, scene);
-    renderer->render(frame, camera, images, &stop_);
+    renderer->render(frame, camera, images,
+                     [this] { return stop_.load(std::memory_order_relaxed); });
     if (stop_.load()) return false;
     const double render_ms = ms_since(start);
     PreviewImage image = display_image(request.pass, level_scene->output, images);

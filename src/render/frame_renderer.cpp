@@ -50,8 +50,8 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
 }
 
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
-                           const std::atomic<bool>* stop) {
-    const auto stopped = [stop] { return stop && stop->load(std::memory_order_relaxed); };
+                           const std::function<bool()>& stop) {
+    const auto stopped = [&stop] { return stop && stop(); };
     const StylePlan& plan = evaluator_.plan();
     const PassSet passes = scene_.output.passes;
     const FrameInputs inputs = evaluator_.evaluate(frame, camera_index);

@@ -3,7 +3,7 @@
 // pipeline"): each stage has a header of its own and hands the next a plain
 // record. The renderer owns the stages, which keep their buffers from frame
 // to frame.
-#include <atomic>
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -46,12 +46,12 @@ class FrameRenderer {
 
     // Renders into `out`, reusing its buffers when they have the right size
     // (fresh pages cost more to fault in and clear than the shading itself).
-    // `stop`, when given and set while the frame renders, skips the tiles
-    // not yet shaded and the stages after them: `out` is then unfinished,
-    // for the caller that set it to throw away (an interactive view that
-    // has moved on). Unset, it changes nothing.
+    // `stop`, when given, is asked before each tile is shaded; once it
+    // answers true, the tiles not yet shaded and the stages after them are
+    // skipped: `out` is then unfinished, for the caller to throw away (an
+    // interactive view that has moved on). Answering false changes nothing.
     void render(int frame, size_t camera_index, FrameImages& out,
-                const std::atomic<bool>* stop = nullptr);
+                const std::function<bool()>& stop = {});
 
   private:
     const SceneDesc& scene_;
