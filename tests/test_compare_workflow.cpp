@@ -117,6 +117,36 @@ TEST_CASE("compare workflow: render --reference compares, and creates a first re
     CHECK(run_facet(render + " --update-reference sometimes").exit_code == 2);
 }
 
+// Deleting a reference image by hand is how a snapshot is made again
+// (Jest, pytest-regressions, Playwright): its manifest still lists it.
+TEST_CASE("compare workflow: a reference image deleted by hand is missing, and missing rewrites it",
+          "[compare]") {
+    TempDir dir("compare-deleted");
+    const std::string scene = source_path("tests/scenes/shapes.yaml");
+    const std::string ref = dir.file("reference");
+    const std::string render = "render " + shell_quote(scene) +
+                               " --size 160x90 --frames 1-2 --passes color --formats png --out " +
+                               shell_quote(dir.file("out")) + " --reference " + shell_quote(ref);
+    REQUIRE(run_facet(render + " --update-reference missing").exit_code == 0);
+    const std::string kept = hash_of(ref + "/color.0001.png");
+    const std::string deleted = hash_of(ref + "/color.0002.png");
+    std::filesystem::remove(ref + "/color.0002.png");
+
+    const RunResult plain = run_facet(render);
+    INFO(plain.output);
+    CHECK(plain.exit_code == 3);  // a failure, not an unreadable reference (4)
+    CHECK_THAT(plain.output, Contains("1 extra"));
+    CHECK_THAT(plain.output, Contains("1 identical"));
+
+    const RunResult again = run_facet(render + " --update-reference missing");
+    INFO(again.output);
+    CHECK(again.exit_code == 0);
+    CHECK_THAT(again.output, Contains("updated main/color/0002.png"));
+    CHECK(hash_of(ref + "/color.0002.png") == deleted);
+    CHECK(hash_of(ref + "/color.0001.png") == kept);
+    check_manifest_hashes(ref, 2);
+}
+
 TEST_CASE("compare workflow: --self-test tells neighbouring frames apart, with a margin",
           "[compare]") {
     TempDir dir("compare-self");

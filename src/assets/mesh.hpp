@@ -19,12 +19,16 @@ namespace facet {
 
 enum class AlphaMode { opaque, mask, blend };
 
+// A material's highlight coefficient when neither the scene nor the file
+// gives one. The stylised models' highlights are designed for it.
+constexpr float kDefaultSpecular = 0.4f;
+
 struct Material {
     std::string name;
     glm::vec3 color = {0.8f, 0.8f, 0.8f};  // linear base colour
     float ambient = 0.1f;
     float diffuse = 0.8f;
-    float specular = 0.4f;
+    float specular = kDefaultSpecular;
     float shininess = 32;
     TextureSlot base_color_map;  // multiplies color (and alpha)
     bool double_sided = false;

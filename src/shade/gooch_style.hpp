@@ -54,13 +54,13 @@ inline glm::vec3 gooch_highlight(const GoochStyle& style, const glm::vec3& n, co
 inline glm::vec3 shade_gooch(const GoochStyle& style, const PaletteStyle& palette,
                              const glm::vec3& kd, const glm::vec3& position, const glm::vec3& n,
                              const glm::vec3& v, std::span<const ShadeLight> lights,
-                             bool receives_shadows) {
+                             bool receives_shadows, float highlight_strength) {
     PaletteStyle blend = palette;
     blend.ambient = 0;
     blend.cels = 0;
     glm::vec3 c =
         seed_palette(blend, kd, key_light_cosine(lights, position, n, receives_shadows)).color;
-    add_highlights(c, lights, position, n, receives_shadows,
+    add_highlights(c, lights, position, n, receives_shadows, highlight_strength,
                    [&](const LightSample& l) { return gooch_highlight(style, n, v, l); });
     return c;
 }

@@ -145,12 +145,12 @@ inline glm::vec3 seed_specular(const PaletteStyle& style, const glm::vec3& k, co
 inline glm::vec3 shade_palette(const PaletteStyle& style, const glm::vec3& k,
                                const glm::vec3& position, const glm::vec3& n, const glm::vec3& v,
                                std::span<const ShadeLight> lights, bool receives_shadows,
-                               float& tone) {
+                               float highlight_strength, float& tone) {
     const PaletteShading p =
         seed_palette(style, k, key_light_cosine(lights, position, n, receives_shadows));
     tone = p.tone;
     glm::vec3 c = p.color;
-    add_highlights(c, lights, position, n, receives_shadows,
+    add_highlights(c, lights, position, n, receives_shadows, highlight_strength,
                    [&](const LightSample& l) { return seed_specular(style, k, n, v, l); });
     return c;
 }

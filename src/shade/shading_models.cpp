@@ -1,5 +1,6 @@
 #include "shade/shading_models.hpp"
 
+#include "assets/mesh.hpp"
 #include "shade/gooch_style.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/model_depth_view.hpp"
@@ -22,7 +23,9 @@ void shade_stylised(const SurfaceLanes& in, const ShadingContext& context, Model
         const glm::vec3 position(s.px[i], s.py[i], s.pz[i]);
         const glm::vec3 n = normalise_or({s.nx[i], s.ny[i], s.nz[i]}, glm::vec3(0, 1, 0));
         const glm::vec3 v = normalise_or(context.eye - position, n);
-        out.set(i, model(i, position, n, v, s.receives_shadow[i] > 0, out.palette_tone[i]));
+        const float highlight_strength = s.specular[i] / kDefaultSpecular;
+        out.set(i, model(i, position, n, v, s.receives_shadow[i] > 0, highlight_strength,
+                         out.palette_tone[i]));
     }
 }
 
@@ -52,25 +55,26 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
         case ShadingModel::palette:
             shade_stylised(
                 in, context,
-                [&](int i, auto& p, auto& n, auto& v, bool r, float& tone) {
-                    return shade_palette(style.palette, in.albedo_at(i), p, n, v, lights, r, tone);
+                [&](int i, auto& p, auto& n, auto& v, bool r, float h, float& tone) {
+                    return shade_palette(style.palette, in.albedo_at(i), p, n, v, lights, r, h,
+                                         tone);
                 },
                 out);
             return;
         case ShadingModel::gooch:
             shade_stylised(
                 in, context,
-                [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
+                [&](int i, auto& p, auto& n, auto& v, bool r, float h, float&) {
                     return shade_gooch(style.gooch, style.palette, in.albedo_at(i), p, n, v, lights,
-                                       r);
+                                       r, h);
                 },
                 out);
             return;
         case ShadingModel::toon:
             shade_stylised(
                 in, context,
-                [&](int i, auto& p, auto& n, auto& v, bool r, float&) {
-                    return shade_toon(style.toon, in.albedo_at(i), p, n, v, lights, r);
+                [&](int i, auto& p, auto& n, auto& v, bool r, float h, float&) {
+                    return shade_toon(style.toon, in.albedo_at(i), p, n, v, lights, r, h);
                 },
                 out);
             return;

@@ -30,15 +30,20 @@ inline float key_light_cosine(std::span<const ShadeLight> lights, const glm::vec
 // Adds highlight(sample) to `color` for each light that reaches
 // `position`, in light order, each sample's radiance scaled by its shadow
 // visibility.
+// `strength` scales them all: the material's specular over the default
+// material's (kDefaultSpecular), so a default material gets the style's
+// highlight as designed, a matte one (specular 0) none.
 template <typename Highlight>
 void add_highlights(glm::vec3& color, std::span<const ShadeLight> lights, const glm::vec3& position,
-                    const glm::vec3& n, bool receives_shadows, Highlight highlight) {
+                    const glm::vec3& n, bool receives_shadows, float strength,
+                    Highlight highlight) {
+    if (!(strength > 0.0f)) return;
     for (const ShadeLight& light : lights) {
         if (light.is_ambient) continue;
         LightSample l = sample_light(light, position);
         if (!(l.radiance.x > 0 || l.radiance.y > 0 || l.radiance.z > 0)) continue;
         l.radiance *= receives_shadows ? light_visibility(light, position, n) : 1.0f;
-        color += highlight(l);
+        color += strength * highlight(l);
     }
 }
 

@@ -110,10 +110,11 @@ inline glm::vec3 toon_rim(const ToonStyle& style, const glm::vec3& n, const glm:
 // the rim light, then every light's highlight.
 inline glm::vec3 shade_toon(const ToonStyle& style, const glm::vec3& albedo,
                             const glm::vec3& position, const glm::vec3& n, const glm::vec3& v,
-                            std::span<const ShadeLight> lights, bool receives_shadows) {
+                            std::span<const ShadeLight> lights, bool receives_shadows,
+                            float highlight_strength) {
     const float n_dot_l = key_light_cosine(lights, position, n, receives_shadows);
     glm::vec3 c = toon_diffuse(style, albedo, n_dot_l) + toon_rim(style, n, v);
-    add_highlights(c, lights, position, n, receives_shadows,
+    add_highlights(c, lights, position, n, receives_shadows, highlight_strength,
                    [&](const LightSample& l) { return toon_specular(style, n, v, l); });
     return c;
 }
