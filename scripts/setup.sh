@@ -31,8 +31,9 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${FACET_BUILD_DIR:-$root/build}"
 sanitize=0
 tests=0
+bench=0
 
-packages=(g++ cmake make pkg-config
+packages=(g++ cmake make pkg-config ccache
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
           libdeflate-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
@@ -42,7 +43,7 @@ for arg in "$@"; do
     case "$arg" in
         --tests) tests=1; packages+=(time assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
                             xvfb xdotool x11-apps) ;;
-        --bench) packages+=(libosmesa6-dev) ;;
+        --bench) packages+=(libosmesa6-dev); bench=1 ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;
         *) echo "setup.sh: unknown option '$arg' (use --tests, --bench or --sanitize)" >&2; exit 2 ;;
     esac
@@ -82,13 +83,19 @@ fi
 if [ ! -f "$build/CMakeCache.txt" ]; then
     echo "setup: configuring and building facet in $build (a few minutes the first time)" >&2
     cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release >/dev/null
-elif [ ${#missing[@]} -gt 0 ]; then
-    # A package installed into an existing build (OSMesa for --bench, say)
-    # is found only when CMake looks again.
+elif [ ${#missing[@]} -gt 0 ] ||
+     { [ "$bench" = 1 ] && grep -q '^OSMesa_LIBRARY:FILEPATH=.*NOTFOUND' "$build/CMakeCache.txt"; }; then
+    # A package installed into an existing build, by this run or by anything
+    # else since (OSMesa for --bench, say), is found only when CMake looks
+    # again (it looks again for what it did not find).
     cmake -S "$root" -B "$build" >/dev/null
 fi
+# The program alone for ./facet (a newcomer's first render); the tests and
+# benchmarks too when they are asked for.
+targets=(--target facet)
+if [ "$tests" = 1 ] || [ "$bench" = 1 ]; then targets=(); fi
 log="$build/build.log"
-if ! cmake --build "$build" -j2 >"$log" 2>&1; then
+if ! cmake --build "$build" -j2 "${targets[@]}" >"$log" 2>&1; then
     tail -n 40 "$log" >&2
     echo "setup: build failed (full log: $log)" >&2
     exit 1

@@ -1,4 +1,5 @@
-// Decoding a movie again (the tests' check of what the encoder wrote).
+#include "video_reader.hpp"
+
 extern "C" {
 #include <libavcodec/avcodec.h>
 #include <libavformat/avformat.h>
@@ -6,7 +7,6 @@ extern "C" {
 }
 
 #include "core/error.hpp"
-#include "video/video_encoder.hpp"
 
 namespace facet {
 namespace {

@@ -68,7 +68,7 @@ SceneOptions scene_options(const RenderArgs& args) {
         if (std::filesystem::is_regular_file(value, ec))
             value = std::filesystem::weakly_canonical(value, ec).string();
         options.overrides.push_back(
-            {"style", "\"" + value + "\"", "command line --style " + args.style});
+            {"style", yaml_quoted(value), "command line --style " + args.style});
     }
     // "a,b" -> "[a,b]": the scene's own list syntax, checked by the scene reader.
     if (!args.passes.empty())
@@ -526,13 +526,6 @@ std::pair<int, int> parse_size(const std::string& text, const std::string& optio
     return {w, h};
 }
 
-Override parse_define(const std::string& text) {
-    size_t eq = text.find('=');
-    if (eq == std::string::npos || eq == 0)
-        fail_input(command_line("-D " + text), "", "expected key.path=value, e.g. camera.fov=30");
-    return {text.substr(0, eq), text.substr(eq + 1), "command line -D " + text};
-}
-
 namespace {
 
 // The subcommands' options, one function each (run_command_line stays a
@@ -683,7 +676,9 @@ int run_command_line(int argc, char** argv) {
     bool info_allow_outside = false;
     CLI::App* info = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
-    info->add_option("mesh", mesh_path, "Mesh file (.obj, .gltf, .glb)")->required();
+    info->add_option("mesh", mesh_path,
+                     "Mesh file: .obj, .gltf, .glb, .stl, .ply, .fbx, .dae or .3ds")
+        ->required();
     bool info_json = false;
     info->add_flag("--json", info_json, "Print the description as JSON");
     add_asset_paths_flag(info, info_allow_outside);

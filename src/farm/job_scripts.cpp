@@ -6,20 +6,16 @@
 
 #include "core/error.hpp"
 #include "core/shell_word.hpp"
+#include "scene/scene_desc.hpp"
 
 namespace facet {
 namespace {
 
-// `text` with control characters as escapes (\n, \xNN), and each
-// character of `backslashed` behind a backslash: for messages, and for
-// YAML's double-quoted scalars, which read both escapes back.
-std::string escaped(const std::string& text, std::string_view backslashed) {
+// `text` with control characters as escapes (\n, \xNN), for messages.
+std::string printable(const std::string& text) {
     std::string out;
     for (unsigned char c : text) {
-        if (backslashed.find(static_cast<char>(c)) != std::string_view::npos) {
-            out += '\\';
-            out += static_cast<char>(c);
-        } else if (c == '\n') {
+        if (c == '\n') {
             out += "\\n";
         } else if (c < 0x20 || c == 0x7f) {
             char escape[8];
@@ -30,10 +26,6 @@ std::string escaped(const std::string& text, std::string_view backslashed) {
         }
     }
     return out;
-}
-
-std::string printable(const std::string& text) {
-    return escaped(text, "");
 }
 
 [[noreturn]] void refuse(const std::string& option, const std::string& value,
@@ -94,14 +86,9 @@ std::string join_words(const std::vector<std::string>& words) {
     return line;
 }
 
-// A double-quoted YAML scalar that reads back as exactly `text`.
-std::string yaml_string(const std::string& text) {
-    return "\"" + escaped(text, "\"\\") + "\"";
-}
-
 std::string yaml_list(const std::vector<std::string>& items) {
     std::string list = "[";
-    for (size_t i = 0; i < items.size(); ++i) list += (i ? ", " : "") + yaml_string(items[i]);
+    for (size_t i = 0; i < items.size(); ++i) list += (i ? ", " : "") + yaml_quoted(items[i]);
     return list + "]";
 }
 
@@ -261,9 +248,9 @@ std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
          "); docs/farm.md explains it.\n";
     t += "specificationVersion: 'jobtemplate-2023-09'\n";
     t += "extensions:\n  - TASK_CHUNKING\n";
-    t += "name: " + yaml_string(job.name) + "\n";
+    t += "name: " + yaml_quoted(job.name) + "\n";
     t += "parameterDefinitions:\n";
-    t += "  - name: Frames\n    type: STRING\n    default: " + yaml_string(job.frames) + "\n";
+    t += "  - name: Frames\n    type: STRING\n    default: " + yaml_quoted(job.frames) + "\n";
     t += "    description: \"The frames to render, e.g. 1-48, 1-48:2 or 1,5,10-20\"\n";
     t += "steps:\n";
     t += "  - name: Render\n";
@@ -278,12 +265,12 @@ std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
     if (s.target_runtime > 0)
         t += "            targetRuntimeSeconds: " + std::to_string(s.target_runtime) + "\n";
     t += "    script:\n      actions:\n        onRun:\n";
-    t += "          command: " + yaml_string(job.facet) + "\n";
+    t += "          command: " + yaml_quoted(job.facet) + "\n";
     t += "          args: " + yaml_list(render) + "\n";
     t += "  - name: Merge\n";
     t += "    dependencies:\n      - dependsOn: Render\n";
     t += "    script:\n      actions:\n        onRun:\n";
-    t += "          command: " + yaml_string(job.facet) + "\n";
+    t += "          command: " + yaml_quoted(job.facet) + "\n";
     t += "          args: " + yaml_list({"merge", job.merge_folder}) + "\n";
     return t;
 }

@@ -57,10 +57,7 @@ std::string yaml_value(const TweakValue& value) {
     if (const float* f = std::get_if<float>(&value)) return yaml_number(*f);
     if (const int* i = std::get_if<int>(&value)) return std::to_string(*i);
     if (const glm::vec3* v = std::get_if<glm::vec3>(&value)) return yaml_vector(*v);
-    std::string quoted = "\"";
-    for (char c : std::get<std::string>(value))
-        quoted += c == '"' || c == '\\' ? std::string("\\") + c : std::string(1, c);
-    return quoted + "\"";
+    return yaml_quoted(std::get<std::string>(value));
 }
 
 std::vector<Override> tweak_overrides(const Tweaks& tweaks) {

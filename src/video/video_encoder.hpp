@@ -41,14 +41,4 @@ class VideoEncoder {
 // sheets: full-range 4:4:4 at high quality.
 std::vector<uint8_t> encode_jpeg(int width, int height, std::span<const uint8_t> rgb);
 
-// What a movie file holds, decoded again (tests, `facet info`-like checks).
-struct VideoSummary {
-    std::string codec;
-    int width = 0, height = 0;
-    int frames = 0;
-    double fps = 0;
-    std::vector<uint8_t> first_frame_rgb;  // width * height * 3
-};
-VideoSummary read_video(const std::string& path);
-
 }  // namespace facet
