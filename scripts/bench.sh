@@ -2,7 +2,7 @@
 # Builds facet_bench and runs the suite of docs/performance.md: facet against
 # OpenGL on Mesa's llvmpipe doing the same shading, scene by scene, render
 # only and whole job (files written), 1 and 2 threads.
-#   scripts/bench.sh                   the full suite (about 10 minutes on 2 cores)
+#   scripts/bench.sh                   the full suite (3-5 minutes on 2 cores, once built)
 #   scripts/bench.sh --frames 12       12 frames spread over each scene's range
 #   scripts/bench.sh bench/scenes/blob-5k.yaml     one scene
 #   FACET_BENCH_SEED=7 scripts/bench.sh            unseen meshes: other blobs
