@@ -113,31 +113,38 @@ void add_flagpole(Builder& b, float radius, float height, int segments, int ring
     add_bottom_cap(b, radius, bottom, segments);
 }
 
-void add_platform(Builder& b, float size, float thickness, float hole_radius, int segments) {
-    const float h = size / 2, top = thickness / 2, bottom = -thickness / 2;
-    const glm::vec3 up(0, 1, 0), down(0, -1, 0);
+namespace {
 
-    // The hole's rim: corner k at column_angle(k), direction (sin, cos) in
-    // (x, z), counter-clockwise seen from above.
-    std::vector<glm::vec2> rim(static_cast<size_t>(segments));
-    std::vector<glm::vec2> direction(rim.size());
+// The hole's rim: corner k at column_angle(k), direction (sin, cos) in
+// (x, z), counter-clockwise seen from above.
+void hole_rim(float hole_radius, int segments, std::vector<glm::vec2>& rim,
+              std::vector<glm::vec2>& direction) {
+    rim.resize(static_cast<size_t>(segments));
+    direction.resize(rim.size());
     for (int k = 0; k < segments; ++k) {
         const float phi = column_angle(k, segments);
         direction[k] = {std::sin(phi), std::cos(phi)};
         rim[k] = hole_radius * direction[k];
     }
+}
 
-    // The square's outline: each rim corner pushed out along its ray to the
-    // square, plus the square's four corners between them. The squares'
-    // corner m sits at 45 + 90 m degrees, an eighth-turn count of 1 + 2 m; it
-    // falls on rim corner k when segments (1 + 2 m) = 8 k, and strictly
-    // between k and k + 1 otherwise.
-    struct OutlinePoint {
-        glm::vec2 p;
-        bool corner;
-    };
+// A point of the square's outline; `corner` for one of its four corners.
+struct OutlinePoint {
+    glm::vec2 p;
+    bool corner;
+};
+
+// The square's outline: each rim corner pushed out along its ray to the
+// square, plus the square's four corners between them. The squares'
+// corner m sits at 45 + 90 m degrees, an eighth-turn count of 1 + 2 m; it
+// falls on rim corner k when segments (1 + 2 m) = 8 k, and strictly
+// between k and k + 1 otherwise. `outline_of` maps rim corner k to its
+// outline point.
+std::vector<OutlinePoint> square_outline(float h, int segments,
+                                         const std::vector<glm::vec2>& direction,
+                                         std::vector<size_t>& outline_of) {
     std::vector<OutlinePoint> outline;
-    std::vector<size_t> outline_of(rim.size());  // rim corner k -> its outline point
+    outline_of.resize(direction.size());
     const glm::vec2 corners[4] = {{h, h}, {h, -h}, {-h, -h}, {-h, h}};
     for (int k = 0; k < segments; ++k) {
         glm::vec2 p;
@@ -162,14 +169,23 @@ void add_platform(Builder& b, float size, float thickness, float hole_radius, in
             if (8LL * k < eighth && eighth < 8LL * (k + 1)) outline.push_back({corners[m], true});
         }
     }
+    return outline;
+}
 
-    // Top and bottom: for each rim edge k -> k + 1, the convex polygon rim
-    // k, its outline point, any square corner, the next outline point, rim
-    // k + 1 (the square cut by the wedge between the two rays and by the rim
-    // edge: convex), fanned from rim k. Counter-clockwise from above on top.
-    const auto uv_of = [&](glm::vec2 p, bool is_top) {
-        return glm::vec2(0.5f + p.x / size, is_top ? 0.5f + p.y / size : 0.5f - p.y / size);
-    };
+// The top's and bottom's texture coordinates: the square spans [0, 1], v
+// mirrored on the bottom.
+glm::vec2 slab_uv(glm::vec2 p, bool is_top, float size) {
+    return glm::vec2(0.5f + p.x / size, is_top ? 0.5f + p.y / size : 0.5f - p.y / size);
+}
+
+// Top and bottom: for each rim edge k -> k + 1, the convex polygon rim
+// k, its outline point, any square corner, the next outline point, rim
+// k + 1 (the square cut by the wedge between the two rays and by the rim
+// edge: convex), fanned from rim k. Counter-clockwise from above on top.
+void add_slab_faces(Builder& b, float size, float top, float bottom, int segments,
+                    const std::vector<glm::vec2>& rim, const std::vector<OutlinePoint>& outline,
+                    const std::vector<size_t>& outline_of) {
+    const glm::vec3 up(0, 1, 0), down(0, -1, 0);
     for (int face = 0; face < 2; ++face) {
         const bool is_top = face == 0;
         const float y = is_top ? top : bottom;
@@ -182,7 +198,8 @@ void add_platform(Builder& b, float size, float thickness, float hole_radius, in
             polygon.push_back(rim[next]);
             std::vector<uint32_t> ids;
             for (const glm::vec2& p : polygon)
-                ids.push_back(b.vertex({p.x, y, p.y}, is_top ? up : down, uv_of(p, is_top)));
+                ids.push_back(
+                    b.vertex({p.x, y, p.y}, is_top ? up : down, slab_uv(p, is_top, size)));
             for (size_t i = 1; i + 1 < ids.size(); ++i) {
                 if (is_top)
                     b.triangle(ids[0], ids[i], ids[i + 1]);
@@ -191,9 +208,11 @@ void add_platform(Builder& b, float size, float thickness, float hole_radius, in
             }
         }
     }
+}
 
-    // The hole's wall: smooth, its normals towards the axis (away from the
-    // slab's material), wound the other way from a cylinder's side.
+// The hole's wall: smooth, its normals towards the axis (away from the
+// slab's material), wound the other way from a cylinder's side.
+void add_hole_wall(Builder& b, float hole_radius, float top, float bottom, int segments) {
     const uint32_t wall = static_cast<uint32_t>(b.part.positions.size());
     for (int s = 0; s <= segments; ++s) {
         const float phi = column_angle(s, segments);
@@ -206,9 +225,12 @@ void add_platform(Builder& b, float size, float thickness, float hole_radius, in
         const uint32_t a = wall + 2 * static_cast<uint32_t>(s), c = a + 2;
         b.quad(a, a + 1, c + 1, c);
     }
+}
 
-    // The four outer sides, flat, through every outline point so their
-    // edges are the top's and bottom's (no T-junctions: the mesh is closed).
+// The four outer sides, flat, through every outline point so their
+// edges are the top's and bottom's (no T-junctions: the mesh is closed).
+void add_outer_sides(Builder& b, float size, float top, float bottom,
+                     const std::vector<OutlinePoint>& outline) {
     float along = 0;
     for (size_t i = 0; i < outline.size(); ++i) {
         const glm::vec2 p = outline[i].p, q = outline[(i + 1) % outline.size()].p;
@@ -225,6 +247,19 @@ void add_platform(Builder& b, float size, float thickness, float hole_radius, in
         const uint32_t e = b.vertex({p.x, top, p.y}, n, {u0, 0});
         b.quad(a, c, d, e);
     }
+}
+
+}  // namespace
+
+void add_platform(Builder& b, float size, float thickness, float hole_radius, int segments) {
+    const float h = size / 2, top = thickness / 2, bottom = -thickness / 2;
+    std::vector<glm::vec2> rim, direction;
+    hole_rim(hole_radius, segments, rim, direction);
+    std::vector<size_t> outline_of;
+    const std::vector<OutlinePoint> outline = square_outline(h, segments, direction, outline_of);
+    add_slab_faces(b, size, top, bottom, segments, rim, outline, outline_of);
+    add_hole_wall(b, hole_radius, top, bottom, segments);
+    add_outer_sides(b, size, top, bottom, outline);
 }
 
 }  // namespace facet::detail

@@ -238,103 +238,129 @@ class MtlReader : public tinyobj::MaterialReader {
     std::optional<Error> refusal_;
 };
 
-}  // namespace
-
-Mesh load_obj(const std::string& path, const AssetContext& context) {
-    const std::string text = normalise_obj_lines(read_obj_text(path), path);
-    const std::map<std::string, int> libraries = mtllib_lines(text);
+// What tinyobjloader read from one OBJ file.
+struct ObjContents {
     tinyobj::attrib_t attrib;
     std::vector<tinyobj::shape_t> shapes;
-    std::vector<tinyobj::material_t> obj_materials;
+    std::vector<tinyobj::material_t> materials;
     std::string warn, err;
-    auto parse = [&](bool triangulate) {
-        attrib = tinyobj::attrib_t();
-        shapes.clear();
-        obj_materials.clear();
-        warn.clear();
-        err.clear();
-        std::istringstream in(text);
-        MtlReader mtl(path, context.paths, libraries);
-        const bool parsed = tinyobj::LoadObj(&attrib, &shapes, &obj_materials, &warn, &err, &in,
-                                             &mtl, triangulate, false);
-        if (mtl.refusal()) throw *mtl.refusal();
-        return parsed;
-    };
-    // Polygons are triangulated here (see triangulate_polygon), so ask for them whole.
-    bool ok = parse(false);
-    // tinyobjloader keeps corner counts in an unsigned char: a face with more
-    // than 255 corners wraps, and the counts no longer add up to the indices.
-    // Such files fall back to tinyobjloader's own triangulation.
+};
+
+// Parses `text` into `obj`, emptied first; false when tinyobjloader fails.
+// Throws the asset path policy's refusal of a material library.
+bool parse_obj(const std::string& text, const std::string& path, const AssetContext& context,
+               const std::map<std::string, int>& libraries, bool triangulate, ObjContents& obj) {
+    obj.attrib = tinyobj::attrib_t();
+    obj.shapes.clear();
+    obj.materials.clear();
+    obj.warn.clear();
+    obj.err.clear();
+    std::istringstream in(text);
+    MtlReader mtl(path, context.paths, libraries);
+    const bool parsed = tinyobj::LoadObj(&obj.attrib, &obj.shapes, &obj.materials, &obj.warn,
+                                         &obj.err, &in, &mtl, triangulate, false);
+    if (mtl.refusal()) throw *mtl.refusal();
+    return parsed;
+}
+
+// tinyobjloader keeps corner counts in an unsigned char: a face with more
+// than 255 corners wraps, and the counts no longer add up to the indices.
+bool corner_counts_add_up(const std::vector<tinyobj::shape_t>& shapes) {
     bool whole_polygons = true;
     for (const auto& shape : shapes) {
         size_t sum = 0;
         for (unsigned char c : shape.mesh.num_face_vertices) sum += c;
         if (sum != shape.mesh.indices.size()) whole_polygons = false;
     }
+    return whole_polygons;
+}
+
+// The file at `path`, parsed; throws invalid_input when it cannot be read.
+ObjContents read_obj(const std::string& path, const AssetContext& context) {
+    const std::string text = normalise_obj_lines(read_obj_text(path), path);
+    const std::map<std::string, int> libraries = mtllib_lines(text);
+    ObjContents obj;
+    // Polygons are triangulated here (see triangulate_polygon), so ask for them whole.
+    bool ok = parse_obj(text, path, context, libraries, false, obj);
+    // Files whose corner counts wrapped (corner_counts_add_up) fall back to
+    // tinyobjloader's own triangulation.
+    const bool whole_polygons = corner_counts_add_up(obj.shapes);
     if (ok && !whole_polygons) {
-        ok = parse(true);
+        ok = parse_obj(text, path, context, libraries, true, obj);
         // In that mode tinyobjloader drops quads with bad indices with only a warning.
-        if (ok && warn.find("invalid vertex index") != std::string::npos)
+        if (ok && obj.warn.find("invalid vertex index") != std::string::npos)
             throw Error(ExitCode::invalid_input,
                         path + ": a face refers to a vertex that does not exist");
     }
     if (!ok) {
-        std::string why = err;
+        std::string why = obj.err;
         while (!why.empty() && (why.back() == '\n' || why.back() == ' ')) why.pop_back();
         throw Error(ExitCode::invalid_input,
                     path + ": cannot read OBJ: " + (why.empty() ? "unknown error" : why));
     }
+    return obj;
+}
 
-    Mesh mesh;
-    mesh.source = path;
-    mesh.loader = "tinyobjloader";
-    for (std::string& line : split_lines(warn, ""))
-        mesh.warnings.push_back(file_warning(path, line));
+// The textures loaded so far, by resolved path: each file is loaded once.
+using TextureCache = std::map<std::string, std::shared_ptr<const Texture>>;
 
-    std::map<std::string, std::shared_ptr<const Texture>> textures;
-    for (const auto& m : obj_materials) {
-        Material mat;
-        mat.name = material_name(m.name);
-        mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
-        float ks = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0f;
-        mat.specular = ks;
-        if (m.shininess > 0) mat.shininess = m.shininess;
-        if (!m.diffuse_texname.empty()) {
-            // Files written on Windows often name textures with backslashes.
-            std::string name = m.diffuse_texname;
-            std::replace(name.begin(), name.end(), '\\', '/');
-            const std::string where = "material '" + mat.name + "': map_Kd";
-            const std::string tex_path = resolve_asset_reference(path, where, name, context.paths);
-            auto& slot = textures[tex_path];
-            if (!slot) {
-                try {
-                    slot = std::make_shared<Texture>(load_texture(tex_path, context.textures));
-                } catch (const Error& e) {
-                    throw Error(ExitCode::invalid_input, path + ": " + where + ": " + e.what());
-                }
-            }
-            mat.base_color_map.texture = slot;
-            // map_Kd replaces Kd in most exporters' intent; many write Kd 0 0 0 with a map.
-            if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
+// The texture a material's map_Kd names.
+std::shared_ptr<const Texture> diffuse_texture(const std::string& texname,
+                                               const std::string& material, const std::string& path,
+                                               const AssetContext& context,
+                                               TextureCache& textures) {
+    // Files written on Windows often name textures with backslashes.
+    std::string name = texname;
+    std::replace(name.begin(), name.end(), '\\', '/');
+    const std::string where = "material '" + material + "': map_Kd";
+    const std::string tex_path = resolve_asset_reference(path, where, name, context.paths);
+    auto& slot = textures[tex_path];
+    if (!slot) {
+        try {
+            slot = std::make_shared<Texture>(load_texture(tex_path, context.textures));
+        } catch (const Error& e) {
+            throw Error(ExitCode::invalid_input, path + ": " + where + ": " + e.what());
         }
-        mesh.materials.push_back(mat);
     }
-    const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
-    bool used_default = false;
+    return slot;
+}
 
-    const size_t position_count = attrib.vertices.size() / 3;
-    const size_t normal_count = attrib.normals.size() / 3;
-    const size_t uv_count = attrib.texcoords.size() / 2;
+Material obj_material(const tinyobj::material_t& m, const std::string& path,
+                      const AssetContext& context, TextureCache& textures) {
+    Material mat;
+    mat.name = material_name(m.name);
+    mat.color = {m.diffuse[0], m.diffuse[1], m.diffuse[2]};
+    float ks = (m.specular[0] + m.specular[1] + m.specular[2]) / 3.0f;
+    mat.specular = ks;
+    if (m.shininess > 0) mat.shininess = m.shininess;
+    if (!m.diffuse_texname.empty()) {
+        mat.base_color_map.texture =
+            diffuse_texture(m.diffuse_texname, mat.name, path, context, textures);
+        // map_Kd replaces Kd in most exporters' intent; many write Kd 0 0 0 with a map.
+        if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
+    }
+    return mat;
+}
 
-    // One part per material; vertices are unique per (position, normal, uv) index triple.
-    struct Building {
-        MeshPart part;
-        std::map<std::tuple<int, int, int>, uint32_t> unique;
-        bool missing_normals = false;
-        bool any_uv = false;
-    };
-    std::map<uint32_t, Building> parts;
-    for (const auto& shape : shapes) {
+// One part per material; vertices are unique per (position, normal, uv) index triple.
+struct PartBuilder {
+    MeshPart part;
+    std::map<std::tuple<int, int, int>, uint32_t> unique;
+    bool missing_normals = false;
+    bool any_uv = false;
+};
+
+// Sorts the shapes' faces into one part per material, as triangles.
+struct PartAssembly {
+    PartAssembly(const tinyobj::attrib_t& attrib, const std::string& path, uint32_t material_count)
+        : attrib(attrib),
+          path(path),
+          default_material(material_count),
+          position_count(attrib.vertices.size() / 3),
+          normal_count(attrib.normals.size() / 3),
+          uv_count(attrib.texcoords.size() / 2) {}
+
+    void add_shape(const tinyobj::shape_t& shape) {
         const auto& m = shape.mesh;
         size_t offset = 0;
         for (size_t face = 0; face < m.num_face_vertices.size(); ++face) {
@@ -343,79 +369,126 @@ Mesh load_obj(const std::string& path, const AssetContext& context) {
                 offset += count;
                 continue;
             }
-            for (size_t k = 0; k < count; ++k) {
-                const tinyobj::index_t& idx = m.indices[offset + k];
-                if (idx.vertex_index < 0 || static_cast<size_t>(idx.vertex_index) >= position_count)
-                    throw Error(ExitCode::invalid_input,
-                                path + ": shape '" + shape.name + "' face " +
-                                    std::to_string(face + 1) + " refers to vertex " +
-                                    std::to_string(idx.vertex_index + 1) + " but the file has " +
-                                    std::to_string(position_count));
-            }
-            std::vector<std::array<size_t, 3>> triangles;
-            if (count == 3) {
-                triangles.push_back({0, 1, 2});
-            } else {
-                std::vector<glm::dvec3> corners(count);
-                for (size_t k = 0; k < count; ++k) {
-                    size_t v = static_cast<size_t>(m.indices[offset + k].vertex_index);
-                    corners[k] = {attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
-                                  attrib.vertices[3 * v + 2]};
-                }
-                triangles = triangulate_polygon(corners);
-            }
-            int mat_id = face < m.material_ids.size() ? m.material_ids[face] : -1;
-            uint32_t material = (mat_id >= 0 && static_cast<size_t>(mat_id) < mesh.materials.size())
-                                    ? static_cast<uint32_t>(mat_id)
-                                    : default_material;
-            used_default = used_default || material == default_material;
-            Building& b = parts[material];
-            b.part.material = material;
-            for (const auto& tri : triangles) {
-                for (size_t corner : tri) {
-                    const tinyobj::index_t& idx = m.indices[offset + corner];
-                    int n = idx.normal_index;
-                    if (n >= 0 && static_cast<size_t>(n) >= normal_count) n = -1;
-                    int t = idx.texcoord_index;
-                    if (t >= 0 && static_cast<size_t>(t) >= uv_count) t = -1;
-                    if (n < 0) b.missing_normals = true;
-                    if (t >= 0) b.any_uv = true;
-                    auto key = std::make_tuple(idx.vertex_index, n, t);
-                    auto [it, added] =
-                        b.unique.emplace(key, static_cast<uint32_t>(b.part.positions.size()));
-                    if (added) {
-                        size_t v = static_cast<size_t>(idx.vertex_index);
-                        b.part.positions.push_back({attrib.vertices[3 * v],
-                                                    attrib.vertices[3 * v + 1],
-                                                    attrib.vertices[3 * v + 2]});
-                        b.part.normals.push_back(n >= 0 ? glm::vec3(attrib.normals[3 * n],
-                                                                    attrib.normals[3 * n + 1],
-                                                                    attrib.normals[3 * n + 2])
-                                                        : glm::vec3(0));
-                        // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
-                        b.part.uvs.push_back(t >= 0 ? glm::vec2(attrib.texcoords[2 * t],
-                                                                1.0f - attrib.texcoords[2 * t + 1])
-                                                    : glm::vec2(0));
-                    }
-                    b.part.indices.push_back(it->second);
-                }
-            }
+            check_face_vertices(shape, face, offset, count);
+            const std::vector<std::array<size_t, 3>> triangles = face_triangles(m, offset, count);
+            PartBuilder& b = face_part(m, face);
+            for (const auto& tri : triangles)
+                for (size_t corner : tri) add_corner(b, m.indices[offset + corner]);
             offset += count;
         }
     }
-    if (used_default) {
+
+    const tinyobj::attrib_t& attrib;
+    const std::string& path;
+    // One past the file's materials: the material of faces without a valid one.
+    const uint32_t default_material;
+    const size_t position_count, normal_count, uv_count;
+    std::map<uint32_t, PartBuilder> parts;
+    bool used_default = false;
+
+    void check_face_vertices(const tinyobj::shape_t& shape, size_t face, size_t offset,
+                             size_t count) const {
+        for (size_t k = 0; k < count; ++k) {
+            const tinyobj::index_t& idx = shape.mesh.indices[offset + k];
+            if (idx.vertex_index < 0 || static_cast<size_t>(idx.vertex_index) >= position_count)
+                throw Error(ExitCode::invalid_input,
+                            path + ": shape '" + shape.name + "' face " + std::to_string(face + 1) +
+                                " refers to vertex " + std::to_string(idx.vertex_index + 1) +
+                                " but the file has " + std::to_string(position_count));
+        }
+    }
+
+    // The face's triangles, as corner numbers within the face.
+    std::vector<std::array<size_t, 3>> face_triangles(const tinyobj::mesh_t& m, size_t offset,
+                                                      size_t count) const {
+        std::vector<std::array<size_t, 3>> triangles;
+        if (count == 3) {
+            triangles.push_back({0, 1, 2});
+        } else {
+            std::vector<glm::dvec3> corners(count);
+            for (size_t k = 0; k < count; ++k) {
+                size_t v = static_cast<size_t>(m.indices[offset + k].vertex_index);
+                corners[k] = {attrib.vertices[3 * v], attrib.vertices[3 * v + 1],
+                              attrib.vertices[3 * v + 2]};
+            }
+            triangles = triangulate_polygon(corners);
+        }
+        return triangles;
+    }
+
+    PartBuilder& face_part(const tinyobj::mesh_t& m, size_t face) {
+        int mat_id = face < m.material_ids.size() ? m.material_ids[face] : -1;
+        uint32_t material = (mat_id >= 0 && static_cast<size_t>(mat_id) < default_material)
+                                ? static_cast<uint32_t>(mat_id)
+                                : default_material;
+        used_default = used_default || material == default_material;
+        PartBuilder& b = parts[material];
+        b.part.material = material;
+        return b;
+    }
+
+    void add_corner(PartBuilder& b, const tinyobj::index_t& idx) {
+        int n = idx.normal_index;
+        if (n >= 0 && static_cast<size_t>(n) >= normal_count) n = -1;
+        int t = idx.texcoord_index;
+        if (t >= 0 && static_cast<size_t>(t) >= uv_count) t = -1;
+        if (n < 0) b.missing_normals = true;
+        if (t >= 0) b.any_uv = true;
+        auto key = std::make_tuple(idx.vertex_index, n, t);
+        auto [it, added] = b.unique.emplace(key, static_cast<uint32_t>(b.part.positions.size()));
+        if (added) {
+            size_t v = static_cast<size_t>(idx.vertex_index);
+            b.part.positions.push_back(
+                {attrib.vertices[3 * v], attrib.vertices[3 * v + 1], attrib.vertices[3 * v + 2]});
+            b.part.normals.push_back(n >= 0 ? glm::vec3(attrib.normals[3 * n],
+                                                        attrib.normals[3 * n + 1],
+                                                        attrib.normals[3 * n + 2])
+                                            : glm::vec3(0));
+            // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
+            b.part.uvs.push_back(
+                t >= 0 ? glm::vec2(attrib.texcoords[2 * t], 1.0f - attrib.texcoords[2 * t + 1])
+                       : glm::vec2(0));
+        }
+        b.part.indices.push_back(it->second);
+    }
+};
+
+// Drops unused UVs, fills in missing normals, makes every normal unit length
+// and checks the part.
+void finish_part(PartBuilder& b, const std::string& path) {
+    if (!b.any_uv) b.part.uvs.clear();
+    if (b.missing_normals) compute_normals(b.part, kObjCreaseDegrees);
+    for (auto& n : b.part.normals) {
+        float len = glm::length(n);
+        n = len > 0 ? n / len : glm::vec3(0, 1, 0);
+    }
+    validate_part(b.part, path);
+}
+
+}  // namespace
+
+Mesh load_obj(const std::string& path, const AssetContext& context) {
+    const ObjContents obj = read_obj(path, context);
+
+    Mesh mesh;
+    mesh.source = path;
+    mesh.loader = "tinyobjloader";
+    for (std::string& line : split_lines(obj.warn, ""))
+        mesh.warnings.push_back(file_warning(path, line));
+
+    TextureCache textures;
+    for (const auto& m : obj.materials)
+        mesh.materials.push_back(obj_material(m, path, context, textures));
+
+    PartAssembly assembly(obj.attrib, path, static_cast<uint32_t>(mesh.materials.size()));
+    for (const auto& shape : obj.shapes) assembly.add_shape(shape);
+    if (assembly.used_default) {
         Material fallback;
         fallback.name = "default";
         mesh.materials.push_back(fallback);
     }
-    for (auto& [material, b] : parts) {
-        if (!b.any_uv) b.part.uvs.clear();
-        if (b.missing_normals) compute_normals(b.part, kObjCreaseDegrees);
-        for (auto& n : b.part.normals) {
-            float len = glm::length(n);
-            n = len > 0 ? n / len : glm::vec3(0, 1, 0);
-        }
-        validate_part(b.part, path);
+    for (auto& [material, b] : assembly.parts) {
+        finish_part(b, path);
         mesh.parts.push_back(std::move(b.part));
     }
     if (mesh.triangle_count() == 0)

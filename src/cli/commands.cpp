@@ -24,7 +24,7 @@
 #include "cli/shell_docs.hpp"
 #include "cli/video_command.hpp"
 #include "compare/thresholds.hpp"
-#include "core/color.hpp"
+#include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
 #include "core/thread_pool.hpp"
@@ -139,15 +139,88 @@ struct TemporaryFolder {
     }
 };
 
-int render_command(const RenderArgs& args) {
-    // Ctrl-C finishes the frames already rendered instead of leaving files
-    // half written; a second Ctrl-C is not caught and ends facet at once.
-    // Installed first, so an interrupt while loading also ends cleanly.
+// Ctrl-C finishes the frames already rendered instead of leaving files
+// half written; a second Ctrl-C is not caught and ends facet at once.
+void catch_interrupts() {
     struct sigaction action {};
     action.sa_handler = on_interrupt;
     action.sa_flags = SA_RESETHAND;
     sigaction(SIGINT, &action, nullptr);
     sigaction(SIGTERM, &action, nullptr);
+}
+
+// The thresholds --reference compares with (none without it).
+CompareThresholds reference_thresholds(const RenderArgs& args, bool compare) {
+    if (!compare && !args.comparison.update_reference.empty())
+        fail_input(command_line("--update-reference"), "",
+                   "give the reference folder with --reference DIR");
+    return compare ? comparison_thresholds(args.comparison) : CompareThresholds{};
+}
+
+// The options the arguments set (render_command points out_dir at the
+// --video-only folder).
+RenderOptions render_options(const RenderArgs& args, const SceneOptions& scene_opts,
+                             const std::vector<int>& frames, const std::optional<RunPart>& part) {
+    RenderOptions options;
+    options.frames = frames;
+    options.cameras = split_list(args.cameras);
+    options.threads = args.threads;
+    options.out_dir = args.out;
+    options.cancel = &g_interrupted;
+    options.overwrite = args.overwrite;
+    options.provenance = {args.command_line, scene_opts.overrides, ""};
+    options.part = part;
+    options.skip_existing = args.chunk.skip_existing;
+    return options;
+}
+
+// Refuses a --video or --video-only the render cannot serve.
+void check_video_arguments(const RenderArgs& args, const SceneDesc& scene, bool compare) {
+    if (!args.video.empty()) {
+        check_movie_name(args.video);
+        if (!scene.output.writes(Pass::color))
+            fail_input(command_line("--video " + args.video), "",
+                       "a movie needs the colour pass (--passes color)");
+    }
+    if (args.video_only && (args.video.empty() || compare))
+        fail_input(command_line("--video-only"), "",
+                   "give --video MOVIE, and no --reference (there are no images to compare)");
+}
+
+// The folder --video-only renders into ("" without it), named for this process.
+std::string hidden_frames_folder(const RenderArgs& args) {
+    return args.video_only ? (std::filesystem::path(args.video).parent_path() /
+                              (".facet-frames-" + std::to_string(::getpid())))
+                                 .string()
+                           : "";
+}
+
+// --video: the movie of this run's colour frames.
+void make_movie(const RenderArgs& args, const SceneDesc& scene, const RenderOptions& options,
+                const RenderResult& result, const std::vector<int>& frames) {
+    VideoArgs video{result.output_dir, args.video, "", 0, args.quiet, {}};
+    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
+    video.camera = scene.cameras[cameras.front()].name;
+    video.frames = frames.empty() ? scene.output.frames : frames;  // this run's, not older ones
+    video_command(video);
+}
+
+// --reference: compares the images this run rendered with the reference's.
+int compare_with_reference(const RenderArgs& args, const SceneDesc& scene,
+                           const RenderOptions& options, const CompareThresholds& thresholds,
+                           const RenderResult& result, const std::vector<int>& frames) {
+    CompareArgs comparison = args.comparison;
+    comparison.quiet = args.quiet;
+    std::set<std::pair<std::string, int>> rendered;
+    for (size_t camera : select_cameras(scene, options.cameras))
+        for (int frame : frames.empty() ? scene.output.frames : frames)
+            rendered.insert({scene.cameras[camera].name, frame});
+    return compare_render_output(comparison, thresholds, result.output_dir, rendered);
+}
+
+int render_command(const RenderArgs& args) {
+    // Installed first, so an interrupt while loading also ends cleanly.
+    catch_interrupts();
     const SceneOptions scene_opts = scene_options(args);
     SceneDesc scene = load_scene(args.scene, scene_opts);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
@@ -168,38 +241,13 @@ int render_command(const RenderArgs& args) {
         }
         frames = part_frames;
     }
-    if (!compare && !args.comparison.update_reference.empty())
-        fail_input(command_line("--update-reference"), "",
-                   "give the reference folder with --reference DIR");
     // Thresholds are checked before the long part, as the scene is.
-    const CompareThresholds thresholds =
-        compare ? comparison_thresholds(args.comparison) : CompareThresholds{};
-    RenderOptions options;
-    options.frames = frames;
-    options.cameras = split_list(args.cameras);
-    options.threads = args.threads;
-    options.out_dir = args.out;
-    options.cancel = &g_interrupted;
-    options.overwrite = args.overwrite;
-    options.provenance = {args.command_line, scene_opts.overrides, ""};
-    options.part = part;
-    options.skip_existing = args.chunk.skip_existing;
-    if (!args.video.empty()) {
-        check_movie_name(args.video);
-        if (!scene.output.writes(Pass::color))
-            fail_input(command_line("--video " + args.video), "",
-                       "a movie needs the colour pass (--passes color)");
-    }
-    if (args.video_only && (args.video.empty() || compare))
-        fail_input(command_line("--video-only"), "",
-                   "give --video MOVIE, and no --reference (there are no images to compare)");
+    const CompareThresholds thresholds = reference_thresholds(args, compare);
+    RenderOptions options = render_options(args, scene_opts, frames, part);
+    check_video_arguments(args, scene, compare);
     // --video-only: the frames go to a hidden folder beside the movie,
     // removed when the movie is written (or the run fails).
-    const TemporaryFolder frames_folder(args.video_only
-                                            ? (std::filesystem::path(args.video).parent_path() /
-                                               (".facet-frames-" + std::to_string(::getpid())))
-                                                  .string()
-                                            : "");
+    const TemporaryFolder frames_folder(hidden_frames_folder(args));
     if (args.video_only) options.out_dir = frames_folder.path;
     if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
@@ -221,22 +269,8 @@ int render_command(const RenderArgs& args) {
         std::printf("wrote %s to %s (manifest: %s)\n",
                     count_of(result.files_written, "file", "files").c_str(),
                     result.output_dir.c_str(), result.manifest_path.c_str());
-    if (!args.video.empty()) {
-        VideoArgs video{result.output_dir, args.video, "", 0, args.quiet, {}};
-        const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-        video.camera = scene.cameras[cameras.front()].name;
-        video.frames = frames.empty() ? scene.output.frames : frames;  // this run's, not older ones
-        video_command(video);
-    }
-    if (compare) {
-        CompareArgs comparison = args.comparison;
-        comparison.quiet = args.quiet;
-        std::set<std::pair<std::string, int>> rendered;
-        for (size_t camera : select_cameras(scene, options.cameras))
-            for (int frame : frames.empty() ? scene.output.frames : frames)
-                rendered.insert({scene.cameras[camera].name, frame});
-        return compare_render_output(comparison, thresholds, result.output_dir, rendered);
-    }
+    if (!args.video.empty()) make_movie(args, scene, options, result, frames);
+    if (compare) return compare_with_reference(args, scene, options, thresholds, result, frames);
     return 0;
 }
 
@@ -319,10 +353,7 @@ std::vector<uint8_t> sheet_jpeg(const ColorImage& sheet) {
     std::vector<uint8_t> rgb(static_cast<size_t>(sheet.width) * sheet.height * 3);
     for (size_t p = 0; p < sheet.pixels.size(); ++p) {
         const glm::vec4 c = to_float(to_half(sheet.pixels[p]));
-        for (int i = 0; i < 3; ++i) {
-            const double unit = c[i] > 0.0f ? std::min(static_cast<double>(c[i]), 1.0) : 0.0;
-            rgb[p * 3 + i] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
-        }
+        for (int i = 0; i < 3; ++i) rgb[p * 3 + i] = display_byte(c[i]);
     }
     return encode_jpeg(sheet.width, sheet.height, rgb);
 }
@@ -528,7 +559,7 @@ std::pair<int, int> parse_size(const std::string& text, const std::string& optio
 
 namespace {
 
-// The subcommands' options, one function each (run_command_line stays a
+// The subcommands' options, one function each (add_subcommands stays a
 // list of commands).
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     CLI::App* cmd = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
@@ -643,79 +674,100 @@ int help_command(const CLI::App& app, const std::string& topic) {
     return 0;
 }
 
-}  // namespace
+// `facet styles [NAME]`.
+struct StylesArgs {
+    std::string name;
+    bool json = false;
+};
 
-int run_command_line(int argc, char** argv) {
-    CLI::App app{"facet: scene-file driven offline renderer"};
-    app.require_subcommand(1);
-    app.set_version_flag("--version", version_line());
-
-    RenderArgs render_args;
-    CLI::App* render = add_render_command(app, render_args);
-
-    CompareArgs compare_args;
-    CLI::App* compare = add_compare_command(app, compare_args);
-
-    RenderArgs validate_args;
-    CLI::App* validate = add_validate_command(app, validate_args);
-
-    std::string style_name;
-    bool styles_json = false;
-    CLI::App* styles = app.add_subcommand(
+CLI::App* add_styles_command(CLI::App& app, StylesArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
         "styles", "List the style presets, or print one with its extends chain applied");
-    styles->add_option("name", style_name, "Preset to print, resolved");
-    styles->add_flag("--json", styles_json, "The list as JSON");
+    cmd->add_option("name", args.name, "Preset to print, resolved");
+    cmd->add_flag("--json", args.json, "The list as JSON");
+    return cmd;
+}
 
-    SheetArgs sheet_args;
-    CLI::App* sheet = add_sheet_command(app, sheet_args);
+// `facet info MESH`.
+struct InfoArgs {
+    std::string mesh;
+    bool allow_outside = false;
+    bool json = false;
+};
 
-    BenchArgs bench_args;
-    CLI::App* bench = add_bench_command(app, bench_args);
-
-    std::string mesh_path;
-    bool info_allow_outside = false;
-    CLI::App* info = app.add_subcommand(
+CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
+    CLI::App* cmd = app.add_subcommand(
         "info", "Describe a mesh file: triangles, bounds, materials, animations");
-    info->add_option("mesh", mesh_path,
-                     "Mesh file: .obj, .gltf, .glb, .stl, .ply, .fbx, .dae or .3ds")
+    cmd->add_option("mesh", args.mesh,
+                    "Mesh file: .obj, .gltf, .glb, .stl, .ply, .fbx, .dae or .3ds")
         ->required();
-    bool info_json = false;
-    info->add_flag("--json", info_json, "Print the description as JSON");
-    add_asset_paths_flag(info, info_allow_outside);
+    cmd->add_flag("--json", args.json, "Print the description as JSON");
+    add_asset_paths_flag(cmd, args.allow_outside);
+    return cmd;
+}
 
-    VideoArgs video_args;
-    CLI::App* video = add_video_command(app, video_args);
+CLI::App* add_completion_command(CLI::App& app, std::string& shell) {
+    CLI::App* cmd = app.add_subcommand("completion", "Print a shell completion script (bash)");
+    cmd->add_option("shell", shell, "Shell: bash")->required()->check(CLI::IsMember({"bash"}));
+    return cmd;
+}
 
-    RenderArgs preview_args;
-    CLI::App* preview = add_preview_command(app, preview_args);
+CLI::App* add_help_command(CLI::App& app, std::string& topic) {
+    CLI::App* cmd = app.add_subcommand("help", "Show the help of facet or of one command");
+    cmd->add_option("command", topic, "Command to describe");
+    return cmd;
+}
 
-    MergeArgs merge_args;
-    CLI::App* merge = add_merge_command(app, merge_args);
-    FarmArgs slurm_args, openjd_args;
-    CLI::App* farm = add_farm_command(app, slurm_args, openjd_args);
+// What CLI11 parses each subcommand's arguments into.
+struct CommandArgs {
+    RenderArgs render;
+    CompareArgs compare;
+    RenderArgs validate;
+    StylesArgs styles;
+    SheetArgs sheet;
+    BenchArgs bench;
+    InfoArgs info;
+    VideoArgs video;
+    RenderArgs preview;
+    MergeArgs merge;
+    FarmArgs slurm, openjd;
+    std::string shell;       // completion
+    std::string help_topic;  // help
+};
 
-    std::string shell;
-    CLI::App* completion =
-        app.add_subcommand("completion", "Print a shell completion script (bash)");
-    completion->add_option("shell", shell, "Shell: bash")
-        ->required()
-        ->check(CLI::IsMember({"bash"}));
-    CLI::App* man = app.add_subcommand("man", "Print facet's man page (roff), facet(1)");
+// The subcommands, to tell which one was given.
+struct Subcommands {
+    CLI::App *render, *compare, *validate, *styles, *sheet, *bench, *info, *video, *preview, *merge,
+        *farm, *completion, *man, *help;
+};
 
-    std::string help_topic;
-    CLI::App* help = app.add_subcommand("help", "Show the help of facet or of one command");
-    help->add_option("command", help_topic, "Command to describe");
+// Every subcommand, in the order the help lists them.
+Subcommands add_subcommands(CLI::App& app, CommandArgs& args) {
+    Subcommands cmd;
+    cmd.render = add_render_command(app, args.render);
+    cmd.compare = add_compare_command(app, args.compare);
+    cmd.validate = add_validate_command(app, args.validate);
+    cmd.styles = add_styles_command(app, args.styles);
+    cmd.sheet = add_sheet_command(app, args.sheet);
+    cmd.bench = add_bench_command(app, args.bench);
+    cmd.info = add_info_command(app, args.info);
+    cmd.video = add_video_command(app, args.video);
+    cmd.preview = add_preview_command(app, args.preview);
+    cmd.merge = add_merge_command(app, args.merge);
+    cmd.farm = add_farm_command(app, args.slurm, args.openjd);
+    cmd.completion = add_completion_command(app, args.shell);
+    cmd.man = app.add_subcommand("man", "Print facet's man page (roff), facet(1)");
+    cmd.help = add_help_command(app, args.help_topic);
+    return cmd;
+}
 
-    // Unknown words are reported by facet with a did-you-mean, not by CLI11.
-    for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
-        sub->allow_extras();
-    render_args.command_line.assign(argv, argv + argc);
-    merge_args.command_line = render_args.command_line;
-    preview_args.command_line = render_args.command_line;
+// Parses the command line into the subcommands' arguments. The exit code
+// when that ends the run (--help, --version, a parse error), else none.
+std::optional<int> parse_command_line(CLI::App& app, CLI::App& farm, int argc, char** argv) {
     try {
         check_subcommand_name(app, argc, argv);
         if (argc > 2 && std::string(argv[1]) == "farm")
-            check_subcommand_name(*farm, argc - 1, argv + 1);
+            check_subcommand_name(farm, argc - 1, argv + 1);
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);
@@ -723,44 +775,74 @@ int run_command_line(int argc, char** argv) {
     } catch (const Error& e) {
         return report_error(e);
     }
+    return std::nullopt;
+}
+
+// `facet completion bash`: the script completes style names too.
+int completion_command(const CLI::App& app) {
+    std::vector<std::string> names;
+    for (const auto& preset : list_style_presets(default_style_dirs()))
+        names.push_back(preset.first);
+    std::printf("%s", bash_completion(app, names).c_str());
+    return 0;
+}
+
+// Refuses words no option takes, then runs the subcommand that was parsed;
+// invalid_input when there is none.
+int run_subcommand(CLI::App& app, const Subcommands& cmd, CommandArgs& args) {
+    for (CLI::App* sub : app.get_subcommands()) {
+        reject_unknown_arguments(sub);
+        for (CLI::App* nested : sub->get_subcommands()) reject_unknown_arguments(nested);
+    }
+    args.validate.output_given = cmd.validate->get_option("--output")->count() > 0;
+    if (cmd.render->parsed()) return render_command(args.render);
+    if (cmd.compare->parsed()) return compare_command(args.compare);
+    if (cmd.validate->parsed()) return validate_command(args.validate);
+    if (cmd.info->parsed())
+        return info_command(args.info.mesh, args.info.allow_outside, args.info.json);
+    if (cmd.styles->parsed()) return styles_command(args.styles.name, args.styles.json);
+    if (cmd.bench->parsed()) return bench_command(args.bench);
+    if (cmd.sheet->parsed()) return sheet_command(args.sheet);
+    if (cmd.video->parsed()) return video_command(args.video);
+    if (cmd.preview->parsed()) return preview_command(args.preview);
+    if (cmd.merge->parsed()) return merge_command(args.merge);
+    if (cmd.farm->parsed())
+        return farm_command(cmd.farm->get_subcommand("openjd")->parsed() ? args.openjd : args.slurm,
+                            cmd.farm->get_subcommand("openjd")->parsed());
+    if (cmd.help->parsed()) return help_command(app, args.help_topic);
+    if (cmd.completion->parsed()) return completion_command(app);
+    if (cmd.man->parsed()) {
+        std::printf("%s", man_page(app, version_line()).c_str());
+        return 0;
+    }
+    return static_cast<int>(ExitCode::invalid_input);
+}
+
+}  // namespace
+
+int run_command_line(int argc, char** argv) {
+    CLI::App app{"facet: scene-file driven offline renderer"};
+    app.require_subcommand(1);
+    app.set_version_flag("--version", version_line());
+    CommandArgs args;
+    const Subcommands cmd = add_subcommands(app, args);
+
+    // Unknown words are reported by facet with a did-you-mean, not by CLI11.
+    for (CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; }))
+        sub->allow_extras();
+    args.render.command_line.assign(argv, argv + argc);
+    args.merge.command_line = args.render.command_line;
+    args.preview.command_line = args.render.command_line;
+    if (const std::optional<int> code = parse_command_line(app, *cmd.farm, argc, argv))
+        return *code;
     try {
-        for (CLI::App* sub : app.get_subcommands()) {
-            reject_unknown_arguments(sub);
-            for (CLI::App* nested : sub->get_subcommands()) reject_unknown_arguments(nested);
-        }
-        validate_args.output_given = validate->get_option("--output")->count() > 0;
-        if (render->parsed()) return render_command(render_args);
-        if (compare->parsed()) return compare_command(compare_args);
-        if (validate->parsed()) return validate_command(validate_args);
-        if (info->parsed()) return info_command(mesh_path, info_allow_outside, info_json);
-        if (styles->parsed()) return styles_command(style_name, styles_json);
-        if (bench->parsed()) return bench_command(bench_args);
-        if (sheet->parsed()) return sheet_command(sheet_args);
-        if (video->parsed()) return video_command(video_args);
-        if (preview->parsed()) return preview_command(preview_args);
-        if (merge->parsed()) return merge_command(merge_args);
-        if (farm->parsed())
-            return farm_command(farm->get_subcommand("openjd")->parsed() ? openjd_args : slurm_args,
-                                farm->get_subcommand("openjd")->parsed());
-        if (help->parsed()) return help_command(app, help_topic);
-        if (completion->parsed()) {
-            std::vector<std::string> names;
-            for (const auto& preset : list_style_presets(default_style_dirs()))
-                names.push_back(preset.first);
-            std::printf("%s", bash_completion(app, names).c_str());
-            return 0;
-        }
-        if (man->parsed()) {
-            std::printf("%s", man_page(app, version_line()).c_str());
-            return 0;
-        }
+        return run_subcommand(app, cmd, args);
     } catch (const std::bad_alloc&) {
         std::fprintf(stderr, "facet: error: out of memory\n");
         return static_cast<int>(ExitCode::runtime_failure);
     } catch (const std::exception& e) {
         return report_error(e);
     }
-    return static_cast<int>(ExitCode::invalid_input);
 }
 
 }  // namespace facet

@@ -347,30 +347,33 @@ void substep(const ClothModel& model, ClothState& state, Scratch& s) {
 
 // --- Model ---------------------------------------------------------------------
 
-ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
-    try {
-        check_cloth_params(params, pins);
-    } catch (const Error& e) {
-        throw Error(ExitCode::invalid_input, "cloth: " + e.detail());
-    }
-    ClothModel m;
-    m.params = params;
-    m.substeps = cloth_substeps(params);
-    m.step_seconds = params.frame_seconds / m.substeps;
-    m.particle_mass = particle_mass(params);
-    const Grid g = grid_of(params);
-    const int C = g.columns, R = g.rows;
-    const auto at = [C](int column, int row) { return static_cast<uint32_t>(row * C + column); };
-    const size_t n = static_cast<size_t>(C) * R;
+namespace {
 
+// Vertex indices of the grid: row by row, each row column by column.
+struct GridIndex {
+    int columns;
+    uint32_t operator()(int column, int row) const {
+        return static_cast<uint32_t>(row * columns + column);
+    }
+};
+
+// Pins the left edge, the top edge (each if asked) and the vertices named.
+void pin_vertices(ClothModel& m, const ClothPins& pins, int C, int R) {
+    const GridIndex at{C};
+    const size_t n = static_cast<size_t>(C) * R;
     m.pinned.assign(n, 0);
     for (int r = 0; r < R; ++r)
         if (pins.left_edge) m.pinned[at(0, r)] = 1;
     for (int c = 0; c < C; ++c)
         if (pins.top_edge) m.pinned[at(c, 0)] = 1;
     for (int v : pins.vertices) m.pinned[static_cast<size_t>(v)] = 1;
+}
 
-    m.rest_positions.resize(n);
+// The flat rest grid in the XY plane, top left at the origin, and the rest
+// part's vertices.
+void lay_out_rest_grid(ClothModel& m, const ClothParams& params, int C, int R) {
+    const GridIndex at{C};
+    m.rest_positions.resize(static_cast<size_t>(C) * R);
     MeshPart& part = m.rest_part;
     for (int r = 0; r < R; ++r)
         for (int c = 0; c < C; ++c) {
@@ -383,10 +386,13 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
             part.uvs.push_back({static_cast<float>(c) / (C - 1), static_cast<float>(r) / (R - 1)});
         }
     for (int c = 0; c < C; ++c) m.column_x.push_back(m.rest_positions[at(c, 0)].x);
+}
 
-    // Each free vertex's nearest pin at rest, for the long range attachments
-    // (the rest shape is flat, so the straight line is the distance in the
-    // cloth). Ties go to the first pin in index order.
+// Each free vertex's nearest pin at rest, for the long range attachments
+// (the rest shape is flat, so the straight line is the distance in the
+// cloth). Ties go to the first pin in index order.
+void attach_to_nearest_pins(ClothModel& m) {
+    const size_t n = m.pinned.size();
     std::vector<uint32_t> pinned_list;
     for (uint32_t i = 0; i < n; ++i)
         if (m.pinned[i]) pinned_list.push_back(i);
@@ -404,9 +410,13 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
         }
         m.attachment_rest[i] = best;
     }
+}
 
-    // The list of springs (the strain limit walks it; the forces use the same
-    // springs grouped by kind, spring_families).
+// The list of springs (the strain limit walks it; the forces use the same
+// springs grouped by kind, spring_families).
+void add_springs(ClothModel& m, const ClothParams& params, const Grid& g) {
+    const int C = g.columns, R = g.rows;
+    const GridIndex at{C};
     const SpringConstants k = spring_constants(params, g);
     const double diagonal = std::sqrt(g.dx * g.dx + g.dy * g.dy);
     auto spring = [&](uint32_t a, uint32_t b, double rest, double stiffness, bool limit) {
@@ -432,10 +442,13 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
                 if (c + 2 < C) spring(at(c, r), at(c + 2, r), 2 * g.dx, k.bend_horizontal, false);
                 if (r + 2 < R) spring(at(c, r), at(c, r + 2), 2 * g.dy, k.bend_vertical, false);
             }
+}
 
-    // Two triangles per cell, cell by cell along each row (the wind looks up
-    // a face's column from its index). The diagonal alternates like a
-    // checkerboard so the mesh has no preferred shear direction.
+// Two triangles per cell, cell by cell along each row (the wind looks up
+// a face's column from its index). The diagonal alternates like a
+// checkerboard so the mesh has no preferred shear direction.
+void add_cell_triangles(ClothModel& m, int C, int R) {
+    const GridIndex at{C};
     for (int r = 0; r + 1 < R; ++r)
         for (int c = 0; c + 1 < C; ++c) {
             const uint32_t tl = at(c, r), tr = at(c + 1, r), bl = at(c, r + 1),
@@ -445,7 +458,28 @@ ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
             else
                 m.indices.insert(m.indices.end(), {bl, br, tl, br, tr, tl});
         }
-    part.indices = m.indices;
+    m.rest_part.indices = m.indices;
+}
+
+}  // namespace
+
+ClothModel build_cloth_model(const ClothParams& params, const ClothPins& pins) {
+    try {
+        check_cloth_params(params, pins);
+    } catch (const Error& e) {
+        throw Error(ExitCode::invalid_input, "cloth: " + e.detail());
+    }
+    ClothModel m;
+    m.params = params;
+    m.substeps = cloth_substeps(params);
+    m.step_seconds = params.frame_seconds / m.substeps;
+    m.particle_mass = particle_mass(params);
+    const Grid g = grid_of(params);
+    pin_vertices(m, pins, g.columns, g.rows);
+    lay_out_rest_grid(m, params, g.columns, g.rows);
+    attach_to_nearest_pins(m);
+    add_springs(m, params, g);
+    add_cell_triangles(m, g.columns, g.rows);
     m.preroll_frames =
         static_cast<int>(std::llround(params.preroll_seconds / params.frame_seconds));
     return m;

@@ -27,27 +27,135 @@ void pad_batch(SurfaceBatch& s, int count) {
             (*v)[i] = (*v)[0];
 }
 
+namespace {
+
+// Per lane, the unit normal (n) and the unit vector to the eye (e).
+struct UnitVectors {
+    vf nx, ny, nz, ex, ey, ez;
+};
+
+// Unit normal (a zero one becomes +Y) and unit vector to the eye.
+[[gnu::always_inline]] inline void normalise(vf x, vf y, vf z, UnitVectors& u, bool eye_vector) {
+    vf len = simd::vsqrt(x * x + y * y + z * z);
+    vi ok = len > splat(0.0f);
+    vf inv = 1.0f / (ok ? len : splat(1.0f));
+    if (eye_vector) {
+        u.ex = x * inv;
+        u.ey = y * inv;
+        u.ez = z * inv;
+    } else {
+        u.nx = ok ? x * inv : splat(0.0f);
+        u.ny = ok ? y * inv : splat(1.0f);
+        u.nz = ok ? z * inv : splat(0.0f);
+    }
+}
+
+// What a light brings to each lane: the unit vector towards it, its
+// radiance there, and where it arrives at all.
+struct Incoming {
+    vf lx, ly, lz, rr, rg, rb;
+    vi usable;
+};
+
+[[gnu::always_inline]] inline Incoming incoming_light(const ShadeLight& light,
+                                                      const SurfaceBatch& p) {
+    const vf zero = splat(0.0f);
+    vf lx, ly, lz, rr, rg, rb;
+    vi usable = simd::splat_i(-1);
+    if (light.is_point) {
+        vf dx = light.position.x - p.px, dy = light.position.y - p.py, dz = light.position.z - p.pz;
+        vf dist2 = dx * dx + dy * dy + dz * dz;
+        usable = dist2 > zero;
+        vf safe = usable ? dist2 : splat(1.0f);
+        vf inv_len = 1.0f / simd::vsqrt(safe);
+        lx = dx * inv_len;
+        ly = dy * inv_len;
+        lz = dz * inv_len;
+        vf falloff = 1.0f / safe;  // inverse-square
+        if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
+        if (light.is_spot)
+            falloff *= spot_cone(
+                lx * light.direction.x + ly * light.direction.y + lz * light.direction.z, light);
+        usable &= falloff > zero;
+        rr = light.radiance.x * falloff;
+        rg = light.radiance.y * falloff;
+        rb = light.radiance.z * falloff;
+    } else {
+        lx = splat(light.direction.x);
+        ly = splat(light.direction.y);
+        lz = splat(light.direction.z);
+        rr = splat(light.radiance.x);
+        rg = splat(light.radiance.y);
+        rb = splat(light.radiance.z);
+    }
+    return {lx, ly, lz, rr, rg, rb, usable};
+}
+
+// Darkens the light's radiance by its shadow map.
+[[gnu::always_inline]] inline void apply_shadow(const ShadowMap& shadow, const SurfaceBatch& p,
+                                                const UnitVectors& s, vi lit, Incoming& in) {
+    // Shadow-map lookups one lane at a time, only where the light
+    // arrives and the surface receives shadows.
+    vf visible = splat(1.0f);
+    for (int i = 0; i < simd::kLanes; ++i)
+        if (lit[i] && p.receives_shadow[i] > 0.0f)
+            visible[i] =
+                shadow_visibility(shadow, {p.px[i], p.py[i], p.pz[i]}, {s.nx[i], s.ny[i], s.nz[i]});
+    in.rr *= visible;
+    in.rg *= visible;
+    in.rb *= visible;
+}
+
+// The cosine the highlight's power raises: of the half vector and the
+// normal (Blinn), or of the reflected light and the eye vector (Phong).
+[[gnu::always_inline]] inline vf highlight_cosine(Highlight highlight, const UnitVectors& s,
+                                                  const Incoming& in, vf n_dot_l) {
+    const vf zero = splat(0.0f);
+    const vf lx = in.lx, ly = in.ly, lz = in.lz;
+    vf cosine;
+    if (highlight == Highlight::blinn) {
+        vf hx = lx + s.ex, hy = ly + s.ey, hz = lz + s.ez;
+        vf len2 = hx * hx + hy * hy + hz * hz;
+        vf len = simd::vsqrt(len2);
+        vi ok = len > zero;
+        cosine = (s.nx * hx + s.ny * hy + s.nz * hz) / (ok ? len : splat(1.0f));
+        cosine = ok ? cosine : zero;
+    } else {
+        vf twice = 2.0f * n_dot_l;
+        vf rx = twice * s.nx - lx, ry = twice * s.ny - ly, rz = twice * s.nz - lz;
+        cosine = rx * s.ex + ry * s.ey + rz * s.ez;
+    }
+    return cosine;
+}
+
+// Adds one light's diffuse and highlight to `out`.
+[[gnu::always_inline]] inline void add_light(const ShadeLight& light, const SurfaceBatch& p,
+                                             const UnitVectors& s, Highlight highlight,
+                                             LightingBatch& out) {
+    const vf zero = splat(0.0f);
+    Incoming in = incoming_light(light, p);
+    vf n_dot_l = s.nx * in.lx + s.ny * in.ly + s.nz * in.lz;
+    vi lit = in.usable & (n_dot_l > zero);
+    if (light.shadow) apply_shadow(*light.shadow, p, s, lit, in);
+    vf d = lit ? p.diffuse * n_dot_l : zero;
+    out.dr += d * in.rr;
+    out.dg += d * in.rg;
+    out.db += d * in.rb;
+
+    vf cosine = highlight_cosine(highlight, s, in, n_dot_l);
+    vi highlighted = lit & (cosine > zero) & (p.specular > zero);
+    vf power = simd::vpow_unit(simd::vmin(cosine, splat(1.0f)), p.shininess);
+    vf k = highlighted ? p.specular * power : zero;
+    out.sr += k * in.rr;
+    out.sg += k * in.rg;
+    out.sb += k * in.rb;
+}
+
+}  // namespace
+
 LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& eye,
                                   std::span<const ShadeLight> lights, Highlight highlight) {
-    struct Unit {
-        vf nx, ny, nz, ex, ey, ez;
-    };
-    // Unit normal (a zero one becomes +Y) and unit vector to the eye.
-    auto normalise = [](vf x, vf y, vf z, Unit& u, bool eye_vector) {
-        vf len = simd::vsqrt(x * x + y * y + z * z);
-        vi ok = len > splat(0.0f);
-        vf inv = 1.0f / (ok ? len : splat(1.0f));
-        if (eye_vector) {
-            u.ex = x * inv;
-            u.ey = y * inv;
-            u.ez = z * inv;
-        } else {
-            u.nx = ok ? x * inv : splat(0.0f);
-            u.ny = ok ? y * inv : splat(1.0f);
-            u.nz = ok ? z * inv : splat(0.0f);
-        }
-    };
-    Unit s;
+    UnitVectors s;
     normalise(surface.nx, surface.ny, surface.nz, s, false);
     normalise(eye.x - surface.px, eye.y - surface.py, eye.z - surface.pz, s, true);
     const SurfaceBatch& p = surface;
@@ -57,77 +165,9 @@ LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& 
     out.dg = p.ambient * ambient.y;
     out.db = p.ambient * ambient.z;
     out.sr = out.sg = out.sb = splat(0.0f);
-    const vf zero = splat(0.0f);
     for (const ShadeLight& light : lights) {
         if (light.is_ambient) continue;
-        vf lx, ly, lz, rr, rg, rb;
-        vi usable = simd::splat_i(-1);
-        if (light.is_point) {
-            vf dx = light.position.x - p.px, dy = light.position.y - p.py,
-               dz = light.position.z - p.pz;
-            vf dist2 = dx * dx + dy * dy + dz * dz;
-            usable = dist2 > zero;
-            vf safe = usable ? dist2 : splat(1.0f);
-            vf inv_len = 1.0f / simd::vsqrt(safe);
-            lx = dx * inv_len;
-            ly = dy * inv_len;
-            lz = dz * inv_len;
-            vf falloff = 1.0f / safe;  // inverse-square
-            if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
-            if (light.is_spot)
-                falloff *= spot_cone(
-                    lx * light.direction.x + ly * light.direction.y + lz * light.direction.z,
-                    light);
-            usable &= falloff > zero;
-            rr = light.radiance.x * falloff;
-            rg = light.radiance.y * falloff;
-            rb = light.radiance.z * falloff;
-        } else {
-            lx = splat(light.direction.x);
-            ly = splat(light.direction.y);
-            lz = splat(light.direction.z);
-            rr = splat(light.radiance.x);
-            rg = splat(light.radiance.y);
-            rb = splat(light.radiance.z);
-        }
-        vf n_dot_l = s.nx * lx + s.ny * ly + s.nz * lz;
-        vi lit = usable & (n_dot_l > zero);
-        if (light.shadow) {
-            // Shadow-map lookups one lane at a time, only where the light
-            // arrives and the surface receives shadows.
-            vf visible = splat(1.0f);
-            for (int i = 0; i < simd::kLanes; ++i)
-                if (lit[i] && p.receives_shadow[i] > 0.0f)
-                    visible[i] = shadow_visibility(*light.shadow, {p.px[i], p.py[i], p.pz[i]},
-                                                   {s.nx[i], s.ny[i], s.nz[i]});
-            rr *= visible;
-            rg *= visible;
-            rb *= visible;
-        }
-        vf d = lit ? p.diffuse * n_dot_l : zero;
-        out.dr += d * rr;
-        out.dg += d * rg;
-        out.db += d * rb;
-
-        vf cosine;
-        if (highlight == Highlight::blinn) {
-            vf hx = lx + s.ex, hy = ly + s.ey, hz = lz + s.ez;
-            vf len2 = hx * hx + hy * hy + hz * hz;
-            vf len = simd::vsqrt(len2);
-            vi ok = len > zero;
-            cosine = (s.nx * hx + s.ny * hy + s.nz * hz) / (ok ? len : splat(1.0f));
-            cosine = ok ? cosine : zero;
-        } else {
-            vf twice = 2.0f * n_dot_l;
-            vf rx = twice * s.nx - lx, ry = twice * s.ny - ly, rz = twice * s.nz - lz;
-            cosine = rx * s.ex + ry * s.ey + rz * s.ez;
-        }
-        vi highlighted = lit & (cosine > zero) & (p.specular > zero);
-        vf power = simd::vpow_unit(simd::vmin(cosine, splat(1.0f)), p.shininess);
-        vf k = highlighted ? p.specular * power : zero;
-        out.sr += k * rr;
-        out.sg += k * rg;
-        out.sb += k * rb;
+        add_light(light, p, s, highlight, out);
     }
     return out;
 }

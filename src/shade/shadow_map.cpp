@@ -123,12 +123,25 @@ float shadow_depth_from_raster(const ShadowMap& m, float z) {
     return b / (z + a);
 }
 
-// Built for AVX2 and for baseline x86-64, like the lighting batch; both do
-// the same IEEE operations in the same order.
-float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
-    using simd::vf;
-    using simd::vi;
-    if (m.size == 0) return 1.0f;
+namespace {
+
+using simd::vf;
+using simd::vi;
+
+// The receiving point in its face of the map, after the normal offset.
+struct ShadowReceiver {
+    bool ortho;
+    int face;
+    glm::vec3 n;   // unit normal in the light's view space (0 for none)
+    float depth;   // distance in front of the light along its axis
+    float texel;   // scene units per texel at that depth
+    float xs, ys;  // projected position: x and y over depth (as is for parallel light)
+    float u, v;    // continuous texel coordinates
+};
+
+// Places the point in the map; false where the map casts no shadow on it.
+[[gnu::always_inline]] inline bool locate_receiver(const ShadowMap& m, const glm::vec3& position,
+                                                   const glm::vec3& normal, ShadowReceiver& r) {
     const bool ortho = m.projection == ShadowProjection::orthographic;
     const int face =
         m.projection == ShadowProjection::cube ? cube_face(position - m.light_position) : 0;
@@ -137,7 +150,7 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     const float normal_length = glm::length(normal);
     const glm::vec3 n = normal_length > 0.0f ? glm::mat3(view) * (normal * (1.0f / normal_length))
                                              : glm::vec3(0.0f);
-    if (!ortho && !(-p.z > 0.5f * m.near)) return 1.0f;  // behind the light or at it
+    if (!ortho && !(-p.z > 0.5f * m.near)) return false;  // behind the light or at it
 
     // Scene units per texel at the point: constant for parallel light,
     // growing with the distance from a point light.
@@ -150,7 +163,7 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     const float sin_light = std::sqrt(std::max(0.0f, 1.0f - cos_light * cos_light));
     p += n * (kNormalOffsetTexels * m.bias * texel_at_point * sin_light);
     const float depth = -p.z;
-    if (!ortho && !(depth > 0.5f * m.near)) return 1.0f;
+    if (!ortho && !(depth > 0.5f * m.near)) return false;
     const float texel = ortho ? units_per_texel : depth * units_per_texel;
 
     // Continuous texel coordinates; texel i spans [i, i + 1], as the raster
@@ -163,22 +176,48 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     // Outside an orthographic or spot map nothing casts (the maps hold every
     // caster, and a spot lights nothing outside its cone).
     if (m.projection != ShadowProjection::cube && !(u >= 0 && v >= 0 && u <= size && v <= size))
-        return 1.0f;
+        return false;
+    r = {ortho, face, n, depth, texel, xs, ys, u, v};
+    return true;
+}
 
+// The receiver's plane, as depth steps across texels, and its depth bias.
+struct ReceiverPlane {
+    float gu, gv;  // depth change per texel step in u and in v
+    float bias;
+};
+
+[[gnu::always_inline]] inline ReceiverPlane receiver_plane(const ShadowMap& m,
+                                                           const ShadowReceiver& r) {
+    const glm::vec3& n = r.n;
     // Receiver plane: depth change of the surface per texel step in u and
     // v, in texels. Orthographic: the plane's slope n.x / n.z (v runs down).
     // Perspective: along the ray (xs, ys, -1) the plane n·(q - p) = 0 lies
     // at depth * D / (D + n.x dxs + n.y dys), D = n·(xs, ys, -1); its
     // derivative at the point gives the slope.
     const float facing =
-        ortho ? -std::max(n.z, 1e-6f) : std::min(n.x * xs + n.y * ys - n.z, -1e-6f);
+        r.ortho ? -std::max(n.z, 1e-6f) : std::min(n.x * r.xs + n.y * r.ys - n.z, -1e-6f);
     const float inv_facing = -1.0f / facing;
     const float slope_u = std::clamp(n.x * inv_facing, -kMaxReceiverSlope, kMaxReceiverSlope);
     const float slope_v = std::clamp(-n.y * inv_facing, -kMaxReceiverSlope, kMaxReceiverSlope);
-    const float gu = slope_u * texel, gv = slope_v * texel;
+    const float gu = slope_u * r.texel, gv = slope_v * r.texel;
     const float slope = std::max(std::abs(slope_u), std::abs(slope_v));
-    const float bias = m.bias * texel * (kConstantBiasTexels + kSlopeBiasTexels * slope);
+    const float bias = m.bias * r.texel * (kConstantBiasTexels + kSlopeBiasTexels * slope);
+    return {gu, gv, bias};
+}
 
+// The filter's box over the texels and the weights of its columns and rows.
+struct FilterBox {
+    float half;  // half the box's side, in texels
+    int first_u, first_v;
+    int chunks, rows;
+    vf weight[kChunks], step[kChunks];
+    float row_weight[kChunks * simd::kLanes];
+};
+
+[[gnu::always_inline]] inline void filter_box(const ShadowMap& m, const ShadowReceiver& r, float gu,
+                                              FilterBox& box) {
+    const float u = r.u, v = r.v;
     // Eight texels at a time: lane k of chunk c is texel first + 8c + k,
     // weighed by its overlap with the filter's box (0 outside it). The
     // weights add up to (2 half)^2.
@@ -190,63 +229,92 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
         (static_cast<int>(std::ceil(hi_u)) - first_u + simd::kLanes - 1) / simd::kLanes;
     const int rows = static_cast<int>(std::ceil(hi_v)) - first_v;
     const vf zero = simd::splat(0.0f), one = simd::splat(1.0f), lane = {0, 1, 2, 3, 4, 5, 6, 7};
-    vf weight[kChunks], step[kChunks];
-    float row_weight[kChunks * simd::kLanes];
     for (int c = 0; c < chunks; ++c) {
         const vf texel = lane + static_cast<float>(first_u + c * simd::kLanes);
-        weight[c] = simd::vmax(
+        box.weight[c] = simd::vmax(
             simd::vmin(simd::splat(hi_u), texel + one) - simd::vmax(simd::splat(lo_u), texel),
             zero);
-        step[c] = gu * (texel + (0.5f - u));
+        box.step[c] = gu * (texel + (0.5f - u));
     }
     for (int c = 0; c * simd::kLanes < rows; ++c) {
         const vf texel = lane + static_cast<float>(first_v + c * simd::kLanes);
         const vf w = simd::vmax(
             simd::vmin(simd::splat(hi_v), texel + one) - simd::vmax(simd::splat(lo_v), texel),
             zero);
-        std::memcpy(row_weight + c * simd::kLanes, &w, sizeof w);
+        std::memcpy(box.row_weight + c * simd::kLanes, &w, sizeof w);
     }
+    box.half = half;
+    box.first_u = first_u;
+    box.first_v = first_v;
+    box.chunks = chunks;
+    box.rows = rows;
+}
 
-    // The texels are read straight from the map where the filter lies inside
-    // it, else from a copy clamped to its edges.
+// The texels under the box, `stride` floats from row to row: read straight
+// from the map where the filter lies inside it, else from a copy in `edge`
+// clamped to its edges.
+[[gnu::always_inline]] inline const float* box_texels(
+    const ShadowMap& m, int face, const FilterBox& box,
+    float (&edge)[kMaxRows * kChunks * simd::kLanes], ptrdiff_t& stride) {
+    const int first_u = box.first_u, first_v = box.first_v, chunks = box.chunks, rows = box.rows;
     const int size_i = m.size;
     const float* texels = m.depth.data() + static_cast<size_t>(face) * size_i * size_i;
-    const float* block;
-    ptrdiff_t stride;
-    float edge[kMaxRows * kChunks * simd::kLanes];
     if (first_u >= 0 && first_u + chunks * simd::kLanes <= size_i && first_v >= 0 &&
         first_v + rows <= size_i) {
-        block = texels + static_cast<size_t>(first_v) * size_i + first_u;
         stride = size_i;
-    } else {
-        const int last = size_i - 1;
-        stride = kChunks * simd::kLanes;
-        for (int b = 0; b < rows; ++b) {
-            const float* row =
-                texels + static_cast<size_t>(std::clamp(first_v + b, 0, last)) * size_i;
-            for (int k = 0; k < chunks * simd::kLanes; ++k)
-                edge[b * stride + k] = row[std::clamp(first_u + k, 0, last)];
-        }
-        block = edge;
+        return texels + static_cast<size_t>(first_v) * size_i + first_u;
     }
-    vf blocked = zero;  // weight of the texels whose caster is nearer than the point
+    const int last = size_i - 1;
+    stride = kChunks * simd::kLanes;
     for (int b = 0; b < rows; ++b) {
+        const float* row = texels + static_cast<size_t>(std::clamp(first_v + b, 0, last)) * size_i;
+        for (int k = 0; k < chunks * simd::kLanes; ++k)
+            edge[b * stride + k] = row[std::clamp(first_u + k, 0, last)];
+    }
+    return edge;
+}
+
+// Per lane, the weight of the texels whose caster is nearer than the point.
+[[gnu::always_inline]] inline vf blocked_weight(const float* block, ptrdiff_t stride,
+                                                const FilterBox& box, const ShadowReceiver& r,
+                                                const ReceiverPlane& plane) {
+    const vf zero = simd::splat(0.0f);
+    vf blocked = zero;
+    for (int b = 0; b < box.rows; ++b) {
         const float* row = block + b * stride;
-        const vf row_depth =
-            simd::splat(depth - bias + gv * (static_cast<float>(first_v + b) + 0.5f - v));
+        const vf row_depth = simd::splat(
+            r.depth - plane.bias + plane.gv * (static_cast<float>(box.first_v + b) + 0.5f - r.v));
         vf row_blocked = zero;
-        for (int c = 0; c < chunks; ++c) {
+        for (int c = 0; c < box.chunks; ++c) {
             vf stored;
             std::memcpy(&stored, row + c * simd::kLanes, sizeof stored);
-            const vi lit = row_depth + step[c] <= stored;
-            row_blocked += lit ? zero : weight[c];
+            const vi lit = row_depth + box.step[c] <= stored;
+            row_blocked += lit ? zero : box.weight[c];
         }
-        blocked += row_weight[b] * row_blocked;
+        blocked += box.row_weight[b] * row_blocked;
     }
+    return blocked;
+}
+
+}  // namespace
+
+// Built for AVX2 and for baseline x86-64, like the lighting batch; both do
+// the same IEEE operations in the same order.
+float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
+    if (m.size == 0) return 1.0f;
+    ShadowReceiver receiver;
+    if (!locate_receiver(m, position, normal, receiver)) return 1.0f;
+    const ReceiverPlane plane = receiver_plane(m, receiver);
+    FilterBox box;
+    filter_box(m, receiver, plane.gu, box);
+    float edge[kMaxRows * kChunks * simd::kLanes];
+    ptrdiff_t stride;
+    const float* block = box_texels(m, receiver.face, box, edge, stride);
+    const vf blocked = blocked_weight(block, stride, box, receiver, plane);
     float sum = 0.0f;
     for (int k = 0; k < simd::kLanes; ++k) sum += blocked[k];
     // Exactly 1 where nothing blocks the light, so lit surfaces are untouched.
-    return std::clamp(1.0f - sum / (4.0f * half * half), 0.0f, 1.0f);
+    return std::clamp(1.0f - sum / (4.0f * box.half * box.half), 0.0f, 1.0f);
 }
 
 }  // namespace facet
