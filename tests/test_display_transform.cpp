@@ -127,3 +127,32 @@ TEST_CASE("tone curves keep black, rise monotonically and roll off below white",
     CHECK(display_color({3, 0.5f, 0.25f, 1}, identity) == glm::vec4(3, 0.5f, 0.25f, 1));
     CHECK(display_color({0, 0, 0, 0}, DisplayTransform{2, Tonemap::aces}) == glm::vec4(0));
 }
+
+// The one conversion of every 8-bit display image (PNG, sheet JPEG, movie
+// frames, the preview).
+TEST_CASE("display bytes: linear to 8-bit sRGB, and 16-bit samples to 8 bits", "[display][color]") {
+    CHECK(facet::display_byte(0.0) == 0);
+    CHECK(facet::display_byte(1.0) == 255);
+    CHECK(facet::display_byte(0.5) == 188);       // sRGB(0.5) = 0.7354 -> 187.5...
+    CHECK(facet::display_byte(0.0031308) == 10);  // the curve's linear segment ends here
+    CHECK(facet::display_byte(-1.0) == 0);
+    CHECK(facet::display_byte(std::nan("")) == 0);
+    CHECK(facet::display_byte(INFINITY) == 255);
+    CHECK(facet::display_byte(7.5) == 255);
+    // Every code is reached and the mapping never goes down.
+    int previous = -1, codes = 0;
+    for (int i = 0; i <= 100000; ++i) {
+        const int b = facet::display_byte(i / 100000.0);
+        CHECK(b >= previous);
+        codes += b != previous;
+        previous = b;
+    }
+    CHECK(codes == 256);
+
+    CHECK(facet::narrow_to_byte(0) == 0);
+    CHECK(facet::narrow_to_byte(65535) == 255);
+    CHECK(facet::narrow_to_byte(128) == 0);  // 0.498 of a code
+    CHECK(facet::narrow_to_byte(129) == 1);  // 0.502
+    CHECK(facet::narrow_to_byte(257) == 1);
+    for (int b = 0; b < 256; ++b) CHECK(facet::narrow_to_byte(static_cast<uint16_t>(b * 257)) == b);
+}

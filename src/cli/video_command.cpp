@@ -7,7 +7,7 @@
 #include <set>
 
 #include "cli/options.hpp"
-#include "core/color.hpp"
+#include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
@@ -67,12 +67,12 @@ std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& forma
         width = png.width;
         height = png.height;
         const int colour = png.channels >= 3 ? 3 : 1;
-        const float scale = png.bit_depth == 16 ? 1.0f / 257.0f : 1.0f;
         rgb.resize(static_cast<size_t>(width) * height * 3);
         for (size_t p = 0; p < rgb.size() / 3; ++p)
-            for (int c = 0; c < 3; ++c)
-                rgb[p * 3 + c] = static_cast<uint8_t>(
-                    std::lround(png.samples[p * png.channels + (colour == 3 ? c : 0)] * scale));
+            for (int c = 0; c < 3; ++c) {
+                const uint16_t v = png.samples[p * png.channels + (colour == 3 ? c : 0)];
+                rgb[p * 3 + c] = png.bit_depth == 16 ? narrow_to_byte(v) : static_cast<uint8_t>(v);
+            }
         return rgb;
     }
     const DecodedExr exr = read_exr(path);
@@ -95,11 +95,7 @@ std::vector<uint8_t> frame_rgb(const std::string& path, const std::string& forma
         for (int c = 0; c < 4; ++c)
             if (channel[c]) colour[c] = (*channel[c])[p];
         colour = display_color(colour, display, gain);
-        for (int c = 0; c < 3; ++c) {
-            const double v = std::isfinite(colour[c]) ? std::clamp<double>(colour[c], 0, 1) : 0;
-            rgb[p * 3 + static_cast<size_t>(c)] =
-                static_cast<uint8_t>(std::lround(linear_to_srgb(v) * 255));
-        }
+        for (int c = 0; c < 3; ++c) rgb[p * 3 + static_cast<size_t>(c)] = display_byte(colour[c]);
     }
     return rgb;
 }

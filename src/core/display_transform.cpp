@@ -102,6 +102,15 @@ ColorImage apply_display_transform(const ColorImage& image, const DisplayTransfo
     return out;
 }
 
+uint8_t display_byte(double linear) {
+    const double unit = linear > 0.0 ? std::min(linear, 1.0) : 0.0;
+    return static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+}
+
+uint8_t narrow_to_byte(uint16_t v) {
+    return static_cast<uint8_t>((static_cast<uint32_t>(v) * 255u + 32767u) / 65535u);
+}
+
 HalfColorImage apply_display_transform(const HalfColorImage& image,
                                        const DisplayTransform& transform) {
     const float gain = exposure_gain(transform);

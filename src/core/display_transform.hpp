@@ -1,6 +1,7 @@
 #pragma once
 // Display transform: exposure and tone mapping for the files people look
 // at (PNG, video, contact sheets). EXR files stay scene-linear.
+#include <cstdint>
 #include <string_view>
 
 #include <glm/vec4.hpp>
@@ -31,6 +32,16 @@ glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& 
 float exposure_gain(const DisplayTransform& transform);
 glm::vec4 display_color(const glm::vec4& premultiplied, const DisplayTransform& transform,
                         float gain);
+
+// A linear value as the 8-bit sRGB code of the images people look at
+// (PNG, contact-sheet JPEG, movie frames, the preview): 0 and below, and
+// NaN, are black; 1 and above, +inf included, white; rounded to nearest.
+// Every 8-bit display image goes through it, so they agree code for code.
+uint8_t display_byte(double linear);
+
+// A 16-bit sample (a 16-bit PNG's) as an 8-bit one, rounded to nearest:
+// v * 255 / 65535.
+uint8_t narrow_to_byte(uint16_t v);
 
 // The whole image, pixel by pixel. Callers skip the copy when the
 // transform is the identity.

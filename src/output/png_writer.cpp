@@ -7,7 +7,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "core/color.hpp"
+#include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "output/deflate.hpp"
 #include "output/encoders.hpp"
@@ -84,7 +84,7 @@ struct HalfToByte {
         for (uint32_t h = 0; h < 65536; ++h) {
             const float v = half_to_float(static_cast<uint16_t>(h));
             const double unit = v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0;
-            srgb[h] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+            srgb[h] = display_byte(v);
             linear[h] = static_cast<uint8_t>(std::lround(unit * 255.0));
         }
     }
@@ -101,9 +101,7 @@ void straight_srgb(const Rgba16F& c, uint8_t* rgb) {
     const float a = half_to_float(c.a);
     const uint16_t channel[3] = {c.r, c.g, c.b};
     for (int i = 0; i < 3; ++i) {
-        const float v = a > 0.0f ? half_to_float(channel[i]) / a : 0.0f;
-        const double unit = v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0;
-        rgb[i] = static_cast<uint8_t>(std::lround(linear_to_srgb(unit) * 255.0));
+        rgb[i] = display_byte(a > 0.0f ? half_to_float(channel[i]) / a : 0.0f);
     }
 }
 

@@ -5,6 +5,7 @@
 #include <map>
 #include <tuple>
 
+#include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
 #include "output/encoders.hpp"
@@ -59,19 +60,19 @@ PreviewImage display_image(Pass pass, const OutputDesc& out, const FrameImages& 
     image.width = png.width;
     image.height = png.height;
     image.rgba.resize(static_cast<size_t>(png.width) * png.height * 4);
-    const int shift = png.bit_depth == 16 ? 8 : 0;
     for (int y = 0; y < png.height; ++y)
         for (int x = 0; x < png.width; ++x) {
             const size_t p = static_cast<size_t>(y) * png.width + x;
             const uint16_t* s = &png.samples[p * png.channels];
             uint8_t* d = &image.rgba[p * 4];
             for (int c = 0; c < 3; ++c)
-                d[c] = static_cast<uint8_t>(s[png.channels >= 3 ? c : 0] >> shift);
+                d[c] = png.bit_depth == 16 ? narrow_to_byte(s[png.channels >= 3 ? c : 0])
+                                           : static_cast<uint8_t>(s[png.channels >= 3 ? c : 0]);
             d[3] = 255;
             if (png.channels == 4) {
                 // Straight alpha over a grey checkerboard of 8-pixel squares.
                 const int checker = ((x >> 3) + (y >> 3)) & 1 ? 153 : 102;
-                const int a = s[3];
+                const int a = png.bit_depth == 16 ? narrow_to_byte(s[3]) : s[3];
                 for (int c = 0; c < 3; ++c)
                     d[c] = static_cast<uint8_t>((d[c] * a + checker * (255 - a) + 127) / 255);
             }
