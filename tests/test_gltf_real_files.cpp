@@ -184,8 +184,8 @@ TEST_CASE("glTF real wrongTypes files: a wrong type where facet reads is refused
         {"badUint.gltf",
          "materials[0].pbrMetallicRoughness.baseColorTexture.index must be an "
          "index (a whole number from 0), not -1"}};
-    for (const auto& [name, message] : refused) DYNAMIC_SECTION(name) {
-            require_input_error([&] { facet::load_gltf(dir + name); }, message);
+    for (const auto& file : refused) DYNAMIC_SECTION(file.first) {
+            require_input_error([&] { facet::load_gltf(dir + file.first); }, file.second);
         }
     SECTION("badString.gltf: a scene's name, which facet does not read") {
         const facet::Mesh mesh = facet::load_gltf(dir + "badString.gltf");
