@@ -203,6 +203,24 @@ TEST_CASE("the --size and -D options change what the scene file says", "[cli]") 
     }
 }
 
+// --style's value reaches the scene reader as a YAML string: quotes,
+// backslashes and colons in a file's path are the path's own.
+TEST_CASE("--style takes a preset file whose path has quotes, a backslash and a colon", "[cli]") {
+    TempDir dir("cli-style-path");
+    std::string scene = write_text(dir.file("s.yaml"), kTinyScene);
+    const std::string style =
+        write_text(dir.file("my \"look\" \\ v2: final.yaml"), "extends: toon\ncels: 3\n");
+    const auto r = facet::test::run_command("'" FACET_EXECUTABLE "' validate '" + scene +
+                                            "' --style '" + style + "' 2>&1");
+    INFO(r.output);
+    CHECK(r.exit_code == 0);
+    const auto bad =
+        facet::test::run_command("'" FACET_EXECUTABLE "' validate '" + scene + "' --style '" +
+                                 dir.file("no \"such\".yaml") + "' 2>&1");
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.output, Contains("no \"such\""));
+}
+
 TEST_CASE("the --frames option renders only the frames it names", "[cli]") {
     TempDir dir("cli");
     std::string text = kTinyScene;
