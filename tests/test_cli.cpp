@@ -205,7 +205,7 @@ TEST_CASE("the --size and -D options change what the scene file says", "[cli]") 
 
 // --style's value reaches the scene reader as a YAML string: quotes,
 // backslashes and colons in a file's path are the path's own.
-TEST_CASE("--style takes a preset file whose path has quotes, a backslash and a colon", "[cli]") {
+TEST_CASE("a --style preset file may have quotes, a backslash and a colon in its path", "[cli]") {
     TempDir dir("cli-style-path");
     std::string scene = write_text(dir.file("s.yaml"), kTinyScene);
     const std::string style =
