@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Installs the Debian packages facet needs (only those missing), then
-# configures and builds it (Release, -j2). Safe to run again: a second run
-# with nothing to do takes about a second.
+# configures and builds it (Release, -j2): the program alone, and with
+# --tests or --bench everything. Safe to run again: a second run with
+# nothing to do takes about a second.
 #
 #   scripts/setup.sh            build dependencies, then build
 #   scripts/setup.sh --tests    also the test data (assimp-testmodels),
