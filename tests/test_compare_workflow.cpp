@@ -43,6 +43,14 @@ void check_manifest_hashes(const std::string& dir, size_t files) {
     for (const ManifestFile& f : m.files) CHECK(f.sha256 == hash_of(dir + "/" + f.path));
 }
 
+// `facet render` arguments: frames 1-2 of shapes.yaml at 160x90, colour PNG
+// only, into DIR/out, compared with the reference folder `ref`.
+std::string render_against(const TempDir& dir, const std::string& ref) {
+    return "render " + shell_quote(source_path("tests/scenes/shapes.yaml")) +
+           " --size 160x90 --frames 1-2 --passes color --formats png --out " +
+           shell_quote(dir.file("out")) + " --reference " + shell_quote(ref);
+}
+
 }  // namespace
 
 TEST_CASE("compare workflow: --update-reference missing writes only what the reference lacks",
@@ -87,11 +95,8 @@ TEST_CASE("compare workflow: --update-reference all, then the same run passes", 
 TEST_CASE("compare workflow: render --reference compares, and creates a first reference",
           "[compare]") {
     TempDir dir("compare-render");
-    const std::string scene = source_path("tests/scenes/shapes.yaml");
     const std::string ref = dir.file("reference");
-    const std::string render = "render " + shell_quote(scene) +
-                               " --size 160x90 --frames 1-2 --passes color --formats png --out " +
-                               shell_quote(dir.file("out")) + " --reference " + shell_quote(ref);
+    const std::string render = render_against(dir, ref);
     // No reference yet: missing mode creates it.
     const RunResult first = run_facet(render + " --update-reference missing");
     INFO(first.output);
@@ -122,11 +127,8 @@ TEST_CASE("compare workflow: render --reference compares, and creates a first re
 TEST_CASE("compare workflow: a reference image deleted by hand is missing, and missing rewrites it",
           "[compare]") {
     TempDir dir("compare-deleted");
-    const std::string scene = source_path("tests/scenes/shapes.yaml");
     const std::string ref = dir.file("reference");
-    const std::string render = "render " + shell_quote(scene) +
-                               " --size 160x90 --frames 1-2 --passes color --formats png --out " +
-                               shell_quote(dir.file("out")) + " --reference " + shell_quote(ref);
+    const std::string render = render_against(dir, ref);
     REQUIRE(run_facet(render + " --update-reference missing").exit_code == 0);
     const std::string kept = hash_of(ref + "/color.0001.png");
     const std::string deleted = hash_of(ref + "/color.0002.png");

@@ -31,6 +31,17 @@ std::map<std::string, std::string> single_run(const test::TempDir& dir, const st
     return test::listed_hashes(dir.file("single/spin/manifest.json"));
 }
 
+// Writes DIR/job.yaml with `facet farm openjd spin.yaml ... OPTIONS`, run
+// from DIR (11 frames in chunks of 4, into DIR/out).
+void write_openjd_job(const test::TempDir& dir, const std::string& options) {
+    const auto made =
+        test::run_command("cd " + shell_quote(dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
+                          " farm openjd spin.yaml --chunk-size 4 -o out --frames 1-11 " + options +
+                          " --script job.yaml 2>&1");
+    INFO(made.output);
+    REQUIRE(made.exit_code == 0);
+}
+
 }  // namespace
 
 TEST_CASE("chunks rendered apart and merged equal one run, file for file", "[farm][cli]") {
@@ -245,12 +256,7 @@ TEST_CASE("the OpenJD template, run step by step by the tests' runner, completes
           "[farm][cli][jobs]") {
     test::TempDir dir("farm-openjd");
     const std::string scene = test::write_farm_scene(dir, 11, "[64, 36]");
-    const auto made =
-        test::run_command("cd " + shell_quote(dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
-                          " farm openjd spin.yaml --chunk-size 4 -o out --style toon --frames 1-11 "
-                          "--script job.yaml 2>&1");
-    INFO(made.output);
-    REQUIRE(made.exit_code == 0);
+    write_openjd_job(dir, "--style toon");
     // Every task runs in a session folder of its own: the paths are absolute.
     const std::string text = test::read_file(dir.file("job.yaml"));
     CHECK(text.find("\"" + dir.file("spin.yaml") + "\"") != std::string::npos);
@@ -275,12 +281,7 @@ TEST_CASE("the OpenJD template passes openjd check", "[farm][cli][jobs]") {
             "tests/farm/run_openjd.py only");
     test::TempDir dir("farm-openjd-check");
     test::write_farm_scene(dir, 11, "[64, 36]");
-    const auto made =
-        test::run_command("cd " + shell_quote(dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
-                          " farm openjd spin.yaml --chunk-size 4 -o out --frames 1-11 "
-                          "--script job.yaml 2>&1");
-    INFO(made.output);
-    REQUIRE(made.exit_code == 0);
+    write_openjd_job(dir, "");
     const auto check =
         test::run_command("openjd check " + shell_quote(dir.file("job.yaml")) + " 2>&1");
     INFO(check.output);
