@@ -50,13 +50,25 @@ using HalfColorImage = Image<Rgba16F>;  // linear RGBA, half floats
     return out | sign;
 }
 
-[[gnu::always_inline]] inline simd::vi float_to_half(simd::vf value) {
-#ifdef __F16C__
-    const __m128i h = _mm256_cvtps_ph((__m256)value, _MM_FROUND_TO_NEAREST_INT);
-    return (simd::vi)_mm256_cvtepu16_epi32(h);
+[[gnu::always_inline]] inline simd::vh float_to_half_bits(simd::vf value) {
+#if FACET_SIMD_F16C
+    return simd::half_bits_f16c(value);
 #else
-    return float_to_half_portable(value);
+    return __builtin_convertvector(float_to_half_portable(value), simd::vh);
 #endif
+}
+
+[[gnu::always_inline]] inline simd::vi float_to_half(simd::vf value) {
+    return __builtin_convertvector(float_to_half_bits(value), simd::vi);
+}
+
+// RGBA planes of eight pixels into eight half-float RGBA pixels in memory,
+// streamed (simd::store_streaming).
+[[gnu::always_inline]] inline void store_half_rgba(const simd::vf (&planes)[4], Rgba16F* pixels) {
+    static_assert(sizeof(Rgba16F) == 4 * sizeof(uint16_t));
+    const simd::vh halves[4] = {float_to_half_bits(planes[0]), float_to_half_bits(planes[1]),
+                                float_to_half_bits(planes[2]), float_to_half_bits(planes[3])};
+    simd::store_interleaved4(halves, reinterpret_cast<uint16_t*>(pixels));
 }
 
 inline uint16_t float_to_half(float value) {

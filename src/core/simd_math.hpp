@@ -2,11 +2,24 @@
 // Eight-lane float maths with GCC vector extensions. Only IEEE-exact
 // operations are used (add, mul, div, sqrt, compares, bit moves), so every
 // lane gives the same bits as the same code run one value at a time, on
-// any x86-64: a build for AVX2 (FACET_SIMD, CMakeLists.txt) and one for
-// baseline SSE2 give the same images. No FMA: contraction is off.
+// any CPU: a build for AVX2 (FACET_SIMD, CMakeLists.txt), one for baseline
+// SSE2 and a generic one give the same images. No FMA: contraction is off.
+//
+// Every processor intrinsic in facet is in this file, each next to the
+// plain vector code it speeds up, so a port to another architecture
+// (aarch64) changes this file alone. FACET_SIMD=generic defines
+// FACET_SIMD_GENERIC, which leaves every intrinsic out.
 #include <cstdint>
+#include <cstring>
 
-#ifdef __AVX__
+#if !defined(FACET_SIMD_GENERIC) && defined(__AVX__)
+#define FACET_SIMD_AVX 1
+#endif
+#if !defined(FACET_SIMD_GENERIC) && defined(__F16C__)
+#define FACET_SIMD_F16C 1
+#endif
+#if !defined(FACET_SIMD_GENERIC) && defined(__SSE2__)
+#define FACET_SIMD_SSE2 1
 #include <immintrin.h>
 #endif
 
@@ -20,18 +33,19 @@ namespace facet::simd {
 constexpr int kLanes = 8;
 typedef float vf __attribute__((vector_size(32)));
 typedef int32_t vi __attribute__((vector_size(32)));
+typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
 
 // With AVX the intrinsics: GCC 12 builds a braced {v, v, ...} or a loop
 // of lane stores with eight inserts (or through the stack), not one broadcast.
 [[gnu::always_inline]] inline vf splat(float v) {
-#ifdef __AVX__
+#if FACET_SIMD_AVX
     return (vf)_mm256_set1_ps(v);
 #else
     return vf{v, v, v, v, v, v, v, v};
 #endif
 }
 [[gnu::always_inline]] inline vi splat_i(int32_t v) {
-#ifdef __AVX__
+#if FACET_SIMD_AVX
     return (vi)_mm256_set1_epi32(v);
 #else
     return vi{v, v, v, v, v, v, v, v};
@@ -40,7 +54,7 @@ typedef int32_t vi __attribute__((vector_size(32)));
 
 // Bit i set where lane i of the mask is set (all ones).
 [[gnu::always_inline]] inline unsigned movemask(vi mask) {
-#ifdef __AVX__
+#if FACET_SIMD_AVX
     return static_cast<unsigned>(_mm256_movemask_ps((__m256)mask));
 #else
     unsigned bits = 0;
@@ -61,6 +75,56 @@ typedef int32_t vi __attribute__((vector_size(32)));
 [[gnu::always_inline]] inline vf vmin(vf a, vf b) {
     return a < b ? a : b;
 }
+
+// Eight float lanes to memory. Where the address allows, a streaming store
+// that skips the cache: frame buffers are written once and read by the
+// next stage long after. Call streaming_stores_done() before the buffer is
+// handed on.
+[[gnu::always_inline]] inline void store_streaming(float* out, vf value) {
+#if FACET_SIMD_AVX
+    if ((reinterpret_cast<uintptr_t>(out) & 31) == 0) return _mm256_stream_ps(out, (__m256)value);
+#endif
+    std::memcpy(out, &value, sizeof value);
+}
+
+// Four planes of eight 16-bit values to eight interleaved records of four
+// (RGBA planes to RGBA pixels), streamed like store_streaming where the
+// address allows.
+[[gnu::always_inline]] inline void store_interleaved4(const vh (&planes)[4], uint16_t* out) {
+#if FACET_SIMD_SSE2
+    const __m128i rg_lo = _mm_unpacklo_epi16((__m128i)planes[0], (__m128i)planes[1]);
+    const __m128i rg_hi = _mm_unpackhi_epi16((__m128i)planes[0], (__m128i)planes[1]);
+    const __m128i ba_lo = _mm_unpacklo_epi16((__m128i)planes[2], (__m128i)planes[3]);
+    const __m128i ba_hi = _mm_unpackhi_epi16((__m128i)planes[2], (__m128i)planes[3]);
+    const __m128i records[4] = {_mm_unpacklo_epi32(rg_lo, ba_lo), _mm_unpackhi_epi32(rg_lo, ba_lo),
+                                _mm_unpacklo_epi32(rg_hi, ba_hi), _mm_unpackhi_epi32(rg_hi, ba_hi)};
+    __m128i* to = reinterpret_cast<__m128i*>(out);
+    if ((reinterpret_cast<uintptr_t>(out) & 63) == 0) {
+        for (int i = 0; i < 4; ++i) _mm_stream_si128(to + i, records[i]);
+        return;
+    }
+    for (int i = 0; i < 4; ++i) _mm_storeu_si128(to + i, records[i]);
+#else
+    for (int i = 0; i < kLanes; ++i)
+        for (int p = 0; p < 4; ++p) out[4 * i + p] = planes[p][i];
+#endif
+}
+
+// Orders the streaming stores before whatever follows (another thread
+// reading the buffer); without them there is nothing to order.
+[[gnu::always_inline]] inline void streaming_stores_done() {
+#if FACET_SIMD_SSE2
+    _mm_sfence();
+#endif
+}
+
+#if FACET_SIMD_F16C
+// Floats to halves in one instruction, rounding to nearest even: the same
+// bits as float_to_half_portable (core/half.hpp), which tests check.
+[[gnu::always_inline]] inline vh half_bits_f16c(vf value) {
+    return (vh)_mm256_cvtps_ph((__m256)value, _MM_FROUND_TO_NEAREST_INT);
+}
+#endif
 
 // log2 for positive, normal x. The mantissa is centred on 1 (in
 // [sqrt(1/2), sqrt(2))) and log(m) summed as 2 atanh((m-1)/(m+1)), whose

@@ -16,11 +16,13 @@
 #include "raster/rasterizer.hpp"
 #include "render/feature_edge_stage.hpp"
 #include "render/frame_inputs.hpp"
+#include "render/frame_targets.hpp"
 #include "render/hidden_edge_stage.hpp"
 #include "render/occlusion_stage.hpp"
 #include "render/outline_stage.hpp"
 #include "render/pose_stage.hpp"
 #include "render/previous_frame_stage.hpp"
+#include "render/shade_stage.hpp"
 #include "render/shadow_stage.hpp"
 #include "render/surface_pass_stage.hpp"
 #include "render/vertex_stage.hpp"
@@ -54,11 +56,20 @@ class FrameRenderer {
                 const std::function<bool()>& stop = {});
 
   private:
+    struct FrameLights;
+    FrameLights light(const FrameInputs& inputs, const PosedVertices& posed);
+    void fit_targets(const FrameInputs& inputs, FrameImages& out);
+    ShadeTarget shade_target(FrameImages& out);
+    std::span<const glm::vec4> previous_clip(int frame, size_t camera_index);
+    void apply_sample_stages(const FrameInputs& inputs, const TransformedVertices& vertices,
+                             std::span<const uint8_t> edge_mask);
+
     const SceneDesc& scene_;
     const World& world_;
     ThreadPool& pool_;
     int side_;  // samples per pixel side: output.samples = side_ * side_
     FrameEvaluator evaluator_;
+    FrameTargets targets_;  // which buffers exist, decided once
     PoseStage pose_;
     ShadowStage shadows_;
     VertexStage vertices_;
@@ -71,10 +82,10 @@ class FrameRenderer {
     // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).
     std::vector<uint8_t> coverage_tested_;
     std::optional<PreviousFrameStage> previous_;  // for the motion pass only
-    // Every sample in float, when passes at the sample resolution follow.
+    // Every sample in float, when the targets shade at the sample resolution.
     ColorImage sample_color_;
     DepthImage sample_depth_;
-    ColorImage sample_lines_;  // the lines pass
+    ColorImage sample_lines_;  // the strokes alone (FrameTargets::line_samples)
 };
 
 }  // namespace facet

@@ -1,7 +1,5 @@
 #include "render/shade_stage.hpp"
 
-#include <immintrin.h>
-
 #include <algorithm>
 #include <cstring>
 #include <limits>
@@ -117,35 +115,6 @@ struct RowChunk {
     chunk.depth = mask ? (side == 1 ? b.sample.w : b.pixel_depth) : chunk.depth;
 }
 
-// RGBA planes of eight pixels into eight half-float RGBA pixels in memory.
-[[gnu::always_inline]] inline void store_rgba(const vf (&c)[4], Rgba16F* pixels) {
-#ifdef __F16C__
-    // Halves eight to a register, then interleaved channel by channel.
-    __m128i h[4];
-    for (int a = 0; a < 4; ++a) h[a] = _mm256_cvtps_ph((__m256)c[a], _MM_FROUND_TO_NEAREST_INT);
-    const __m128i rg_lo = _mm_unpacklo_epi16(h[0], h[1]), rg_hi = _mm_unpackhi_epi16(h[0], h[1]);
-    const __m128i ba_lo = _mm_unpacklo_epi16(h[2], h[3]), ba_hi = _mm_unpackhi_epi16(h[2], h[3]);
-    __m128i* out = reinterpret_cast<__m128i*>(pixels);
-    if ((reinterpret_cast<uintptr_t>(pixels) & 63) == 0) {
-        _mm_stream_si128(out + 0, _mm_unpacklo_epi32(rg_lo, ba_lo));
-        _mm_stream_si128(out + 1, _mm_unpackhi_epi32(rg_lo, ba_lo));
-        _mm_stream_si128(out + 2, _mm_unpacklo_epi32(rg_hi, ba_hi));
-        _mm_stream_si128(out + 3, _mm_unpackhi_epi32(rg_hi, ba_hi));
-        return;
-    }
-    _mm_storeu_si128(out + 0, _mm_unpacklo_epi32(rg_lo, ba_lo));
-    _mm_storeu_si128(out + 1, _mm_unpackhi_epi32(rg_lo, ba_lo));
-    _mm_storeu_si128(out + 2, _mm_unpacklo_epi32(rg_hi, ba_hi));
-    _mm_storeu_si128(out + 3, _mm_unpackhi_epi32(rg_hi, ba_hi));
-#else
-    vi h[4];
-    for (int a = 0; a < 4; ++a) h[a] = float_to_half(c[a]);
-    for (int i = 0; i < kLanes; ++i)
-        pixels[i] = {static_cast<uint16_t>(h[0][i]), static_cast<uint16_t>(h[1][i]),
-                     static_cast<uint16_t>(h[2][i]), static_cast<uint16_t>(h[3][i])};
-#endif
-}
-
 // The colour a surface shows over nothing, from its colour over the
 // background and how much of the background it hides.
 glm::vec4 over_nothing(const glm::vec3& color, float coverage, const glm::vec4& background) {
@@ -175,13 +144,8 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
     Rgba16F* colors = &out.pixels->at(x, y);
     float* depths = &out.depth.at(x, y);
     if (chunk.count == kLanes && !any_mixed) {
-        store_rgba(chunk.color, colors);
-#ifdef __AVX__
-        if ((reinterpret_cast<uintptr_t>(depths) & 31) == 0)
-            _mm256_stream_ps(depths, (__m256)chunk.depth);
-        else
-#endif
-            std::memcpy(depths, &chunk.depth, sizeof chunk.depth);
+        store_half_rgba(chunk.color, colors);
+        simd::store_streaming(depths, chunk.depth);
         return;
     }
     for (int i = 0; i < chunk.count; ++i) {
@@ -397,7 +361,7 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
 
 void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                 const ShadeTarget& out) {
-    if (out.samples) {
+    if (out.resolution == ShadeResolution::samples) {
         TileFragments fragments;
         return shade_every_sample(tile, raster, in, out, fragments);
     }
@@ -405,7 +369,7 @@ void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const Shad
     begin_tile_fragments(tile, in.samples_per_side, mixed);
     shade_simple_pixels(tile, raster, in, out, mixed);
     shade_mixed_pixels(tile, raster, in, out, mixed);
-    _mm_sfence();
+    simd::streaming_stores_done();
 }
 
 }  // namespace facet

@@ -6,9 +6,9 @@
 // of one style at a time. Background pixels get the background.
 //
 // The stage writes either the finished pixels (each the coverage-weighted
-// sum of its fragments) or, when screen-space passes follow at the sample
-// resolution (outlines, hidden edges), every sample with its fragment's
-// colour and the G-buffer those passes read.
+// sum of its fragments) or, when screen-space stages follow at the sample
+// resolution, every sample with its fragment's colour and the G-buffer
+// those stages read: the frame's targets decide (render/frame_targets.hpp).
 #include <span>
 
 #include "core/half.hpp"
@@ -16,6 +16,7 @@
 #include "post/outlines.hpp"
 #include "raster/rasterizer.hpp"
 #include "render/frame_inputs.hpp"
+#include "render/frame_targets.hpp"
 #include "render/vertex_stage.hpp"
 #include "render/world.hpp"
 #include "shade/lighting.hpp"
@@ -37,20 +38,22 @@ struct ShadeInputs {
     std::span<const uint8_t> edge_mask;
 };
 
-// One of two kinds of target: finished pixels (`pixels` set, `depth` of the
-// output size), or every sample (`samples` set, `depth` of the rasterizer's
-// size, and the G-buffer when outlines follow).
+// Where a tile's shading goes, as the frame's targets say
+// (render/frame_targets.hpp). At `pixels`: `pixels`, and `depth` of the
+// output's size. At `samples`: `samples`, `depth` of the rasterizer's size,
+// and the G-buffer and line samples when later stages read them.
 struct ShadeTarget {
+    ShadeResolution resolution;
     HalfColorImage* pixels;   // linear RGBA, half floats, premultiplied
     ColorImage* samples;      // rgb the sample's colour, a its coverage (post/resolve.hpp)
     DepthImage& depth;        // linear view depth, +inf for background
     OutlineBuffers* gbuffer;  // per sample: depth, normal, object id; null when not needed
-    // With `pixels`, for the alpha pass: the same pixels over nothing
-    // (no background), premultiplied; null when not asked for.
-    HalfColorImage* pixels_over_nothing = nullptr;
-    // With `samples`, for the lines pass: each sample's wireframe stroke
-    // alone, premultiplied; null when not asked for.
-    ColorImage* line_samples = nullptr;
+    // At `pixels`, for the alpha pass: the same pixels over nothing (no
+    // background), premultiplied; null when not asked for.
+    HalfColorImage* pixels_over_nothing;
+    // At `samples`: each sample's wireframe stroke alone, premultiplied;
+    // null when not needed.
+    ColorImage* line_samples;
 };
 
 // Shades one tile; `raster` resolves its triangle ids. Called for different

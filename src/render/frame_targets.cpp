@@ -1,0 +1,19 @@
+#include "render/frame_targets.hpp"
+
+#include "render/surface_pass_stage.hpp"
+
+namespace facet {
+
+FrameTargets plan_frame_targets(const StylePlan& plan, PassSet passes) {
+    FrameTargets targets;
+    targets.gbuffer = plan.outlines || plan.occlusion;
+    targets.lines = passes.has(Pass::lines);
+    targets.line_samples = targets.lines || plan.hidden_edges;
+    const bool screen_space_stages = targets.gbuffer || targets.line_samples;
+    targets.shading = screen_space_stages ? ShadeResolution::samples : ShadeResolution::pixels;
+    targets.alpha = passes.has(Pass::alpha);
+    targets.surface_passes = wants_surface_passes(passes);
+    return targets;
+}
+
+}  // namespace facet
