@@ -9,10 +9,10 @@
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include "job/labels.hpp"
+#include "job/plot.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
-#include "post/labels.hpp"
-#include "post/plot.hpp"
 
 namespace facet_bench {
 

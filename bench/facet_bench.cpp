@@ -29,8 +29,8 @@
 #include "blob_mesh.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
+#include "job/render_job.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/render_job.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 

@@ -9,10 +9,10 @@
 #include "core/color.hpp"
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
+#include "job/pass_files.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/pass_files.hpp"
 #include "render/world.hpp"
 #include "support.hpp"
 
@@ -31,7 +31,7 @@ FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
 FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame,
                         unsigned threads) {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     const std::string path = write_text((fs::path(folder) / "scene.yaml").string(), yaml);
     return render_images(load_scene(path, options), frame, threads);
 }
@@ -74,7 +74,7 @@ ColorImage render_color(const SceneDesc& scene, int frame, unsigned threads) {
 
 void check_render(const RenderCase& c) {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     if (!c.style.empty()) options.overrides.push_back({"style", c.style, "test style"});
     for (const auto& d : c.defines) {
         size_t eq = d.find('=');
@@ -91,7 +91,8 @@ void check_render(const RenderCase& c) {
     fs::create_directories(out_dir);
     const std::string actual_path = (out_dir / c.reference).string();
     write_file_atomically(actual_path, pass_png(c.pass, images));
-    const std::string reference_path = (fs::path(FACET_BASELINES) / c.reference).string();
+    const std::string reference_path =
+        (fs::path(facet::test::baselines_dir()) / c.reference).string();
 
     const char* update = std::getenv("FACET_UPDATE_BASELINES");
     if ((update && std::string(update) == "1") || !fs::exists(reference_path)) {

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "job/render_job.hpp"
 #include "output/manifest.hpp"
-#include "render/render_job.hpp"
 #include "support.hpp"
 
 namespace facet::test {
@@ -18,7 +18,7 @@ inline std::map<std::string, std::string> render_hashes(
     const std::string& out, int samples = 1, const std::string& passes = "[color, depth]",
     const std::string& style = "") {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     options.overrides.push_back({"output.passes", passes, "test"});
     if (!style.empty()) options.overrides.push_back({"style", style, "test"});
     options.overrides.push_back({"output.formats", "[png, exr]", "test"});

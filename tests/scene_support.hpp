@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "scene/scene_desc.hpp"
+#include "support.hpp"
 
 namespace facet::test {
 
@@ -34,7 +35,7 @@ inline std::string line_col(const std::string& text, const std::string& needle, 
 
 inline SceneOptions with_styles() {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     return options;
 }
 

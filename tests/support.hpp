@@ -18,6 +18,14 @@
 
 namespace facet::test {
 
+// Where things are (test_paths.cpp).
+std::string source_dir();        // the checkout
+std::string baselines_dir();     // tests/baselines: the reviewed reference images
+std::string facet_executable();  // the facet program just built
+std::string build_dir();
+std::string styles_dir();      // the shipped presets
+std::string override_scene();  // the scene the -D fuzz harness overrides
+
 // A fresh folder under the system temp dir, removed when the object dies.
 class TempDir {
   public:
@@ -100,7 +108,7 @@ inline RunResult run_command(const std::string& command) {
 
 // Runs `facet ARGS` through the shell and captures what it prints.
 inline RunResult run_facet(const std::string& args) {
-    return run_command(std::string("'") + FACET_EXECUTABLE + "' " + args + " 2>&1");
+    return run_command(std::string("'") + facet::test::facet_executable() + "' " + args + " 2>&1");
 }
 
 // Whether this build (and so the facet it runs) has AddressSanitizer.
@@ -125,7 +133,7 @@ inline RunResult run_facet_limited(const std::string& args, int seconds, int meg
     std::string limits =
         kAddressSanitizer ? "" : "ulimit -v " + std::to_string(megabytes * 1024) + "; ";
     std::string command = "sh -c \"" + limits + "exec timeout -s KILL " + std::to_string(seconds) +
-                          " '" + FACET_EXECUTABLE + "' " + args + " 2>&1\"";
+                          " '" + facet::test::facet_executable() + "' " + args + " 2>&1\"";
     return run_command(command);
 }
 
@@ -151,7 +159,7 @@ inline bool have_command(const std::string& name) {
 }
 
 inline std::string source_path(const std::string& relative) {
-    return (std::filesystem::path(FACET_SOURCE_DIR) / relative).string();
+    return (std::filesystem::path(facet::test::source_dir()) / relative).string();
 }
 
 }  // namespace facet::test

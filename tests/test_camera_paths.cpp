@@ -13,9 +13,9 @@
 
 #include "anim/camera_path.hpp"
 #include "anim/frame_state.hpp"
+#include "job/render_job.hpp"
 #include "output/manifest.hpp"
 #include "render/camera.hpp"
-#include "render/render_job.hpp"
 #include "render/world.hpp"
 #include "render_hashes.hpp"
 #include "scene_support.hpp"

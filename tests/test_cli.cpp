@@ -210,13 +210,13 @@ TEST_CASE("a --style preset file may have quotes, a backslash and a colon in its
     std::string scene = write_text(dir.file("s.yaml"), kTinyScene);
     const std::string style =
         write_text(dir.file("my \"look\" \\ v2: final.yaml"), "extends: toon\ncels: 3\n");
-    const auto r = facet::test::run_command("'" FACET_EXECUTABLE "' validate '" + scene +
-                                            "' --style '" + style + "' 2>&1");
+    const auto r = facet::test::run_command("'" + facet::test::facet_executable() + "' validate '" +
+                                            scene + "' --style '" + style + "' 2>&1");
     INFO(r.output);
     CHECK(r.exit_code == 0);
     const auto bad =
-        facet::test::run_command("'" FACET_EXECUTABLE "' validate '" + scene + "' --style '" +
-                                 dir.file("no \"such\".yaml") + "' 2>&1");
+        facet::test::run_command("'" + facet::test::facet_executable() + "' validate '" + scene +
+                                 "' --style '" + dir.file("no \"such\".yaml") + "' 2>&1");
     CHECK(bad.exit_code == 2);
     CHECK_THAT(bad.output, Contains("no \"such\""));
 }

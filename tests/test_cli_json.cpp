@@ -25,7 +25,8 @@ std::string shapes() {
 
 // stdout only: JSON must not be mixed with messages.
 RunResult run_stdout(const std::string& args) {
-    return run_command("'" + std::string(FACET_EXECUTABLE) + "' " + args + " 2>/dev/null");
+    return run_command("'" + std::string(facet::test::facet_executable()) + "' " + args +
+                       " 2>/dev/null");
 }
 
 }  // namespace

@@ -14,8 +14,8 @@ TEST_CASE("progress: in a 40-column terminal the bar fits and is redrawn in plac
           "[cli][progress]") {
     TempDir dir("progress-pty");
     const std::string log = dir.file("pty.log");
-    const std::string command = "stty cols 40; '" + std::string(FACET_EXECUTABLE) + "' render '" +
-                                source_path("tests/scenes/shapes.yaml") +
+    const std::string command = "stty cols 40; '" + std::string(facet::test::facet_executable()) +
+                                "' render '" + source_path("tests/scenes/shapes.yaml") +
                                 "' --size 48x32 --frames 1-3 -o '" + dir.file("out") + "'";
     const RunResult r =
         run_command("script -q -e -c \"" + command + "\" '" + log + "' > /dev/null 2>&1");

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "job/labels.hpp"
 #include "output/encoders.hpp"
-#include "post/labels.hpp"
 #include "scene/scene_desc.hpp"
 #include "support.hpp"
 
@@ -40,7 +40,8 @@ std::string quoted(const std::string& s) {
 
 // `facet ARGS` with only the shipped presets (no user FACET_STYLE_PATH).
 RunResult facet_shipped(const std::string& args) {
-    return run_shell("env -u FACET_STYLE_PATH " + quoted(FACET_EXECUTABLE) + " " + args);
+    return run_shell("env -u FACET_STYLE_PATH " + quoted(facet::test::facet_executable()) + " " +
+                     args);
 }
 
 std::vector<std::string> lines_of(const std::string& text) {
@@ -57,7 +58,7 @@ std::string listed_line(const std::vector<std::string>& lines, const std::string
     return {};
 }
 
-// Contact sheet geometry (render/contact_sheet.cpp): labels at scale 2
+// Contact sheet geometry (job/contact_sheet.cpp): labels at scale 2
 // with 6 pixels of padding above and below, under each cell.
 int label_band() {
     return facet::label_height(2) + 2 * 6;
@@ -107,12 +108,12 @@ TEST_CASE("facet styles lists every preset with its description", "[cli][style]"
     REQUIRE(r.exit_code == 0);
     const std::vector<std::string> lines = lines_of(r.output);
     int presets = 0;
-    for (const auto& entry : fs::directory_iterator(FACET_STYLES_DIR)) {
+    for (const auto& entry : fs::directory_iterator(facet::test::styles_dir())) {
         if (entry.path().extension() != ".yaml") continue;
         ++presets;
         const std::string name = entry.path().stem().string();
         const facet::StyleDesc style =
-            facet::load_style_file(entry.path().string(), {FACET_STYLES_DIR});
+            facet::load_style_file(entry.path().string(), {facet::test::styles_dir()});
         const std::string line = listed_line(lines, name);
         INFO("preset " << name);
         REQUIRE_FALSE(line.empty());
@@ -132,7 +133,7 @@ TEST_CASE("facet styles also lists presets on FACET_STYLE_PATH", "[cli][style]")
     write_text(dir.file("mine/sketchy.yaml"), "description: my sketchy look\nextends: toon\n");
     write_text(dir.file("mine/broken.yaml"), "description: broken\nshading: cartoon\n");
     const RunResult r = run_shell("FACET_STYLE_PATH=" + quoted(dir.file("mine")) + " " +
-                                  quoted(FACET_EXECUTABLE) + " styles");
+                                  quoted(facet::test::facet_executable()) + " styles");
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
     const std::vector<std::string> lines = lines_of(r.output);

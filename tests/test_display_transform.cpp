@@ -8,9 +8,9 @@
 
 #include "core/color.hpp"
 #include "core/display_transform.hpp"
+#include "job/render_job.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
-#include "render/render_job.hpp"
 #include "render/world.hpp"
 #include "support.hpp"
 
@@ -39,7 +39,7 @@ RenderedFiles render_with(const test::TempDir& dir, const std::string& name,
         "  - { name: card, primitive: { type: cube, size: 1 }, scale: [8, 8, 0.1], translate: [0, "
         "0, -2], material: { color: [0.3, 0.3, 0.3] } }\n";
     SceneOptions scene_options;
-    scene_options.style_dirs = {FACET_STYLES_DIR};
+    scene_options.style_dirs = {facet::test::styles_dir()};
     const SceneDesc scene =
         load_scene(test::write_text(dir.file(name + ".yaml"), yaml), scene_options);
     const World world = build_world(scene);

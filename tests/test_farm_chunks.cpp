@@ -9,9 +9,9 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
-#include "core/shell_word.hpp"
 #include "farm/chunks.hpp"
 #include "farm/job_scripts.hpp"
+#include "farm/shell_word.hpp"
 #include "farm_support.hpp"
 
 using namespace facet;
@@ -133,8 +133,8 @@ TEST_CASE("job files quote every word and pass the render options through", "[fa
     const std::string script = slurm_script(job, slurm);
     for (const char* line :
          {"#SBATCH --partition=render\n", "#SBATCH --cpus-per-task=4\n", "#SBATCH --time=30:00\n",
-          "folder=/home/me/shots\n", "--chdir=\"$folder\"", "chunks=6\n", "tasks=0-5\n", "--array=\"$tasks\"%2",
-          "--dependency=afterok:\"$array\" --kill-on-invalid-dep=yes",
+          "folder=/home/me/shots\n", "--chdir=\"$folder\"", "chunks=6\n", "tasks=0-5\n",
+          "--array=\"$tasks\"%2", "--dependency=afterok:\"$array\" --kill-on-invalid-dep=yes",
           "render scenes/spin.yaml -o 'out dir' -D 'style.palette.0=it'\\''s' --frames 1-48",
           "--chunk-from-env --chunks \"$chunks\" --skip-existing", "merge 'out dir/spin'\n",
           "facet=${FACET:-/opt/facet/bin/facet}\n"}) {

@@ -46,7 +46,7 @@ struct Farm {
     // `facet farm slurm` in the folder, with `options` (already quoted).
     test::RunResult farm(const std::string& options) const {
         return run_command("cd " + shell_quote(dir.path()) + " && " +
-                           shell_quote(FACET_EXECUTABLE) +
+                           shell_quote(facet::test::facet_executable()) +
                            " farm slurm spin.yaml --chunks 2 --script job.sh " + options + " 2>&1");
     }
     // The script run as a user runs it, or as a task with FACET_FARM_STEP.
@@ -109,9 +109,10 @@ TEST_CASE(
         }
     // In the scene file's own name too.
     test::write_text(farm.dir.file("sp\nin.yaml"), test::read_file(farm.scene));
-    const test::RunResult named = run_command(
-        "cd " + shell_quote(farm.dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
-        " farm slurm " + shell_quote("sp\nin.yaml") + " --chunks 2 --script job.sh 2>&1");
+    const test::RunResult named =
+        run_command("cd " + shell_quote(farm.dir.path()) + " && " +
+                    shell_quote(facet::test::facet_executable()) + " farm slurm " +
+                    shell_quote("sp\nin.yaml") + " --chunks 2 --script job.sh 2>&1");
     CHECK(named.exit_code == 2);
     CHECK_THAT(named.output, Catch::Contains("facet farm: the scene path 'sp\\nin.yaml'"));
     CHECK_FALSE(std::filesystem::exists(farm.dir.file("job.sh")));
@@ -155,7 +156,8 @@ TEST_CASE("the job name Slurm shows keeps only the characters its #SBATCH line c
     Farm farm;
     test::write_text(farm.dir.file("my shot $(x).yaml"), test::read_file(farm.scene));
     const test::RunResult r =
-        run_command("cd " + shell_quote(farm.dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
+        run_command("cd " + shell_quote(farm.dir.path()) + " && " +
+                    shell_quote(facet::test::facet_executable()) +
                     " farm slurm 'my shot $(x).yaml' --chunks 2 --script job.sh 2>&1");
     INFO(r.output);
     REQUIRE(r.exit_code == 0);
@@ -170,7 +172,7 @@ TEST_CASE("facet farm openjd refuses control characters and OpenJD's {{ in value
     Farm farm;
     auto openjd = [&](const std::string& options) {
         return run_command("cd " + shell_quote(farm.dir.path()) + " && " +
-                           shell_quote(FACET_EXECUTABLE) +
+                           shell_quote(facet::test::facet_executable()) +
                            " farm openjd spin.yaml --script job.yaml " + options + " 2>&1");
     };
     const test::RunResult newline = openjd("-o " + shell_quote("a\nb"));

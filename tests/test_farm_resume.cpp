@@ -45,8 +45,8 @@ size_t journal_lines(const std::string& folder) {
 
 // Starts facet in the background; returns its process id.
 int start_facet(const std::string& args, const std::string& log) {
-    const auto r = test::run_command(std::string("'") + FACET_EXECUTABLE + "' " + args + " > " +
-                                     shell_quote(log) + " 2>&1 & echo $!");
+    const auto r = test::run_command(std::string("'") + facet::test::facet_executable() + "' " +
+                                     args + " > " + shell_quote(log) + " 2>&1 & echo $!");
     return std::stoi(r.output);
 }
 

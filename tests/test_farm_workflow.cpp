@@ -34,10 +34,10 @@ std::map<std::string, std::string> single_run(const test::TempDir& dir, const st
 // Writes DIR/job.yaml with `facet farm openjd spin.yaml ... OPTIONS`, run
 // from DIR (11 frames in chunks of 4, into DIR/out).
 void write_openjd_job(const test::TempDir& dir, const std::string& options) {
-    const auto made =
-        test::run_command("cd " + shell_quote(dir.path()) + " && " + shell_quote(FACET_EXECUTABLE) +
-                          " farm openjd spin.yaml --chunk-size 4 -o out --frames 1-11 " + options +
-                          " --script job.yaml 2>&1");
+    const auto made = test::run_command(
+        "cd " + shell_quote(dir.path()) + " && " + shell_quote(facet::test::facet_executable()) +
+        " farm openjd spin.yaml --chunk-size 4 -o out --frames 1-11 " + options +
+        " --script job.yaml 2>&1");
     INFO(made.output);
     REQUIRE(made.exit_code == 0);
 }
@@ -216,7 +216,7 @@ TEST_CASE("the Slurm script's tasks and merge, run as Slurm runs them, complete 
     test::TempDir dir("farm-slurm-script");
     const std::string scene = test::write_farm_scene(dir, 9, "[64, 36]");
     const std::string in_dir = "cd " + shell_quote(dir.path()) + " && ";
-    const auto made = test::run_command(in_dir + shell_quote(FACET_EXECUTABLE) +
+    const auto made = test::run_command(in_dir + shell_quote(facet::test::facet_executable()) +
                                         " farm slurm spin.yaml --chunks 4 -o out -D "
                                         "'objects.0.material.color=[0.2, 0.5, 0.9]' --cpus 2 "
                                         "--frames 2-9 --script job.sh 2>&1");

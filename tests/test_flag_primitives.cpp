@@ -1,4 +1,4 @@
-// The flag scene's primitives (src/assets/flag_primitives.cpp): the flagpole
+// The flag scene's primitives (src/shapes/flag_primitives.cpp): the flagpole
 // (cylinder with a hemispherical tip) and the platform (a slab with a round
 // hole through it). Closed, outward-facing, the right topology (a sphere's
 // and a torus's), the sizes asked for, the hole kept clear, and a pole that
@@ -13,10 +13,10 @@
 #include <glm/vec3.hpp>
 
 #include "asset_support.hpp"
-#include "assets/primitives.hpp"
 #include "core/error.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_support.hpp"
+#include "shapes/primitives.hpp"
 #include "support.hpp"
 
 using facet::test::face_cross;

@@ -19,7 +19,7 @@ namespace fs = std::filesystem;
 
 // Replays the files of tests/fuzz/KIND/TARGET; returns how many there were.
 size_t replay(const std::string& kind, const std::string& target) {
-    const fs::path folder = fs::path(FACET_SOURCE_DIR) / "tests/fuzz" / kind / target;
+    const fs::path folder = fs::path(facet::test::source_dir()) / "tests/fuzz" / kind / target;
     size_t count = 0;
     if (!fs::is_directory(folder)) return 0;
     for (const auto& entry : fs::directory_iterator(folder)) {
@@ -52,7 +52,7 @@ TEST_CASE("the checked-in fuzz corpora load or are refused cleanly", "[fuzz]") {
 
 // Seeds a reader refuses would start the fuzzer from the error paths only.
 TEST_CASE("the manifest and -D seeds are inputs facet accepts", "[fuzz]") {
-    const fs::path corpus = fs::path(FACET_SOURCE_DIR) / "tests/fuzz/corpus";
+    const fs::path corpus = fs::path(facet::test::source_dir()) / "tests/fuzz/corpus";
     const facet::Manifest whole =
         facet::read_manifest((corpus / "manifest/two-frames.json").string());
     CHECK(whole.frames.size() == 2);
@@ -66,24 +66,25 @@ TEST_CASE("the manifest and -D seeds are inputs facet accepts", "[fuzz]") {
         INFO(entry.path().string());
         std::ifstream in(entry.path());
         facet::SceneOptions options;
-        options.style_dirs = {FACET_STYLES_DIR};
+        options.style_dirs = {facet::test::styles_dir()};
         for (std::string line; std::getline(in, line);)
             options.overrides.push_back(facet::parse_define(line));
         CHECK(options.overrides.size() >= 2);
-        CHECK_NOTHROW(facet::load_scene(FACET_OVERRIDE_SCENE, options));
+        CHECK_NOTHROW(facet::load_scene(facet::test::override_scene(), options));
     }
 }
 
 TEST_CASE("a manifest number out of its field's range is refused, naming the field", "[fuzz]") {
-    const fs::path found =
-        fs::path(FACET_SOURCE_DIR) / "tests/fuzz/regressions/manifest/float-frame-1e62.json";
+    const fs::path found = fs::path(facet::test::source_dir()) /
+                           "tests/fuzz/regressions/manifest/float-frame-1e62.json";
     facet::test::require_input_error([&] { facet::read_manifest(found.string()); },
                                      "'frame' must be a whole number in range");
     facet::test::TempDir dir("manifest-range");
     for (const char* size : {"[64.5, 48]", "[3000000000, 48]", "[-1e400, 1]"}) {
         INFO(size);
         std::string text = facet::test::read_file(
-            (fs::path(FACET_SOURCE_DIR) / "tests/fuzz/corpus/manifest/two-frames.json").string());
+            (fs::path(facet::test::source_dir()) / "tests/fuzz/corpus/manifest/two-frames.json")
+                .string());
         const size_t at = text.find("\"size\": [");
         text.replace(at, text.find(']', at) - at + 1, std::string("\"size\": ") + size);
         const std::string path = facet::test::write_text(dir.file("m.json"), text);

@@ -10,11 +10,11 @@
 
 #include <glm/geometric.hpp>
 
-#include "assets/primitives.hpp"
 #include "core/half.hpp"
 #include "render/principal_directions.hpp"
 #include "render_check.hpp"
 #include "shade/hatch_mapping.hpp"
+#include "shapes/primitives.hpp"
 #include "support.hpp"
 
 namespace {

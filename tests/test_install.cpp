@@ -14,8 +14,9 @@ namespace fs = std::filesystem;
 TEST_CASE("install: a moved prefix renders with its own presets", "[install]") {
     TempDir dir("install");
     const std::string prefix = dir.file("prefix");
-    const RunResult install = run_command("cmake --install '" + std::string(FACET_BUILD_DIR) +
-                                          "' --prefix '" + prefix + "' 2>&1");
+    const RunResult install =
+        run_command("cmake --install '" + std::string(facet::test::build_dir()) + "' --prefix '" +
+                    prefix + "' 2>&1");
     INFO(install.output);
     REQUIRE(install.exit_code == 0);
     // Relocatable: nothing in the files names the prefix they went to.
@@ -29,8 +30,9 @@ TEST_CASE("install: a moved prefix renders with its own presets", "[install]") {
     CHECK_THAT(run_command(facet + " styles").output, Contains("toon-outline"));
 
     fs::copy_file(source_path("tests/scenes/shapes.yaml"), dir.file("shapes.yaml"));
-    const RunResult render = run_command("cd '" + dir.path() + "' && " + facet +
-                                         " render shapes.yaml --style gooch -f 1 --size 32x24 -q 2>&1");
+    const RunResult render =
+        run_command("cd '" + dir.path() + "' && " + facet +
+                    " render shapes.yaml --style gooch -f 1 --size 32x24 -q 2>&1");
     INFO(render.output);
     CHECK(render.exit_code == 0);
     CHECK(fs::exists(dir.file("out/shapes/color.0001.png")));
@@ -42,7 +44,7 @@ TEST_CASE("install: a moved prefix renders with its own presets", "[install]") {
 }
 
 TEST_CASE("install: bash completion completes commands, options and presets", "[install]") {
-    const std::string script = std::string(FACET_BUILD_DIR) + "/facet.bash";
+    const std::string script = std::string(facet::test::build_dir()) + "/facet.bash";
     auto complete = [&](const std::string& words, int index) {
         return run_command("bash -c 'source \"" + script + "\"; COMP_WORDS=(" + words +
                            "); COMP_CWORD=" + std::to_string(index) +
@@ -58,8 +60,9 @@ TEST_CASE("install: bash completion completes commands, options and presets", "[
 
 TEST_CASE("install: CPack builds a Debian package with the program and presets", "[install]") {
     TempDir dir("cpack");
-    const RunResult pack = run_command("cd '" + dir.path() + "' && cpack -G DEB --config '" +
-                                       std::string(FACET_BUILD_DIR) + "/CPackConfig.cmake' 2>&1");
+    const RunResult pack =
+        run_command("cd '" + dir.path() + "' && cpack -G DEB --config '" +
+                    std::string(facet::test::build_dir()) + "/CPackConfig.cmake' 2>&1");
     INFO(pack.output);
     REQUIRE(pack.exit_code == 0);
     std::string deb;

@@ -24,7 +24,7 @@ objects: [ { primitive: { type: sphere, segments: 128, rings: 64 } } ]
     // to end facet at once.)
     const std::string first = dir.file("out/long/depth.0001.exr");
     std::string command = "'";
-    command += FACET_EXECUTABLE;
+    command += facet::test::facet_executable();
     command += "' render '" + scene + "' --out '" + dir.file("out") + "' --quiet 2>&1 & pid=$!; ";
     command += "for i in $(seq 600); do [ -e '" + first + "' ] && break; sleep 0.1; done; ";
     command += "kill -INT $pid; wait $pid; echo \"exit=$?.\"";

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "anim/frame_state.hpp"
-#include "core/color_temperature.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/shade_lights.hpp"
+#include "scene/color_temperature.hpp"
 #include "scene_support.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/lighting_batch.hpp"

@@ -8,10 +8,10 @@
 
 #include "core/half.hpp"
 #include "core/thread_pool.hpp"
+#include "job/render_job.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/render_job.hpp"
 #include "render/world.hpp"
 #include "render_check.hpp"
 #include "render_hashes.hpp"
@@ -47,7 +47,7 @@ std::string card_scene(const std::string& output, const std::string& objects) {
 
 SceneOptions with_styles() {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     return options;
 }
 
@@ -270,7 +270,7 @@ TEST_CASE("lines: the strokes alone, to composite over the colour without them",
     // over it must be toon-outline's colour (one sample per pixel, where
     // outlines are composited per pixel too).
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     options.overrides.push_back({"output.passes", "[color, lines]", "test"});
     options.overrides.push_back({"style", "toon-outline", "test"});
     const SceneDesc outlined = load_scene(test::source_path("tests/scenes/shapes.yaml"), options);

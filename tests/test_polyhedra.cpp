@@ -1,4 +1,4 @@
-// The faceted and round procedural solids (src/assets/polyhedra.cpp and
+// The faceted and round procedural solids (src/shapes/polyhedra.cpp and
 // primitives.cpp): the vertex, edge and face counts of the polyhedron each
 // one is, Euler characteristics, closed outward surfaces, flat or smooth
 // normals, sizes; and their scene keys, with the errors for bad values.
@@ -18,11 +18,11 @@
 #include <glm/vec3.hpp>
 
 #include "asset_support.hpp"
-#include "assets/primitives.hpp"
 #include "core/error.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene_support.hpp"
+#include "shapes/primitives.hpp"
 #include "support.hpp"
 
 using facet::test::centroid;

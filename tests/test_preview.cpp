@@ -208,7 +208,7 @@ TEST_CASE("the watch list names the scene, its style chain, its meshes and their
     };
     CHECK(has(list.files, path));
     CHECK(has(list.files, dir.file("looks/mine.yaml")));
-    CHECK(has(list.files, std::string(FACET_STYLES_DIR) + "/toon.yaml"));
+    CHECK(has(list.files, std::string(facet::test::styles_dir()) + "/toon.yaml"));
     CHECK(has(list.files, dir.file("meshes/tri.obj")));
     CHECK(has(list.folders, dir.file("meshes")));
 }
@@ -243,7 +243,7 @@ TEST_CASE("the panel's values leave as -D arguments and as a style file that mea
     // The style file: extends the scene's preset by name, nests the keys,
     // and lists the light as a scene value.
     const std::string yaml =
-        style_file_yaml(tweaked, tweaks, {FACET_STYLES_DIR}, dir.file("look.yaml"));
+        style_file_yaml(tweaked, tweaks, {facet::test::styles_dir()}, dir.file("look.yaml"));
     CHECK_THAT(yaml, Contains("extends: palette\n"));
     CHECK_THAT(yaml,
                Contains("outlines:\n  silhouette:\n    color: [0.2, 0, 0]\n    width: 2.5\n"));
@@ -280,8 +280,8 @@ TEST_CASE("a style file written from the panel keeps the look's own keys and nev
     options.overrides = tweak_overrides(tweaks);
 
     // Written back over the scene's own style: its keys stay, the value changes.
-    const std::string own =
-        style_file_yaml(load(path, options), tweaks, {FACET_STYLES_DIR}, dir.file("look.yaml"));
+    const std::string own = style_file_yaml(load(path, options), tweaks,
+                                            {facet::test::styles_dir()}, dir.file("look.yaml"));
     CHECK_THAT(own, Contains("extends: palette"));
     CHECK_THAT(own, !Contains("extends: look"));
     write_text(dir.file("look.yaml"), own);
@@ -290,8 +290,9 @@ TEST_CASE("a style file written from the panel keeps the look's own keys and nev
     CHECK(rewritten.cels.value == 5.0f);
 
     // An inline style written out: its keys and the panel's values.
-    const std::string out = style_file_yaml(load(inline_path, options), tweaks, {FACET_STYLES_DIR},
-                                            dir.file("inline-look.yaml"));
+    const std::string out =
+        style_file_yaml(load(inline_path, options), tweaks, {facet::test::styles_dir()},
+                        dir.file("inline-look.yaml"));
     write_text(dir.file("inline-look.yaml"), out);
     const StyleDesc from_inline =
         load(write_text(dir.file("uses.yaml"), "style: inline-look.yaml\n" + kMinimalObjects))
@@ -301,8 +302,8 @@ TEST_CASE("a style file written from the panel keeps the look's own keys and nev
     CHECK(from_inline.alpha.value == 0.3f);
 
     // A preset the scene's style extends is not written over.
-    CHECK_THROWS_WITH(style_file_yaml(load(path, options), tweaks, {FACET_STYLES_DIR},
-                                      std::string(FACET_STYLES_DIR) + "/palette.yaml"),
+    CHECK_THROWS_WITH(style_file_yaml(load(path, options), tweaks, {facet::test::styles_dir()},
+                                      std::string(facet::test::styles_dir()) + "/palette.yaml"),
                       Contains("a preset the scene's style extends"));
 }
 
@@ -482,22 +483,23 @@ TEST_CASE("facet preview refuses to start without a display, a scene or one came
     TempDir dir("preview-cli");
     const std::string path = write_text(dir.file("scene.yaml"), kScene);
     const std::string headless = "env -u DISPLAY -u WAYLAND_DISPLAY -u SDL_VIDEODRIVER ";
-    RunResult r = run_command(headless + "'" + FACET_EXECUTABLE + "' preview '" + path + "' 2>&1");
+    RunResult r = run_command(headless + "'" + facet::test::facet_executable() + "' preview '" +
+                              path + "' 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("needs a display"));
     CHECK_THAT(r.output, Contains("DISPLAY"));
     // With a display named (any: these fail before opening it).
     const std::string display = "env DISPLAY=:none ";
-    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + dir.file("missing.yaml") +
-                    "' 2>&1");
+    r = run_command(display + "'" + facet::test::facet_executable() + "' preview '" +
+                    dir.file("missing.yaml") + "' 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("no such file"));
-    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + path +
+    r = run_command(display + "'" + facet::test::facet_executable() + "' preview '" + path +
                     "' --camera a,b 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("one camera"));
     // A camera the scene lacks, as render refuses it.
-    r = run_command(display + "'" + FACET_EXECUTABLE + "' preview '" + path +
+    r = run_command(display + "'" + facet::test::facet_executable() + "' preview '" + path +
                     "' --camera nope 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("nope"));
@@ -510,14 +512,14 @@ TEST_CASE("facet preview refuses to start without a display, a scene or one came
           "env -u DISPLAY -u SDL_VIDEODRIVER ASAN_OPTIONS=detect_leaks=0 "
           "WAYLAND_DISPLAY=nowhere-77 "}) {
         INFO(unreachable);
-        r = run_command(std::string(unreachable) + "timeout -s KILL 20 '" + FACET_EXECUTABLE +
-                        "' preview '" + path + "' 2>&1");
+        r = run_command(std::string(unreachable) + "timeout -s KILL 20 '" +
+                        facet::test::facet_executable() + "' preview '" + path + "' 2>&1");
         CHECK(r.exit_code == 2);
         CHECK_THAT(r.output, Contains("cannot open a window"));
     }
     // The display is checked first: before the scene file or the options.
-    r = run_command(headless + "'" + FACET_EXECUTABLE + "' preview '" + dir.file("missing.yaml") +
-                    "' 2>&1");
+    r = run_command(headless + "'" + facet::test::facet_executable() + "' preview '" +
+                    dir.file("missing.yaml") + "' 2>&1");
     CHECK(r.exit_code == 2);
     CHECK_THAT(r.output, Contains("needs a display"));
 }

@@ -1,4 +1,4 @@
-// Procedural meshes (src/assets/primitives.cpp): counts from the parameters,
+// Procedural meshes (src/shapes/primitives.cpp): counts from the parameters,
 // unit outward normals, counter-clockwise winding, closed surfaces, and the
 // areas and volumes of the shapes they approximate.
 #include <catch2/catch.hpp>
@@ -15,8 +15,8 @@
 #include <glm/vec3.hpp>
 
 #include "asset_support.hpp"
-#include "assets/primitives.hpp"
 #include "core/error.hpp"
+#include "shapes/primitives.hpp"
 
 using facet::test::centroid;
 using facet::test::corner;

@@ -144,8 +144,9 @@ std::string noise_png(const TempDir& dir, const std::string& name, int side) {
 
 // Peak resident kilobytes of `facet ARGS`, and its exit code.
 std::pair<long, int> peak_kb(const std::string& args) {
-    const RunResult r = run_command("/usr/bin/time -f 'PEAK %M' '" + std::string(FACET_EXECUTABLE) +
-                                    "' " + args + " 2>&1 >/dev/null");
+    const RunResult r =
+        run_command("/usr/bin/time -f 'PEAK %M' '" + std::string(facet::test::facet_executable()) +
+                    "' " + args + " 2>&1 >/dev/null");
     const size_t at = r.output.rfind("PEAK ");
     return {at == std::string::npos ? -1 : std::stol(r.output.substr(at + 5)), r.exit_code};
 }
@@ -191,8 +192,8 @@ TEST_CASE("a full disk leaves the finished images listed and no file of an unfin
     // A 100 KB file system of its own, in a mount namespace of its own:
     // room for three frames of these four files, not for thirty.
     const std::string inside = "mount -t tmpfs -o size=100k tmpfs " + shell_quote(out) +
-                               " || exit 77; " + shell_quote(FACET_EXECUTABLE) + " render " +
-                               shell_quote(source_path("tests/scenes/shapes.yaml")) +
+                               " || exit 77; " + shell_quote(facet::test::facet_executable()) +
+                               " render " + shell_quote(source_path("tests/scenes/shapes.yaml")) +
                                " --size 96x54 --frames 1-30 --allow-outside --passes color,depth "
                                "--formats png,exr -q -o " +
                                shell_quote(out) + " 2>&1; echo \"EXIT $?\"; ls -1 " +

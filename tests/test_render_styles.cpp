@@ -60,11 +60,12 @@ TEST_CASE("render style: lit-shadows",       "[render][style]") { check_render({
 
 TEST_CASE("every shipped preset has a reference render above", "[render][style]") {
     std::set<std::string> shipped;
-    for (const auto& entry : std::filesystem::directory_iterator(FACET_STYLES_DIR))
+    for (const auto& entry : std::filesystem::directory_iterator(facet::test::styles_dir()))
         if (entry.path().extension() == ".yaml") shipped.insert(entry.path().stem().string());
     CHECK(shipped == kCovered);
     for (const std::string& name : kCovered)
-        CHECK(std::filesystem::exists(std::string(FACET_BASELINES) + "/style_" + name + ".png"));
+        CHECK(std::filesystem::exists(std::string(facet::test::baselines_dir()) + "/style_" + name +
+                                      ".png"));
 }
 
 namespace {
@@ -219,7 +220,7 @@ objects:
   - primitive: cube
 )");
     facet::SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     const facet::SceneDesc scene = facet::load_scene(path, options);
     REQUIRE(scene.style.wireframe.enabled);
     const float width = scene.style.wireframe.width.value;

@@ -135,7 +135,7 @@ TEST_CASE("a scene plays all of a file's animations, or the ones it names", "[an
     CHECK_THAT(info.output, Contains("BoxAction: 2 s, 1 channel, drives Box"));
     CHECK_THAT(info.output, Contains("ArmAction: 3 s, 1 channel, drives Arm"));
     const auto described = nlohmann::json::parse(
-        run_command("'" FACET_EXECUTABLE "' info '" + file + "' --json").output);
+        run_command("'" + facet::test::facet_executable() + "' info '" + file + "' --json").output);
     CHECK(described["animations"][0]["nodes"] == nlohmann::json::array({"Box"}));
     CHECK(described["animations"][2]["nodes"] == nlohmann::json::array({"Arm"}));
 }

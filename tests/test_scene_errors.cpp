@@ -54,7 +54,7 @@ TEST_CASE("an unknown style preset name lists the available presets", "[scene][s
     CHECK_THAT(message, Contains("available"));
     // Every preset file in the styles folder is named.
     int presets = 0;
-    for (const auto& entry : std::filesystem::directory_iterator(FACET_STYLES_DIR)) {
+    for (const auto& entry : std::filesystem::directory_iterator(facet::test::styles_dir())) {
         if (entry.path().extension() != ".yaml") continue;
         ++presets;
         CHECK_THAT(message, Contains(entry.path().stem().string()));

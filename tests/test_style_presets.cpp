@@ -279,7 +279,7 @@ objects:
 
 TEST_CASE("every shipped preset loads and describes itself", "[style]") {
     std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(FACET_STYLES_DIR))
+    for (const auto& entry : fs::directory_iterator(facet::test::styles_dir()))
         if (entry.path().extension() == ".yaml") names.push_back(entry.path().stem().string());
     std::sort(names.begin(), names.end());
     CHECK(names.size() >= 19);
@@ -288,14 +288,14 @@ TEST_CASE("every shipped preset loads and describes itself", "[style]") {
           "hatching", "pencil", "ink", "blueprint", "clay", "wireframe", "depth", "normals"})
         CHECK(std::find(names.begin(), names.end(), wanted) != names.end());
 
-    const auto listed = facet::list_style_presets({FACET_STYLES_DIR});
+    const auto listed = facet::list_style_presets({facet::test::styles_dir()});
     CHECK(listed.size() == names.size());
     TempDir dir("style-shipped");
     for (const std::string& name : names) {
         INFO("preset " << name);
-        const std::string file = (fs::path(FACET_STYLES_DIR) / (name + ".yaml")).string();
+        const std::string file = (fs::path(facet::test::styles_dir()) / (name + ".yaml")).string();
         StyleDesc s;
-        REQUIRE_NOTHROW(s = facet::load_style_file(file, {FACET_STYLES_DIR}));
+        REQUIRE_NOTHROW(s = facet::load_style_file(file, {facet::test::styles_dir()}));
         CHECK(s.name == name);
         CHECK_FALSE(s.description.empty());
         CHECK(s.description.find('\n') == std::string::npos);  // one line
@@ -319,8 +319,8 @@ TEST_CASE("the palette-seed preset and the palette model carry the seed-000 valu
     };
     // The model's own defaults are the seed's; the `palette` preset tunes them.
     check_seed_values(StyleDesc{});
-    const StyleDesc s = facet::load_style_file(std::string(FACET_STYLES_DIR) + "/palette-seed.yaml",
-                                               {FACET_STYLES_DIR});
+    const StyleDesc s = facet::load_style_file(
+        std::string(facet::test::styles_dir()) + "/palette-seed.yaml", {facet::test::styles_dir()});
     CHECK(s.shading == ShadingModel::palette);
     check_seed_values(s);
     CHECK(s.hatching.has_value());

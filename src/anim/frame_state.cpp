@@ -12,7 +12,7 @@
 
 #include "anim/camera_path.hpp"
 #include "anim/track.hpp"
-#include "core/color_temperature.hpp"
+#include "scene/color_temperature.hpp"
 
 namespace facet {
 namespace {

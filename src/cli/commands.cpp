@@ -29,12 +29,12 @@
 #include "core/frame_range.hpp"
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
+#include "job/render_job.hpp"
+#include "job/render_memory.hpp"
+#include "job/thread_study.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "raster/raster_limits.hpp"
-#include "render/render_job.hpp"
-#include "render/render_memory.hpp"
-#include "render/thread_study.hpp"
 #include "render/world.hpp"
 
 namespace facet {

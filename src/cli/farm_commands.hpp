@@ -7,7 +7,7 @@
 
 #include "cli/render_args.hpp"
 #include "farm/job_scripts.hpp"
-#include "render/render_job.hpp"
+#include "job/render_job.hpp"
 
 namespace CLI {
 class App;

@@ -7,8 +7,8 @@
 #include "cli/options.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "job/render_job.hpp"
 #include "preview/preview.hpp"
-#include "render/render_job.hpp"
 
 namespace facet {
 

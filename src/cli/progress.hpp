@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <string>
 
-#include "render/render_job.hpp"
+#include "job/render_job.hpp"
 
 namespace facet {
 

@@ -14,9 +14,9 @@
 #include "cli/render_args.hpp"
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
+#include "job/contact_sheet.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
-#include "render/contact_sheet.hpp"
 #include "scene/scene_desc.hpp"
 #include "video/video_encoder.hpp"
 

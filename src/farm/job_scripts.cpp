@@ -5,7 +5,7 @@
 #include <string_view>
 
 #include "core/error.hpp"
-#include "core/shell_word.hpp"
+#include "farm/shell_word.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {

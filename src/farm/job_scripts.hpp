@@ -44,7 +44,7 @@ void check_openjd_values(const FarmJob& job);
 
 // A bash script that, run with bash or submitted with sbatch, submits the
 // render array and a merge job that runs after all of it succeeded. Every
-// value in it, comments included, is a shell word (core/shell_word.hpp);
+// value in it, comments included, is a shell word (farm/shell_word.hpp);
 // the #SBATCH lines hold only checked names and numbers. Call
 // check_slurm_values first.
 std::string slurm_script(const FarmJob& job, const SlurmSettings& settings);

@@ -21,7 +21,7 @@ struct ManifestFrame {
 struct ManifestFile {
     int frame;
     std::string camera;
-    std::string pass;    // core/passes.hpp, or multilayer
+    std::string pass;    // output/passes.hpp, or multilayer
     std::string format;  // png, exr
     std::string path;    // relative to the manifest
     std::string sha256;

@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "anim/frame_state.hpp"
-#include "core/passes.hpp"
+#include "output/passes.hpp"
 #include "preview/preview_worker.hpp"
 #include "preview/tweaks.hpp"
 #include "preview/view_camera.hpp"

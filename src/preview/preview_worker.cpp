@@ -8,12 +8,12 @@
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
+#include "job/pass_files.hpp"
+#include "job/render_job.hpp"
+#include "job/render_memory.hpp"
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/framing_shapes.hpp"
-#include "render/pass_files.hpp"
-#include "render/render_job.hpp"
-#include "render/render_memory.hpp"
 #include "render/world.hpp"
 
 namespace facet {

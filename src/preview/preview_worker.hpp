@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "anim/frame_state.hpp"
-#include "core/passes.hpp"
+#include "output/passes.hpp"
 #include "preview/file_watch.hpp"
 #include "scene/scene_desc.hpp"
 

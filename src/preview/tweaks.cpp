@@ -4,7 +4,7 @@
 #include <filesystem>
 
 #include "core/error.hpp"
-#include "core/shell_word.hpp"
+#include "farm/shell_word.hpp"
 
 namespace facet {
 namespace {

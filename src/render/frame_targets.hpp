@@ -4,7 +4,7 @@
 // pipeline"). Every stage that writes or reads a frame buffer reads this
 // record, so a new screen-space stage changes this file's rule, not each
 // stage's own guess of the mode.
-#include "core/passes.hpp"
+#include "output/passes.hpp"
 #include "render/frame_inputs.hpp"
 
 namespace facet {

@@ -18,7 +18,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/image.hpp"
-#include "core/passes.hpp"
+#include "output/passes.hpp"
 #include "raster/rasterizer.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/vertex_stage.hpp"

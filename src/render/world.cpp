@@ -10,9 +10,9 @@
 
 #include "anim/cloth_scene.hpp"
 #include "assets/gltf_pose.hpp"
-#include "assets/primitives.hpp"
 #include "core/error.hpp"
 #include "render/principal_directions.hpp"
+#include "shapes/primitives.hpp"
 
 namespace facet {
 namespace {

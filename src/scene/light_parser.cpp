@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/color_temperature.hpp"
 #include "core/limits.hpp"
+#include "scene/color_temperature.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/yaml_field.hpp"
 

@@ -11,15 +11,15 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "assets/primitives.hpp"
 #include "assets/texture.hpp"
 #include "cloth/cloth_params.hpp"
 #include "core/diagnostics.hpp"
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
-#include "core/passes.hpp"
+#include "output/passes.hpp"
 #include "scene/animated.hpp"
 #include "scene/style_desc.hpp"
+#include "shapes/primitives.hpp"
 
 namespace facet {
 
@@ -169,7 +169,7 @@ struct MaterialDesc {
 };
 
 // Which keys apply to which type: docs/scene-format.md, "Primitives". The
-// values are the primitive builder's own record (assets/primitives.hpp).
+// values are the primitive builder's own record (shapes/primitives.hpp).
 struct PrimitiveDesc {
     PrimitiveSpec spec;
     SourceLocation where;

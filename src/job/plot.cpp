@@ -1,10 +1,10 @@
-#include "post/plot.hpp"
+#include "job/plot.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 
-#include "post/labels.hpp"
+#include "job/labels.hpp"
 
 namespace facet {
 namespace {

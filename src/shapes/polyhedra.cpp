@@ -9,7 +9,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "assets/primitive_builder.hpp"
+#include "shapes/primitive_builder.hpp"
 
 namespace facet::detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "core/color_temperature.hpp"
+#include "scene/color_temperature.hpp"
 
 #include <algorithm>
 

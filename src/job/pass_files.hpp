@@ -20,7 +20,7 @@ struct PassFile {
 };
 
 // The files each frame gets from the scene's passes and formats: per pass
-// in core/passes.hpp's order its PNG view (passes that have one), then its
+// in output/passes.hpp's order its PNG view (passes that have one), then its
 // EXR; with `exr: multilayer` one EXR of every pass last instead.
 std::vector<PassFile> frame_files(const OutputDesc& out);
 

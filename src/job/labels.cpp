@@ -1,4 +1,4 @@
-#include "post/labels.hpp"
+#include "job/labels.hpp"
 
 #include <algorithm>
 #include <vector>

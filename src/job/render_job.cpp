@@ -1,4 +1,4 @@
-#include "render/render_job.hpp"
+#include "job/render_job.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -15,15 +15,15 @@
 #include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
+#include "job/file_metadata.hpp"
+#include "job/pass_files.hpp"
+#include "job/render_memory.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "output/output_path.hpp"
 #include "output/run_ledger.hpp"
-#include "render/file_metadata.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/pass_files.hpp"
-#include "render/render_memory.hpp"
 
 namespace facet {
 namespace {

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "assets/primitive_builder.hpp"
+#include "shapes/primitive_builder.hpp"
 
 namespace facet::detail {
 namespace {

@@ -1,4 +1,4 @@
-#include "render/thread_study.hpp"
+#include "job/thread_study.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -6,8 +6,8 @@
 #include <thread>
 
 #include "core/thread_pool.hpp"
-#include "post/labels.hpp"
-#include "post/plot.hpp"
+#include "job/labels.hpp"
+#include "job/plot.hpp"
 #include "render/frame_renderer.hpp"
 
 namespace facet {

@@ -1,9 +1,9 @@
-#include "render/contact_sheet.hpp"
+#include "job/contact_sheet.hpp"
 
 #include <cmath>
 
 #include "core/thread_pool.hpp"
-#include "post/labels.hpp"
+#include "job/labels.hpp"
 #include "render/frame_renderer.hpp"
 
 namespace facet {

@@ -1,4 +1,4 @@
-#include "render/render_memory.hpp"
+#include "job/render_memory.hpp"
 
 #include "render/frame_inputs.hpp"
 
@@ -21,7 +21,7 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     const uint64_t side = static_cast<uint64_t>(out.samples_per_side());
     const uint64_t samples = pixels * side * side;
     // The frame being rendered, two queued, and one or two being encoded
-    // (render/render_job.cpp).
+    // (job/render_job.cpp).
     const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
     const StylePlan plan = plan_styles(scene);
     MemoryParts parts;

@@ -1,4 +1,4 @@
-#include "core/shell_word.hpp"
+#include "farm/shell_word.hpp"
 
 namespace facet {
 

@@ -1,4 +1,4 @@
-#include "render/file_metadata.hpp"
+#include "job/file_metadata.hpp"
 
 #include <cstdio>
 

@@ -1,4 +1,4 @@
-#include "assets/primitives.hpp"
+#include "shapes/primitives.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,8 +6,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "assets/primitive_builder.hpp"
 #include "core/error.hpp"
+#include "shapes/primitive_builder.hpp"
 
 namespace facet {
 namespace detail {

@@ -1,4 +1,4 @@
-#include "render/pass_files.hpp"
+#include "job/pass_files.hpp"
 
 namespace facet {
 namespace {
