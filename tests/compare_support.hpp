@@ -46,7 +46,12 @@ void edit_png(const std::string& path, const std::string& out, Edit&& edit) {
     DecodedPng png = read_png(path);
     std::vector<uint8_t> bytes(png.samples.begin(), png.samples.end());
     edit(bytes, png.channels, png.width);
-    write_bytes(out, encode_png_bytes(png.width, png.height, png.channels, bytes, 6));
+    write_bytes(out, encode_png({.width = png.width,
+                                 .height = png.height,
+                                 .channels = png.channels,
+                                 .bit_depth = 8,
+                                 .bytes = std::move(bytes)},
+                                6));
 }
 
 // After a test edits a run's files by hand: the manifest's hashes made to

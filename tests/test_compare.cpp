@@ -261,7 +261,9 @@ TEST_CASE("compare: a mask hides a change", "[compare]") {
     std::vector<uint8_t> mask(320 * 180, 0);
     for (int y = 18; y < 42; ++y)
         for (int x = 28; x < 72; ++x) mask[static_cast<size_t>(y) * 320 + x] = 255;
-    write_bytes(e.dir.file("mask.png"), encode_png_bytes(320, 180, 1, mask, 6));
+    write_bytes(
+        e.dir.file("mask.png"),
+        encode_png({.width = 320, .height = 180, .channels = 1, .bit_depth = 8, .bytes = mask}, 6));
     write_text(e.dir.file("thresholds.yaml"), "masks:\n  - { image: mask.png, kind: color }\n");
     const RunResult file =
         compare(e.ref, e.candidate,

@@ -72,7 +72,7 @@ TEST_CASE("PNG writer: 16-bit depth follows its mapping", "[output][png]") {
     depth.at(2, 0) = 4.5f;  // halfway
     depth.at(3, 0) = 3.0f;  // nearer than the range: clamped white
     const DecodedPng png =
-        round_trip(encode_png_depth(depth, glm::vec2(4, 5), 1), dir.file("d.png"));
+        round_trip(encode_png(png_depth_samples(depth, glm::vec2(4, 5)), 1), dir.file("d.png"));
     REQUIRE(png.bit_depth == 16);
     REQUIRE(png.channels == 1);
     CHECK(png.samples[0] == 65535);

@@ -30,6 +30,17 @@ bool colour_kind(ImageKind kind) {
     return kind == ImageKind::color || kind == ImageKind::color_float;
 }
 
+// An 8-bit PNG the size of `image`, of `channels` samples a pixel.
+std::vector<uint8_t> report_png(const CompareImage& image, int channels,
+                                std::vector<uint8_t> bytes) {
+    return encode_png({.width = image.width,
+                       .height = image.height,
+                       .channels = channels,
+                       .bit_depth = 8,
+                       .bytes = std::move(bytes)},
+                      6);
+}
+
 }  // namespace
 
 std::vector<uint8_t> difference_png(const CompareImage& ref, const CompareImage& candidate,
@@ -48,7 +59,7 @@ std::vector<uint8_t> difference_png(const CompareImage& ref, const CompareImage&
             rgb[p * 3] = rgb[p * 3 + 1] = rgb[p * 3 + 2] =
                 to_byte(judgement.excess[p] * scale / 8.0);
     }
-    return encode_png_bytes(ref.width, ref.height, 3, rgb, 6);
+    return report_png(ref, 3, std::move(rgb));
 }
 
 std::vector<uint8_t> heat_png(const CompareImage& ref, ImageKind kind, const Judgement& judgement) {
@@ -64,7 +75,7 @@ std::vector<uint8_t> heat_png(const CompareImage& ref, ImageKind kind, const Jud
             {0, 0, 0}, {255, 140, 0}, {255, 0, 0}, {255, 230, 0}, {40, 60, 160}};
         std::copy_n(kStateColour[std::min<int>(judgement.state[p], 4)], 3, out);
     }
-    return encode_png_bytes(ref.width, ref.height, 3, rgb, 6);
+    return report_png(ref, 3, std::move(rgb));
 }
 
 std::vector<uint8_t> preview_png(const CompareImage& image, ImageKind kind, double white) {
@@ -108,7 +119,7 @@ std::vector<uint8_t> preview_png(const CompareImage& image, ImageKind kind, doub
         }
         if (alpha) px[3] = to_byte(image.alpha[p]);
     }
-    return encode_png_bytes(image.width, image.height, channels, out, 6);
+    return report_png(image, channels, std::move(out));
 }
 
 }  // namespace facet

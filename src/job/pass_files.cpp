@@ -28,9 +28,8 @@ const Image<Rgba16F>& rgba_image(Pass pass, const FrameImages& images) {
 
 }  // namespace
 
-std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const FrameImages& images,
-                                     const PassFileFacts& facts) {
-    const int level = out.png_compression;
+std::optional<PngSamples> png_view_samples(Pass pass, const OutputDesc& out,
+                                           const FrameImages& images, glm::vec2 depth_range) {
     switch (pass) {
         case Pass::color:
         case Pass::alpha:
@@ -38,25 +37,32 @@ std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const Fra
             // PNG is for looking at: it gets the exposure and tone curve
             // (EXR stays scene-linear).
             if (!out.display.is_identity())
-                return encode_png_color(
-                    apply_display_transform(rgba_image(pass, images), out.display), level,
-                    facts.png_text);
-            return encode_png_color(rgba_image(pass, images), level, facts.png_text);
+                return png_color_samples(
+                    apply_display_transform(rgba_image(pass, images), out.display));
+            return png_color_samples(rgba_image(pass, images));
         case Pass::depth:
-            return encode_png_depth(images.depth, facts.depth_range, level, facts.png_text);
+            return png_depth_samples(images.depth, depth_range);
         case Pass::normal:
-            return encode_png_normal(images.surface.normal, level, facts.png_text);
+            return png_normal_samples(images.surface.normal);
         case Pass::object_id:
-            return encode_png_ids(images.surface.object_id, level, facts.png_text);
+            return png_id_samples(images.surface.object_id);
         case Pass::material_id:
-            return encode_png_ids(images.surface.material_id, level, facts.png_text);
+            return png_id_samples(images.surface.material_id);
         case Pass::uv:
-            return encode_png_uv(images.surface.uv, level, facts.png_text);
+            return png_uv_samples(images.surface.uv);
         case Pass::position:
         case Pass::motion:
             break;
     }
-    return {};
+    return std::nullopt;
+}
+
+std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const FrameImages& images,
+                                     const PassFileFacts& facts) {
+    const std::optional<PngSamples> samples =
+        png_view_samples(pass, out, images, facts.depth_range);
+    if (!samples) return {};
+    return encode_png(*samples, out.png_compression, facts.png_text);
 }
 
 std::vector<ExrChannel> exr_pass_channels(Pass pass, const FrameImages& images, bool layered) {

@@ -2,6 +2,7 @@
 // The files of a frame's passes (docs/passes.md): which pass goes into
 // which format, with which EXR channels, in the order they are written.
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -36,7 +37,13 @@ void encode_frame_files(
     const OutputDesc& out, const FrameImages& images, const PassFileFacts& facts,
     const std::function<void(const PassFile&, const std::vector<uint8_t>&)>& write);
 
-// The PNG view of one pass (not position or motion, which have none: empty).
+// The samples of one pass's PNG view, as its file holds them, with depth
+// mapped from `depth_range`; none for position and motion, which have no view.
+std::optional<PngSamples> png_view_samples(Pass pass, const OutputDesc& out,
+                                           const FrameImages& images, glm::vec2 depth_range);
+
+// The PNG view of one pass: png_view_samples compressed (empty for a pass
+// without a view).
 std::vector<uint8_t> encode_png_view(Pass pass, const OutputDesc& out, const FrameImages& images,
                                      const PassFileFacts& facts);
 

@@ -1,7 +1,8 @@
 #pragma once
 // Image encoders: each returns the complete file as bytes, so the caller
-// can hash it and write it atomically; and readers. The only users of
-// libdeflate (deflate), libpng (reading) and OpenEXR.
+// can hash it and write it atomically; the samples of PNG views before
+// compression; and readers. The only users of libdeflate (deflate),
+// libpng (reading) and OpenEXR.
 #include <array>
 #include <cstdint>
 #include <span>
@@ -21,39 +22,53 @@ struct PngText {
     std::string keyword, text;
 };
 
-// 8-bit sRGB PNG from linear premultiplied colour: RGB when every pixel is
-// opaque, RGBA with straight alpha (as PNG defines it) otherwise. `compression` is 0..9 as zlib
-// counts (0 fastest, 9 smallest), mapped onto the deflate library's levels. The float version
-// converts to half first, so both give the same bytes for the same colour.
+// The samples of a PNG file before its rows are filtered and compressed:
+// `channels` 1 (grey), 3 (RGB) or 4 (RGBA) per pixel, row by row, top
+// down; 8-bit samples one byte each, 16-bit ones two, most significant
+// first, as PNG stores them. What decode_png gives back from the file, so
+// whoever only shows an image can take these and skip the round trip.
+struct PngSamples {
+    int width = 0, height = 0, channels = 0, bit_depth = 8;
+    std::vector<uint8_t> bytes;
+
+    // Sample i (pixel i / channels, channel i % channels) widened to 16
+    // bits as DecodedPng holds it: 8-bit ones keep 0..255.
+    uint16_t sample(size_t i) const {
+        if (bit_depth == 16) return static_cast<uint16_t>(bytes[2 * i] << 8 | bytes[2 * i + 1]);
+        return bytes[i];
+    }
+};
+
+// A PNG file of `samples`, with `text` in tEXt chunks. `compression` is
+// 0..9 as zlib counts (0 fastest, 9 smallest), mapped onto the deflate
+// library's levels.
+std::vector<uint8_t> encode_png(const PngSamples& samples, int compression,
+                                const std::vector<PngText>& text = {});
+
+// The views of images as people look at them (output/png_views.cpp).
+// Colour: 8-bit sRGB from linear premultiplied colour, RGB when every
+// pixel is opaque, RGBA with straight alpha (as PNG defines it) otherwise.
+PngSamples png_color_samples(const HalfColorImage& image);
+// Depth: 16-bit grey, range.x (near) mapped to 65535, range.y (far) to 0,
+// linearly, clamped; background (+inf) is 0.
+PngSamples png_depth_samples(const DepthImage& depth, glm::vec2 range);
+// The data passes (docs/passes.md) as 8-bit RGB, plain bytes without the
+// sRGB curve, the background black. Normal: each axis from [-1, 1] to
+// [0, 255].
+PngSamples png_normal_samples(const Image<glm::vec3>& normal);
+// Ids: a fixed colour per id (id_view_color), the same in every frame and run.
+PngSamples png_id_samples(const Image<uint32_t>& ids);
+// uv: u in red, v in green, each clamped to [0, 1].
+PngSamples png_uv_samples(const Image<glm::vec2>& uv);
+// The id view's colour: black for 0, else a bright colour from a hash of the id.
+std::array<uint8_t, 3> id_view_color(uint32_t id);
+
+// encode_png(png_color_samples(image)): the PNG of a colour image. The
+// float version converts to half first, so both give the same bytes for
+// the same colour.
 std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression,
                                       const std::vector<PngText>& text = {});
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
-
-// 16-bit grey PNG view of linear depth: range.x (near) maps to 65535,
-// range.y (far) to 0, linearly, clamped; background (+inf) is 0.
-std::vector<uint8_t> encode_png_depth(const DepthImage& depth, glm::vec2 range, int compression,
-                                      const std::vector<PngText>& text = {});
-
-// An 8-bit PNG of samples already encoded (sRGB colour, as displays show
-// them): `channels` 1 (grey), 3 (RGB) or 4 (RGBA), row by row. For
-// pictures made for people, such as comparison reports.
-std::vector<uint8_t> encode_png_bytes(int width, int height, int channels,
-                                      std::span<const uint8_t> samples, int compression,
-                                      const std::vector<PngText>& text = {});
-
-// 8-bit RGB views of the data passes (docs/passes.md), written as plain
-// bytes without the sRGB curve; the background is black.
-// Normal: each axis from [-1, 1] to [0, 255].
-std::vector<uint8_t> encode_png_normal(const Image<glm::vec3>& normal, int compression,
-                                       const std::vector<PngText>& text = {});
-// Ids: a fixed colour per id (id_view_color), the same in every frame and run.
-std::vector<uint8_t> encode_png_ids(const Image<uint32_t>& ids, int compression,
-                                    const std::vector<PngText>& text = {});
-// uv: u in red, v in green, each clamped to [0, 1].
-std::vector<uint8_t> encode_png_uv(const Image<glm::vec2>& uv, int compression,
-                                   const std::vector<PngText>& text = {});
-// The id view's colour: black for 0, else a bright colour from a hash of the id.
-std::array<uint8_t, 3> id_view_color(uint32_t id);
 
 // OpenEXR scanline files, ZIP compression (16 scanlines a chunk).
 enum class ExrSample { half, float32, uint32 };

@@ -1,8 +1,11 @@
-// 8-bit PNG views of the data passes: pictures to look at, not values to
-// read back (the EXR files hold those).
+// The samples PNG views hold (output/png_writer.cpp compresses them into
+// files; the preview shows them as they are): colour as displays show it,
+// depth as 16-bit grey, and 8-bit pictures of the data passes to look at,
+// not values to read back (the EXR files hold those).
 #include <algorithm>
 #include <cmath>
 
+#include "core/display_transform.hpp"
 #include "core/integer_hash.hpp"
 #include "output/encoders.hpp"
 
@@ -15,16 +18,60 @@ uint8_t unit_byte(float v) {
     return static_cast<uint8_t>(std::lround(v * 255.0f));
 }
 
-// RGB bytes of an image, three per pixel, from `view(pixel)`.
+// Every half-float colour value -> its 8-bit sRGB byte (negative and NaN
+// black, above 1 white), and -> its 8-bit linear byte for alpha. Built once
+// (a constant, not state): a lookup per channel instead of pow.
+struct HalfToByte {
+    std::vector<uint8_t> srgb, linear;
+    HalfToByte() : srgb(65536), linear(65536) {
+        for (uint32_t h = 0; h < 65536; ++h) {
+            const float v = half_to_float(static_cast<uint16_t>(h));
+            const double unit = v > 0.0f ? std::min(static_cast<double>(v), 1.0) : 0.0;
+            srgb[h] = display_byte(v);
+            linear[h] = static_cast<uint8_t>(std::lround(unit * 255.0));
+        }
+    }
+};
+
+const HalfToByte& half_to_byte() {
+    static const HalfToByte table;
+    return table;
+}
+
+// A premultiplied pixel that is not opaque, as PNG stores it: straight
+// (colour divided by alpha) and then sRGB-encoded; transparent is black.
+void straight_srgb(const Rgba16F& c, uint8_t* rgb) {
+    const float a = half_to_float(c.a);
+    const uint16_t channel[3] = {c.r, c.g, c.b};
+    for (int i = 0; i < 3; ++i) {
+        rgb[i] = display_byte(a > 0.0f ? half_to_float(channel[i]) / a : 0.0f);
+    }
+}
+
+inline uint16_t unit_to_u16(float v) {
+    if (!(v > 0.0f)) return 0;  // also NaN
+    if (v >= 1.0f) return 65535;
+    return static_cast<uint16_t>(v * 65535.0f + 0.5f);
+}
+
+// Room for `width` x `height` pixels of `channels` samples each, for the
+// caller to fill.
+PngSamples blank_samples(int width, int height, int channels, int bit_depth) {
+    PngSamples samples{width, height, channels, bit_depth, {}};
+    samples.bytes.resize(static_cast<size_t>(width) * height * channels * (bit_depth / 8));
+    return samples;
+}
+
+// 8-bit RGB samples of an image, three per pixel, from `view(pixel)`.
 template <typename Pixel, typename View>
-std::vector<uint8_t> encode_view(const Image<Pixel>& image, int compression,
-                                 const std::vector<PngText>& text, View view) {
-    std::vector<uint8_t> bytes(static_cast<size_t>(image.width) * image.height * 3);
+PngSamples rgb_view(const Image<Pixel>& image, View view) {
+    PngSamples samples = blank_samples(image.width, image.height, 3, 8);
     for (size_t i = 0; i < image.pixels.size(); ++i) {
         const std::array<uint8_t, 3> rgb = view(image.pixels[i]);
-        std::copy(rgb.begin(), rgb.end(), bytes.begin() + static_cast<std::ptrdiff_t>(3 * i));
+        std::copy(rgb.begin(), rgb.end(),
+                  samples.bytes.begin() + static_cast<std::ptrdiff_t>(3 * i));
     }
-    return encode_png_bytes(image.width, image.height, 3, bytes, compression, text);
+    return samples;
 }
 
 }  // namespace
@@ -64,23 +111,65 @@ std::array<uint8_t, 3> id_view_color(uint32_t id) {
     return {unit_byte(r), unit_byte(g), unit_byte(b)};
 }
 
-std::vector<uint8_t> encode_png_normal(const Image<glm::vec3>& normal, int compression,
-                                       const std::vector<PngText>& text) {
-    return encode_view(normal, compression, text, [](const glm::vec3& n) {
+PngSamples png_color_samples(const HalfColorImage& image) {
+    const HalfToByte& table = half_to_byte();
+    // Opaque images are written as RGB: a quarter less data to compress.
+    const uint16_t one = 0x3c00;
+    bool opaque = true;
+    for (const Rgba16F& c : image.pixels) opaque = opaque && c.a == one;
+    PngSamples samples = blank_samples(image.width, image.height, opaque ? 3 : 4, 8);
+    uint8_t* out = samples.bytes.data();
+    // Two loops, not one with a test per pixel: the opaque one is the
+    // common case and stays a plain table lookup.
+    if (opaque) {
+        for (const Rgba16F& c : image.pixels) {
+            out[0] = table.srgb[c.r];
+            out[1] = table.srgb[c.g];
+            out[2] = table.srgb[c.b];
+            out += 3;
+        }
+        return samples;
+    }
+    for (const Rgba16F& c : image.pixels) {
+        if (c.a == one) {
+            out[0] = table.srgb[c.r];
+            out[1] = table.srgb[c.g];
+            out[2] = table.srgb[c.b];
+        } else {
+            straight_srgb(c, out);
+        }
+        out[3] = table.linear[c.a];
+        out += 4;
+    }
+    return samples;
+}
+
+PngSamples png_depth_samples(const DepthImage& depth, glm::vec2 range) {
+    PngSamples samples = blank_samples(depth.width, depth.height, 1, 16);
+    const float span = range.y - range.x;
+    for (size_t i = 0; i < depth.pixels.size(); ++i) {
+        const float d = depth.pixels[i];
+        const uint16_t v = std::isinf(d) ? 0 : unit_to_u16((range.y - d) / span);
+        samples.bytes[2 * i] = static_cast<uint8_t>(v >> 8);  // PNG samples are big-endian
+        samples.bytes[2 * i + 1] = static_cast<uint8_t>(v);
+    }
+    return samples;
+}
+
+PngSamples png_normal_samples(const Image<glm::vec3>& normal) {
+    return rgb_view(normal, [](const glm::vec3& n) {
         if (n == glm::vec3(0.0f)) return std::array<uint8_t, 3>{0, 0, 0};
         return std::array<uint8_t, 3>{unit_byte(n.x * 0.5f + 0.5f), unit_byte(n.y * 0.5f + 0.5f),
                                       unit_byte(n.z * 0.5f + 0.5f)};
     });
 }
 
-std::vector<uint8_t> encode_png_ids(const Image<uint32_t>& ids, int compression,
-                                    const std::vector<PngText>& text) {
-    return encode_view(ids, compression, text, [](uint32_t id) { return id_view_color(id); });
+PngSamples png_id_samples(const Image<uint32_t>& ids) {
+    return rgb_view(ids, [](uint32_t id) { return id_view_color(id); });
 }
 
-std::vector<uint8_t> encode_png_uv(const Image<glm::vec2>& uv, int compression,
-                                   const std::vector<PngText>& text) {
-    return encode_view(uv, compression, text, [](const glm::vec2& t) {
+PngSamples png_uv_samples(const Image<glm::vec2>& uv) {
+    return rgb_view(uv, [](const glm::vec2& t) {
         return std::array<uint8_t, 3>{unit_byte(t.x), unit_byte(t.y), 0};
     });
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <map>
+#include <optional>
 #include <tuple>
 
 #include "core/display_transform.hpp"
@@ -52,10 +53,18 @@ double ms_since(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-// The pass's PNG view, decoded: what a user opening the file would see.
+// The pass's PNG view as a user opening the file would see it: the
+// samples the file would hold, without compressing and decoding them.
 PreviewImage display_image(Pass pass, const OutputDesc& out, const FrameImages& images) {
-    const PassFileFacts facts{out.depth_range.value_or(images.depth_view_range), {}, {}};
-    const DecodedPng png = decode_png(encode_png_view(pass, out, images, facts), "preview image");
+    const std::optional<PngSamples> view =
+        png_view_samples(pass, out, images, out.depth_range.value_or(images.depth_view_range));
+    if (!view)
+        throw Error(ExitCode::invalid_input,
+                    "the " + std::string(pass_name(pass)) + " pass has no image to show");
+    const PngSamples& png = *view;
+    const auto display_sample = [&png](size_t i) -> int {
+        return png.bit_depth == 16 ? narrow_to_byte(png.sample(i)) : png.sample(i);
+    };
     PreviewImage image;
     image.width = png.width;
     image.height = png.height;
@@ -63,16 +72,15 @@ PreviewImage display_image(Pass pass, const OutputDesc& out, const FrameImages& 
     for (int y = 0; y < png.height; ++y)
         for (int x = 0; x < png.width; ++x) {
             const size_t p = static_cast<size_t>(y) * png.width + x;
-            const uint16_t* s = &png.samples[p * png.channels];
+            const size_t first = p * png.channels;  // the pixel's first sample
             uint8_t* d = &image.rgba[p * 4];
             for (int c = 0; c < 3; ++c)
-                d[c] = png.bit_depth == 16 ? narrow_to_byte(s[png.channels >= 3 ? c : 0])
-                                           : static_cast<uint8_t>(s[png.channels >= 3 ? c : 0]);
+                d[c] = static_cast<uint8_t>(display_sample(first + (png.channels >= 3 ? c : 0)));
             d[3] = 255;
             if (png.channels == 4) {
                 // Straight alpha over a grey checkerboard of 8-pixel squares.
                 const int checker = ((x >> 3) + (y >> 3)) & 1 ? 153 : 102;
-                const int a = png.bit_depth == 16 ? narrow_to_byte(s[3]) : s[3];
+                const int a = display_sample(first + 3);
                 for (int c = 0; c < 3; ++c)
                     d[c] = static_cast<uint8_t>((d[c] * a + checker * (255 - a) + 127) / 255);
             }
@@ -316,7 +324,6 @@ bool PreviewWorker::render_step(const PreviewRequest& request, int step) {
         out.height = std::max(1, (scene.output.height + s.divisor - 1) / s.divisor);
         out.samples = samples;
         out.passes.add(request.pass);
-        out.png_compression = 0;  // encoded only to be decoded at once
         renderer = std::make_unique<FrameRenderer>(*level_scene, *loaded.world, loaded.pool);
     }
     const auto start = std::chrono::steady_clock::now();
