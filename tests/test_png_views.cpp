@@ -24,7 +24,7 @@ constexpr Pass kViewedPasses[] = {Pass::color,     Pass::alpha,       Pass::dept
 // shown with `exposure` and `tonemap`.
 SceneDesc shapes_scene(const std::string& exposure, const std::string& tonemap) {
     SceneOptions options;
-    options.style_dirs = {FACET_STYLES_DIR};
+    options.style_dirs = {facet::test::styles_dir()};
     options.overrides = {
         {"output.size", "[96, 72]", "test"},
         {"output.samples", "4", "test"},
