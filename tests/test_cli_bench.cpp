@@ -29,12 +29,13 @@ TEST_CASE("facet bench rejects bad thread lists and writes nothing", "[cli][benc
     TempDir dir("bench");
     const std::string out = dir.file("study");
     // 0 is not among them: it means one thread per core, as for render.
-    for (const char* threads : {"-1", "1,x", "300", ","}) {
+    for (const char* threads : {"-1", "1,x", "300", ",", "1,2,", "2 ", "0x2"}) {
         INFO(threads);
         RunResult r = run_facet("bench '" + source_path("tests/scenes/shapes.yaml") +
                                 "' --threads '" + threads + "' -o '" + out + "'");
         CHECK(r.exit_code == 2);
-        CHECK_THAT(r.output, Contains("--threads"));
+        CHECK_THAT(r.output, Contains("command line --threads: expected") &&
+                                 Contains("got '" + std::string(threads) + "'"));
         CHECK_FALSE(std::filesystem::exists(out));
     }
 }

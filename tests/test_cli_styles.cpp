@@ -253,7 +253,7 @@ TEST_CASE("facet sheet errors exit with code 2 and write nothing", "[cli][style]
         {"an unknown style", "--styles flat,nosuch", "no style preset named 'nosuch'"},
         {"neither --styles nor --vary", "", "--styles"},
         // --size, as for every command (--cell is an alias).
-        {"a bad cell size", "--styles flat --size 64by48", "--size 64by48"},
+        {"a bad cell size", "--styles flat --size 64by48", "--size: expected WIDTHxHEIGHT"},
         {"a cell width of zero", "--styles flat --cell 0", "WIDTHxHEIGHT or WIDTH"},
         {"a frame outside the scene", "--styles flat -f 400", "outside the scene's frames"},
     };

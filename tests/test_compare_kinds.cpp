@@ -221,8 +221,13 @@ TEST_CASE("compare kinds: threshold overrides and their errors", "[compare]") {
           std::string::npos);
     CHECK(apply_threshold_override(t, "colour.fail=1").find("did you mean 'color'") !=
           std::string::npos);
-    CHECK(apply_threshold_override(t, "color.fail=abc").find("expected a number") !=
-          std::string::npos);
+    // Numbers are read as every command-line number is (core/number_text.hpp).
+    for (const char* bad : {"color.fail=abc", "color.fail=nan", "color.fail= 0.1",
+                            "color.fail=0.1x", "color.fail=0x1p-3", "color.fail="}) {
+        INFO(bad);
+        CHECK(apply_threshold_override(t, bad).find("expected a number, got '") !=
+              std::string::npos);
+    }
     CHECK(apply_threshold_override(t, "color.fail_percent=150").find("from 0 to 100") !=
           std::string::npos);
     CHECK(apply_threshold_override(t, "depth.position=1.5").find("whole number") !=

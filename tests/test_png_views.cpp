@@ -8,7 +8,7 @@
 #include "core/thread_pool.hpp"
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
-#include "render/pass_files.hpp"
+#include "job/pass_files.hpp"
 #include "render/world.hpp"
 #include "support.hpp"
 

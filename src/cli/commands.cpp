@@ -17,6 +17,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/farm_commands.hpp"
 #include "cli/inspect_commands.hpp"
+#include "cli/option_values.hpp"
 #include "cli/options.hpp"
 #include "cli/preview_command.hpp"
 #include "cli/progress.hpp"
@@ -82,16 +83,8 @@ SceneOptions scene_options(const RenderArgs& args) {
     return options;
 }
 
-std::vector<std::string> split_list(const std::string& text) {
-    std::vector<std::string> items;
-    size_t start = 0;
-    while (start < text.size()) {
-        size_t comma = text.find(',', start);
-        if (comma == std::string::npos) comma = text.size();
-        if (comma > start) items.push_back(text.substr(start, comma - start));
-        start = comma + 1;
-    }
-    return items;
+std::vector<std::string> camera_names(const std::string& cameras) {
+    return parse_list(cameras, "--camera", "comma-separated camera names or all");
 }
 
 void add_strict_flag(CLI::App* cmd, bool& strict) {
@@ -161,7 +154,7 @@ RenderOptions render_options(const RenderArgs& args, const SceneOptions& scene_o
                              const std::vector<int>& frames, const std::optional<RunPart>& part) {
     RenderOptions options;
     options.frames = frames;
-    options.cameras = split_list(args.cameras);
+    options.cameras = camera_names(args.cameras);
     options.threads = args.threads;
     options.out_dir = args.out;
     options.cancel = &g_interrupted;
@@ -297,7 +290,7 @@ int validate_command(const RenderArgs& args) {
         warnings = scene.warnings;
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
-        options.cameras = split_list(args.cameras);
+        options.cameras = camera_names(args.cameras);
         options.out_dir = args.out;
         options.provenance.overrides = scene_opts.overrides;
         // The output folder's manifest is checked only when -o names one:
@@ -343,17 +336,11 @@ int bench_command(const BenchArgs& args) {
     std::vector<int> frames = resolve_frames(args.scene.frames, scene.output);
     if (frames.empty()) frames = scene.output.frames;
     std::vector<unsigned> threads;
-    for (const std::string& item : split_list(args.threads)) {
-        char* end = nullptr;
-        const long n = std::strtol(item.c_str(), &end, 10);
-        if (end != item.c_str() + item.size() || n < 0 || n > 256)
-            fail_input(command_line("--threads " + args.threads), "",
-                       "expected thread counts from 0 (one per core) to 256, e.g. 1,2,4");
+    for (int n : parse_whole_number_list(
+             args.threads, "--threads", 0, 256,
+             "comma-separated thread counts from 0 (one per core) to 256 (e.g. 1,2,4)"))
         // 0 means one per core, as everywhere else.
         threads.push_back(n == 0 ? available_cores() : static_cast<unsigned>(n));
-    }
-    if (threads.empty())
-        fail_input(command_line("--threads " + args.threads), "", "give at least one thread count");
     World world = build_world(scene);
     const bool quiet = args.scene.quiet;
     const ThreadStudy study =
@@ -428,17 +415,6 @@ std::vector<std::string> default_style_dirs() {
     return dirs;
 }
 
-std::pair<int, int> parse_size(const std::string& text, const std::string& option) {
-    int w = 0, h = 0;
-    char x = 0, extra = 0;
-    if (std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &extra) != 3 || (x != 'x' && x != 'X') ||
-        w < 1 || h < 1 || w > kMaxImageSide || h > kMaxImageSide)
-        fail_input(
-            command_line(option + " " + text), "",
-            "expected WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide));
-    return {w, h};
-}
-
 namespace {
 
 // The subcommands' options, one function each (add_subcommands stays a
@@ -504,8 +480,8 @@ CLI::App* add_video_command(CLI::App& app, VideoArgs& args) {
     cmd->add_option("output", args.output_dir, "A run's folder (holds manifest.json)")->required();
     cmd->add_option("movie", args.movie, "Movie to write: .mp4, .webm or .gif")->required();
     cmd->add_option("--camera", args.camera, "Camera, when the run has several");
-    cmd->add_option("--fps", args.fps, "Frames per second (default: the scene's)")
-        ->check(finite_range(0.01, 1000.0));
+    add_decimal_option(cmd, "--fps", args.fps, 0.01, 1000.0,
+                       "Frames per second (default: the scene's)");
     add_quiet_flag(cmd, args.quiet);
     return cmd;
 }

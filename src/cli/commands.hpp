@@ -13,7 +13,4 @@ int run_command_line(int argc, char** argv);
 // separated), then the styles/ folder facet was built with.
 std::vector<std::string> default_style_dirs();
 
-// "1280x720" -> {1280, 720}; throws facet::Error (invalid_input) otherwise.
-std::pair<int, int> parse_size(const std::string& text, const std::string& option);
-
 }  // namespace facet

@@ -5,6 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/option_values.hpp"
 #include "cli/options.hpp"
 #include "compare/compare_run.hpp"
 #include "compare/reference_update.hpp"
@@ -16,7 +17,27 @@
 #include "scene/thresholds_file.hpp"
 
 namespace facet {
-namespace {}  // namespace
+namespace {
+
+// --mask x,y,width,height, in pixels.
+CompareMask mask_rectangle(const std::string& text) {
+    constexpr int kMost = 1 << 20;  // as the thresholds file allows
+    const std::string expected = "x,y,width,height in pixels (e.g. 0,0,120,40)";
+    const std::vector<int> numbers = parse_whole_number_list(text, "--mask", 0, kMost, expected);
+    if (numbers.size() != 4)
+        fail_option_value("--mask", text, expected,
+                          count_of(numbers.size(), "number", "numbers") + ", not 4");
+    CompareMask m;
+    m.x = numbers[0];
+    m.y = numbers[1];
+    m.width = numbers[2];
+    m.height = numbers[3];
+    if (m.width < 1 || m.height < 1)
+        fail_option_value("--mask", text, expected, "the width and height are at least 1");
+    return m;
+}
+
+}  // namespace
 
 CompareThresholds comparison_thresholds(const CompareArgs& args) {
     CompareThresholds t = args.thresholds_file.empty() ? default_thresholds()
@@ -24,18 +45,7 @@ CompareThresholds comparison_thresholds(const CompareArgs& args) {
     for (const std::string& text : args.thresholds)
         if (std::string problem = apply_threshold_override(t, text); !problem.empty())
             fail_input(command_line("--threshold " + text), "", problem);
-    for (const std::string& text : args.masks) {
-        CompareMask m;
-        char extra = 0;
-        constexpr int kMost = 1 << 20;  // as the thresholds file allows
-        if (std::sscanf(text.c_str(), "%d,%d,%d,%d%c", &m.x, &m.y, &m.width, &m.height, &extra) !=
-                4 ||
-            m.x < 0 || m.y < 0 || m.width < 1 || m.height < 1 || m.x > kMost || m.y > kMost ||
-            m.width > kMost || m.height > kMost)
-            fail_input(command_line("--mask " + text), "",
-                       "expected x,y,width,height in pixels, e.g. 0,0,120,40");
-        t.masks.push_back(m);
-    }
+    for (const std::string& text : args.masks) t.masks.push_back(mask_rectangle(text));
     for (const std::string& path : args.mask_images) {
         CompareMask m;
         m.image = path;

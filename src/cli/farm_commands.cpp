@@ -45,8 +45,8 @@ void add_chunk_options(CLI::App* cmd, ChunkArgs& args) {
     cmd->add_flag("--chunk-from-env", args.from_env,
                   "Take the chunk from SLURM_ARRAY_TASK_ID, JOB_COMPLETION_INDEX or "
                   "AWS_BATCH_JOB_ARRAY_INDEX");
-    cmd->add_option("--chunks", args.chunks, "The number of chunks, with --chunk-from-env")
-        ->check(CLI::Range(1, 1000000));
+    add_whole_number_option(cmd, "--chunks", args.chunks, 1, 1000000,
+                            "The number of chunks, with --chunk-from-env");
     cmd->add_option("--chunk-frames", args.chunk_frames,
                     "Render these of the frames as one part (e.g. an OpenJD chunk, 9-16)");
     cmd->add_flag("--skip-existing", args.skip_existing,
@@ -198,25 +198,25 @@ CLI::App* add_farm_command(CLI::App& app, FarmArgs& slurm, FarmArgs& openjd) {
     CLI::App* s = farm->add_subcommand(
         "slurm", "A bash script that submits a Slurm job array of chunks, then facet merge");
     add_farm_render_options(s, slurm);
-    s->add_option("--chunks", slurm.slurm.chunks, "Number of chunks (array tasks)")
-        ->required()
-        ->check(CLI::Range(1, 100000));
+    add_whole_number_option(s, "--chunks", slurm.slurm.chunks, 1, 100000,
+                            "Number of chunks (array tasks)")
+        ->required();
     s->add_option("--partition", slurm.slurm.partition,
                   "Slurm partition, or several comma-separated (default: the cluster's)");
     s->add_option("--account", slurm.slurm.account, "Slurm account to charge (default: yours)");
-    s->add_option("--cpus", slurm.slurm.cpus, "CPUs per task (--cpus-per-task; sets --threads)")
-        ->check(CLI::Range(1, 4096));
+    add_whole_number_option(s, "--cpus", slurm.slurm.cpus, 1, 4096,
+                            "CPUs per task (--cpus-per-task; sets --threads)");
     s->add_option("--time", slurm.slurm.time, "Time limit per task, e.g. 30:00 or 2:00:00");
-    s->add_option("--max-running", slurm.slurm.max_running, "Tasks running at once (default: all)")
-        ->check(CLI::Range(1, 100000));
+    add_whole_number_option(s, "--max-running", slurm.slurm.max_running, 1, 100000,
+                            "Tasks running at once (default: all)");
     CLI::App* o = farm->add_subcommand(
         "openjd", "An Open Job Description template: CHUNK[INT] render tasks, then facet merge");
     add_farm_render_options(o, openjd);
-    o->add_option("--chunk-size", openjd.openjd.chunk_size, "Frames per task (default 10)")
-        ->check(CLI::Range(1, 1000000));
-    o->add_option("--target-runtime", openjd.openjd.target_runtime,
-                  "Seconds per task the scheduler may size chunks for (default: fixed size)")
-        ->check(CLI::Range(1, 1000000));
+    add_whole_number_option(o, "--chunk-size", openjd.openjd.chunk_size, 1, 1000000,
+                            "Frames per task (default 10)");
+    add_whole_number_option(
+        o, "--target-runtime", openjd.openjd.target_runtime, 1, 1000000,
+        "Seconds per task the scheduler may size chunks for (default: fixed size)");
     for (CLI::App* sub : {s, o}) sub->allow_extras();
     return farm;
 }
@@ -229,7 +229,7 @@ int farm_command(const FarmArgs& args, bool openjd) {
     if (frames.empty()) frames = scene.output.frames;
     RenderOptions options;
     options.frames = frames;
-    options.cameras = split_list(r.cameras);
+    options.cameras = camera_names(r.cameras);
     options.out_dir = r.out;
     options.overwrite = r.overwrite;
     options.provenance.overrides = scene_opts.overrides;

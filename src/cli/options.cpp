@@ -1,9 +1,9 @@
 #include "cli/options.hpp"
 
 #include <algorithm>
-#include <charconv>
-#include <cmath>
 #include <cstdio>
+#include <functional>
+#include <limits>
 
 #include <CLI/CLI.hpp>
 
@@ -19,20 +19,78 @@ std::string range_text(const std::vector<int>& frames) {
     return std::to_string(frames.front()) + "-" + std::to_string(frames.back());
 }
 
+// The name an option's errors give it: the first of its names.
+std::string reported_name(const std::string& names) {
+    return names.substr(0, names.find(','));
+}
+
+// Whole numbers go through parse_whole_number into `store`. The help shows
+// the range as CLI::Range did.
+CLI::Option* add_whole_number_setter(CLI::App* cmd, const std::string& names,
+                                     std::function<void(int)> store, int min, int max,
+                                     const std::string& description,
+                                     const std::string& expected = "") {
+    const std::string option = reported_name(names);
+    CLI::Option* added = cmd->add_option_function<std::string>(
+        names,
+        [=](const std::string& text) {
+            store(parse_whole_number(text, option, min, max, expected));
+        },
+        description);
+    const bool any_int =
+        min == std::numeric_limits<int>::min() && max == std::numeric_limits<int>::max();
+    added->type_name(
+        any_int ? "INT" : "INT in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
+    return added;
+}
+
+// -f, -s and -e take any frame number; the scene's range is checked later
+// (resolve_frames), where the scene is known.
+CLI::Option* add_frame_number_option(CLI::App* cmd, const std::string& names,
+                                     std::optional<int>& frame, const std::string& description) {
+    return add_whole_number_setter(
+        cmd, names, [&frame](int value) { frame = value; }, std::numeric_limits<int>::min(),
+        std::numeric_limits<int>::max(), description, "a frame number (a whole number)");
+}
+
 }  // namespace
 
-SourceLocation command_line(const std::string& what) {
-    return {"", 0, 0, "command line " + what};
+CLI::Option* add_whole_number_option(CLI::App* cmd, const std::string& names, int& value, int min,
+                                     int max, const std::string& description) {
+    return add_whole_number_setter(
+        cmd, names, [&value](int number) { value = number; }, min, max, description);
+}
+
+CLI::Option* add_whole_number_option(CLI::App* cmd, const std::string& names,
+                                     std::optional<int>& value, int min, int max,
+                                     const std::string& description) {
+    return add_whole_number_setter(
+        cmd, names, [&value](int number) { value = number; }, min, max, description);
+}
+
+CLI::Option* add_decimal_option(CLI::App* cmd, const std::string& names, double& value, double min,
+                                double max, const std::string& description) {
+    const std::string option = reported_name(names);
+    char type[64];
+    std::snprintf(type, sizeof type, "FLOAT in [%g - %g]", min, max);
+    return cmd
+        ->add_option_function<std::string>(
+            names,
+            [=, &value](const std::string& text) {
+                value = parse_decimal_number(text, option, min, max);
+            },
+            description)
+        ->type_name(type);
 }
 
 void add_frame_options(CLI::App* cmd, FrameSelection& s) {
     cmd->add_option("--frames", s.frames, "Frames to render, e.g. 1-72, 1-72:2, 1,5,10-20");
-    cmd->add_option("-f,--frame", s.single, "One frame (Blender's -f)");
-    cmd->add_option("-s,--start", s.start, "First frame (Blender's -s); the scene's step is kept");
-    cmd->add_option("-e,--end", s.end, "Last frame (Blender's -e)");
-    cmd->add_option("-j,--jump", s.jump,
-                    "Every Nth of the frames, with -s/-e or alone (Blender's -j)")
-        ->check(CLI::Range(1, 1000000));
+    add_frame_number_option(cmd, "-f,--frame", s.single, "One frame (Blender's -f)");
+    add_frame_number_option(cmd, "-s,--start", s.start,
+                            "First frame (Blender's -s); the scene's step is kept");
+    add_frame_number_option(cmd, "-e,--end", s.end, "Last frame (Blender's -e)");
+    add_whole_number_option(cmd, "-j,--jump", s.jump, 1, 1000000,
+                            "Every Nth of the frames, with -s/-e or alone (Blender's -j)");
     cmd->add_flag("--allow-outside", s.allow_outside,
                   "Allow frames outside the scene's range (the animation is extrapolated)");
 }
@@ -114,8 +172,9 @@ void add_output_option(CLI::App* cmd, std::string& output, const std::string& de
 }
 
 void add_threads_option(CLI::App* cmd, unsigned& threads) {
-    cmd->add_option("--threads", threads, "Worker threads (0: one per core)")
-        ->check(CLI::Range(0u, 256u));
+    add_whole_number_setter(
+        cmd, "--threads", [&threads](int n) { threads = static_cast<unsigned>(n); }, 0, 256,
+        "Worker threads (0: one per core)", "a whole number from 0 (one per core) to 256");
 }
 
 void add_quiet_flag(CLI::App* cmd, bool& quiet) {
@@ -176,23 +235,6 @@ void check_subcommand_name(const CLI::App& app, int argc, char** argv) {
 
 std::string count_of(size_t n, const char* singular, const char* plural) {
     return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
-CLI::Validator finite_range(double min, double max) {
-    char range[96];
-    std::snprintf(range, sizeof range, "a number from %g to %g", min, max);
-    const std::string expected = range;
-    return CLI::Validator(
-        [=](std::string& text) -> std::string {
-            double value = 0;
-            const char* end = text.data() + text.size();
-            const auto [stop, error] = std::from_chars(text.data(), end, value);
-            if (error != std::errc() || stop != end || !std::isfinite(value) || value < min ||
-                value > max)
-                return "expected " + expected + ", got '" + text + "'";
-            return "";
-        },
-        "FLOAT in [" + std::to_string(min) + " - " + std::to_string(max) + "]");
 }
 
 }  // namespace facet

@@ -7,17 +7,28 @@
 #include <string>
 #include <vector>
 
+#include "cli/option_values.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace CLI {
 class App;
-class Validator;
+class Option;
 }  // namespace CLI
 
 namespace facet {
 
-// Where a value given on the command line is reported: "command line WHAT".
-SourceLocation command_line(const std::string& what);
+// A number option, read by option_values.hpp rather than by CLI11 (which
+// takes "010" for eight, "0x10" for sixteen and " 4" for four), so that a
+// bad value gets the error every other bad value gets. Errors name the
+// option by the first of `names` ("-f" of "-f,--frame").
+CLI::Option* add_whole_number_option(CLI::App* command, const std::string& names, int& value,
+                                     int min, int max, const std::string& description);
+CLI::Option* add_whole_number_option(CLI::App* command, const std::string& names,
+                                     std::optional<int>& value, int min, int max,
+                                     const std::string& description);
+// A finite number (NaN and infinity are refused) from `min` to `max`.
+CLI::Option* add_decimal_option(CLI::App* command, const std::string& names, double& value,
+                                double min, double max, const std::string& description);
 
 // --frames LIST, -f N, -s/--start N, -e/--end N, -j/--jump N, --allow-outside.
 struct FrameSelection {
@@ -53,10 +64,6 @@ void reject_unknown_arguments(CLI::App* command);
 // argv[1] when it names no subcommand: an error with a did-you-mean and the
 // list of subcommands. Does nothing for options (-h, --version).
 void check_subcommand_name(const CLI::App& app, int argc, char** argv);
-
-// A number option's check: a finite number (NaN and infinity are refused,
-// which CLI::Range lets through) from `min` to `max`.
-CLI::Validator finite_range(double min, double max);
 
 // "1 file", "3 files".
 std::string count_of(size_t n, const char* singular, const char* plural);

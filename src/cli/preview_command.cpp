@@ -32,7 +32,7 @@ int preview_command(const RenderArgs& args) {
     // Resolved against each loaded scene, as render resolves them.
     const FrameSelection frames = args.frames;
     options.frames = [frames](const OutputDesc& output) { return resolve_frames(frames, output); };
-    const std::vector<std::string> cameras = split_list(args.cameras);
+    const std::vector<std::string> cameras = camera_names(args.cameras);
     if (cameras.size() > 1 || args.cameras == "all")
         fail_input(command_line("--camera " + args.cameras), "",
                    "the preview shows one camera at a time (the panel switches): give one name");

@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "cli/options.hpp"
+#include "core/number_text.hpp"
 
 namespace facet {
 namespace {
@@ -15,8 +16,12 @@ namespace {
 int terminal_width(std::FILE* stream) {
     winsize size{};
     if (::ioctl(::fileno(stream), TIOCGWINSZ, &size) == 0 && size.ws_col > 0) return size.ws_col;
+    // COLUMNS as the terminal would give it (ws_col is 16 bits); anything
+    // else in it is ignored, as an unset COLUMNS is.
     if (const char* columns = std::getenv("COLUMNS"))
-        if (int n = std::atoi(columns); n > 0) return n;
+        if (const std::optional<long long> n = read_whole_number(columns);
+            n && *n > 0 && *n <= 65535)
+            return static_cast<int>(*n);
     return 80;
 }
 

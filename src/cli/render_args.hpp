@@ -57,7 +57,9 @@ SceneOptions scene_options(const RenderArgs& args);
 // --allow-asset-paths-outside.
 void add_scene_options(CLI::App* command, RenderArgs& args);
 
-std::vector<std::string> split_list(const std::string& text);
+// --camera A,B: the names as given ("all" is one of them, for
+// select_cameras); none when the option was not given.
+std::vector<std::string> camera_names(const std::string& cameras);
 
 // --strict: for CI users who want any warning to fail the run.
 void add_strict_flag(CLI::App* command, bool& strict);

@@ -4,13 +4,13 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <tuple>
 
 #include <CLI/CLI.hpp>
 
 #include "cli/commands.hpp"
+#include "cli/option_values.hpp"
 #include "cli/render_args.hpp"
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
@@ -38,16 +38,12 @@ std::vector<uint8_t> sheet_jpeg(const ColorImage& sheet) {
 // would crop a 16:9 scene and push its model against the cell's edges.
 std::pair<int, int> sheet_cell_size(const std::string& size, const OutputDesc& scene) {
     constexpr int kDefaultCellWidth = 320;
-    if (size.find('x') != std::string::npos) return parse_size(size, "--size");
-    int width = kDefaultCellWidth;
-    if (!size.empty()) {
-        char* end = nullptr;
-        const long w = std::strtol(size.c_str(), &end, 10);
-        if (end == size.c_str() || *end != '\0' || w < 1 || w > 4096)
-            fail_input(command_line("--size " + size), "",
-                       "expected WIDTHxHEIGHT or WIDTH (1 to 4096), e.g. 320x180 or 320");
-        width = static_cast<int>(w);
-    }
+    if (size.find_first_of("xX") != std::string::npos) return parse_size(size, "--size");
+    const int width =
+        size.empty()
+            ? kDefaultCellWidth
+            : parse_whole_number(size, "--size", 1, 4096,
+                                 "WIDTHxHEIGHT or WIDTH from 1 to 4096 (e.g. 320x180 or 320)");
     const int height = std::max(
         1, static_cast<int>(std::lround(static_cast<double>(width) * scene.height / scene.width)));
     return {width, height};
@@ -82,7 +78,8 @@ int sheet_command(const SheetArgs& args) {
     request.columns = args.columns;
     request.threads = args.threads;
 
-    std::vector<std::string> styles = split_list(args.styles);
+    std::vector<std::string> styles =
+        parse_list(args.styles, "--styles", "comma-separated preset names or all");
     if (args.styles == "all") {
         styles.clear();
         for (const auto& preset : list_style_presets(default_style_dirs()))
@@ -96,7 +93,8 @@ int sheet_command(const SheetArgs& args) {
             fail_input(command_line("--vary " + args.vary), "",
                        "expected key.path=v1,v2,..., e.g. style.cels=2,3,4");
         vary_key = args.vary.substr(0, eq);
-        values = split_list(args.vary.substr(eq + 1));
+        values = parse_list(std::string_view(args.vary).substr(eq + 1), "--vary",
+                            "comma-separated values after key.path= (e.g. style.cels=2,3,4)");
     }
     if (styles.empty() && values.empty())
         fail_input(command_line("sheet"), "",
@@ -138,8 +136,8 @@ CLI::App* add_sheet_command(CLI::App& app, SheetArgs& args) {
     add_frame_options(cmd, args.frames);
     cmd->add_option("--size,--cell", args.size,
                     "Cell size WIDTHxHEIGHT, or WIDTH with the scene's aspect ratio (default 320)");
-    cmd->add_option("--columns", args.columns, "Cells per row (default: about square)")
-        ->check(CLI::Range(0, 64));
+    add_whole_number_option(cmd, "--columns", args.columns, 0, 64,
+                            "Cells per row (default: about square)");
     add_output_option(cmd, args.output, "PNG to write (default out/SCENE-sheet.png)");
     add_threads_option(cmd, args.threads);
     add_define_option(cmd, args.defines);

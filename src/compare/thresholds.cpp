@@ -1,8 +1,8 @@
 #include "compare/thresholds.hpp"
 
 #include <cmath>
-#include <cstdlib>
 
+#include "core/number_text.hpp"
 #include "core/suggest.hpp"
 
 namespace facet {
@@ -144,11 +144,9 @@ std::string apply_threshold_override(CompareThresholds& thresholds, std::string_
         return "unknown kind '" + std::string(head) + "'" + did_you_mean(head, names) +
                " (known: color, color_float, alpha, depth, normal, id, float)";
     }
-    const std::string number(value_text);
-    char* end = nullptr;
-    const double value = std::strtod(number.c_str(), &end);
-    if (number.empty() || end != number.c_str() + number.size())
-        return "expected a number, got '" + number + "'";
+    const std::optional<double> number = read_finite_number(value_text);
+    if (!number) return "expected a number, got '" + std::string(value_text) + "'";
+    const double value = *number;
     if (!camera.empty()) {
         Tolerance check;
         if (std::string problem = set_tolerance_value(check, key, value); !problem.empty())

@@ -1,9 +1,10 @@
 #include "core/frame_range.hpp"
 
 #include <algorithm>
-#include <charconv>
+#include <limits>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace facet {
 namespace {
@@ -11,18 +12,17 @@ namespace {
 // A frame list longer than this is almost certainly a typo (e.g. 1-1000000).
 constexpr long long kMaxFrames = 1000000;
 
+// Spaces around a number are part of the frame list's grammar ("1 - 3").
 int parse_int(std::string_view text, const std::string& whole) {
-    int value = 0;
     auto trimmed = text;
     while (!trimmed.empty() && trimmed.front() == ' ') trimmed.remove_prefix(1);
     while (!trimmed.empty() && trimmed.back() == ' ') trimmed.remove_suffix(1);
-    const char* begin = trimmed.data();
-    const char* end = begin + trimmed.size();
-    auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (trimmed.empty() || ec != std::errc() || ptr != end)
+    const std::optional<long long> value = read_whole_number(trimmed);
+    if (!value || *value < std::numeric_limits<int>::min() ||
+        *value > std::numeric_limits<int>::max())
         throw Error(ExitCode::invalid_input, "'" + std::string(text) + "' in frame range '" +
                                                  whole + "' is not a whole number");
-    return value;
+    return static_cast<int>(*value);
 }
 
 }  // namespace

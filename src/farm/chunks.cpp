@@ -1,20 +1,13 @@
 #include "farm/chunks.hpp"
 
 #include <algorithm>
-#include <charconv>
 #include <cstddef>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace facet {
 namespace {
-
-// A whole number, all of `text`, or nothing.
-bool whole_number(const std::string& text, long long& value) {
-    const char* end = text.data() + text.size();
-    auto [ptr, ec] = std::from_chars(text.data(), end, value);
-    return !text.empty() && ec == std::errc() && ptr == end;
-}
 
 ChunkChoice checked(long long index, long long count, const std::string& origin) {
     const SourceLocation where{"", 0, 0, "command line " + origin};
@@ -34,12 +27,15 @@ ChunkChoice checked(long long index, long long count, const std::string& origin)
 ChunkChoice parse_chunk(const std::string& text) {
     const std::string origin = "--chunk " + text;
     const size_t slash = text.find('/');
-    long long index = 0, count = 0;
-    if (slash == std::string::npos || !whole_number(text.substr(0, slash), index) ||
-        !whole_number(text.substr(slash + 1), count))
+    std::optional<long long> index, count;
+    if (slash != std::string::npos) {
+        index = read_whole_number(std::string_view(text).substr(0, slash));
+        count = read_whole_number(std::string_view(text).substr(slash + 1));
+    }
+    if (!index || !count)
         fail_input({"", 0, 0, "command line " + origin}, "",
                    "expected I/N, e.g. 0/6 for the first of six chunks (numbered from 0)");
-    return checked(index, count, origin);
+    return checked(*index, *count, origin);
 }
 
 ChunkChoice chunk_from_environment(int count,
@@ -51,9 +47,11 @@ ChunkChoice chunk_from_environment(int count,
         const char* value = environment(name);
         if (!value) continue;
         origin = "--chunk-from-env (" + std::string(name) + "=" + value;
-        if (!whole_number(value, index))
+        const std::optional<long long> number = read_whole_number(value);
+        if (!number)
             fail_input({"", 0, 0, "environment " + std::string(name) + "=" + value}, "",
                        "expected a whole number (a task index from 0)");
+        index = *number;
         break;
     }
     if (origin.empty())
@@ -67,9 +65,11 @@ ChunkChoice chunk_from_environment(int count,
             const char* value = environment(name);
             if (!value) continue;
             origin += ", " + std::string(name) + "=" + value;
-            if (!whole_number(value, total))
+            const std::optional<long long> number = read_whole_number(value);
+            if (!number)
                 fail_input({"", 0, 0, "environment " + std::string(name) + "=" + value}, "",
                            "expected a whole number of tasks");
+            total = *number;
             break;
         }
         if (total <= 0)

@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cctype>
-#include <charconv>
 #include <cstdlib>
 #include <string_view>
 #include <unordered_map>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "core/suggest.hpp"
 
 namespace facet {
@@ -64,15 +64,12 @@ std::string closest_placeholder(const std::string& typed) {
 
 int parse_frame_padding(const std::string& text, const std::string& spec,
                         const std::string& whole_placeholder) {
-    int width = 0;
-    auto [end, error] = std::from_chars(spec.data(), spec.data() + spec.size(), width);
-    bool all_digits = !spec.empty() && spec.find_first_not_of("0123456789") == std::string::npos;
-    if (!all_digits || error != std::errc() || end != spec.data() + spec.size() || width < 1 ||
-        width > kMaxFramePadding)
+    const std::optional<long long> width = read_whole_number(spec);
+    if (!width || *width < 1 || *width > kMaxFramePadding)
         fail(text, "bad frame padding '" + whole_placeholder +
                        "': the width must be a number from 1 to " +
                        std::to_string(kMaxFramePadding) + ", as in {frame:04} or {frame:4}");
-    return width;
+    return static_cast<int>(*width);
 }
 
 TemplateSegment placeholder_segment(Placeholder placeholder, int frame_padding) {
