@@ -97,7 +97,7 @@ TEST_CASE("exposure +1 doubles the linear values of the PNG and leaves the EXR a
 }
 
 TEST_CASE("tone curves keep black, rise monotonically and roll off below white", "[display]") {
-    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic}) {
+    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral}) {
         INFO(tonemap_name(curve));
         const DisplayTransform t{0, curve};
         CHECK(display_color({0, 0, 0, 1}, t) == glm::vec4(0, 0, 0, 1));
@@ -155,4 +155,30 @@ TEST_CASE("display bytes: linear to 8-bit sRGB, and 16-bit samples to 8 bits", "
     CHECK(facet::narrow_to_byte(129) == 1);  // 0.502
     CHECK(facet::narrow_to_byte(257) == 1);
     for (int b = 0; b < 256; ++b) CHECK(facet::narrow_to_byte(static_cast<uint16_t>(b * 257)) == b);
+}
+
+TEST_CASE("neutral is Khronos PBR Neutral: base colours pass, highlights compress in hue",
+          "[display]") {
+    const DisplayTransform neutral{0, Tonemap::neutral};
+    const auto shown = [&](glm::vec3 c) { return glm::vec3(display_color({c, 1}, neutral)); };
+    // Below the compression (largest channel < 0.76 after the offset) only
+    // the offset moves a colour: 0.04 once its darkest channel reaches 0.08,
+    // x - 6.25 x^2 below that (0.04 -> 0.03).
+    CHECK(shown({0.5f, 0.5f, 0.5f}).r == Approx(0.46f).epsilon(1e-6));
+    CHECK(shown({0.04f, 0.04f, 0.04f}).r == Approx(0.01f).epsilon(1e-5));
+    const glm::vec3 base = shown({0.7f, 0.3f, 0.1f});
+    CHECK(base.r == Approx(0.66f).epsilon(1e-6));
+    CHECK(base.g == Approx(0.26f).epsilon(1e-6));
+    CHECK(base.b == Approx(0.06f).epsilon(1e-6));
+    // Grey 2 (1.96 after the offset): the peak goes to 1 - 0.24^2 / 1.44 =
+    // 0.96, and grey has nothing to desaturate.
+    CHECK(shown({2, 2, 2}).r == Approx(0.96f).epsilon(1e-5));
+    // A bright colour keeps its order of channels and moves toward white.
+    const glm::vec3 bright = shown({4.0f, 2.0f, 1.0f});
+    CHECK(bright.r > bright.g);
+    CHECK(bright.g > bright.b);
+    CHECK(bright.r < 1.0f);
+    CHECK(bright.b / bright.r > 1.0f / 4.0f);  // desaturated
+    CHECK(std::string(tonemap_name(Tonemap::neutral)) == "neutral");
+    CHECK(tonemap_from_name("neutral") == Tonemap::neutral);
 }

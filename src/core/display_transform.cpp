@@ -43,6 +43,27 @@ float filmic_curve(float x) {
     return srgb_to_linear(display);
 }
 
+// Khronos PBR Neutral (the Khronos 3D Commerce group's specification, 2024): made
+// for product images, so that a base colour up to about 0.8 comes out as
+// authored. Dark values lose a small offset that keeps near-black from
+// looking lifted (0.04, blended in below 0.08 as x - 6.25 x^2); then only
+// colours whose largest channel passes 0.76 are compressed, all three by
+// the same factor so the hue stays, toward a peak that approaches 1, and
+// the brightest are desaturated toward white by how much was compressed.
+glm::vec3 khronos_neutral(glm::vec3 c) {
+    constexpr float kStartCompression = 0.8f - 0.04f, kDesaturation = 0.15f;
+    const float lowest = std::min(c.r, std::min(c.g, c.b));
+    const float offset = lowest < 0.08f ? lowest - 6.25f * lowest * lowest : 0.04f;
+    c -= offset;
+    const float peak = std::max(c.r, std::max(c.g, c.b));
+    if (peak < kStartCompression) return c;
+    constexpr float d = 1.0f - kStartCompression;
+    const float new_peak = 1.0f - d * d / (peak + d - kStartCompression);
+    c *= new_peak / peak;
+    const float g = 1.0f - 1.0f / (kDesaturation * (peak - new_peak) + 1.0f);
+    return c + (glm::vec3(new_peak) - c) * g;
+}
+
 glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
     switch (tonemap) {
         case Tonemap::none:
@@ -54,6 +75,8 @@ glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
             c += (glm::vec3(mean) - c) * 0.15f;
             return {filmic_curve(c.r), filmic_curve(c.g), filmic_curve(c.b)};
         }
+        case Tonemap::neutral:
+            return khronos_neutral(c);
     }
     return c;
 }
@@ -63,6 +86,7 @@ glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
 Tonemap tonemap_from_name(std::string_view name) {
     if (name == "aces") return Tonemap::aces;
     if (name == "filmic") return Tonemap::filmic;
+    if (name == "neutral") return Tonemap::neutral;
     return Tonemap::none;
 }
 
@@ -72,6 +96,8 @@ const char* tonemap_name(Tonemap tonemap) {
             return "aces";
         case Tonemap::filmic:
             return "filmic";
+        case Tonemap::neutral:
+            return "neutral";
         case Tonemap::none:
             break;
     }
