@@ -1,0 +1,162 @@
+#include "shade/brdf.hpp"
+
+#include <cstdint>
+
+#include "shade/light_sample.hpp"
+
+namespace facet::pbr {
+
+namespace {
+
+constexpr int kLast = DfgTable::kSize - 1;
+
+// The grid's perceptual roughness at row j (DfgTable's comment).
+double node_roughness(int j) {
+    return kMinRoughness + (1.0 - kMinRoughness) * j / kLast;
+}
+
+// The radical inverse of i in base 2 (van der Corput), the second
+// coordinate of Hammersley's point set: i's bits mirrored about the binary
+// point. Exact: a 32-bit integer times 2^-32.
+double radical_inverse_base2(uint32_t i) {
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
+    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
+    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
+    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
+    return static_cast<double>(i) * 0x1p-32;
+}
+
+// cos(2 pi t) for t in [0, 1], from the Taylor series of cos about 0 after
+// moving t to [-1/2, 1/2]. Only adds, multiplies and divides: the C
+// library's cos may pick a different implementation on different CPUs
+// (glibc has FMA variants chosen at run time), which could change the
+// table's last bits. 18 terms leave a truncation error below 1e-20 at pi.
+double cos_turns(double t) {
+    const double x = 2.0 * 3.14159265358979323846 * (t - 0.5);  // cos(2 pi t) = -cos(x)
+    const double x2 = x * x;
+    double term = 1.0, sum = 1.0;
+    for (int k = 1; k < 18; ++k) {
+        term *= -x2 / static_cast<double>((2 * k - 1) * (2 * k));
+        sum += term;
+    }
+    return -sum;
+}
+
+// One node of the table: Karis 2013's estimate of the split-sum terms with
+// h drawn from D(h)(n.h) by inverting its distribution (Walter et al.
+// 2007): cos^2 theta_h = (1 - u) / (1 + (alpha^2 - 1) u), phi = 2 pi t
+// for the Hammersley point (t, u). Reflecting v about h gives l, whose
+// density is D (n.h) / (4 v.h), so each sample adds
+//   D V F (n.l) / density = V F (n.l) 4 (v.h) / (n.h).
+// The view is v = (sin theta_v, 0, cos theta_v) with n = +z, so only cos
+// phi enters: v.h = sin theta_v sin theta_h cos phi + cos theta_v cos theta_h.
+DfgTerms integrate_dfg_node(double n_dot_v, double alpha) {
+    const double a2 = alpha * alpha;
+    const double sin_v = std::sqrt(1.0 - n_dot_v * n_dot_v);
+    double scale = 0.0, bias = 0.0;
+    for (uint32_t i = 0; i < DfgTable::kSamples; ++i) {
+        const double u = radical_inverse_base2(i);
+        const double phi_turns = static_cast<double>(i) / DfgTable::kSamples;
+        const double denominator = 1.0 + (a2 - 1.0) * u;
+        const double cos_h = std::sqrt((1.0 - u) / denominator);
+        const double sin_h = std::sqrt(a2 * u / denominator);  // sqrt(1 - cos_h^2), not cancelling
+        const double v_dot_h = sin_v * sin_h * cos_turns(phi_turns) + n_dot_v * cos_h;
+        const double n_dot_l = 2.0 * v_dot_h * cos_h - n_dot_v;
+        if (!(v_dot_h > 0.0) || !(n_dot_l > 0.0)) continue;
+        const double visibility = smith_ggx_correlated_visibility(n_dot_l, n_dot_v, alpha);
+        const double weight = visibility * 4.0 * n_dot_l * v_dot_h / cos_h;
+        const double m = 1.0 - v_dot_h;
+        const double fresnel_weight = m * m * m * m * m;
+        scale += (1.0 - fresnel_weight) * weight;
+        bias += fresnel_weight * weight;
+    }
+    scale /= DfgTable::kSamples;
+    bias /= DfgTable::kSamples;
+    // A lobe cannot reflect more than it receives, but the estimate of a
+    // smooth one can come out a few 1e-5 above 1: scale such nodes back to 1,
+    // so that the compensation never darkens.
+    const double albedo = scale + bias;
+    if (albedo > 1.0) {
+        scale /= albedo;
+        bias /= albedo;
+    }
+    return {static_cast<float>(scale), static_cast<float>(bias)};
+}
+
+}  // namespace
+
+DfgTerms DfgTable::lookup(float n_dot_v, float roughness) const {
+    const float x = std::clamp(n_dot_v, 0.0f, 1.0f) * kLast;
+    const float y = (std::clamp(roughness, kMinRoughness, 1.0f) - kMinRoughness) /
+                    (1.0f - kMinRoughness) * kLast;
+    const int i = std::min(static_cast<int>(x), kLast - 1);  // x >= 0: truncation is floor
+    const int j = std::min(static_cast<int>(y), kLast - 1);
+    const float tx = x - static_cast<float>(i), ty = y - static_cast<float>(j);
+    const DfgTerms& t00 = terms[j * kSize + i];
+    const DfgTerms& t10 = terms[j * kSize + i + 1];
+    const DfgTerms& t01 = terms[(j + 1) * kSize + i];
+    const DfgTerms& t11 = terms[(j + 1) * kSize + i + 1];
+    const auto blend = [&](float a00, float a10, float a01, float a11) {
+        const float low = a00 + (a10 - a00) * tx;
+        const float high = a01 + (a11 - a01) * tx;
+        return low + (high - low) * ty;
+    };
+    return {blend(t00.scale, t10.scale, t01.scale, t11.scale),
+            blend(t00.bias, t10.bias, t01.bias, t11.bias)};
+}
+
+DfgTable compute_dfg_table() {
+    DfgTable table;
+    for (int j = 0; j < DfgTable::kSize; ++j) {
+        const double r = node_roughness(j);
+        for (int i = 0; i < DfgTable::kSize; ++i) {
+            const double n_dot_v =
+                std::max(static_cast<double>(i) / kLast, static_cast<double>(kMinNdotV));
+            table.terms[j * DfgTable::kSize + i] = integrate_dfg_node(n_dot_v, r * r);
+        }
+    }
+    return table;
+}
+
+const DfgTable& dfg_table() {
+    static const DfgTable table = compute_dfg_table();
+    return table;
+}
+
+ShadingPoint prepare_shading_point(const glm::vec3& n, const glm::vec3& v, const Material& material,
+                                   MultipleScattering multiple_scattering) {
+    ShadingPoint p;
+    p.n = n;
+    p.v = v;
+    p.n_dot_v = std::max(dot3(n, v), kMinNdotV);
+    p.alpha = alpha_from_roughness(material.roughness);
+    p.metallic = std::clamp(material.metallic, 0.0f, 1.0f);
+    p.base_color = material.base_color;
+    p.dielectric_f0 = f0_from_ior(material.ior);
+    if (multiple_scattering == MultipleScattering::compensated) {
+        const float albedo = dfg_table().lookup(p.n_dot_v, material.roughness).albedo();
+        p.metal_compensation = energy_compensation(p.base_color, albedo);
+        p.dielectric_compensation = energy_compensation(p.dielectric_f0, albedo);
+    }
+    return p;
+}
+
+glm::vec3 brdf_cosine(const ShadingPoint& p, const glm::vec3& l) {
+    const float n_dot_l = dot3(p.n, l);
+    if (!(n_dot_l > 0.0f)) return glm::vec3(0.0f);
+    const HalfVector h = half_vector(p.n, p.v, l);
+    const float specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.alpha);
+    const float weight = schlick_weight(h.v_dot_h);
+
+    // fresnel_mix: the diffuse base under a specular layer, weighted by F.
+    const float dielectric_fresnel = schlick_fresnel(p.dielectric_f0, weight);
+    const glm::vec3 dielectric =
+        (1.0f - dielectric_fresnel) * (1.0f / kPi) * p.base_color +
+        glm::vec3(dielectric_fresnel * specular * p.dielectric_compensation);
+    // conductor_fresnel: the specular lobe tinted by the metal's F.
+    const glm::vec3 metal = schlick_fresnel(p.base_color, weight) * specular * p.metal_compensation;
+    return ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
+}
+
+}  // namespace facet::pbr
