@@ -2,6 +2,7 @@
 
 #include <cstdint>
 
+#include "core/exact_trig.hpp"
 #include "shade/light_sample.hpp"
 
 namespace facet::pbr {
@@ -25,22 +26,6 @@ double radical_inverse_base2(uint32_t i) {
     i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
     i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
     return static_cast<double>(i) * 0x1p-32;
-}
-
-// cos(2 pi t) for t in [0, 1], from the Taylor series of cos about 0 after
-// moving t to [-1/2, 1/2]. Only adds, multiplies and divides: the C
-// library's cos may pick a different implementation on different CPUs
-// (glibc has FMA variants chosen at run time), which could change the
-// table's last bits. 18 terms leave a truncation error below 1e-20 at pi.
-double cos_turns(double t) {
-    const double x = 2.0 * 3.14159265358979323846 * (t - 0.5);  // cos(2 pi t) = -cos(x)
-    const double x2 = x * x;
-    double term = 1.0, sum = 1.0;
-    for (int k = 1; k < 18; ++k) {
-        term *= -x2 / static_cast<double>((2 * k - 1) * (2 * k));
-        sum += term;
-    }
-    return -sum;
 }
 
 // One node of the table: Karis 2013's estimate of the split-sum terms with

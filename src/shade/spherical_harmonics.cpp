@@ -4,33 +4,13 @@
 #include <cstddef>
 #include <stdexcept>
 
+#include "core/exact_trig.hpp"
+
 namespace facet::pbr {
 
 namespace {
 
 constexpr double kPiDouble = 3.14159265358979323846;
-
-// cos(2 pi t) for any t, from the Taylor series of cos about 0 after moving
-// t to [-1/2, 1/2]. Only IEEE-exact operations: the C library's cos may pick
-// a different implementation on different CPUs (glibc has FMA variants
-// chosen at run time), which could change the coefficients' last bits. The
-// same series as brdf.cpp's cos_turns, which is private to that file; 18
-// terms leave a truncation error below 1e-20 at pi.
-double cos_turns(double t) {
-    const double x = 2.0 * kPiDouble * (t - std::floor(t) - 0.5);  // cos(2 pi t) = -cos(x)
-    const double x2 = x * x;
-    double term = 1.0, sum = 1.0;
-    for (int k = 1; k < 18; ++k) {
-        term *= -x2 / static_cast<double>((2 * k - 1) * (2 * k));
-        sum += term;
-    }
-    return -sum;
-}
-
-// sin(2 pi t) = cos(2 pi (t - 1/4)).
-double sin_turns(double t) {
-    return cos_turns(t - 0.25);
-}
 
 // The direction of (u, v), EquirectRadiance's mapping: theta = pi v is
 // half a turn times v, phi + pi = 2 pi u, so sin phi = -sin(2 pi u) and
