@@ -7,8 +7,11 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <limits>
+#include <optional>
 
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 
 namespace facet {
 namespace {
@@ -92,11 +95,11 @@ size_t remove_stale_temporaries(const std::string& folder) {
         const size_t at = name.rfind(mark);
         if (name.empty() || name[0] != '.' || at == std::string::npos) continue;
         const std::string pid_text = name.substr(at + mark.size());
-        if (pid_text.empty() || pid_text.find_first_not_of("0123456789") != std::string::npos)
-            continue;
-        const long pid = std::strtol(pid_text.c_str(), nullptr, 10);
+        // Digits naming a process id, or not one of facet's temporaries.
+        const std::optional<long long> pid = read_whole_number(pid_text);
+        if (!pid || *pid <= 0 || *pid > std::numeric_limits<pid_t>::max()) continue;
         // A live process of this host (this one included) may still be writing it.
-        if (pid == ::getpid() || ::kill(static_cast<pid_t>(pid), 0) == 0 || errno != ESRCH)
+        if (*pid == ::getpid() || ::kill(static_cast<pid_t>(*pid), 0) == 0 || errno != ESRCH)
             continue;
         std::error_code remove_ec;
         if (std::filesystem::remove(entry.path(), remove_ec)) ++removed;
