@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "assets/mesh_rig.hpp"
 #include "assets/texture.hpp"
@@ -53,6 +54,34 @@ struct Material {
     AlphaMode alpha_mode = AlphaMode::opaque;
     float alpha = 1;
     float alpha_cutoff = 0.5f;
+
+    // The physically based terms, read by the `pbr` shading model
+    // (docs/pbr.md); the other models use the Phong terms above. glTF's
+    // metallic-roughness material, with its defaults for a file's
+    // materials; these are a scene's and an OBJ's (a grey dielectric).
+    float metallic = 0.0f;   // 0 dielectric .. 1 metal
+    float roughness = 0.5f;  // perceptual roughness, 0..1
+    // glTF metallicRoughnessTexture: G multiplies roughness, B metallic
+    // (linear data, not colour).
+    TextureSlot metal_rough_map;
+    // Tangent-space normals (glTF normalTexture, OpenGL convention: +Y up
+    // the texture's v), tilted by normal_scale in x and y.
+    TextureSlot normal_map;
+    float normal_scale = 1.0f;
+    // Ambient occlusion of indirect light: R, blended by occlusion_strength.
+    TextureSlot occlusion_map;
+    float occlusion_strength = 1.0f;
+    float ior = 1.5f;  // the dielectric's index of refraction (KHR_materials_ior)
+    // KHR_materials_specular: the dielectric's reflectance, scaled by the
+    // weight (times the map's A) and tinted by the colour (times its RGB).
+    float specular_weight = 1.0f;
+    glm::vec3 specular_color = {1, 1, 1};
+    TextureSlot specular_weight_map, specular_color_map;
+    // KHR_materials_clearcoat: a smooth dielectric layer (ior 1.5) over the
+    // base, of this strength (times the map's R) and roughness (times G).
+    float clearcoat = 0.0f;
+    float clearcoat_roughness = 0.0f;
+    TextureSlot clearcoat_map, clearcoat_roughness_map;
 };
 
 struct Bounds {
@@ -68,6 +97,10 @@ struct MeshPart {
     std::vector<glm::vec3> normals;  // one per position, unit length
     std::vector<glm::vec2> uvs;      // texture coordinate set 0: one per position, or empty
     std::vector<glm::vec2> uvs1;     // set 1 (glTF TEXCOORD_1), or empty
+    // One per position, or empty: xyz the unit tangent (along +u), w = +1
+    // or -1 the sign of the bitangent, b = w (n x t) (glTF TANGENT). Made
+    // for the parts whose material has a normal map (assets/tangent_frames.hpp).
+    std::vector<glm::vec4> tangents;
     std::vector<glm::vec3>
         colors;  // one per position (linear RGB, multiplies the material's), or empty
     std::vector<uint32_t> indices;  // three per triangle
