@@ -189,7 +189,7 @@ objects:
     CHECK(box.material.specular->value == 0.5f);
     CHECK(box.material.shininess->value == 64.0f);
     REQUIRE(box.material.texture.has_value());
-    CHECK(std::filesystem::equivalent(*box.material.texture, dir.file("textures/wood.png")));
+    CHECK(std::filesystem::equivalent(box.material.texture->path, dir.file("textures/wood.png")));
     CHECK(box.material.wrap == facet::Wrap::clamp);
     CHECK(box.material.double_sided == true);
     REQUIRE(box.spin.has_value());

@@ -37,6 +37,8 @@ MaterialState evaluate_material(const MaterialDesc& m, const FrameTime& at) {
     number(m.diffuse, s.diffuse);
     number(m.specular, s.specular);
     number(m.shininess, s.shininess);
+    number(m.metallic, s.metallic);
+    number(m.roughness, s.roughness);
     return s;
 }
 

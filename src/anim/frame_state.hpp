@@ -27,8 +27,10 @@ struct CameraState {
 // Material values the scene animates; unset ones keep the built material.
 struct MaterialState {
     std::optional<glm::vec3> color;
-    std::optional<float> ambient, diffuse, specular, shininess;
-    bool any() const { return color || ambient || diffuse || specular || shininess; }
+    std::optional<float> ambient, diffuse, specular, shininess, metallic, roughness;
+    bool any() const {
+        return color || ambient || diffuse || specular || shininess || metallic || roughness;
+    }
 };
 
 struct ObjectState {

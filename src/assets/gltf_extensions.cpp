@@ -26,6 +26,9 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_draco_mesh_compression", "compressed geometry, decoded by libdraco"},
         {"KHR_materials_emissive_strength", "emission brighter than 1"},
         {"KHR_materials_unlit", "materials shown without lights"},
+        {"KHR_materials_ior", "the dielectric's index of refraction (style pbr)"},
+        {"KHR_materials_specular", "the dielectric's reflectance and its tint (style pbr)"},
+        {"KHR_materials_clearcoat", "a clear lacquer over the material (style pbr)"},
         {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
         {"EXT_texture_webp", "WebP textures, decoded by libwebp"},
         {"EXT_texture_avif", "AVIF textures, decoded by libavif"},
@@ -39,6 +42,14 @@ std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
         {"KHR_materials_variants", "only the default material of each part is used"},
+        {"KHR_materials_transmission",
+         "light through thin glass and plastic is not drawn: they look opaque"},
+        {"KHR_materials_volume", "the thickness and tint of transmitting volumes are lost"},
+        {"KHR_materials_sheen", "the sheen of cloth and velvet is lost"},
+        {"KHR_materials_iridescence", "the thin-film colours are lost"},
+        {"KHR_materials_anisotropy", "highlights are round, not stretched along the surface"},
+        {"KHR_materials_dispersion", "the spread of colours through refraction is lost"},
+        {"KHR_materials_diffuse_transmission", "light through thin leaves and paper is lost"},
     };
     const auto it = effects.find(extension);
     return it == effects.end() ? "what it adds is not drawn" : it->second;

@@ -1,5 +1,7 @@
 #include "assets/gltf_field_types.hpp"
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include "assets/gltf_accessors.hpp"
@@ -41,10 +43,14 @@ class FieldTypes {
                 const std::string p = at + ".pbrMetallicRoughness";
                 texture_info(*pbr, "baseColorTexture", p);
                 texture_info(*pbr, "metallicRoughnessTexture", p);
+                number_if_present(*pbr, "metallicFactor", p);
+                number_if_present(*pbr, "roughnessFactor", p);
             }
             texture_info(material, "normalTexture", at, "scale");
             texture_info(material, "occlusionTexture", at, "strength");
             texture_info(material, "emissiveTexture", at);
+            if (const json* extensions = object_if_present(material, "extensions", at))
+                material_extensions(*extensions, at + ".extensions");
         });
         for_each_item(doc, "textures", "", [&](const json& texture, const std::string& at) {
             index_if_present(texture, "source", at);
@@ -102,6 +108,32 @@ class FieldTypes {
         if (factor) number_if_present(*info, factor, p);
         if (const json* extensions = object_if_present(*info, "extensions", p))
             object_if_present(*extensions, "KHR_texture_transform", p + ".extensions");
+    }
+
+    // The material extensions whose fields facet draws from.
+    void material_extensions(const json& extensions, const std::string& at) {
+        if (const json* ior = object_if_present(extensions, "KHR_materials_ior", at))
+            number_if_present(*ior, "ior", at + ".KHR_materials_ior");
+        if (const json* specular = object_if_present(extensions, "KHR_materials_specular", at)) {
+            const std::string p = at + ".KHR_materials_specular";
+            number_if_present(*specular, "specularFactor", p);
+            texture_info(*specular, "specularTexture", p);
+            texture_info(*specular, "specularColorTexture", p);
+            const auto color = specular->find("specularColorFactor");
+            if (color != specular->end() &&
+                !(color->is_array() && color->size() == 3 &&
+                  std::all_of(color->begin(), color->end(),
+                              [](const json& c) { return c.is_number(); })))
+                wrong(p + ".specularColorFactor", "a list of 3 numbers");
+        }
+        if (const json* coat = object_if_present(extensions, "KHR_materials_clearcoat", at)) {
+            const std::string p = at + ".KHR_materials_clearcoat";
+            number_if_present(*coat, "clearcoatFactor", p);
+            number_if_present(*coat, "clearcoatRoughnessFactor", p);
+            texture_info(*coat, "clearcoatTexture", p);
+            texture_info(*coat, "clearcoatRoughnessTexture", p);
+            texture_info(*coat, "clearcoatNormalTexture", p, "scale");
+        }
     }
 
     const std::string& path_;

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <set>
 
 #include "assets/gltf_accessors.hpp"
 #include "assets/gltf_extensions.hpp"
@@ -97,6 +96,9 @@ class TextureCache {
         std::string lost;
     };
     const Read& texture(int index);
+    // The same texture read as data (Texture::as_data): normal,
+    // metallic-roughness and occlusion maps hold numbers, not colours.
+    const Read& data_texture(int index);
 
   private:
     std::shared_ptr<const Texture> image(int index, std::string& lost);
@@ -107,6 +109,7 @@ class TextureCache {
     TextureBudget* budget_;
     std::map<int, std::shared_ptr<const Texture>> images_;
     std::map<int, Read> textures_;
+    std::map<int, Read> data_textures_;
     std::map<int, std::string> image_errors_;
 };
 
@@ -167,16 +170,28 @@ const TextureCache::Read& TextureCache::texture(int index) {
     return textures_[index] = read;
 }
 
+const TextureCache::Read& TextureCache::data_texture(int index) {
+    if (const auto it = data_textures_.find(index); it != data_textures_.end()) return it->second;
+    Read read = texture(index);
+    if (read.texture) read.texture = std::make_shared<const Texture>(read.texture->as_data());
+    return data_textures_[index] = read;
+}
+
+// How a map's texels are read.
+enum class TexelMeaning { colour, data };
+
 // The slot a textureInfo fills: its texture, set and transform. A lost
 // texture leaves the slot empty, with a warning naming the map and, in
 // `without`, how the material is drawn then.
 TextureSlot slot_of(const tinygltf::TextureInfo& info, TextureCache& cache, const std::string& path,
                     const std::string& what, Warnings& warnings,
-                    const std::string& without = "drawn without it") {
+                    const std::string& without = "drawn without it",
+                    TexelMeaning meaning = TexelMeaning::colour) {
     TextureSlot slot;
     if (info.index < 0) return slot;
     const UvMapping mapping = texture_mapping(info, path, what);
-    const TextureCache::Read& read = cache.texture(info.index);
+    const TextureCache::Read& read =
+        meaning == TexelMeaning::data ? cache.data_texture(info.index) : cache.texture(info.index);
     slot.texture = read.texture;
     if (!slot.texture) {
         warnings.push_back(file_warning(path, what + ": " + read.lost + "; " + without));
@@ -212,6 +227,118 @@ glm::vec3 emission(const tinygltf::Material& m, const std::string& path) {
     if (!(e.x >= 0 && e.y >= 0 && e.z >= 0 && std::isfinite(e.x + e.y + e.z)))
         bad(path, "material '" + m.name + "': emissiveFactor must be finite and not negative");
     return e;
+}
+
+// A textureInfo inside an extension (which tinygltf leaves as a Value):
+// its index, texCoord and KHR_texture_transform. The field types were
+// checked before (gltf_field_types.hpp).
+tinygltf::TextureInfo texture_info_of(const tinygltf::Value& extension, const char* key) {
+    tinygltf::TextureInfo info;
+    if (!extension.Has(key)) return info;
+    const tinygltf::Value& v = extension.Get(key);
+    if (v.Has("index")) info.index = static_cast<int>(v.Get("index").GetNumberAsDouble());
+    if (v.Has("texCoord")) info.texCoord = static_cast<int>(v.Get("texCoord").GetNumberAsDouble());
+    if (v.Has("extensions") && v.Get("extensions").Has("KHR_texture_transform"))
+        info.extensions["KHR_texture_transform"] = v.Get("extensions").Get("KHR_texture_transform");
+    return info;
+}
+
+// A number of an extension, `fallback` when absent; outside [low, high]
+// (or not finite) it is an error naming the material and the field.
+float extension_number(const tinygltf::Value& extension, const char* key, float fallback,
+                       double low, double high, const std::string& path, const std::string& what) {
+    if (!extension.Has(key)) return fallback;
+    const double v = extension.Get(key).GetNumberAsDouble();
+    if (!(v >= low && v <= high))
+        bad(path, what + ": " + key + " must be from " + std::to_string(low).substr(0, 3) + " to " +
+                      std::to_string(high).substr(0, 3));
+    return static_cast<float>(v);
+}
+
+// A normal or occlusion textureInfo as the plain one slot_of reads (the
+// scale and strength are read apart).
+template <typename Info>
+tinygltf::TextureInfo plain_info(const Info& info) {
+    tinygltf::TextureInfo plain;
+    plain.index = info.index;
+    plain.texCoord = info.texCoord;
+    plain.extensions = info.extensions;
+    return plain;
+}
+
+// glTF's metallic-roughness terms (§3.9.2) and its normal and occlusion
+// maps (§3.9.3, §3.9.4), read as data.
+void read_metal_rough(const tinygltf::Material& m, TextureCache& cache, const std::string& path,
+                      const std::string& what, Warnings& warnings, Material& mat) {
+    const auto& pbr = m.pbrMetallicRoughness;
+    if (!(pbr.metallicFactor >= 0 && pbr.metallicFactor <= 1))
+        bad(path, what + ": metallicFactor must be from 0 to 1");
+    if (!(pbr.roughnessFactor >= 0 && pbr.roughnessFactor <= 1))
+        bad(path, what + ": roughnessFactor must be from 0 to 1");
+    mat.metallic = static_cast<float>(pbr.metallicFactor);
+    mat.roughness = static_cast<float>(pbr.roughnessFactor);
+    const TexelMeaning data = TexelMeaning::data;
+    mat.metal_rough_map =
+        slot_of(pbr.metallicRoughnessTexture, cache, path, what + " metallicRoughnessTexture",
+                warnings, "drawn with its factors alone", data);
+    mat.normal_map = slot_of(plain_info(m.normalTexture), cache, path, what + " normalTexture",
+                             warnings, "drawn with the mesh's normals", data);
+    if (!std::isfinite(m.normalTexture.scale))
+        bad(path, what + ": normalTexture.scale is not finite");
+    mat.normal_scale = static_cast<float>(m.normalTexture.scale);
+    mat.occlusion_map =
+        slot_of(plain_info(m.occlusionTexture), cache, path, what + " occlusionTexture", warnings,
+                "drawn without occlusion", data);
+    if (!(m.occlusionTexture.strength >= 0 && m.occlusionTexture.strength <= 1))
+        bad(path, what + ": occlusionTexture.strength must be from 0 to 1");
+    mat.occlusion_strength = static_cast<float>(m.occlusionTexture.strength);
+}
+
+// KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat.
+void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
+                           const std::string& path, const std::string& what, Warnings& warnings,
+                           Material& mat) {
+    if (const auto it = m.extensions.find("KHR_materials_ior"); it != m.extensions.end()) {
+        // 0 is not an index of refraction; the extension's schema allows
+        // it, but no renderer agrees on its meaning.
+        mat.ior = extension_number(it->second, "ior", 1.5f, 1.0, 10.0, path, what);
+    }
+    if (const auto it = m.extensions.find("KHR_materials_specular"); it != m.extensions.end()) {
+        const tinygltf::Value& e = it->second;
+        mat.specular_weight = extension_number(e, "specularFactor", 1.0f, 0.0, 1.0, path, what);
+        if (e.Has("specularColorFactor")) {
+            const tinygltf::Value& c = e.Get("specularColorFactor");
+            for (int a = 0; a < 3; ++a) {
+                const double v = c.Get(a).GetNumberAsDouble();
+                if (!(v >= 0 && v <= 1e3))
+                    bad(path, what + ": specularColorFactor must hold numbers from 0 to 1000");
+                mat.specular_color[a] = static_cast<float>(v);
+            }
+        }
+        mat.specular_weight_map =
+            slot_of(texture_info_of(e, "specularTexture"), cache, path, what + " specularTexture",
+                    warnings, "drawn with its specularFactor alone", TexelMeaning::data);
+        mat.specular_color_map = slot_of(texture_info_of(e, "specularColorTexture"), cache, path,
+                                         what + " specularColorTexture", warnings,
+                                         "drawn with its specularColorFactor alone");
+    }
+    if (const auto it = m.extensions.find("KHR_materials_clearcoat"); it != m.extensions.end()) {
+        const tinygltf::Value& e = it->second;
+        mat.clearcoat = extension_number(e, "clearcoatFactor", 0.0f, 0.0, 1.0, path, what);
+        mat.clearcoat_roughness =
+            extension_number(e, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, path, what);
+        mat.clearcoat_map =
+            slot_of(texture_info_of(e, "clearcoatTexture"), cache, path, what + " clearcoatTexture",
+                    warnings, "drawn with its clearcoatFactor alone", TexelMeaning::data);
+        mat.clearcoat_roughness_map =
+            slot_of(texture_info_of(e, "clearcoatRoughnessTexture"), cache, path,
+                    what + " clearcoatRoughnessTexture", warnings,
+                    "drawn with its clearcoatRoughnessFactor alone", TexelMeaning::data);
+        if (e.Has("clearcoatNormalTexture"))
+            warnings.push_back(file_warning(
+                path, what + " clearcoatNormalTexture is not drawn: the coat follows the base's "
+                             "normals, so its own relief is lost"));
+    }
 }
 
 // A Phong reading of metal/roughness: smoother surfaces get tighter,
@@ -263,17 +390,9 @@ Material read_material(const tinygltf::Material& m, size_t index, TextureCache& 
     }
     read_alpha(m, path, mat);
     mat.unlit = m.extensions.count("KHR_materials_unlit") > 0;
+    read_metal_rough(m, cache, path, what, warnings, mat);
+    read_layer_extensions(m, cache, path, what, warnings, mat);
     return mat;
-}
-
-// The maps a material has that facet's shading does not draw.
-std::vector<std::string> undrawn_maps(const tinygltf::Material& m) {
-    std::vector<std::string> maps;
-    if (m.normalTexture.index >= 0) maps.push_back("normalTexture");
-    if (m.occlusionTexture.index >= 0) maps.push_back("occlusionTexture");
-    if (m.pbrMetallicRoughness.metallicRoughnessTexture.index >= 0)
-        maps.push_back("metallicRoughnessTexture");
-    return maps;
 }
 
 }  // namespace
@@ -283,30 +402,8 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
                                      Warnings& warnings) {
     TextureCache cache(model, path, unread, budget);
     std::vector<Material> materials;
-    std::set<std::string> undrawn;
-    std::vector<std::string> with_undrawn;
-    for (size_t i = 0; i < model.materials.size(); ++i) {
+    for (size_t i = 0; i < model.materials.size(); ++i)
         materials.push_back(read_material(model.materials[i], i, cache, path, warnings));
-        const std::vector<std::string> maps = undrawn_maps(model.materials[i]);
-        undrawn.insert(maps.begin(), maps.end());
-        if (!maps.empty())
-            with_undrawn.push_back(model.materials[i].name.empty()
-                                       ? std::to_string(i)
-                                       : "'" + model.materials[i].name + "'");
-    }
-    if (!undrawn.empty()) {
-        std::string maps, names;
-        for (const std::string& map : undrawn) maps += (maps.empty() ? "" : ", ") + map;
-        for (size_t i = 0; i < with_undrawn.size() && i < 3; ++i)
-            names += (i ? ", " : "") + with_undrawn[i];
-        if (with_undrawn.size() > 3)
-            names += " and " + std::to_string(with_undrawn.size() - 3) + " more";
-        warnings.push_back(file_warning(
-            path, std::string(with_undrawn.size() == 1 ? "material " : "materials ") + names +
-                      " have maps facet does not draw (" + maps +
-                      "; their files are not read): surface detail, occlusion and metal are "
-                      "lost, and metal and roughness factors become a Phong highlight"));
-    }
     return materials;
 }
 

@@ -22,8 +22,9 @@ using UnreadImages = std::map<std::string, std::string>;
 // reads are decoded (by their bytes: PNG, JPEG, WebP, AVIF), charged to
 // `budget`. A texture that is missing or cannot be decoded is a warning
 // naming the file, the material and the map, and the material is drawn
-// without it; a texture whose only image is KTX2 likewise. Maps facet does
-// not draw (normal, occlusion, metallic-roughness) are named in one warning.
+// without it; a texture whose only image is KTX2 likewise. The
+// metallic-roughness, normal and occlusion maps are read as data
+// (Texture::as_data); which style draws them is the renderer's business.
 std::vector<Material> read_materials(const tinygltf::Model& model, const std::string& path,
                                      const UnreadImages& unread, TextureBudget* budget,
                                      Warnings& warnings);

@@ -7,6 +7,7 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string_view>
 #include <tuple>
@@ -181,6 +182,30 @@ std::map<std::string, int> mtllib_lines(const std::string& text) {
     return lines;
 }
 
+// Marks a material whose library gives a roughness or metalness (the PBR
+// extension of MTL: Pr, Pm, map_Pr, map_Pm): tinyobjloader reads an absent
+// Pr as 0, a mirror, which must not be mistaken for one that was given.
+constexpr const char* kPhysicalTermsGiven = "facet:physical";
+
+std::set<std::string> materials_with_physical_terms(const std::string& mtl) {
+    std::set<std::string> names;
+    std::istringstream lines(mtl);
+    std::string line, current;
+    while (std::getline(lines, line)) {
+        std::istringstream words(line);
+        std::string key;
+        words >> key;
+        if (key == "newmtl") {
+            std::getline(words >> std::ws, current);
+            while (!current.empty() && (current.back() == '\r' || current.back() == ' '))
+                current.pop_back();
+        } else if (key == "Pr" || key == "Pm" || key == "map_Pr" || key == "map_Pm") {
+            names.insert(current);
+        }
+    }
+    return names;
+}
+
 // .mtl files named by mtllib, resolved and checked by the asset path policy
 // (core/input_file.hpp). tinyobjloader's own reader splits its search path
 // at ':', so models in a folder whose name has a colon lost their materials;
@@ -217,8 +242,10 @@ class MtlReader : public tinyobj::MaterialReader {
         std::istringstream in(text);
         const size_t first = materials->size();
         tinyobj::LoadMtl(names, materials, &in, warn, err);
+        const std::set<std::string> physical = materials_with_physical_terms(text);
         for (size_t i = first; i < materials->size(); ++i) {
             auto& m = (*materials)[i];
+            if (physical.count(m.name)) m.unknown_parameter[kPhysicalTermsGiven] = "1";
             std::string key = material_key(m.name);
             if (key == m.name) continue;
             auto it = names->find(m.name);
@@ -304,15 +331,17 @@ ObjContents read_obj(const std::string& path, const AssetContext& context) {
 // The textures loaded so far, by resolved path: each file is loaded once.
 using TextureCache = std::map<std::string, std::shared_ptr<const Texture>>;
 
-// The texture a material's map_Kd names.
-std::shared_ptr<const Texture> diffuse_texture(const std::string& texname,
-                                               const std::string& material, const std::string& path,
-                                               const AssetContext& context,
-                                               TextureCache& textures) {
+// The texture a material's map names (`key`: map_Kd, norm, ...), as colour
+// or as data (Texture::as_data).
+std::shared_ptr<const Texture> material_texture(const std::string& texname, const char* key,
+                                                const std::string& material,
+                                                const std::string& path,
+                                                const AssetContext& context, TextureCache& textures,
+                                                bool data = false) {
     // Files written on Windows often name textures with backslashes.
     std::string name = texname;
     std::replace(name.begin(), name.end(), '\\', '/');
-    const std::string where = "material '" + material + "': map_Kd";
+    const std::string where = "material '" + material + "': " + key;
     const std::string tex_path = resolve_asset_reference(path, where, name, context.paths);
     auto& slot = textures[tex_path];
     if (!slot) {
@@ -322,7 +351,57 @@ std::shared_ptr<const Texture> diffuse_texture(const std::string& texname,
             throw Error(ExitCode::invalid_input, path + ": " + where + ": " + e.what());
         }
     }
-    return slot;
+    if (!data) return slot;
+    auto& as_data = textures["data:" + tex_path];
+    if (!as_data) as_data = std::make_shared<Texture>(slot->as_data());
+    return as_data;
+}
+
+// MTL's roughness and metalness maps (each a grey image) as glTF's one
+// metallic-roughness map: G roughness, B metalness, at the roughness map's
+// size (the metal map read bilinearly there when their sizes differ).
+std::shared_ptr<const Texture> metal_rough_texture(const Texture* roughness, const Texture* metal) {
+    const Texture& size = roughness ? *roughness : *metal;
+    std::vector<glm::vec4> texels(static_cast<size_t>(size.width) * size.height);
+    for (int y = 0; y < size.height; ++y)
+        for (int x = 0; x < size.width; ++x) {
+            const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(size.width),
+                               (static_cast<float>(y) + 0.5f) / static_cast<float>(size.height));
+            const float r = roughness ? roughness->texel(0, x, y).r : 1.0f;
+            const float m = metal ? metal->sample(uv).r : 1.0f;
+            texels[static_cast<size_t>(y) * size.width + x] = {1.0f, r, m, 1.0f};
+        }
+    Texture combined =
+        Texture::from_linear(size.width, size.height, texels, Texture::Format::data8);
+    combined.sampler = size.sampler;
+    return std::make_shared<const Texture>(std::move(combined));
+}
+
+// MTL's PBR extension (Pr, Pm, map_Pr, map_Pm, norm). Without Pr the
+// roughness follows the Phong exponent: GGX's alpha^2 = 2 / (Ns + 2), the
+// usual match of a Blinn-Phong lobe's width (Walter et al. 2007, eq. 33).
+void obj_physical_terms(const tinyobj::material_t& m, const std::string& path,
+                        const AssetContext& context, TextureCache& textures, Material& mat) {
+    const bool given = m.unknown_parameter.count(kPhysicalTermsGiven) > 0;
+    if (given) {
+        mat.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
+        mat.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+    } else {
+        const float alpha = std::sqrt(2.0f / (mat.shininess + 2.0f));
+        mat.roughness = std::clamp(std::sqrt(alpha), 0.0f, 1.0f);
+    }
+    std::shared_ptr<const Texture> roughness, metal;
+    if (!m.roughness_texname.empty())
+        roughness = material_texture(m.roughness_texname, "map_Pr", mat.name, path, context,
+                                     textures, true);
+    if (!m.metallic_texname.empty())
+        metal =
+            material_texture(m.metallic_texname, "map_Pm", mat.name, path, context, textures, true);
+    if (roughness || metal)
+        mat.metal_rough_map.texture = metal_rough_texture(roughness.get(), metal.get());
+    if (!m.normal_texname.empty())
+        mat.normal_map.texture =
+            material_texture(m.normal_texname, "norm", mat.name, path, context, textures, true);
 }
 
 Material obj_material(const tinyobj::material_t& m, const std::string& path,
@@ -335,10 +414,11 @@ Material obj_material(const tinyobj::material_t& m, const std::string& path,
     if (m.shininess > 0) mat.shininess = m.shininess;
     if (!m.diffuse_texname.empty()) {
         mat.base_color_map.texture =
-            diffuse_texture(m.diffuse_texname, mat.name, path, context, textures);
+            material_texture(m.diffuse_texname, "map_Kd", mat.name, path, context, textures);
         // map_Kd replaces Kd in most exporters' intent; many write Kd 0 0 0 with a map.
         if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
     }
+    obj_physical_terms(m, path, context, textures, mat);
     return mat;
 }
 

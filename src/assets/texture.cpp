@@ -26,8 +26,28 @@ const std::array<float, 256>& srgb8_table() {
     return table;
 }
 
+// The 256 bytes as numbers 0..1, for data textures.
+const std::array<float, 256>& unit8_table() {
+    static const std::array<float, 256> table = [] {
+        std::array<float, 256> t{};
+        for (int i = 0; i < 256; ++i) t[i] = static_cast<float>(i) / 255.0f;
+        return t;
+    }();
+    return table;
+}
+
+// What an 8-bit level's R, G and B bytes mean.
+const std::array<float, 256>& byte_table(Texture::Format format) {
+    return format == Texture::Format::data8 ? unit8_table() : srgb8_table();
+}
+
 uint8_t to_byte(float unit) {
     return static_cast<uint8_t>(std::lround(std::clamp(unit, 0.0f, 1.0f) * 255.0f));
+}
+
+uint32_t encode_data8(const glm::vec4& c) {
+    return uint32_t(to_byte(c.r)) | uint32_t(to_byte(c.g)) << 8 | uint32_t(to_byte(c.b)) << 16 |
+           uint32_t(to_byte(c.a)) << 24;
 }
 
 uint32_t encode_srgb8(const glm::vec4& c) {
@@ -37,13 +57,13 @@ uint32_t encode_srgb8(const glm::vec4& c) {
            uint32_t(to_byte(c.a)) << 24;
 }
 
-glm::vec4 decode_srgb8(uint32_t t, const std::array<float, 256>& table) {
+glm::vec4 decode_bytes8(uint32_t t, const std::array<float, 256>& table) {
     return {table[t & 0xff], table[(t >> 8) & 0xff], table[(t >> 16) & 0xff],
             static_cast<float>(t >> 24) * (1.0f / 255.0f)};
 }
 
 glm::vec4 texel_at(const TextureLevel& l, size_t i, const std::array<float, 256>& table) {
-    if (!l.srgb8.empty()) return decode_srgb8(l.srgb8[i], table);
+    if (!l.bytes8.empty()) return decode_bytes8(l.bytes8[i], table);
     const Rgba16F& h = l.half[i];
     return {half_to_float(h.r), half_to_float(h.g), half_to_float(h.b), half_to_float(h.a)};
 }
@@ -88,8 +108,8 @@ glm::vec2 texel_coordinates(const TextureLevel& l, const Sampler& s, glm::vec2 u
     return {x, y};
 }
 
-glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
-    const auto& table = srgb8_table();
+glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv,
+                  const std::array<float, 256>& table) {
     const glm::vec2 t = texel_coordinates(l, s, uv);
     if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
     // The texel whose square holds the point: floor(x + 0.5) of the centres.
@@ -98,8 +118,8 @@ glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
     return texel_at(l, static_cast<size_t>(y) * l.width + x, table);
 }
 
-glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
-    const auto& table = srgb8_table();
+glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv,
+                   const std::array<float, 256>& table) {
     const glm::vec2 t = texel_coordinates(l, s, uv);
     if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
     const float fx = std::floor(t.x), fy = std::floor(t.y);
@@ -117,13 +137,16 @@ glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv) {
     return top + (bottom - top) * ty;
 }
 
-glm::vec4 filtered(const TextureLevel& l, const Sampler& s, Filter filter, glm::vec2 uv) {
-    return filter == Filter::nearest ? nearest(l, s, uv) : bilinear(l, s, uv);
+glm::vec4 filtered(const TextureLevel& l, const Sampler& s, Filter filter, glm::vec2 uv,
+                   const std::array<float, 256>& table) {
+    return filter == Filter::nearest ? nearest(l, s, uv, table) : bilinear(l, s, uv, table);
 }
 
 void store(TextureLevel& l, Texture::Format format, size_t i, const glm::vec4& c) {
     if (format == Texture::Format::srgb8)
-        l.srgb8[i] = encode_srgb8(c);
+        l.bytes8[i] = encode_srgb8(c);
+    else if (format == Texture::Format::data8)
+        l.bytes8[i] = encode_data8(c);
     else
         l.half[i] = to_half(c);
 }
@@ -133,8 +156,8 @@ TextureLevel empty_level(int width, int height, Texture::Format format) {
     l.width = width;
     l.height = height;
     const size_t n = static_cast<size_t>(width) * height;
-    if (format == Texture::Format::srgb8)
-        l.srgb8.resize(n);
+    if (format != Texture::Format::half)
+        l.bytes8.resize(n);
     else
         l.half.resize(n);
     return l;
@@ -144,7 +167,7 @@ TextureLevel empty_level(int width, int height, Texture::Format format) {
 // linear light, rounding up; an odd last row or column is averaged with
 // itself.
 void add_mipmaps(std::vector<TextureLevel>& levels, Texture::Format format) {
-    const auto& table = srgb8_table();
+    const auto& table = byte_table(format);
     while (levels.back().width > 1 || levels.back().height > 1) {
         const TextureLevel& src = levels.back();
         const int w = src.width, h = src.height;
@@ -195,35 +218,58 @@ Texture Texture::from_base_level(Format format, TextureLevel base) {
 
 glm::vec4 Texture::texel(int level_index, int x, int y) const {
     const TextureLevel& l = level(level_index);
-    return texel_at(l, static_cast<size_t>(y) * l.width + x, srgb8_table());
+    return texel_at(l, static_cast<size_t>(y) * l.width + x, byte_table(format_));
+}
+
+Texture Texture::as_data() const {
+    if (!levels_ || format_ == Format::data8) return *this;
+    const TextureLevel& colour = level(0);
+    TextureLevel base =
+        empty_level(width, height, format_ == Format::srgb8 ? Format::data8 : format_);
+    if (format_ == Format::srgb8) {
+        base.bytes8 = colour.bytes8;  // the file's bytes, now read as numbers
+    } else {
+        // 16-bit levels hold linear light decoded from sRGB: encode back.
+        for (size_t i = 0; i < base.half.size(); ++i) {
+            const glm::vec4 c = texel_at(colour, i, srgb8_table());
+            base.half[i] = to_half(
+                glm::vec4(linear_to_srgb(c.r), linear_to_srgb(c.g), linear_to_srgb(c.b), c.a));
+        }
+    }
+    Texture data =
+        from_base_level(format_ == Format::srgb8 ? Format::data8 : format_, std::move(base));
+    data.sampler = sampler;
+    return data;
 }
 
 uint64_t Texture::bytes() const {
     uint64_t n = 0;
     for (int i = 0; i < level_count(); ++i)
-        n += level(i).srgb8.size() * sizeof(uint32_t) + level(i).half.size() * sizeof(Rgba16F);
+        n += level(i).bytes8.size() * sizeof(uint32_t) + level(i).half.size() * sizeof(Rgba16F);
     return n;
 }
 
 glm::vec4 Texture::sample(glm::vec2 uv) const {
     if (!levels_) return glm::vec4(1);
-    return filtered(level(0), sampler, sampler.mag, uv);
+    return filtered(level(0), sampler, sampler.mag, uv, byte_table(format_));
 }
 
 glm::vec4 Texture::sample(glm::vec2 uv, float lod) const {
     if (!levels_) return glm::vec4(1);
     if (!(lod > 0.0f)) return sample(uv);  // also NaN
-    if (!sampler.mipmaps || level_count() == 1) return filtered(level(0), sampler, sampler.min, uv);
+    const auto& table = byte_table(format_);
+    if (!sampler.mipmaps || level_count() == 1)
+        return filtered(level(0), sampler, sampler.min, uv, table);
     const float top = static_cast<float>(level_count() - 1);
-    if (lod >= top) return filtered(level(level_count() - 1), sampler, sampler.min, uv);
+    if (lod >= top) return filtered(level(level_count() - 1), sampler, sampler.min, uv, table);
     if (sampler.mip == Filter::nearest) {
         const int chosen = static_cast<int>(std::floor(lod + 0.5f));
-        return filtered(level(chosen), sampler, sampler.min, uv);
+        return filtered(level(chosen), sampler, sampler.min, uv, table);
     }
     const int fine_level = static_cast<int>(lod);
     const float t = lod - static_cast<float>(fine_level);
-    const glm::vec4 fine = filtered(level(fine_level), sampler, sampler.min, uv);
-    const glm::vec4 coarse = filtered(level(fine_level + 1), sampler, sampler.min, uv);
+    const glm::vec4 fine = filtered(level(fine_level), sampler, sampler.min, uv, table);
+    const glm::vec4 coarse = filtered(level(fine_level + 1), sampler, sampler.min, uv, table);
     return fine + (coarse - fine) * t;
 }
 
@@ -281,7 +327,7 @@ Texture texture_from_pixels(int width, int height, int channels, int bits, const
             const uint8_t* p = data + at;
             const uint32_t r = p[0], g = channels >= 3 ? p[1] : r, b = channels >= 3 ? p[2] : r;
             const uint32_t a = has_alpha ? p[channels - 1] : 255;
-            base.srgb8[i] = r | g << 8 | b << 16 | a << 24;
+            base.bytes8[i] = r | g << 8 | b << 16 | a << 24;
         } else {
             float v[4];
             for (int c = 0; c < channels; ++c) {

@@ -40,8 +40,10 @@ struct Sampler {
 struct TextureLevel {
     int width = 0;
     int height = 0;
-    std::vector<uint32_t> srgb8;  // R, G, B as sRGB bytes, A linear; R in the low byte
-    std::vector<Rgba16F> half;    // linear RGBA
+    // R, G, B, A bytes, R in the low byte: colour as sRGB and alpha linear
+    // (Format::srgb8), or all four linear (Format::data8).
+    std::vector<uint32_t> bytes8;
+    std::vector<Rgba16F> half;  // linear RGBA
 };
 
 class TextureBudget;
@@ -63,7 +65,10 @@ struct UvTransform {
 };
 
 struct Texture {
-    enum class Format { srgb8, half };
+    // data8: 8-bit texels that are numbers, not colours (normal, metal-rough
+    // and occlusion maps): read as byte / 255, and averaged as such in the
+    // mipmaps.
+    enum class Format { srgb8, data8, half };
 
     int width = 0;
     int height = 0;
@@ -78,6 +83,11 @@ struct Texture {
     const TextureLevel& level(int i) const { return (*levels_)[static_cast<size_t>(i)]; }
     // Linear RGBA of one texel of one level.
     glm::vec4 texel(int level, int x, int y) const;
+    // The same image read as data rather than colour (glTF's normal,
+    // metallic-roughness and occlusion maps are linear): level 0 keeps its
+    // values as stored in the file, and the mipmaps average those. A copy
+    // of an 8-bit image keeps its bytes exactly.
+    Texture as_data() const;
     // Bytes the texels of every level take.
     uint64_t bytes() const;
 

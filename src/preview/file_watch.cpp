@@ -36,7 +36,7 @@ WatchList scene_watch_list(const SceneDesc& scene) {
     for (const ObjectDesc& object : scene.objects) {
         if (object.style)
             for (const std::string& file : object.style->files) add_unique(list.files, file);
-        if (object.material.texture) add_unique(list.files, *object.material.texture);
+        for (const std::string& map : object.material.map_paths()) add_unique(list.files, map);
         if (object.mesh.empty()) continue;
         add_unique(list.files, object.mesh);
         const std::string folder = fs::path(object.mesh).parent_path().string();

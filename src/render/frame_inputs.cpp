@@ -20,6 +20,8 @@ std::vector<Material> frame_materials(const World& world, const FrameState& stat
         if (s.diffuse) mat.diffuse = *s.diffuse;
         if (s.specular) mat.specular = *s.specular;
         if (s.shininess) mat.shininess = *s.shininess;
+        if (s.metallic) mat.metallic = *s.metallic;
+        if (s.roughness) mat.roughness = *s.roughness;
     }
     return materials;
 }
@@ -94,6 +96,15 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     // Given straight, used premultiplied like every colour in the frame.
     const glm::vec4 background = scene_.style.background.value_or(scene_.output.background);
     in.background = glm::vec4(glm::vec3(background) * background.a, background.a);
+    if (world_.environment) {
+        const std::optional<EnvironmentDesc>& e = scene_.environment;
+        in.environment =
+            environment_at(world_.environment.get(), e ? facet::evaluate(e->intensity, at) : 1.0f,
+                           e ? facet::evaluate(e->rotation, at) : 0.0f);
+        in.environment_background = e && e->background;
+        in.environment_blur = e ? e->background_blur : 0.0f;
+        if (in.environment_background) in.background = glm::vec4(0.0f);
+    }
     in.depth_view_range = fit_depth_view_range(world_, in.state, in.camera);
     in.style_depth_range = scene_.style.depth_range.value_or(in.depth_view_range);
     return in;

@@ -14,6 +14,7 @@
 #include "render/camera.hpp"
 #include "render/style_eval.hpp"
 #include "render/world.hpp"
+#include "shade/model_pbr.hpp"
 #include "shade/style_state.hpp"
 
 namespace facet {
@@ -38,7 +39,14 @@ struct FrameInputs {
     std::vector<StyleState> styles;   // StylePlan::styles at this frame
     OutlineStyle outlines;            // when StylePlan::outlines; widths in sample pixels
     OcclusionStyle occlusion;         // when StylePlan::occlusion
-    glm::vec4 background;             // linear RGBA behind everything, premultiplied
+    // Linear RGBA behind everything, premultiplied; transparent black when
+    // the environment is the background (composited after shading).
+    glm::vec4 background;
+    // The `pbr` model's indirect light (map null: none), and whether it
+    // shows behind the scene, blurred by environment_blur (0..1).
+    EnvironmentLighting environment;
+    bool environment_background = false;
+    float environment_blur = 0.0f;
     // Near..far of the visible scene's bounding sphere, for grey depth
     // views (the depth PNG, unless output.depth_range is set).
     glm::vec2 depth_view_range;

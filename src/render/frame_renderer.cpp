@@ -3,6 +3,7 @@
 #include "post/resolve.hpp"
 #include "render/alpha_coverage.hpp"
 #include "render/crossing_stage.hpp"
+#include "render/environment_background_stage.hpp"
 #include "render/shade_lights.hpp"
 
 namespace facet {
@@ -94,13 +95,18 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
                 write_surface_passes(tile, rasterizer_, surface_in, out.surface);
         },
         alpha.test());
-    if (targets_.shading == ShadeResolution::pixels || stopped()) return;
-    apply_sample_stages(inputs, vertices, edge_mask);
-    ColorImage* lines = targets_.lines ? &sample_lines_ : nullptr;
-    resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
-                         {out.color, out.depth, targets_.alpha ? &out.alpha : nullptr,
-                          targets_.lines ? &out.lines : nullptr},
-                         pool_);
+    if (stopped()) return;
+    if (targets_.shading == ShadeResolution::samples) {
+        apply_sample_stages(inputs, vertices, edge_mask);
+        ColorImage* lines = targets_.lines ? &sample_lines_ : nullptr;
+        resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
+                             {out.color, out.depth, targets_.alpha ? &out.alpha : nullptr,
+                              targets_.lines ? &out.lines : nullptr},
+                             pool_);
+    }
+    if (inputs.environment_background)
+        composite_environment_background(out.color, inputs.camera, inputs.environment,
+                                         inputs.environment_blur, pool_);
 }
 
 FrameRenderer::FrameLights FrameRenderer::light(const FrameInputs& inputs,

@@ -8,8 +8,10 @@
 
 #include "core/color.hpp"
 #include "render/hatch_charts.hpp"
+#include "shade/brdf.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
+#include "shade/normal_map.hpp"
 #include "shade/style_math.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
@@ -30,7 +32,7 @@ Needs needs_of(const StyleState& style, bool gbuffer_normal) {
     const ShadingModel m = style.model;
     const bool lit = m == ShadingModel::flat || m == ShadingModel::phong ||
                      m == ShadingModel::blinn_phong || m == ShadingModel::palette ||
-                     m == ShadingModel::gooch || m == ShadingModel::toon;
+                     m == ShadingModel::gooch || m == ShadingModel::toon || m == ShadingModel::pbr;
     // Gouraud lights the vertices, but looks up shadows per pixel, which
     // needs the pixel's position and normal.
     const bool gouraud = m == ShadingModel::gouraud;
@@ -73,6 +75,24 @@ template <bool Single>
         v = simd::splat(value);
     else
         v = mask ? simd::splat(value) : v;
+}
+
+// The `pbr` model's terms of a material (shade/model_pbr.hpp): the
+// dielectric's reflectances from its ior and KHR_materials_specular
+// (f0 = min(f0(ior) * colour, 1) * weight, f90 = weight), no occlusion yet.
+template <bool Single>
+[[gnu::always_inline]] inline void put_physical_terms(const Material& m, vi mask, bool first,
+                                                      PbrLanes& p) {
+    put<Single>(p.metallic, mask, m.metallic, first);
+    put<Single>(p.roughness, mask, m.roughness, first);
+    put<Single>(p.occlusion, mask, 1.0f, first);
+    const float f0 = pbr::f0_from_ior(m.ior);
+    for (int a = 0; a < 3; ++a)
+        put<Single>(p.f0[a], mask, std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight,
+                    first);
+    put<Single>(p.f90, mask, m.specular_weight, first);
+    put<Single>(p.clearcoat, mask, m.clearcoat, first);
+    put<Single>(p.clearcoat_roughness, mask, m.clearcoat_roughness, first);
 }
 
 // The corners' positions, normals and Gouraud light, and the material's
@@ -124,6 +144,8 @@ template <bool Single>
         }
         if (needs.position)
             put<Single>(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
+        if (style.model == ShadingModel::pbr)
+            put_physical_terms<Single>(m, mask, first, b.lanes.pbr);
         for (int a = 0; a < 3; ++a)
             put<Single>(b.lanes.albedo[a], mask,
                         style.base_color ? (*style.base_color)[a] : m.color[a], first);
@@ -136,6 +158,9 @@ template <bool Single>
                 b.has_colors[lane] = draw.has_colors;
             }
         b.any_texture = b.any_texture || m.base_color_map;
+        b.any_physical_map = b.any_physical_map || m.metal_rough_map || m.occlusion_map ||
+                             m.normal_map || m.specular_weight_map || m.specular_color_map ||
+                             m.clearcoat_map || m.clearcoat_roughness_map;
         b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
         b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
         b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
@@ -204,6 +229,7 @@ void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolat
                                                    int group_count, ShadeBatch& b) {
     CornerLanes c;
     b.any_texture = b.any_vertex_colors = b.any_emission = b.any_shadow_catcher = false;
+    b.any_physical_map = false;
     b.any_fade = false;
     if (group_count == 1)
         gather_groups<true>(in, style, needs, groups, group_count, b, c);
@@ -227,6 +253,8 @@ void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolat
         const vi facing_away = c.back > simd::splat(0.0f);
         for (int a = 0; a < 3; ++a) b.normal[a] = facing_away ? -b.normal[a] : b.normal[a];
         s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
+        if (style.model == ShadingModel::pbr)
+            for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a] = b.normal[a];
     }
     if (needs.position)
         s.px = interpolate(c.p, 0), s.py = interpolate(c.p, 1), s.pz = interpolate(c.p, 2);
@@ -283,6 +311,64 @@ void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
         if (!m.base_color_map) continue;
         const glm::vec4 texel = sample_slot(in, b, i, m.base_color_map);
         for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
+    }
+}
+
+// The `pbr` model's maps, lane by lane (glTF 2.0 §3.9): metallic-roughness
+// (B metal, G roughness), occlusion (R, blended by its strength),
+// KHR_materials_specular (A weight, RGB colour) and clearcoat (R strength,
+// G roughness), each multiplying its factor.
+void apply_physical_maps(const ShadeInputs& in, ShadeBatch& b) {
+    PbrLanes& p = b.lanes.pbr;
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        if (m.metal_rough_map) {
+            const glm::vec4 t = sample_slot(in, b, i, m.metal_rough_map);
+            p.roughness[i] *= t.g;
+            p.metallic[i] *= t.b;
+        }
+        if (m.occlusion_map)
+            p.occlusion[i] =
+                1.0f + m.occlusion_strength * (sample_slot(in, b, i, m.occlusion_map).r - 1.0f);
+        if (m.specular_weight_map || m.specular_color_map) {
+            const float weight =
+                m.specular_weight_map ? sample_slot(in, b, i, m.specular_weight_map).a : 1.0f;
+            const glm::vec3 tint = m.specular_color_map
+                                       ? glm::vec3(sample_slot(in, b, i, m.specular_color_map))
+                                       : glm::vec3(1.0f);
+            const float f0 = pbr::f0_from_ior(m.ior);
+            for (int a = 0; a < 3; ++a)
+                p.f0[a][i] =
+                    std::min(f0 * m.specular_color[a] * tint[a], 1.0f) * m.specular_weight * weight;
+            p.f90[i] = m.specular_weight * weight;
+        }
+        if (m.clearcoat_map) p.clearcoat[i] *= sample_slot(in, b, i, m.clearcoat_map).r;
+        if (m.clearcoat_roughness_map)
+            p.clearcoat_roughness[i] *= sample_slot(in, b, i, m.clearcoat_roughness_map).g;
+    }
+}
+
+// Normal maps turn the shading normal, lane by lane, in the tangent frame
+// the vertices carry (shade/normal_map.hpp). The G-buffer's normal (outlines,
+// occlusion, the normal pass) turns with it.
+void apply_normal_maps(const ShadeInputs& in, ShadeBatch& b) {
+    const TransformedVertices& v = in.vertices;
+    if (v.world_tangent.empty()) return;
+    SurfaceBatch& s = b.lanes.surface;
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        if (!m.normal_map) continue;
+        const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
+        const glm::vec3 bary(b.sample.bary[0][i], b.sample.bary[1][i], b.sample.bary[2][i]);
+        const glm::vec4 tangent = bary[0] * v.world_tangent[c[0]] +
+                                  bary[1] * v.world_tangent[c[1]] + bary[2] * v.world_tangent[c[2]];
+        const bool back = b.setup[i]->back_facing != 0;
+        const glm::vec3 shown(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+        const glm::vec3 front = normalise_or(back ? -shown : shown, glm::vec3(0, 1, 0));
+        const glm::vec3 texel(sample_slot(in, b, i, m.normal_map));
+        const glm::vec3 n = mapped_normal(front, tangent, back, texel, m.normal_scale);
+        for (int a = 0; a < 3; ++a) b.normal[a][i] = n[a];
+        s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
     }
 }
 
@@ -435,7 +521,12 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
     if (b.any_texture && !style.base_color) apply_textures(in, b);
     if (b.any_vertex_colors && !style.base_color) apply_vertex_colors(in, b);
-    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range};
+    if (b.any_physical_map && style.model == ShadingModel::pbr) {
+        apply_physical_maps(in, b);
+        apply_normal_maps(in, b);
+    }
+    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
+                                 &in.frame.environment};
     if (has_layers(style)) {
         finish_layers(in, style, context, b);
     } else {

@@ -46,6 +46,7 @@ struct ShadeBatch {
     bool has_uvs[simd::kLanes];
     bool has_colors[simd::kLanes];
     bool any_texture, any_vertex_colors, any_emission, any_shadow_catcher, any_fade;
+    bool any_physical_map;  // the `pbr` model's maps
     SurfaceLanes lanes;
 };
 

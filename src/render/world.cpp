@@ -17,8 +17,54 @@
 namespace facet {
 namespace {
 
-Material resolve_material(const Material& base, const MaterialDesc& desc,
-                          std::map<std::string, std::shared_ptr<const Texture>>& textures,
+using TextureFiles = std::map<std::string, std::shared_ptr<const Texture>>;
+
+// A map a scene material names, read once per file and meaning (a file
+// used both as a colour and as data is read twice).
+TextureSlot scene_map(const MaterialDesc::Map& map, bool data, TextureFiles& textures,
+                      TextureBudget& budget) {
+    auto& colour = textures[map.path];
+    if (!colour) {
+        try {
+            colour = std::make_shared<Texture>(load_texture(map.path, &budget));
+        } catch (const Error& e) {
+            fail_input(map.at, "", e.what());
+        }
+    }
+    TextureSlot slot;
+    slot.texture = colour;
+    if (data) {
+        auto& as_data = textures["data:" + map.path];
+        if (!as_data) as_data = std::make_shared<Texture>(colour->as_data());
+        slot.texture = as_data;
+    }
+    return slot;
+}
+
+// The `pbr` model's keys over what the file gave.
+void resolve_physical_terms(const MaterialDesc& desc, TextureFiles& textures, TextureBudget& budget,
+                            Material& m) {
+    if (desc.metallic) m.metallic = desc.metallic->value;
+    if (desc.roughness) m.roughness = desc.roughness->value;
+    if (desc.normal_scale) m.normal_scale = *desc.normal_scale;
+    if (desc.occlusion_strength) m.occlusion_strength = *desc.occlusion_strength;
+    if (desc.ior) m.ior = *desc.ior;
+    if (desc.clearcoat) m.clearcoat = *desc.clearcoat;
+    if (desc.clearcoat_roughness) m.clearcoat_roughness = *desc.clearcoat_roughness;
+    if (desc.normal_map) m.normal_map = scene_map(*desc.normal_map, true, textures, budget);
+    if (desc.occlusion_map)
+        m.occlusion_map = scene_map(*desc.occlusion_map, true, textures, budget);
+    if (desc.metal_rough_map)
+        m.metal_rough_map = scene_map(*desc.metal_rough_map, true, textures, budget);
+    if (desc.emissive_map) {
+        m.emissive_map = scene_map(*desc.emissive_map, false, textures, budget);
+        // glTF's rule: the map multiplies the factor, which defaults to 0
+        // there; a scene that gives a map without a factor means it to glow.
+        if (!desc.emissive && m.emissive == glm::vec3(0)) m.emissive = glm::vec3(1);
+    }
+}
+
+Material resolve_material(const Material& base, const MaterialDesc& desc, TextureFiles& textures,
                           TextureBudget& budget) {
     Material m = base;
     // Animated values start at their first key; frames update them.
@@ -32,24 +78,20 @@ Material resolve_material(const Material& base, const MaterialDesc& desc,
     if (desc.unlit) m.unlit = *desc.unlit;
     if (desc.shadow_catcher) m.shadow_catcher = *desc.shadow_catcher;
     if (desc.fade) m.fade_start = desc.fade->x, m.fade_end = desc.fade->y;
-    if (desc.texture) {
-        auto& slot = textures[*desc.texture];
-        if (!slot) {
-            try {
-                slot = std::make_shared<Texture>(load_texture(*desc.texture, &budget));
-            } catch (const Error& e) {
-                fail_input(desc.texture_at, "", e.what());
-            }
+    if (desc.texture)
+        m.base_color_map.texture = scene_map(*desc.texture, false, textures, budget).texture;
+    resolve_physical_terms(desc, textures, budget, m);
+    // uv_scale multiplies the coordinates the file's mapping gives, and
+    // wrap replaces its samplers', for every map alike.
+    for (TextureSlot* slot : {&m.base_color_map, &m.normal_map, &m.occlusion_map,
+                              &m.metal_rough_map, &m.emissive_map}) {
+        if (!*slot) continue;
+        if (desc.uv_scale) slot->transform = slot->transform.scaled(glm::dvec2(*desc.uv_scale));
+        if (desc.wrap) {
+            auto copy = std::make_shared<Texture>(*slot->texture);
+            copy->sampler.wrap_s = copy->sampler.wrap_t = *desc.wrap;
+            slot->texture = copy;
         }
-        m.base_color_map.texture = slot;
-    }
-    // Multiplies the coordinates the file's mapping gives.
-    if (desc.uv_scale)
-        m.base_color_map.transform = m.base_color_map.transform.scaled(glm::dvec2(*desc.uv_scale));
-    if (desc.wrap && m.base_color_map) {
-        auto copy = std::make_shared<Texture>(*m.base_color_map.texture);
-        copy->sampler.wrap_s = copy->sampler.wrap_t = *desc.wrap;
-        m.base_color_map.texture = copy;
     }
     return m;
 }
@@ -278,6 +320,59 @@ std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
     }
 }
 
+// The style that draws each object: its own, else the scene's.
+const StyleDesc& object_style(const SceneDesc& scene, const ObjectDesc& obj) {
+    return obj.style ? *obj.style : scene.style;
+}
+
+bool draws_pbr(const SceneDesc& scene) {
+    if (scene.style.shading == ShadingModel::pbr) return true;
+    return std::any_of(scene.objects.begin(), scene.objects.end(), [&](const ObjectDesc& obj) {
+        return obj.visible && object_style(scene, obj).shading == ShadingModel::pbr;
+    });
+}
+
+// The environment the scene's `pbr` styles and background read, made once.
+std::shared_ptr<const pbr::PrefilteredEnvironment> scene_environment(const SceneDesc& scene,
+                                                                     Warnings& warnings) {
+    const std::optional<EnvironmentDesc>& e = scene.environment;
+    const bool lights = draws_pbr(scene), shown = e && e->background;
+    if (e && e->source != EnvironmentDesc::Source::none && !lights && !shown)
+        warnings.push_back({e->where, "environment",
+                            "lights only `shading: pbr` styles, and the scene has none: it is "
+                            "not drawn (give `background: true` to show it behind the scene)"});
+    if ((!lights && !shown) || (e && e->source == EnvironmentDesc::Source::none)) return nullptr;
+    if (!e || e->source == EnvironmentDesc::Source::studio) return pbr::studio_environment();
+    if (e->source == EnvironmentDesc::Source::color) return pbr::uniform_environment(e->color);
+    try {
+        return pbr::load_environment(e->file, warnings);
+    } catch (const Error& error) {
+        fail_input(e->file_at, "environment.file", error.what());
+    }
+}
+
+// Objects drawn by another model than `pbr` lose their materials'
+// physically based inputs: said once per object.
+void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
+                               const std::vector<Material>& materials, Warnings& warnings) {
+    const StyleDesc& style = object_style(scene, scene.objects[object]);
+    if (style.shading == ShadingModel::pbr) return;
+    bool maps = false, metal = false;
+    for (const Material& m : materials) {
+        maps = maps || m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f;
+        metal = metal || m.metallic > 0.0f;
+    }
+    if (!maps && !metal) return;
+    const ObjectDesc& obj = scene.objects[object];
+    warnings.push_back(
+        {obj.where, "objects." + std::to_string(object),
+         "'" + obj.name + "' has physically based materials (" +
+             std::string(maps ? "normal, occlusion, metal-rough or clearcoat maps" : "metal") +
+             ") that only `shading: pbr` draws: under " + shading_model_name(style.shading) +
+             " their relief, occlusion and metal are lost, and roughness becomes a Phong "
+             "highlight"});
+}
+
 }  // namespace
 
 World build_world(const SceneDesc& scene) {
@@ -306,6 +401,10 @@ World build_world(const SceneDesc& scene) {
             world.materials.push_back(resolve_material(m, obj.material, textures, texture_budget));
             world.material_object.push_back(o);
         }
+        warn_unlit_physical_terms(
+            scene, o,
+            std::vector<Material>(world.materials.begin() + material_base, world.materials.end()),
+            world.warnings);
         if (obj.animation) {
             const std::string key = "objects." + std::to_string(o) + ".animation";
             try {
@@ -320,6 +419,7 @@ World build_world(const SceneDesc& scene) {
         for (const MeshPart& part : mesh->parts) append_part(world, part, o, material_base, extras);
     }
     world.file_cameras = load_file_cameras(scene, assets, world.warnings);
+    world.environment = scene_environment(scene, world.warnings);
     if (world.positions.size() >= 0xffffffffu)
         throw Error(ExitCode::invalid_input, "the scene has more than 4 billion vertices");
     return world;

@@ -14,6 +14,7 @@
 #include "assets/mesh.hpp"
 #include "cloth/cloth.hpp"
 #include "scene/scene_desc.hpp"
+#include "shade/environment_map.hpp"
 
 namespace facet {
 
@@ -68,6 +69,9 @@ struct World {
     std::vector<uint8_t> casts_shadows;
     std::vector<float> receives_shadows;
     Warnings warnings;  // from mesh loading, for the user
+    // The scene's environment, prefiltered once for every frame; null when
+    // nothing draws it (no `pbr` style and no environment background).
+    std::shared_ptr<const pbr::PrefilteredEnvironment> environment;
 
     // Model-space vertex data of all draws, concatenated.
     std::vector<glm::vec3> positions;

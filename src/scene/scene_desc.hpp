@@ -157,8 +157,13 @@ LightDesc default_key_light();
 struct MaterialDesc {
     std::optional<Animated<glm::vec3>> color;
     std::optional<Animated<float>> ambient, diffuse, specular, shininess;
-    std::optional<std::string> texture;  // resolved against the scene file
-    SourceLocation texture_at;
+    // A file the material reads, resolved against the scene file, with
+    // where the scene names it.
+    struct Map {
+        std::string path;
+        SourceLocation at;
+    };
+    std::optional<Map> texture;         // the base colour map
     std::optional<Wrap> wrap;           // both axes
     std::optional<glm::vec2> uv_scale;  // texture repeats across the surface
     std::optional<bool> double_sided;
@@ -166,6 +171,19 @@ struct MaterialDesc {
     std::optional<bool> unlit;           // the colour alone, without lights
     std::optional<bool> shadow_catcher;  // only the shadows on it, over the background
     std::optional<glm::vec2> fade;       // [start, end]: fades into the background between
+    // The physically based terms (style pbr, docs/pbr.md).
+    std::optional<Animated<float>> metallic, roughness;
+    std::optional<float> normal_scale, occlusion_strength, ior, clearcoat, clearcoat_roughness;
+    std::optional<Map> normal_map, occlusion_map, metal_rough_map, emissive_map;
+
+    // The paths of every map the material reads.
+    std::vector<std::string> map_paths() const {
+        std::vector<std::string> paths;
+        for (const auto* map :
+             {&texture, &normal_map, &occlusion_map, &metal_rough_map, &emissive_map})
+            if (*map) paths.push_back((*map)->path);
+        return paths;
+    }
 };
 
 // Which keys apply to which type: docs/scene-format.md, "Primitives". The
@@ -241,6 +259,23 @@ struct AssetSettings {
     uint64_t texture_budget_bytes = uint64_t(1) << 30;
 };
 
+// The light that surrounds the scene (docs/pbr.md, "Environment"): an
+// image, a colour or facet's studio, lighting the `pbr` model.
+struct EnvironmentDesc {
+    enum class Source { studio, color, file, none };
+    Source source = Source::studio;
+    glm::vec3 color{1.0f};  // Source::color: linear RGB radiance
+    std::string file;       // Source::file: an equirectangular .hdr or .exr
+    SourceLocation file_at;
+    Animated<float> intensity = 1.0f;
+    Animated<float> rotation = 0.0f;  // degrees about +Y
+    // Shown behind the scene instead of the background colour, blurred
+    // this much (0 sharp .. 1 the roughest level).
+    bool background = false;
+    float background_blur = 0.0f;
+    SourceLocation where;
+};
+
 struct SceneDesc {
     std::string path;       // the scene file as given
     std::string name;       // its stem, used in output paths
@@ -251,6 +286,9 @@ struct SceneDesc {
     std::vector<LightDesc> lights;
     std::vector<ObjectDesc> objects;
     AssetSettings assets;
+    // The scene's `environment:`; without one, a `pbr` style is lit by the
+    // studio and the other styles by their lights alone.
+    std::optional<EnvironmentDesc> environment;
     // Values read but without effect, with where they are (printed by the CLI).
     Warnings warnings;
 };

@@ -15,7 +15,10 @@
 namespace facet {
 namespace fs = std::filesystem;
 
-LightDesc parse_light(const Field& f);  // light_parser.cpp
+LightDesc parse_light(const Field& f);                                     // light_parser.cpp
+MaterialDesc parse_material(const Field& f, const std::string& base_dir);  // material_parser.cpp
+EnvironmentDesc parse_environment(const Field& f,
+                                  const std::string& base_dir);  // environment_parser.cpp
 
 namespace {
 
@@ -23,19 +26,6 @@ std::string format_number(double value) {
     std::ostringstream s;
     s << value;
     return s.str();
-}
-
-std::string resolve_path(const std::string& base_dir, const std::string& relative) {
-    fs::path p(relative);
-    if (p.is_absolute()) return p.lexically_normal().string();
-    return (fs::path(base_dir) / p).lexically_normal().string();
-}
-
-std::string existing_file(const Field& field, const std::string& base_dir) {
-    std::string path = resolve_path(base_dir, field.text());
-    const std::string problem = input_file_problem(path);
-    if (!problem.empty()) field.fail(path + ": " + problem);
-    return path;
 }
 
 glm::vec3 nonzero_direction(const Field& field) {
@@ -291,51 +281,6 @@ CameraDesc parse_camera(const Field& f, bool named, const std::string& base_dir,
             f.fail("camera position and target are the same point");
     }
     return cam;
-}
-
-MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
-    MaterialDesc m;
-    f.check_keys({"color", "ambient", "diffuse", "specular", "ka", "kd", "ks", "shininess",
-                  "texture", "wrap", "uv_scale", "double_sided", "emissive", "unlit",
-                  "shadow_catcher", "fade"});
-    if (f.has("color")) m.color = f["color"].animated_color3();
-    // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
-    auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
-        if (f.has(name) && f.has(alias))
-            f[alias].fail("'" + std::string(alias) + "' and '" + name +
-                          "' are the same value; give only one of them");
-        if (f.has(name)) return f[name];
-        if (f.has(alias)) return f[alias];
-        return std::nullopt;
-    };
-    if (auto v = coefficient("ambient", "ka")) m.ambient = v->animated_number(0, 1000);
-    if (auto v = coefficient("diffuse", "kd")) m.diffuse = v->animated_number(0, 1000);
-    if (auto v = coefficient("specular", "ks")) m.specular = v->animated_number(0, 1000);
-    if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
-    if (f.has("texture")) {
-        m.texture = existing_file(f["texture"], base_dir);
-        m.texture_at = f["texture"].where();
-    }
-    if (f.has("wrap"))
-        m.wrap =
-            std::map<std::string, Wrap>{
-                {"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"mirror", Wrap::mirror}}
-                .at(f["wrap"].choice({"repeat", "clamp", "mirror"}));
-    if (f.has("uv_scale")) {
-        Field s = f["uv_scale"];
-        m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();
-    }
-    if (f.has("double_sided")) m.double_sided = f["double_sided"].boolean();
-    if (f.has("emissive")) m.emissive = f["emissive"].color3();
-    if (f.has("unlit")) m.unlit = f["unlit"].boolean();
-    if (f.has("shadow_catcher")) m.shadow_catcher = f["shadow_catcher"].boolean();
-    if (f.has("fade")) {
-        const glm::vec2 fade = f["fade"].vec2();
-        if (!(fade.x >= 0.0f && fade.y > fade.x && std::isfinite(fade.y)))
-            f["fade"].fail("must be [start, end] with 0 <= start < end");
-        m.fade = fade;
-    }
-    return m;
 }
 
 // The keys each primitive type takes besides `type` (docs/scene-format.md).
@@ -682,8 +627,11 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     scene.directory = fs::path(path).parent_path().string();
     if (scene.directory.empty()) scene.directory = ".";
 
-    root.check_keys({"output", "style", "camera", "cameras", "lights", "objects", "assets"});
+    root.check_keys(
+        {"output", "style", "camera", "cameras", "lights", "objects", "assets", "environment"});
     if (root.has("output")) scene.output = parse_output(root["output"]);
+    if (root.has("environment"))
+        scene.environment = parse_environment(root["environment"], scene.directory);
     if (root.has("assets")) scene.assets = parse_assets(root["assets"]);
     StyleContext style_context{options.style_dirs, scene.directory};
     style_context.style_dirs.push_back((fs::path(scene.directory) / "styles").string());
@@ -697,6 +645,11 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         std::vector<std::string> visiting;
         apply_style_layer(root_field(layer)["style"], scene.style, style_context, visiting);
     }
+    // Physically based styles are made for a product's tone curve: the
+    // scene's own `tonemap:` wins.
+    if (scene.style.shading == ShadingModel::pbr &&
+        !(root.has("output") && root["output"].has("tonemap")))
+        scene.output.display.tonemap = Tonemap::neutral;
     if (root.has("camera") && root.has("cameras"))
         root["cameras"].fail("give either `camera` (one) or `cameras` (a named list), not both");
     if (root.has("cameras")) {

@@ -26,6 +26,7 @@ enum class ShadingModel {
     palette,  // the seed-000 method: two-colour diffuse, cels, hatching
     gooch,    // Gooch et al. 1998 warm/cool
     toon,     // bands, toon highlight, rim light
+    pbr,      // glTF's metallic-roughness BRDF, lit by lights and an environment (docs/pbr.md)
 };
 
 struct ToonBandDesc {

@@ -32,6 +32,7 @@ constexpr ShadingName kShadingNames[] = {
     {ShadingModel::unlit, "unlit"},   {ShadingModel::depth, "depth"},
     {ShadingModel::normal, "normal"}, {ShadingModel::palette, "palette"},
     {ShadingModel::gooch, "gooch"},   {ShadingModel::toon, "toon"},
+    {ShadingModel::pbr, "pbr"},
 };
 
 ShadingModel parse_shading(const Field& f) {

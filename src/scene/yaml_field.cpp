@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 
@@ -407,6 +408,15 @@ void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides) 
         }
         doc.overridden[walked] = ov.origin;
     }
+}
+
+std::string existing_file(const Field& field, const std::string& base_dir) {
+    std::filesystem::path path(field.text());
+    if (!path.is_absolute()) path = std::filesystem::path(base_dir) / path;
+    const std::string resolved = path.lexically_normal().string();
+    const std::string problem = input_file_problem(resolved);
+    if (!problem.empty()) field.fail(resolved + ": " + problem);
+    return resolved;
 }
 
 }  // namespace facet

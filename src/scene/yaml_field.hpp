@@ -101,6 +101,10 @@ class Field {
 
 Field root_field(const std::shared_ptr<YamlDocument>& doc);
 
+// The file a path value names, resolved against `base_dir` (the scene's or
+// style's folder); fails at the value when it is not a readable file.
+std::string existing_file(const Field& field, const std::string& base_dir);
+
 // Applies command-line overrides to the document, remembering their origin.
 struct Override;
 void apply_overrides(YamlDocument& doc, const std::vector<Override>& overrides);

@@ -1,6 +1,5 @@
 #include "shade/paper_grain.hpp"
 
-
 #include "core/error.hpp"
 #include "core/integer_hash.hpp"
 
@@ -23,7 +22,8 @@ float lattice_value(uint32_t seed, int octave, int i, int j) {
 
 std::vector<float> make_paper_grain(const PaperGrainParams& p) {
     if (p.size < 1 || p.cells < 1 || p.octaves < 1 || p.size % p.cells != 0)
-        throw Error(ExitCode::invalid_input, "paper grain: size must be a multiple of cells, both >= 1");
+        throw Error(ExitCode::invalid_input,
+                    "paper grain: size must be a multiple of cells, both >= 1");
     std::vector<float> grain(static_cast<size_t>(p.size) * p.size, 0.0f);
     float amplitude = 1.0f, total = 0.0f;
     for (int octave = 0, period = p.cells; octave < p.octaves && period <= p.size;

@@ -70,6 +70,8 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
                 },
                 out);
             return;
+        case ShadingModel::pbr:
+            return shade_pbr(in, context, out);
         case ShadingModel::toon:
             shade_stylised(
                 in, context,

@@ -11,6 +11,7 @@
 
 #include "shade/lighting.hpp"
 #include "shade/lighting_batch.hpp"
+#include "shade/model_pbr.hpp"
 #include "shade/style_state.hpp"
 
 namespace facet {
@@ -25,6 +26,7 @@ struct SurfaceLanes {
     simd::vf depth;      // linear view depth
     // Gouraud: the vertex lighting interpolated, diffuse and specular RGB.
     simd::vf vertex_diffuse[3], vertex_specular[3];
+    PbrLanes pbr;  // the `pbr` model only
 
     glm::vec3 albedo_at(int lane) const {
         return {albedo[0][lane], albedo[1][lane], albedo[2][lane]};
@@ -46,6 +48,7 @@ struct ShadingContext {
     glm::vec3 eye;                       // camera position, world space
     std::span<const ShadeLight> lights;  // lights[0] is the stylised models' key light
     glm::vec2 depth_range;               // the depth view's near..far
+    const EnvironmentLighting* environment = nullptr;  // the `pbr` model's indirect light
 };
 
 void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,

@@ -1,0 +1,105 @@
+// `material:` of an object -> MaterialDesc (docs/scene-format.md,
+// "Materials"; the physically based keys in docs/pbr.md).
+#include <cmath>
+#include <map>
+
+#include "scene/scene_desc.hpp"
+#include "scene/yaml_field.hpp"
+
+namespace facet {
+namespace {
+
+// The keys of the `pbr` model (docs/pbr.md, "Material keys").
+void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialDesc& m) {
+    if (f.has("metallic")) m.metallic = f["metallic"].animated_number(0, 1);
+    if (f.has("roughness")) m.roughness = f["roughness"].animated_number(0, 1);
+    auto number = [&](const char* key, std::optional<float>& out, double low, double high) {
+        if (f.has(key)) out = static_cast<float>(f[key].number(low, high));
+    };
+    number("normal_scale", m.normal_scale, -10, 10);
+    number("occlusion_strength", m.occlusion_strength, 0, 1);
+    number("ior", m.ior, 1, 10);
+    number("clearcoat", m.clearcoat, 0, 1);
+    number("clearcoat_roughness", m.clearcoat_roughness, 0, 1);
+    auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
+        if (f.has(key)) out = MaterialDesc::Map{existing_file(f[key], base_dir), f[key].where()};
+    };
+    map("normal_map", m.normal_map);
+    map("occlusion_map", m.occlusion_map);
+    map("metal_rough_map", m.metal_rough_map);
+    map("emissive_map", m.emissive_map);
+    if (f.has("normal_scale") && !f.has("normal_map"))
+        f["normal_scale"].fail("scales the normal map; give `normal_map:` too");
+}
+
+}  // namespace
+
+MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
+    MaterialDesc m;
+    f.check_keys({"color",
+                  "ambient",
+                  "diffuse",
+                  "specular",
+                  "ka",
+                  "kd",
+                  "ks",
+                  "shininess",
+                  "texture",
+                  "wrap",
+                  "uv_scale",
+                  "double_sided",
+                  "emissive",
+                  "unlit",
+                  "shadow_catcher",
+                  "fade",
+                  "metallic",
+                  "roughness",
+                  "normal_map",
+                  "normal_scale",
+                  "occlusion_map",
+                  "occlusion_strength",
+                  "metal_rough_map",
+                  "emissive_map",
+                  "ior",
+                  "clearcoat",
+                  "clearcoat_roughness"});
+    if (f.has("color")) m.color = f["color"].animated_color3();
+    // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
+    auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {
+        if (f.has(name) && f.has(alias))
+            f[alias].fail("'" + std::string(alias) + "' and '" + name +
+                          "' are the same value; give only one of them");
+        if (f.has(name)) return f[name];
+        if (f.has(alias)) return f[alias];
+        return std::nullopt;
+    };
+    if (auto v = coefficient("ambient", "ka")) m.ambient = v->animated_number(0, 1000);
+    if (auto v = coefficient("diffuse", "kd")) m.diffuse = v->animated_number(0, 1000);
+    if (auto v = coefficient("specular", "ks")) m.specular = v->animated_number(0, 1000);
+    if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
+    if (f.has("texture"))
+        m.texture = MaterialDesc::Map{existing_file(f["texture"], base_dir), f["texture"].where()};
+    if (f.has("wrap"))
+        m.wrap =
+            std::map<std::string, Wrap>{
+                {"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"mirror", Wrap::mirror}}
+                .at(f["wrap"].choice({"repeat", "clamp", "mirror"}));
+    if (f.has("uv_scale")) {
+        Field s = f["uv_scale"];
+        m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();
+    }
+    if (f.has("double_sided")) m.double_sided = f["double_sided"].boolean();
+    if (f.has("emissive")) m.emissive = f["emissive"].color3();
+    if (f.has("unlit")) m.unlit = f["unlit"].boolean();
+    if (f.has("shadow_catcher")) m.shadow_catcher = f["shadow_catcher"].boolean();
+    if (f.has("fade")) {
+        const glm::vec2 fade = f["fade"].vec2();
+        if (!(fade.x >= 0.0f && fade.y > fade.x && std::isfinite(fade.y)))
+            f["fade"].fail("must be [start, end] with 0 <= start < end");
+        m.fade = fade;
+    }
+    parse_physical_terms(f, base_dir, m);
+    return m;
+}
+
+}  // namespace facet

@@ -1,0 +1,65 @@
+#pragma once
+// The physically based model (`shading: pbr`): glTF 2.0's metallic-roughness
+// BRDF (shade/brdf.hpp) lit by the scene's lights and by an environment
+// (shade/environment_map.hpp). docs/pbr.md gives every formula; in short,
+// per point:
+//
+//   direct   = sum over lights of pi * radiance * visibility * f(v, l) (n.l)
+//   indirect = occlusion * intensity * (diffuse weight * c_diff * E(n) / pi
+//                                      + prefiltered(r, roughness) * specular albedo)
+//
+// A light of intensity 1 facing a white Lambertian surface gives it
+// radiance 1, as the Phong models do: facet's light intensities are
+// irradiance over pi, so switching a scene between `phong` and `pbr` keeps
+// its brightness. The environment is radiance, as its file gives it.
+#include <glm/vec3.hpp>
+
+#include "core/simd_math.hpp"
+
+namespace facet {
+
+namespace pbr {
+struct PrefilteredEnvironment;  // shade/environment_map.hpp
+}
+
+struct SurfaceLanes;
+struct ShadedLanes;
+struct ShadingContext;
+
+// The `pbr` model's terms of each lane, filled only for it
+// (render/shade_batch.cpp), textures applied.
+struct PbrLanes {
+    simd::vf metallic, roughness;
+    simd::vf occlusion;  // of indirect light: 1 none, 0 all
+    // The dielectric's reflectance at normal incidence (from the ior, times
+    // KHR_materials_specular's colour and weight) and at grazing (the weight).
+    simd::vf f0[3], f90;
+    simd::vf clearcoat, clearcoat_roughness;
+    // The coat's normal: the surface's before its normal map (the coat is
+    // smooth lacquer over the relief), on the viewer's side, any length.
+    simd::vf coat_normal[3];
+};
+
+// The environment at one frame: the prefiltered maps with the scene's keyed
+// intensity and rotation about +Y.
+struct EnvironmentLighting {
+    const pbr::PrefilteredEnvironment* map = nullptr;  // none: no indirect light
+    float intensity = 1.0f;
+    // cos and sin of the rotation: a feature the map has at direction d is
+    // seen at R(rotation) d, so world directions turn by -rotation for lookups.
+    float cos_rotation = 1.0f, sin_rotation = 0.0f;
+
+    glm::vec3 to_map(const glm::vec3& d) const {
+        return {cos_rotation * d.x - sin_rotation * d.z, d.y,
+                sin_rotation * d.x + cos_rotation * d.z};
+    }
+};
+
+// The rotation's cosine and sine, for EnvironmentLighting, from exact
+// series (core/exact_trig.hpp), so they do not depend on the CPU.
+EnvironmentLighting environment_at(const pbr::PrefilteredEnvironment* map, float intensity,
+                                   float rotation_degrees);
+
+void shade_pbr(const SurfaceLanes& in, const ShadingContext& context, ShadedLanes& out);
+
+}  // namespace facet
