@@ -94,10 +94,21 @@ TEST_CASE("exposure +1 doubles the linear values of the PNG and leaves the EXR a
     }
     CHECK(doubled > 1000);  // the check saw real mid-tones
     CHECK(clipped > 10);    // and values the exposure pushed past white
+
+    // Every tone curve changes the PNG and leaves the EXR scene-linear.
+    for (const char* curve : {"aces", "filmic", "neutral", "agx"}) {
+        INFO("tonemap " << curve);
+        const RenderedFiles toned =
+            render_with(dir, std::string("toned-") + curve, std::string("tonemap: ") + curve);
+        REQUIRE(toned.exr.channel_names == plain.exr.channel_names);
+        CHECK(toned.exr.channels == plain.exr.channels);
+        REQUIRE(toned.png.samples.size() == plain.png.samples.size());
+        CHECK(toned.png.samples != plain.png.samples);
+    }
 }
 
 TEST_CASE("tone curves keep black, rise monotonically and roll off below white", "[display]") {
-    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral}) {
+    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral, Tonemap::agx}) {
         INFO(tonemap_name(curve));
         const DisplayTransform t{0, curve};
         CHECK(display_color({0, 0, 0, 1}, t) == glm::vec4(0, 0, 0, 1));
@@ -181,4 +192,84 @@ TEST_CASE("neutral is Khronos PBR Neutral: base colours pass, highlights compres
     CHECK(bright.b / bright.r > 1.0f / 4.0f);  // desaturated
     CHECK(std::string(tonemap_name(Tonemap::neutral)) == "neutral");
     CHECK(tonemap_from_name("neutral") == Tonemap::neutral);
+}
+
+namespace {
+
+// HSV hue in turns, for checking that a colour keeps its hue roughly.
+double hue_turns(glm::vec3 c) {
+    const float hi = std::max({c.r, c.g, c.b}), lo = std::min({c.r, c.g, c.b});
+    const double chroma = hi - lo;
+    double sixths = hi == c.r   ? (c.g - c.b) / chroma
+                    : hi == c.g ? (c.b - c.r) / chroma + 2
+                                : (c.r - c.g) / chroma + 4;
+    if (sixths < 0) sixths += 6;
+    return sixths / 6;
+}
+
+double saturation(glm::vec3 c) {
+    const float hi = std::max({c.r, c.g, c.b});
+    return hi > 0 ? (hi - std::min({c.r, c.g, c.b})) / hi : 0.0;
+}
+
+}  // namespace
+
+TEST_CASE("agx is Blender 4's AgX: grey to its pivot, bright colours to white", "[display]") {
+    const DisplayTransform agx{0, Tonemap::agx};
+    const auto shown = [&](glm::vec3 c) { return glm::vec3(display_color({c, 1}, agx)); };
+    CHECK(shown({0, 0, 0}) == glm::vec3(0));
+    // Middle grey: every matrix maps white to white, the log encoding puts
+    // 0.18 at the curve's pivot x = 10/16.5, and the curve gives the pivot's
+    // y = 0.18^(1/2.4); decoded with 2.4 that is 0.18 again, and encoded with
+    // 1/2.4 for the display, 0.18^(1/2.4) = exp(ln 0.18 / 2.4) = 0.48944.
+    // That is the code Blender writes (byte 124.8 -> 125). The polynomial
+    // fit many engines use ("AgX minimal") gives 0.4967 there instead.
+    const glm::vec3 grey = shown({0.18f, 0.18f, 0.18f});
+    CHECK(linear_to_srgb(grey.r) == Approx(0.48944).margin(1e-4));
+    CHECK(display_byte(grey.r) == 125);
+    // The curve's ends: -10 stops below middle grey and darker are black;
+    // +6.5 stops above is the curve's (1, 1), white.
+    CHECK(shown(glm::vec3(0.18f * std::exp2(-10.5f))).r == 0.0f);
+    CHECK(shown(glm::vec3(0.18f * std::exp2(6.5f))).r == Approx(1.0f).margin(1e-4));
+    // Brighter, never darker, from 1e-4 to 1e3, for grey and for colours
+    // (luminance of the shown colour; 1e-6 is float rounding near white).
+    for (const glm::vec3 colour :
+         {glm::vec3(1), glm::vec3(1, 0, 0), glm::vec3(0, 1, 0), glm::vec3(0, 0, 1),
+          glm::vec3(1, 0.2f, 0.05f), glm::vec3(0.1f, 0.3f, 1.0f)}) {
+        INFO("colour " << colour.r << " " << colour.g << " " << colour.b);
+        float previous = 0;
+        for (float k = 1e-4f; k <= 1e3f; k *= 1.05f) {
+            const glm::vec3 c = shown(colour * k);
+            const float y = rec709_luminance(c.r, c.g, c.b);
+            INFO("scale " << k);
+            CHECK(y >= previous - 1e-6f);
+            CHECK(std::max({c.r, c.g, c.b}) <= 1.0f);
+            CHECK(std::min({c.r, c.g, c.b}) >= 0.0f);
+            previous = y;
+        }
+    }
+    // A saturated orange made ever brighter: it keeps the order of its
+    // channels and roughly its hue while it pales, and ends white.
+    const glm::vec3 orange(1.0f, 0.2f, 0.05f);
+    double previous_saturation = 1.0;
+    for (const float k : {1.0f, 4.0f, 16.0f, 64.0f}) {
+        INFO("scale " << k);
+        const glm::vec3 c = shown(orange * k);
+        CHECK(c.r >= c.g);
+        CHECK(c.g >= c.b);
+        if (k <= 16.0f) CHECK(std::abs(hue_turns(c) - hue_turns(orange)) < 0.05);
+        CHECK(saturation(c) < previous_saturation);
+        previous_saturation = saturation(c);
+    }
+    // Pure red, in display codes: from a separate double-precision
+    // transcription of the same steps (Python), which this float code
+    // matches to 0.01 of a code.
+    const glm::vec3 red = shown({1, 0, 0});
+    CHECK(linear_to_srgb(red.r) * 255 == Approx(220.82).margin(0.1));
+    CHECK(linear_to_srgb(red.g) * 255 == Approx(67.45).margin(0.1));
+    CHECK(linear_to_srgb(red.b) * 255 == Approx(45.35).margin(0.1));
+    const glm::vec3 blinding = shown(orange * 1000.0f);
+    CHECK(std::min({blinding.r, blinding.g, blinding.b}) > 0.999f);
+    CHECK(std::string(tonemap_name(Tonemap::agx)) == "agx");
+    CHECK(tonemap_from_name("agx") == Tonemap::agx);
 }

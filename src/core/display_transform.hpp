@@ -11,7 +11,7 @@
 
 namespace facet {
 
-enum class Tonemap { none, aces, filmic, neutral };
+enum class Tonemap { none, aces, filmic, neutral, agx };
 
 struct DisplayTransform {
     float exposure = 0;  // stops: each one doubles the linear values
@@ -20,7 +20,7 @@ struct DisplayTransform {
     bool is_identity() const { return exposure == 0 && tonemap == Tonemap::none; }
 };
 
-// "none", "aces", "filmic", "neutral"; the parser checks the name first.
+// "none", "aces", "filmic", "neutral", "agx"; the parser checks the name first.
 Tonemap tonemap_from_name(std::string_view name);
 const char* tonemap_name(Tonemap tonemap);
 

@@ -114,7 +114,7 @@ OutputDesc parse_output(const Field& f) {
     if (f.has("exposure")) out.display.exposure = static_cast<float>(f["exposure"].number(-20, 20));
     if (f.has("tonemap"))
         out.display.tonemap =
-            tonemap_from_name(f["tonemap"].choice({"none", "aces", "filmic", "neutral"}));
+            tonemap_from_name(f["tonemap"].choice({"none", "aces", "filmic", "neutral", "agx"}));
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;
