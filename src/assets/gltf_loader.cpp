@@ -432,11 +432,12 @@ void NodeWalk::place(int node_index, size_t primitive, const gltf_detail::MeshSp
         part.normals.push_back(length > 0 ? p.normals[i] / length : glm::vec3(0));
         if (length == 0) part.normals_from_faces.push_back(static_cast<uint32_t>(i));
     }
+    part.tangents = p.tangents;
     gltf_detail::read_part_skin_and_morph(model_, prim, *rig_, path_, p.what, part);
     if (p.normals.empty()) {
         // The split vertices get their skin and morph data from the vertex
         // they were copied from; posing recomputes their normals.
-        gltf_detail::reorder_part_vertices(part, source_vertex);
+        reorder_rig_part_vertices(part, source_vertex);
         part.normals.assign(source_vertex.size(), glm::vec3(0));
         for (size_t i = 0; i < source_vertex.size(); ++i)
             part.normals_from_faces.push_back(static_cast<uint32_t>(i));
@@ -520,6 +521,7 @@ void bake_rest_pose(Mesh& mesh, MeshRig& rig) {
         MeshPart& part = mesh.parts[p];
         part.positions = posed[p].positions;
         part.normals = posed[p].normals;
+        part.tangents = posed[p].tangents;
         if (!posed[p].winding_flipped) continue;
         for (size_t t = 0; t + 2 < part.indices.size(); t += 3)
             std::swap(part.indices[t + 1], part.indices[t + 2]);

@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "core/error.hpp"
 
@@ -126,18 +127,36 @@ glm::vec3 unit_or(const glm::dvec3& n, const glm::vec3& fallback) {
 }
 
 // The morphed mesh-space vertex v (§3.7.2.2: base + Σ weight · delta).
-void morphed_vertex(const RigPart& part, const std::vector<double>& weights, size_t v,
-                    glm::dvec3& position, glm::dvec3& normal) {
-    position = glm::dvec3(part.positions[v]);
-    normal = glm::dvec3(part.normals[v]);
+struct MorphedVertex {
+    glm::dvec3 position, normal;
+    glm::dvec3 tangent{0.0};  // xyz; zero when the part has no tangents
+};
+
+MorphedVertex morphed_vertex(const RigPart& part, const std::vector<double>& weights, size_t v) {
+    MorphedVertex m{glm::dvec3(part.positions[v]), glm::dvec3(part.normals[v])};
+    const bool tangents = !part.tangents.empty();
+    if (tangents) m.tangent = glm::dvec3(glm::vec3(part.tangents[v]));
     for (size_t t = 0; t < part.morph_targets.size(); ++t) {
         if (weights[t] == 0) continue;
         const RigMorphTarget& target = part.morph_targets[t];
         if (!target.position_deltas.empty())
-            position += weights[t] * glm::dvec3(target.position_deltas[v]);
+            m.position += weights[t] * glm::dvec3(target.position_deltas[v]);
         if (!target.normal_deltas.empty())
-            normal += weights[t] * glm::dvec3(target.normal_deltas[v]);
+            m.normal += weights[t] * glm::dvec3(target.normal_deltas[v]);
+        if (tangents && !target.tangent_deltas.empty())
+            m.tangent += weights[t] * glm::dvec3(target.tangent_deltas[v]);
     }
+    return m;
+}
+
+// A tangent moves with the surface: by the linear part itself, not the
+// normals' inverse transpose (for any such map, the two stay
+// perpendicular), and where the map mirrors, w flips so that w (n x t)
+// still points up the texture.
+glm::vec4 posed_tangent(const glm::dmat3& linear, const glm::dvec3& tangent,
+                        const glm::vec4& rest) {
+    const float flip = glm::determinant(linear) < 0 ? -1.0f : 1.0f;
+    return {unit_or(linear * tangent, glm::vec3(rest)), rest.w * flip};
 }
 
 // Normals of the vertices the loader gave face normals: the area-weighted
@@ -160,14 +179,28 @@ void normals_from_faces(const RigPart& rig_part, const MeshPart& part, PosedPart
 
 void pose_rigid(const RigPart& rig_part, const std::vector<double>& weights,
                 const glm::dmat4& world, PosedPart& posed) {
-    const glm::dmat3 normals = normal_matrix(glm::dmat3(world));
+    const glm::dmat3 linear(world);
+    const glm::dmat3 normals = normal_matrix(linear);
+    const bool tangents = !rig_part.tangents.empty();
     for (size_t v = 0; v < rig_part.positions.size(); ++v) {
-        glm::dvec3 p, n;
-        morphed_vertex(rig_part, weights, v, p, n);
-        posed.positions[v] = glm::vec3(world * glm::dvec4(p, 1.0));
-        posed.normals[v] = unit_or(normals * n, rig_part.normals[v]);
+        const MorphedVertex m = morphed_vertex(rig_part, weights, v);
+        posed.positions[v] = glm::vec3(world * glm::dvec4(m.position, 1.0));
+        posed.normals[v] = unit_or(normals * m.normal, rig_part.normals[v]);
+        if (tangents) posed.tangents[v] = posed_tangent(linear, m.tangent, rig_part.tangents[v]);
     }
     posed.winding_flipped = (glm::determinant(glm::dmat3(world)) < 0) != rig_part.rest_mirrored;
+}
+
+// Vertex v's blend of its joints' matrices.
+glm::dmat4 skin_matrix(const RigPart& rig_part, const std::vector<glm::dmat4>& joint_matrices,
+                       size_t v) {
+    const int influences = rig_part.influences;
+    glm::dmat4 skin(0.0);
+    for (int k = 0; k < influences; ++k) {
+        const double w = rig_part.weights[v * influences + k];
+        if (w != 0) skin += joint_matrices[rig_part.joints[v * influences + k]] * w;
+    }
+    return skin;
 }
 
 // §3.7.3.3: each vertex moves by the weighted sum of its joints' matrices
@@ -175,20 +208,16 @@ void pose_rigid(const RigPart& rig_part, const std::vector<double>& weights,
 // transform plays no part.
 void pose_skinned(const RigPart& rig_part, const std::vector<double>& weights,
                   const std::vector<glm::dmat4>& joint_matrices, PosedPart& posed) {
-    const int influences = rig_part.influences;
     size_t mirrored_vertices = 0;
+    const bool tangents = !rig_part.tangents.empty();
     for (size_t v = 0; v < rig_part.positions.size(); ++v) {
-        glm::dvec3 p, n;
-        morphed_vertex(rig_part, weights, v, p, n);
-        glm::dmat4 skin(0.0);
-        for (int k = 0; k < influences; ++k) {
-            const double w = rig_part.weights[v * influences + k];
-            if (w != 0) skin += joint_matrices[rig_part.joints[v * influences + k]] * w;
-        }
+        const MorphedVertex m = morphed_vertex(rig_part, weights, v);
+        const glm::dmat4 skin = skin_matrix(rig_part, joint_matrices, v);
         const glm::dmat3 linear(skin);
         if (glm::determinant(linear) < 0) ++mirrored_vertices;
-        posed.positions[v] = glm::vec3(skin * glm::dvec4(p, 1.0));
-        posed.normals[v] = unit_or(normal_matrix(linear) * n, rig_part.normals[v]);
+        posed.positions[v] = glm::vec3(skin * glm::dvec4(m.position, 1.0));
+        posed.normals[v] = unit_or(normal_matrix(linear) * m.normal, rig_part.normals[v]);
+        if (tangents) posed.tangents[v] = posed_tangent(linear, m.tangent, rig_part.tangents[v]);
     }
     // A skin has no single transform; the part counts as mirrored when most
     // of its vertices are.
@@ -199,6 +228,7 @@ void pose_skinned(const RigPart& rig_part, const std::vector<double>& weights,
 void copy_rest(const MeshPart& part, PosedPart& posed) {
     posed.positions = part.positions;
     posed.normals = part.normals;
+    posed.tangents = part.tangents;
     posed.winding_flipped = false;
 }
 
@@ -331,6 +361,14 @@ NodePose pose_nodes(const Mesh& mesh, const MeshRig& rig, const std::vector<int>
     return pose;
 }
 
+// Each joint's world transform times its inverse bind matrix.
+std::vector<glm::dmat4> skin_joint_matrices(const RigSkin& skin, const NodePose& pose) {
+    std::vector<glm::dmat4> out;
+    for (size_t j = 0; j < skin.joints.size(); ++j)
+        out.push_back(pose.world[skin.joints[j]] * skin.inverse_bind[j]);
+    return out;
+}
+
 // `from_rig`: every skinned or morphed part is computed from the rig, even
 // where its weights are the defaults the loaded parts were baked with.
 void pose_parts(const Mesh& mesh, const std::vector<int>& animations, double seconds, bool from_rig,
@@ -343,11 +381,8 @@ void pose_parts(const Mesh& mesh, const std::vector<int>& animations, double sec
     }
     const NodePose pose = pose_nodes(mesh, *rig, animations, seconds);
     std::vector<std::vector<glm::dmat4>> joint_matrices(rig->skins.size());
-    for (size_t s = 0; s < rig->skins.size(); ++s) {
-        const RigSkin& skin = rig->skins[s];
-        for (size_t j = 0; j < skin.joints.size(); ++j)
-            joint_matrices[s].push_back(pose.world[skin.joints[j]] * skin.inverse_bind[j]);
-    }
+    for (size_t s = 0; s < rig->skins.size(); ++s)
+        joint_matrices[s] = skin_joint_matrices(rig->skins[s], pose);
     for (size_t p = 0; p < mesh.parts.size(); ++p) {
         const RigPart& rig_part = rig->parts[p];
         const std::vector<double>& part_weights = pose.weights[rig_part.node];
@@ -361,6 +396,7 @@ void pose_parts(const Mesh& mesh, const std::vector<int>& animations, double sec
         }
         posed.positions.resize(rig_part.positions.size());
         posed.normals.resize(rig_part.positions.size());
+        posed.tangents.resize(rig_part.tangents.size());
         if (rig_part.skin >= 0)
             pose_skinned(rig_part, part_weights, joint_matrices[rig_part.skin], posed);
         else
@@ -379,6 +415,30 @@ void pose_mesh(const Mesh& mesh, const std::vector<int>& animations, double seco
 
 void pose_rest_from_rig(const Mesh& mesh, std::vector<PosedPart>& out) {
     pose_parts(mesh, {}, 0.0, true, out);
+}
+
+std::vector<glm::vec4> rest_tangents_in_mesh_space(const Mesh& mesh, size_t part,
+                                                   const std::vector<glm::vec4>& baked) {
+    const MeshRig& rig = *mesh.rig;
+    const RigPart& rig_part = rig.parts[part];
+    const NodePose pose = pose_nodes(mesh, rig, {}, 0.0);
+    std::vector<glm::dmat4> joints;
+    if (rig_part.skin >= 0) joints = skin_joint_matrices(rig.skins[rig_part.skin], pose);
+    const glm::dmat3 rigid(pose.world[rig_part.node] * rig_part.instance);
+    std::vector<glm::vec4> out(baked.size());
+    for (size_t v = 0; v < baked.size(); ++v) {
+        const glm::dmat3 linear =
+            rig_part.skin >= 0 ? glm::dmat3(skin_matrix(rig_part, joints, v)) : rigid;
+        const double det = glm::determinant(linear);
+        if (!(std::fabs(det) > 0) || !std::isfinite(det)) {
+            out[v] = baked[v];
+            continue;
+        }
+        const glm::vec3 rest(baked[v]);
+        out[v] = {unit_or(glm::inverse(linear) * glm::dvec3(rest), rest),
+                  det < 0 ? -baked[v].w : baked[v].w};
+    }
+    return out;
 }
 
 glm::dmat4 node_world_matrix(const MeshRig& rig, const std::vector<int>& animations, double seconds,

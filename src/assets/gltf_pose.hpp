@@ -7,6 +7,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "assets/mesh.hpp"
 
@@ -17,6 +18,9 @@ namespace facet {
 struct PosedPart {
     std::vector<glm::vec3> positions;
     std::vector<glm::vec3> normals;  // unit length
+    // As MeshPart::tangents (xyz unit, w = +1 or -1, flipped where the pose
+    // mirrors the part), or empty when the part has none.
+    std::vector<glm::vec4> tangents;
     // The pose mirrors the part where its rest pose did not, or the other
     // way round (a negative scale was animated), so the part's triangles now
     // wind clockwise seen from their front: swap two corners of each.
@@ -64,6 +68,14 @@ void pose_mesh(const Mesh& mesh, int animation, double seconds, std::vector<Pose
 // The rest pose (no animation) computed from the rig for every skinned or
 // morphed part: what the glTF loader bakes into Mesh::parts.
 void pose_rest_from_rig(const Mesh& mesh, std::vector<PosedPart>& out);
+
+// Tangents of part `part` as baked into Mesh::parts (its rest pose) taken
+// back to the rig's mesh space, for RigPart::tangents: the inverse of the
+// rest transform (a skinned vertex's own blend of joints), so that posing
+// at rest gives `baked` again. Where that transform is singular the baked
+// tangent is kept.
+std::vector<glm::vec4> rest_tangents_in_mesh_space(const Mesh& mesh, size_t part,
+                                                   const std::vector<glm::vec4>& baked);
 
 // The world matrix of one node of `rig` at `seconds` into `animations`
 // (indices into rig.animations, played together, held at their ends).

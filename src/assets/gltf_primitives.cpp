@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "assets/tangent_frames.hpp"
 
 namespace facet::gltf_detail {
 namespace {
@@ -85,6 +86,60 @@ std::vector<glm::vec3> read_vertex_colors(const tinygltf::Model& model, int acce
     return colors;
 }
 
+// A TANGENT w this close to +1 or -1 is taken as it: some tools write the
+// sign through a rounding step. Anything further names no side at all.
+constexpr float kTangentSignSlack = 0.01f;
+
+// TANGENT (glTF §3.7.2.1): VEC4 floats, or normalised bytes or shorts
+// (KHR_mesh_quantization); xyz the unit tangent, w the bitangent's sign.
+// Values that are not finite are refused by read_floats, naming the file
+// and the attribute, as for the other attributes.
+std::vector<glm::vec4> read_tangents(const tinygltf::Model& model, int accessor, size_t count,
+                                     const std::string& path, const std::string& what) {
+    const std::string name = what + " TANGENT";
+    const tinygltf::Accessor& a = accessor_at(model, accessor, path, name);
+    if (a.type != TINYGLTF_TYPE_VEC4) bad(path, name + " must be VEC4");
+    const bool quantized = a.normalized && (a.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                                            a.componentType == TINYGLTF_COMPONENT_TYPE_SHORT);
+    if (a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT && !quantized)
+        bad(path, name + " must be floats, or normalised bytes or shorts (KHR_mesh_quantization)");
+    const std::vector<float> values = read_floats(model, accessor, 4, path, name);
+    if (values.size() / 4 != count) bad(path, name + " count differs from POSITION count");
+    std::vector<glm::vec4> tangents(count);
+    for (size_t i = 0; i < count; ++i) {
+        const float* v = &values[4 * i];
+        if (!(std::fabs(std::fabs(v[3]) - 1.0f) <= kTangentSignSlack))
+            bad(path, name + ": vertex " + std::to_string(i) + " has w = " + std::to_string(v[3]) +
+                          "; w must be +1 or -1 (the bitangent's sign)");
+        const glm::vec3 xyz(v[0], v[1], v[2]);
+        const float length = glm::length(xyz);
+        tangents[i] = {length > 0 && std::isfinite(length) ? xyz / length : glm::vec3(0),
+                       v[3] < 0 ? -1.0f : 1.0f};
+    }
+    return tangents;
+}
+
+// The file's tangents placed by `world`: xyz by its linear part (not the
+// inverse transpose: a tangent lies in the surface and moves with it), w
+// flipped where it mirrors, so that w (n x t) still points up the texture.
+// A tangent of no length becomes a direction perpendicular to the normal.
+std::vector<glm::vec4> place_tangents(const std::vector<glm::vec4>& tangents,
+                                      const std::vector<glm::vec3>& normals, const glm::mat4& world,
+                                      size_t& replaced) {
+    const glm::mat3 linear(world);
+    const float flip = glm::determinant(linear) < 0 ? -1.0f : 1.0f;
+    std::vector<glm::vec4> out(tangents.size());
+    replaced = 0;
+    for (size_t i = 0; i < tangents.size(); ++i) {
+        const glm::vec3 t = linear * glm::vec3(tangents[i]);
+        const float length = glm::length(t);
+        const bool usable = length > 0 && std::isfinite(length);
+        if (!usable) ++replaced;
+        out[i] = {usable ? t / length : any_perpendicular(normals[i]), tangents[i].w * flip};
+    }
+    return out;
+}
+
 std::vector<uint32_t> read_triangles(const tinygltf::Model& model, const tinygltf::Primitive& prim,
                                      int mode, size_t count, const std::string& path,
                                      const std::string& what) {
@@ -145,6 +200,14 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
         p.positions[i] = {pos[3 * i], pos[3 * i + 1], pos[3 * i + 2]};
     if (const auto it = prim.attributes.find("NORMAL"); it != prim.attributes.end())
         p.normals = read_vec3s(model, it->second, count, path, what, "NORMAL");
+    if (const auto it = prim.attributes.find("TANGENT"); it != prim.attributes.end()) {
+        if (p.normals.empty())
+            warnings.push_back(file_warning(
+                path, what + ": TANGENT is ignored: the primitive has no NORMAL (glTF 2.0 "
+                             "§3.7.2.1), so it gets flat normals and tangents made for them"));
+        else
+            p.tangents = read_tangents(model, it->second, count, path, what);
+    }
     p.uvs = read_uvs(model, prim, 0, count, path, what);
     p.uvs1 = read_uvs(model, prim, 1, count, path, what);
     if (const auto it = prim.attributes.find("COLOR_0"); it != prim.attributes.end())
@@ -197,6 +260,14 @@ MeshPart place_primitive(const MeshSpacePrimitive& primitive, const glm::mat4& w
         warnings.push_back(
             file_warning(path, primitive.what + ": " + std::to_string(unusable.size()) +
                                    " normals of zero length replaced by face normals"));
+    }
+    if (!primitive.tangents.empty()) {
+        size_t replaced = 0;
+        part.tangents = place_tangents(primitive.tangents, part.normals, world, replaced);
+        if (replaced > 0)
+            warnings.push_back(file_warning(
+                path, primitive.what + ": " + std::to_string(replaced) +
+                          " tangents of zero length replaced by directions across the normals"));
     }
     if (source_vertex)
         for (size_t i = 0; i < part.positions.size(); ++i)

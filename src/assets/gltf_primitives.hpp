@@ -19,7 +19,11 @@ namespace facet::gltf_detail {
 struct MeshSpacePrimitive {
     std::string what;  // "mesh 'name' primitive N", for messages
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;    // the file's, unnormalised; empty when it has none
+    std::vector<glm::vec3> normals;  // the file's, unnormalised; empty when it has none
+    // TANGENT: xyz unit (or zero where the file's had no length), w exactly
+    // +1 or -1; empty when the file has none, or has no normals (§3.7.2.1:
+    // its tangents are then ignored).
+    std::vector<glm::vec4> tangents;
     std::vector<glm::vec2> uvs, uvs1;  // TEXCOORD_0 and TEXCOORD_1, or empty
     std::vector<glm::vec3> colors;     // COLOR_0's RGB, or empty
     std::vector<uint32_t> indices;     // a triangle list
@@ -33,8 +37,9 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
                                                  const std::string& path, const std::string& what,
                                                  uint32_t default_material, Warnings& warnings);
 
-// The primitive placed by `world` (node and instance transforms): positions
-// and normals transformed, triangles reversed where the transform mirrors,
+// The primitive placed by `world` (node and instance transforms): positions,
+// normals and tangents transformed (a tangent by the transform itself, its
+// w flipped where the transform mirrors), triangles reversed where the transform mirrors,
 // flat normals where the file has none and face normals where its normals
 // have no length (each with a warning). `source_vertex`, when given,
 // receives for each vertex of the part the primitive's vertex it came from.

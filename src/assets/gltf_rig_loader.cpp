@@ -378,8 +378,9 @@ void read_part_skin_and_morph(const tinygltf::Model& model, const tinygltf::Prim
     for (size_t t = 0; t < targets; ++t) {
         RigMorphTarget target;
         const std::string tw = what + " morph target " + std::to_string(t);
-        for (const auto& [name, deltas] :
-             {std::pair{"POSITION", &target.position_deltas}, {"NORMAL", &target.normal_deltas}}) {
+        for (const auto& [name, deltas] : {std::pair{"POSITION", &target.position_deltas},
+                                           {"NORMAL", &target.normal_deltas},
+                                           {"TANGENT", &target.tangent_deltas}}) {
             auto it = primitive.targets[t].find(name);
             if (it == primitive.targets[t].end()) continue;
             std::vector<float> d = read_floats(model, it->second, 3, path, tw + " " + name);
@@ -390,31 +391,6 @@ void read_part_skin_and_morph(const tinygltf::Model& model, const tinygltf::Prim
         }
         part.morph_targets.push_back(std::move(target));
     }
-}
-
-void reorder_part_vertices(RigPart& part, const std::vector<uint32_t>& source_vertex) {
-    std::vector<bool> from_faces(part.positions.size(), false);
-    for (uint32_t v : part.normals_from_faces) from_faces[v] = true;
-    auto reorder = [&](auto& list, size_t per_vertex) {
-        if (list.empty()) return;
-        std::remove_reference_t<decltype(list)> out;
-        out.reserve(source_vertex.size() * per_vertex);
-        for (uint32_t v : source_vertex)
-            for (size_t k = 0; k < per_vertex; ++k) out.push_back(list[v * per_vertex + k]);
-        list = std::move(out);
-    };
-    reorder(part.positions, 1);
-    reorder(part.normals, 1);
-    reorder(part.joints, part.influences);
-    reorder(part.weights, part.influences);
-    for (auto& target : part.morph_targets) {
-        reorder(target.position_deltas, 1);
-        reorder(target.normal_deltas, 1);
-    }
-    part.normals_from_faces.clear();
-    for (size_t i = 0; i < source_vertex.size(); ++i)
-        if (from_faces[source_vertex[i]])
-            part.normals_from_faces.push_back(static_cast<uint32_t>(i));
 }
 
 }  // namespace facet::gltf_detail

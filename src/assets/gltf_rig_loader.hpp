@@ -29,8 +29,4 @@ void read_part_skin_and_morph(const tinygltf::Model& model, const tinygltf::Prim
                               const MeshRig& rig, const std::string& path, const std::string& what,
                               RigPart& part);
 
-// Rebuilds the per-vertex lists of `part` after the baked part's vertices
-// were split: new vertex i copies old vertex source_vertex[i].
-void reorder_part_vertices(RigPart& part, const std::vector<uint32_t>& source_vertex);
-
 }  // namespace facet::gltf_detail

@@ -9,6 +9,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "assets/mesh.hpp"
+#include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
 
 namespace facet {
@@ -154,6 +155,7 @@ uint64_t split_by_normal(MeshPart& part, const std::vector<glm::vec3>& corner_no
             out.normals.push_back(corner_normal[c]);
             if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
             if (!part.uvs1.empty()) out.uvs1.push_back(part.uvs1[v]);
+            if (!part.tangents.empty()) out.tangents.push_back(part.tangents[v]);
             if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
             if (source_vertex) source_vertex->push_back(v);
         }
@@ -246,6 +248,7 @@ void validate_part(const MeshPart& part, const std::string& source) {
     if (part.normals.size() != part.positions.size() ||
         (!part.uvs.empty() && part.uvs.size() != part.positions.size()) ||
         (!part.uvs1.empty() && part.uvs1.size() != part.positions.size()) ||
+        (!part.tangents.empty() && part.tangents.size() != part.positions.size()) ||
         (!part.colors.empty() && part.colors.size() != part.positions.size()))
         throw Error(ExitCode::invalid_input, source + ": vertex attribute counts differ");
     for (uint32_t i : part.indices)
@@ -276,7 +279,9 @@ std::string mesh_extensions() {
     return list;
 }
 
-Mesh load_mesh(const std::string& path, const AssetContext& context) {
+namespace {
+
+Mesh load_by_extension(const std::string& path, const AssetContext& context) {
     std::string ext = std::filesystem::path(path).extension().string();
     for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext == ".obj") return load_obj(path, context);
@@ -284,6 +289,15 @@ Mesh load_mesh(const std::string& path, const AssetContext& context) {
     if (is_mesh_extension(ext)) return load_assimp(path, context);
     throw Error(ExitCode::invalid_input,
                 path + ": unsupported mesh format '" + ext + "' (use " + mesh_extensions() + ")");
+}
+
+}  // namespace
+
+Mesh load_mesh(const std::string& path, const AssetContext& context) {
+    Mesh mesh = load_by_extension(path, context);
+    // Once the file's materials are known, whichever format gave them.
+    add_normal_map_tangents(mesh, mesh.materials, mesh.warnings);
+    return mesh;
 }
 
 }  // namespace facet

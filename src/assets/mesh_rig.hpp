@@ -14,6 +14,7 @@
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 namespace facet {
 
@@ -43,6 +44,7 @@ struct RigSkin {
 struct RigMorphTarget {
     std::vector<glm::vec3> position_deltas;
     std::vector<glm::vec3> normal_deltas;
+    std::vector<glm::vec3> tangent_deltas;  // of the tangents' xyz; w does not morph
 };
 
 // The un-baked source of Mesh::parts[i], vertex for vertex in the same order.
@@ -61,6 +63,10 @@ struct RigPart {
     // (the file gave none, or a zero one): posing recomputes these from
     // the posed triangles instead of transforming `normals`.
     std::vector<uint32_t> normals_from_faces;
+    // Mesh space, as MeshPart::tangents (xyz unit, w = +1 or -1), or empty
+    // when the baked part has none. Posed as the normals are, but by the
+    // transform itself rather than its inverse transpose.
+    std::vector<glm::vec4> tangents;
     // Skinning: `influences` joints per vertex (four per JOINTS_n set);
     // joints index RigSkin::joints, and each vertex's weights sum to 1.
     int influences = 0;
@@ -104,5 +110,9 @@ struct MeshRig {
     std::vector<RigPart> parts;   // one per Mesh::parts entry, in the same order
     std::vector<RigAnimation> animations;
 };
+
+// Rebuilds the per-vertex lists of `part` after the baked part's vertices
+// were split or reordered: new vertex i copies old vertex source_vertex[i].
+void reorder_rig_part_vertices(RigPart& part, const std::vector<uint32_t>& source_vertex);
 
 }  // namespace facet

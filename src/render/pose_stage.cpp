@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "anim/cloth_scene.hpp"
+#include "assets/tangent_frames.hpp"
 
 namespace facet {
 
@@ -13,10 +14,27 @@ PoseStage::PoseStage(const SceneDesc& scene, const World& world) : scene_(scene)
 }
 
 void PoseStage::write_part(uint32_t draw, std::span<const glm::vec3> positions,
-                           std::span<const glm::vec3> normals) {
+                           std::span<const glm::vec3> normals,
+                           std::span<const glm::vec4> tangents) {
     const Draw& d = world_.draws[draw];
     std::copy(positions.begin(), positions.end(), positions_.begin() + d.first_vertex);
     std::copy(normals.begin(), normals.end(), normals_.begin() + d.first_vertex);
+    if (d.has_tangents && tangents.size() == d.vertex_count)
+        std::copy(tangents.begin(), tangents.end(), tangents_.begin() + d.first_vertex);
+}
+
+void PoseStage::refresh_cloth_tangents(uint32_t draw) {
+    const Draw& d = world_.draws[draw];
+    if (!d.has_tangents) return;
+    const std::span<const glm::vec3> positions(positions_.data() + d.first_vertex, d.vertex_count);
+    const std::span<const glm::vec3> normals(normals_.data() + d.first_vertex, d.vertex_count);
+    // A cloth has the one coordinate set of its grid.
+    const std::span<const glm::vec2> uvs(world_.uvs.data() + d.first_vertex, d.vertex_count);
+    const std::span<const uint32_t> indices(world_.indices.data() + 3 * size_t(d.first_triangle),
+                                            3 * size_t(d.triangle_count));
+    refresh_tangent_directions(
+        positions, normals, uvs, indices, d.first_vertex,
+        std::span<glm::vec4>(tangents_.data() + d.first_vertex, d.vertex_count));
 }
 
 void PoseStage::mark_flipped(uint32_t draw, bool flipped) {
@@ -27,10 +45,12 @@ void PoseStage::mark_flipped(uint32_t draw, bool flipped) {
 }
 
 PosedVertices PoseStage::pose(const FrameState& state) {
-    if (!world_.deforms()) return {world_.positions, world_.normals, world_.object_bounds, {}};
+    if (!world_.deforms())
+        return {world_.positions, world_.normals, world_.object_bounds, {}, world_.tangents};
     if (positions_.empty()) {
         positions_ = world_.positions;
         normals_ = world_.normals;
+        tangents_ = world_.tangents;
     }
     bounds_ = world_.object_bounds;
     for (const AnimatedMesh& a : world_.animated_meshes) {
@@ -39,7 +59,8 @@ PosedVertices PoseStage::pose(const FrameState& state) {
         Bounds posed;
         for (size_t part = 0; part < scratch_.size(); ++part) {
             const uint32_t draw = a.first_draw + static_cast<uint32_t>(part);
-            write_part(draw, scratch_[part].positions, scratch_[part].normals);
+            write_part(draw, scratch_[part].positions, scratch_[part].normals,
+                       scratch_[part].tangents);
             mark_flipped(draw, scratch_[part].winding_flipped);
             for (const glm::vec3& p : scratch_[part].positions) posed.add(p);
         }
@@ -50,9 +71,10 @@ PosedVertices PoseStage::pose(const FrameState& state) {
     const int frame = std::max(0, state.frame - scene_.output.frames.front());
     for (size_t i = 0; i < world_.cloths.size(); ++i) {
         const ClothFrame cloth = cloths_[i]->state_at(frame);
-        write_part(world_.cloths[i].draw, cloth.positions, cloth.normals);
+        write_part(world_.cloths[i].draw, cloth.positions, cloth.normals, {});
+        refresh_cloth_tangents(world_.cloths[i].draw);
     }
-    return {positions_, normals_, bounds_, flipped_};
+    return {positions_, normals_, bounds_, flipped_, tangents_};
 }
 
 }  // namespace facet

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "anim/frame_state.hpp"
 #include "assets/gltf_pose.hpp"
@@ -26,6 +27,10 @@ struct PosedVertices {
     // Per triangle, 1 where the pose mirrors its part (a negative scale):
     // its winding on screen is reversed. Empty when nothing is mirrored.
     std::span<const uint8_t> flipped_triangles;
+    // World::tangents posed: turned with the skin or node transform (its
+    // linear part, w flipped where it mirrors), a cloth's recomputed from
+    // its moved triangles. Empty when the world has none.
+    std::span<const glm::vec4> tangents;
 };
 
 class PoseStage {
@@ -37,7 +42,9 @@ class PoseStage {
 
   private:
     void write_part(uint32_t draw, std::span<const glm::vec3> positions,
-                    std::span<const glm::vec3> normals);
+                    std::span<const glm::vec3> normals, std::span<const glm::vec4> tangents);
+    // A cloth's tangents from its posed triangles (the solver moves no tangents).
+    void refresh_cloth_tangents(uint32_t draw);
     // Records whether the pose mirrors the draw's triangles.
     void mark_flipped(uint32_t draw, bool flipped);
 
@@ -46,6 +53,7 @@ class PoseStage {
     std::vector<std::unique_ptr<ClothSimulation>> cloths_;  // per World::cloths
     // A copy of the world's arrays with the moving parts posed, when any move.
     std::vector<glm::vec3> positions_, normals_;
+    std::vector<glm::vec4> tangents_;
     std::vector<Bounds> bounds_;
     std::vector<uint8_t> flipped_;  // per triangle; empty until a part is mirrored
     std::vector<PosedPart> scratch_;

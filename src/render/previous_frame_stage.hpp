@@ -23,7 +23,8 @@ class PreviousFrameStage {
     // `previous`: the evaluated frame before the one being rendered.
     // Valid until the next call.
     std::span<const glm::vec4> clip_positions(const FrameInputs& previous, ThreadPool& pool) {
-        const PosedVertices posed = pose_.pose(previous.state);
+        PosedVertices posed = pose_.pose(previous.state);
+        posed.tangents = {};  // only where the vertices were is wanted
         const TransformedVertices& v = vertices_.transform(previous, posed, {}, false, pool);
         return {v.clip.data(), v.clip.size()};
     }

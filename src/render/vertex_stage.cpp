@@ -6,12 +6,32 @@
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
+#include "assets/tangent_frames.hpp"
 #include "shade/lighting_batch.hpp"
 
 namespace facet {
 namespace {
 constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thread count
+
+struct DrawTransform {
+    glm::mat4 model;
+    glm::mat3 normal;
+    float handedness;  // -1 where the model matrix mirrors
+};
+
+// See TransformedVertices::world_tangent. A zero tangent (a draw without
+// them) stays zero; one that lay along the normal takes a fixed
+// perpendicular, as tangent generation does.
+glm::vec4 world_tangent(const DrawTransform& t, const glm::vec4& model_tangent,
+                        const glm::vec3& world_normal) {
+    if (model_tangent.w == 0) return glm::vec4(0);
+    glm::vec3 along = glm::mat3(t.model) * glm::vec3(model_tangent);
+    along -= world_normal * glm::dot(world_normal, along);
+    const float len = glm::length(along);
+    return {len > 0 && std::isfinite(len) ? along / len : any_perpendicular(world_normal),
+            model_tangent.w * t.handedness};
 }
+}  // namespace
 
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
 // batch lighting as per-pixel shading. With `casting` (the shadow-casting
@@ -56,6 +76,8 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
     out_.clip.resize(count);
     out_.world_position.resize(count);
     out_.world_normal.resize(count);
+    const bool tangents = !posed.tangents.empty();
+    out_.world_tangent.resize(tangents ? count : 0);
     out_.lit.resize(light_vertices ? count : 0);
     // Shadows on Gouraud surfaces are looked up per pixel (render/shade_batch.cpp).
     std::vector<ShadeLight> open(lights.begin(), lights.end()), casting;
@@ -65,14 +87,11 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
     }
     out_.direct.resize(light_vertices && !casting.empty() ? count : 0);
 
-    struct DrawTransform {
-        glm::mat4 model;
-        glm::mat3 normal;
-    };
     std::vector<DrawTransform> transforms;
     for (const Draw& d : world_.draws) {
         const glm::mat4& m = frame.state.objects[d.object].transform;
-        transforms.push_back({m, glm::transpose(glm::inverse(glm::mat3(m)))});
+        transforms.push_back({m, glm::transpose(glm::inverse(glm::mat3(m))),
+                              glm::determinant(glm::mat3(m)) < 0 ? -1.0f : 1.0f});
     }
     const glm::mat4& view_projection = frame.camera.view_projection;
     pool.parallel_for_chunks(count, kVerticesPerChunk, [&](size_t first, size_t last) {
@@ -84,6 +103,8 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
             const glm::vec3 n = t.normal * posed.normals[v];
             const float len = glm::length(n);
             out_.world_normal[v] = len > 0 ? n / len : glm::vec3(0, 1, 0);
+            if (tangents)
+                out_.world_tangent[v] = world_tangent(t, posed.tangents[v], out_.world_normal[v]);
         }
         if (light_vertices) light(first, last, frame, open, casting);
     });

@@ -22,7 +22,16 @@ struct TransformedVertices {
     BulkVector<glm::vec4> clip;
     BulkVector<glm::vec3> world_position;
     BulkVector<glm::vec3> world_normal;  // unit, +Y for a zero normal
-    BulkVector<LightingResult> lit;      // Gouraud only (else empty): lighting at each vertex
+    // Tangent frames in world space, when the world has any (World::tangents;
+    // else empty, and nothing is spent on them): xyz turned by the model
+    // matrix's linear part, made perpendicular to world_normal here (one
+    // Gram-Schmidt step, so morphs and face-derived normals cannot leave it
+    // askew) and unit; w flipped where the model matrix mirrors, so that
+    // w (n x t) still points up the texture. Zero for the draws without
+    // tangents. Interpolating across a triangle bends the two apart again:
+    // a shader that wants them exactly perpendicular orthogonalises per pixel.
+    BulkVector<glm::vec4> world_tangent;
+    BulkVector<LightingResult> lit;  // Gouraud only (else empty): lighting at each vertex
     // Gouraud with shadow-casting lights (else empty): `lit` is then without
     // shadows, and this is the direct light (diffuse and highlight, without
     // the ambient term) of the lights that cast them, which each pixel's own

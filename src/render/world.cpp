@@ -10,6 +10,7 @@
 
 #include "anim/cloth_scene.hpp"
 #include "assets/gltf_pose.hpp"
+#include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
 #include "render/principal_directions.hpp"
 #include "shapes/primitives.hpp"
@@ -265,6 +266,9 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
     d.material = material_base + part.material;
     d.has_uvs = !part.uvs.empty() || !part.uvs1.empty();
     d.has_colors = !part.colors.empty();
+    // Only the normal-mapped draws' frames are kept: the stages pay for
+    // tangents only where a shader reads them.
+    d.has_tangents = world.materials[d.material].normal_map && !part.tangents.empty();
     const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
     world.positions.insert(world.positions.end(), part.positions.begin(), part.positions.end());
     world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
@@ -274,6 +278,8 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
         world.uvs.insert(world.uvs.end(), part.uvs.begin(), part.uvs.end());
     append_optional(world.uvs1, part.uvs1, d.first_vertex, d.vertex_count, glm::vec2(0));
     append_optional(world.colors, part.colors, d.first_vertex, d.vertex_count, glm::vec3(1));
+    append_optional(world.tangents, d.has_tangents ? part.tangents : std::vector<glm::vec4>(),
+                    d.first_vertex, d.vertex_count, glm::vec4(0));
     world.vertex_draw.resize(world.positions.size(), draw_index);
     for (uint32_t i : part.indices) world.indices.push_back(d.first_vertex + i);
     world.triangle_draw.resize(world.triangle_draw.size() + d.triangle_count, draw_index);
@@ -373,6 +379,26 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
              "highlight"});
 }
 
+// `mesh` with tangent frames for the parts that the object's materials
+// (from world.materials[material_base]) give a normal map, and the
+// warnings for the parts that cannot have them, each once per run.
+std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material_base,
+                                                 std::shared_ptr<const Mesh> mesh,
+                                                 bool keep_vertices) {
+    const std::vector<Material> materials(world.materials.begin() + material_base,
+                                          world.materials.end());
+    Warnings warnings;
+    mesh = with_normal_map_tangents(std::move(mesh), materials, warnings, keep_vertices);
+    for (const Warning& w : warnings) {
+        const bool known =
+            std::any_of(world.warnings.begin(), world.warnings.end(), [&](const Warning& k) {
+                return k.where.file == w.where.file && k.message == w.message;
+            });
+        if (!known) world.warnings.push_back(w);
+    }
+    return mesh;
+}
+
 }  // namespace
 
 World build_world(const SceneDesc& scene) {
@@ -387,7 +413,7 @@ World build_world(const SceneDesc& scene) {
     assets.textures = &texture_budget;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
-        const std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, world);
+        std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, world);
         world.object_bounds.push_back(mesh->bounds());
         if (obj.file_lights)
             for (const GltfLight& light : mesh->lights)
@@ -405,6 +431,9 @@ World build_world(const SceneDesc& scene) {
             scene, o,
             std::vector<Material>(world.materials.begin() + material_base, world.materials.end()),
             world.warnings);
+        // The scene's material may give a normal map to a mesh whose file
+        // had none; a cloth's vertices are its solver's and do not split.
+        mesh = with_object_tangents(world, material_base, mesh, obj.cloth.has_value());
         if (obj.animation) {
             const std::string key = "objects." + std::to_string(o) + ".animation";
             try {

@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 
 #include "anim/frame_state.hpp"
 #include "assets/mesh.hpp"
@@ -25,6 +26,11 @@ struct Draw {
     uint32_t material;  // index into World::materials
     bool has_uvs;       // the mesh part had texture coordinates
     bool has_colors;    // the mesh part had vertex colours (World::colors)
+    // World::tangents holds this draw's tangent frames: its material has a
+    // normal map and its part has the coordinates the map reads. A draw
+    // whose material has a normal map but not this has lost it (a warning
+    // said so) and is shaded with its interpolated normal.
+    bool has_tangents;
 };
 
 // An object playing animations stored in its glTF file: its mesh parts
@@ -83,6 +89,11 @@ struct World {
     // Vertex colours, one per vertex when any draw has them (white for the
     // draws that do not), else empty.
     std::vector<glm::vec3> colors;
+    // Tangent frames (assets/tangent_frames.hpp: xyz unit along +u, w = +1
+    // or -1, bitangent w (n x t) up the texture), one per vertex when some
+    // draw has them (Draw::has_tangents; zero for the others), else empty,
+    // so that scenes without normal maps carry and transform none.
+    std::vector<glm::vec4> tangents;
     std::vector<uint32_t> vertex_draw;
 
     std::vector<uint32_t> indices;        // global vertex indices, three per triangle
