@@ -194,6 +194,39 @@ void lights_section(PreviewState& state) {
     }
 }
 
+// The environment of the `pbr` model (docs/pbr.md): a file, its
+// intensity and rotation, and whether it shows behind the scene.
+void environment_section(PreviewState& state) {
+    const std::optional<EnvironmentDesc>& e = state.scene->environment;
+    const EnvironmentDesc shown_desc = e.value_or(EnvironmentDesc{});
+    std::string file = shown(state, "environment.file", shown_desc.file);
+    if (ImGui::InputText("file (.hdr, .exr)##environment.file", &file,
+                         ImGuiInputTextFlags_EnterReturnsTrue))
+        state.tweaks["environment.file"] = file;
+    if (!e || e->source == EnvironmentDesc::Source::studio)
+        ImGui::TextUnformatted("the built-in studio (no file)");
+    edit_float(state, "intensity", "environment.intensity", shown_desc.intensity, 0, 4);
+    edit_float(state, "rotation", "environment.rotation", shown_desc.rotation, -180, 180);
+    const std::string background = shown(state, "environment.background",
+                                         std::string(shown_desc.background ? "true" : "false"));
+    bool show = background == "true";
+    if (ImGui::Checkbox("show behind the scene##environment.background", &show))
+        state.tweaks["environment.background"] = std::string(show ? "true" : "false");
+}
+
+// Metallic and roughness of each object's materials, for `pbr` styles.
+void materials_section(PreviewState& state) {
+    const SceneDesc& scene = *state.scene;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const ObjectDesc& object = scene.objects[i];
+        const std::string key = "objects." + std::to_string(i) + ".material";
+        ImGui::TextUnformatted(object.name.c_str());
+        const MaterialDesc& m = object.material;
+        edit_float(state, "metallic", key + ".metallic", m.metallic.value_or(0.0f), 0, 1);
+        edit_float(state, "roughness", key + ".roughness", m.roughness.value_or(0.5f), 0, 1);
+    }
+}
+
 void wind_section(PreviewState& state) {
     const SceneDesc& scene = *state.scene;
     for (size_t i = 0; i < scene.objects.size(); ++i) {
@@ -243,6 +276,10 @@ PreviewAction draw_preview_panel(PreviewState& state, float x, float width, floa
             camera_section(state, action);
         if (ImGui::CollapsingHeader("Style", ImGuiTreeNodeFlags_DefaultOpen)) style_section(state);
         if (ImGui::CollapsingHeader("Lights")) lights_section(state);
+        if (state.scene->style.shading == ShadingModel::pbr) {
+            if (ImGui::CollapsingHeader("Environment")) environment_section(state);
+            if (ImGui::CollapsingHeader("Materials")) materials_section(state);
+        }
         const bool cloth = std::any_of(state.scene->objects.begin(), state.scene->objects.end(),
                                        [](const ObjectDesc& o) { return o.cloth.has_value(); });
         if (cloth && ImGui::CollapsingHeader("Wind", ImGuiTreeNodeFlags_DefaultOpen))

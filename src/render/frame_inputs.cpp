@@ -35,6 +35,8 @@ StylePlan plan_styles(const SceneDesc& scene) {
         plan.object_style.push_back(obj.style ? static_cast<uint32_t>(plan.styles.size()) : 0);
         if (obj.style) plan.styles.push_back(&*obj.style);
     }
+    for (const uint32_t style : plan.object_style)
+        plan.object_normal_mapped.push_back(plan.styles[style]->shading == ShadingModel::pbr);
     for (const StyleDesc* style : plan.styles) {
         plan.any_gouraud = plan.any_gouraud || style->shading == ShadingModel::gouraud;
         plan.hidden_edges =

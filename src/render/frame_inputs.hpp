@@ -24,10 +24,12 @@ namespace facet {
 struct StylePlan {
     std::vector<const StyleDesc*> styles;
     std::vector<uint32_t> object_style;  // per scene object, index into styles
-    bool any_gouraud = false;            // some style lights vertices
-    bool hidden_edges = false;           // some style draws hidden wireframe edges
-    bool outlines = false;               // the scene's style draws outlines
-    bool occlusion = false;              // the scene's style darkens corners (ambient occlusion)
+    // Per scene object: 1 when its style is `pbr`, which draws normal maps.
+    std::vector<uint8_t> object_normal_mapped;
+    bool any_gouraud = false;   // some style lights vertices
+    bool hidden_edges = false;  // some style draws hidden wireframe edges
+    bool outlines = false;      // the scene's style draws outlines
+    bool occlusion = false;     // the scene's style darkens corners (ambient occlusion)
 };
 
 StylePlan plan_styles(const SceneDesc& scene);

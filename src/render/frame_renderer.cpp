@@ -83,7 +83,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
                                        scene_.output.passes,
                                        scene_.output.normals_in_camera_space,
                                        scene_.output.width,
-                                       scene_.output.height};
+                                       scene_.output.height,
+                                       plan.object_normal_mapped};
     if (targets_.surface_passes) fit_surface_passes(surface_in, out.surface);
     const AlphaCoverage alpha(world_, inputs.materials);
     rasterizer_.draw_tiles(

@@ -8,10 +8,10 @@
 
 #include "core/color.hpp"
 #include "render/hatch_charts.hpp"
+#include "render/normal_map_lookup.hpp"
 #include "shade/brdf.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
-#include "shade/normal_map.hpp"
 #include "shade/style_math.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
@@ -352,21 +352,15 @@ void apply_physical_maps(const ShadeInputs& in, ShadeBatch& b) {
 // the vertices carry (shade/normal_map.hpp). The G-buffer's normal (outlines,
 // occlusion, the normal pass) turns with it.
 void apply_normal_maps(const ShadeInputs& in, ShadeBatch& b) {
-    const TransformedVertices& v = in.vertices;
-    if (v.world_tangent.empty()) return;
     SurfaceBatch& s = b.lanes.surface;
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
-        if (!m.normal_map) continue;
-        const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
-        const glm::vec3 bary(b.sample.bary[0][i], b.sample.bary[1][i], b.sample.bary[2][i]);
-        const glm::vec4 tangent = bary[0] * v.world_tangent[c[0]] +
-                                  bary[1] * v.world_tangent[c[1]] + bary[2] * v.world_tangent[c[2]];
-        const bool back = b.setup[i]->back_facing != 0;
+        if (!draws_normal_map(in.world, in.vertices, m, b.setup[i]->source_triangle)) continue;
+        const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
         const glm::vec3 shown(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
-        const glm::vec3 front = normalise_or(back ? -shown : shown, glm::vec3(0, 1, 0));
-        const glm::vec3 texel(sample_slot(in, b, i, m.normal_map));
-        const glm::vec3 n = mapped_normal(front, tangent, back, texel, m.normal_scale);
+        const glm::vec3 front =
+            normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
+        const glm::vec3 n = normal_from_map(in.world, in.vertices, m, pixel, front);
         for (int a = 0; a < 3; ++a) b.normal[a][i] = n[a];
         s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
     }

@@ -1,5 +1,7 @@
 #include "render/surface_pass_stage.hpp"
 
+#include "render/normal_map_lookup.hpp"
+
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -56,7 +58,17 @@ FragmentValues fragment_values(const SurfacePassInputs& in, const Rasterizer& ra
         glm::vec3 n = interpolate<glm::vec3>(in.vertices.world_normal, corners, s.bary);
         const float length = glm::length(n);
         n = length > 0.0f ? n / length : glm::vec3(0.0f);
-        if (s.back_facing) n = -n;  // the side the camera sees, as shading uses
+        // A `pbr` style draws the normal map: the pass shows what it shades with.
+        const Material& m = in.frame.materials[draw.material];
+        if (in.normal_mapped[draw.object] && draws_normal_map(world, in.vertices, m, s.triangle) &&
+            length > 0.0f) {
+            SurfaceSample pixel = s;
+            pixel.ddx *= static_cast<float>(in.samples_per_side);
+            pixel.ddy *= static_cast<float>(in.samples_per_side);
+            n = normal_from_map(world, in.vertices, m, pixel, n);
+        } else if (s.back_facing) {
+            n = -n;  // the side the camera sees, as shading uses
+        }
         if (in.normals_in_camera_space) n = glm::mat3(in.frame.camera.view) * n;
         v.normal = n;
     }

@@ -47,6 +47,9 @@ struct SurfacePassInputs {
     PassSet passes;
     bool normals_in_camera_space;
     int width, height;  // the output's pixels
+    // Per scene object: whether its style draws normal maps (`pbr`), so
+    // the normal pass shows the mapped normal.
+    std::span<const uint8_t> normal_mapped;
 };
 
 // Gives each asked-for image of `images` the output size, reusing buffers.
