@@ -1,5 +1,5 @@
 // MikkTSpace-style tangent frames (Mikkelsen 2008); the steps are listed in
-// tangent_frames.hpp. Sums are in double, angles from exact_atan2, and
+// tangent_frames.hpp. Sums are in double, angles from atan2_turns, and
 // every order (welding, grouping, summing) comes from sorting by values
 // and corner numbers, so the result is the same bits on every machine and
 // for every thread count.
@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <numbers>
 #include <cstring>
 #include <tuple>
 
@@ -96,7 +97,7 @@ glm::dvec3 corner_contribution(const Surface& s, size_t corner, const glm::dvec3
     // An edge along the normal has no extent in its plane: measure in space.
     if (e1 == glm::dvec3(0.0) || e2 == glm::dvec3(0.0))
         e1 = unit_or_zero(next), e2 = unit_or_zero(previous);
-    return along * exact_atan2(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+    return along * (2.0 * std::numbers::pi) * atan2_turns(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
 }
 
 glm::vec4 frame_from_sum(const glm::dvec3& sum, const glm::vec3& normal, int orientation) {

@@ -113,5 +113,8 @@ struct DecodedExr {
     std::vector<std::vector<float>> channels;
 };
 DecodedExr read_exr(const std::string& path);
+// The size and channel names alone, from the header, with `channels` left
+// empty: to refuse a size before read_exr allocates for it.
+DecodedExr read_exr_header(const std::string& path);
 
 }  // namespace facet

@@ -3,6 +3,7 @@
 #include <cstdint>
 
 #include "core/exact_trig.hpp"
+#include "shade/hammersley.hpp"
 #include "shade/light_sample.hpp"
 
 namespace facet::pbr {
@@ -14,18 +15,6 @@ constexpr int kLast = DfgTable::kSize - 1;
 // The grid's perceptual roughness at row j (DfgTable's comment).
 double node_roughness(int j) {
     return kMinRoughness + (1.0 - kMinRoughness) * j / kLast;
-}
-
-// The radical inverse of i in base 2 (van der Corput), the second
-// coordinate of Hammersley's point set: i's bits mirrored about the binary
-// point. Exact: a 32-bit integer times 2^-32.
-double radical_inverse_base2(uint32_t i) {
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x00ff00ffu) << 8) | ((i & 0xff00ff00u) >> 8);
-    i = ((i & 0x0f0f0f0fu) << 4) | ((i & 0xf0f0f0f0u) >> 4);
-    i = ((i & 0x33333333u) << 2) | ((i & 0xccccccccu) >> 2);
-    i = ((i & 0x55555555u) << 1) | ((i & 0xaaaaaaaau) >> 1);
-    return static_cast<double>(i) * 0x1p-32;
 }
 
 // One node of the table: Karis 2013's estimate of the split-sum terms with
