@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <numbers>
 #include <cstring>
+#include <numbers>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -97,7 +97,8 @@ glm::dvec3 corner_contribution(const Surface& s, size_t corner, const glm::dvec3
     // An edge along the normal has no extent in its plane: measure in space.
     if (e1 == glm::dvec3(0.0) || e2 == glm::dvec3(0.0))
         e1 = unit_or_zero(next), e2 = unit_or_zero(previous);
-    return along * (2.0 * std::numbers::pi) * atan2_turns(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
+    return along * (2.0 * std::numbers::pi) *
+           atan2_turns(glm::length(glm::cross(e1, e2)), glm::dot(e1, e2));
 }
 
 glm::vec4 frame_from_sum(const glm::dvec3& sum, const glm::vec3& normal, int orientation) {
