@@ -95,7 +95,7 @@ inline void check_sane(const Mesh& mesh) {
     }
     for (const auto& m : mesh.materials)
         if (m.base_color_map.texture)
-            REQUIRE(m.base_color_map.texture->level(0).srgb8.size() +
+            REQUIRE(m.base_color_map.texture->level(0).bytes8.size() +
                         m.base_color_map.texture->level(0).half.size() ==
                     static_cast<size_t>(m.base_color_map.texture->width) *
                         m.base_color_map.texture->height);

@@ -244,7 +244,7 @@ TEST_CASE("OBJ real spider loads with all five textures", "[assets][obj][real]")
         REQUIRE(m.base_color_map.texture != nullptr);
         CHECK(m.base_color_map.texture->width > 0);
         CHECK(m.base_color_map.texture->height > 0);
-        CHECK(m.base_color_map.texture->level(0).srgb8.size() +
+        CHECK(m.base_color_map.texture->level(0).bytes8.size() +
                   m.base_color_map.texture->level(0).half.size() ==
               static_cast<size_t>(m.base_color_map.texture->width) *
                   m.base_color_map.texture->height);

@@ -125,8 +125,8 @@ TEST_CASE("pbr: a keyed environment rotation moves reflections and nothing else"
     const std::string mirror = "{ color: [1, 1, 1], metallic: 1, roughness: 0.05 }";
     const facet::FrameImages still = render_sphere(mirror, "environment: { rotation: 0 }");
     const facet::FrameImages turned = render_sphere(mirror, "environment: { rotation: 90 }");
-    CHECK(std::memcmp(still.normal.pixels.data(), turned.normal.pixels.data(),
-                      still.normal.pixels.size() * sizeof(still.normal.pixels[0])) == 0);
+    CHECK(std::memcmp(still.surface.normal.pixels.data(), turned.surface.normal.pixels.data(),
+                      still.surface.normal.pixels.size() * sizeof(still.surface.normal.pixels[0])) == 0);
     double difference = 0;
     for (size_t i = 0; i < still.color.pixels.size(); ++i)
         difference += std::fabs(facet::to_float(still.color.pixels[i]).r -

@@ -8,6 +8,10 @@ using facet::test::check_render;
 
 // clang-format off
 TEST_CASE("render: demo turntable",       "[render]") { check_render({"scenes/turntable.yaml", 10, "turntable-0010.png", {}, {"output.size=[480, 270]"}}); }
+// The PBR sampler: metals and dielectrics over a roughness range, normal and
+// occlusion maps (with the file's tangents and with made ones), a
+// metal-rough map, under the studio and three lights.
+TEST_CASE("render: demo pbr sampler",    "[render][pbr]") { check_render({"scenes/pbr.yaml", 13, "pbr-0013.png", {}, {"output.size=[480, 270]"}}); }
 TEST_CASE("render: shapes blinn-phong",   "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-blinn-phong.png"}); }
 TEST_CASE("render: shapes phong",         "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-phong.png", {}, {}, "phong"}); }
 TEST_CASE("render: shapes gouraud",       "[render]") { check_render({"tests/scenes/shapes.yaml", 2, "shapes-gouraud.png", {}, {}, "gouraud"}); }

@@ -27,7 +27,7 @@ const std::set<std::string> kCovered = {
     "blinn-phong",      "blueprint", "clay",        "depth",         "flat",    "gooch",
     "gouraud",          "hatching",  "ink",         "intersections", "normals", "palette",
     "pencil",           "phong",     "toon",        "toon-outline",  "unlit",   "wireframe",
-    "wireframe-shaded", "lit",       "lit-shadows", "palette-seed",
+    "wireframe-shaded", "lit",       "lit-shadows", "palette-seed",  "pbr",
 };
 }  // namespace
 
@@ -56,6 +56,7 @@ TEST_CASE("render style: wireframe",         "[render][style]") { check_render({
 TEST_CASE("render style: wireframe-shaded",  "[render][style]") { check_render({kScene, 1, "style_wireframe-shaded.png", {}, {}, "wireframe-shaded"}); }
 TEST_CASE("render style: lit",               "[render][style]") { check_render({kScene, 1, "style_lit.png", {}, {}, "lit"}); }
 TEST_CASE("render style: lit-shadows",       "[render][style]") { check_render({kScene, 1, "style_lit-shadows.png", {}, {}, "lit-shadows"}); }
+TEST_CASE("render style: pbr",               "[render][style]") { check_render({kScene, 1, "style_pbr.png", {}, {}, "pbr"}); }
 // clang-format on
 
 TEST_CASE("every shipped preset has a reference render above", "[render][style]") {

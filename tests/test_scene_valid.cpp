@@ -48,6 +48,9 @@ TEST_CASE("a minimal scene gets the documented defaults", "[scene]") {
     REQUIRE(scene.lights.size() == 1);  // the default key light
     CHECK(scene.lights[0].camera_relative);
     CHECK(scene.lights[0].type == facet::LightType::directional);
+    // A style that turns shadows on (lit-shadows, pbr) gives it a map of
+    // the sun's size, not of none.
+    CHECK(scene.lights[0].shadow_resolution == 2048);
     REQUIRE(scene.objects.size() == 1);
     CHECK(scene.objects[0].name == "object0");
     REQUIRE(scene.objects[0].primitive.has_value());

@@ -363,20 +363,19 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
                                const std::vector<Material>& materials, Warnings& warnings) {
     const StyleDesc& style = object_style(scene, scene.objects[object]);
     if (style.shading == ShadingModel::pbr) return;
-    bool maps = false, metal = false;
-    for (const Material& m : materials) {
-        maps = maps || m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f;
-        metal = metal || m.metallic > 0.0f;
-    }
-    if (!maps && !metal) return;
+    // Metal and roughness factors alone are read as a Phong highlight
+    // (docs/scene-format.md, "glTF files"); maps and coats are lost.
+    const bool maps = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
+        return m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f;
+    });
+    if (!maps) return;
     const ObjectDesc& obj = scene.objects[object];
-    warnings.push_back(
-        {obj.where, "objects." + std::to_string(object),
-         "'" + obj.name + "' has physically based materials (" +
-             std::string(maps ? "normal, occlusion, metal-rough or clearcoat maps" : "metal") +
-             ") that only `shading: pbr` draws: under " + shading_model_name(style.shading) +
-             " their relief, occlusion and metal are lost, and roughness becomes a Phong "
-             "highlight"});
+    warnings.push_back({obj.where, "objects." + std::to_string(object),
+                        "'" + obj.name +
+                            "' has normal, occlusion, metal-rough or clearcoat maps that only "
+                            "`shading: pbr` draws: under " +
+                            shading_model_name(style.shading) +
+                            " its relief, occlusion, metal and coat are lost"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

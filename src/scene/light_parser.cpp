@@ -140,6 +140,9 @@ LightDesc default_key_light() {
     // usual key light, so that no face turned to the camera is left unlit.
     light.direction = glm::normalize(glm::vec3(0.5f, -0.7f, -1.0f));
     light.camera_relative = true;
+    // A style with `shadows: true` turns its shadows on: the map needs the
+    // size a scene's sun gets.
+    light.shadow_resolution = kDefaultSunResolution;
     return light;
 }
 

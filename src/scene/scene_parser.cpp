@@ -673,6 +673,10 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         for (size_t i = 0; i < lights.size(); ++i) scene.lights.push_back(parse_light(lights[i]));
     } else {
         scene.lights.push_back(default_key_light());
+        // Under `pbr` the studio environment lights the scene too: the key
+        // light is there for its shadow and its direction, at half strength,
+        // so that a white surface facing both is not twice as bright.
+        if (scene.style.shading == ShadingModel::pbr) scene.lights.back().intensity = 0.5f;
     }
     if (scene.style.shadows)
         for (LightDesc& light : scene.lights)
