@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "assets/corner_sets.hpp"
 #include "assets/mesh.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
@@ -86,19 +87,6 @@ std::vector<uint32_t> weld_by_position(const std::vector<glm::vec3>& positions, 
     if (!keys.empty()) ++count;
     return id;
 }
-
-// Disjoint sets over a vertex's corners (union by index, path halving).
-struct CornerSets {
-    std::vector<uint32_t> parent;
-    uint32_t find(uint32_t i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    }
-    void join(uint32_t a, uint32_t b) {
-        a = find(a), b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
 
 // The corners round each welded vertex, as a counting sort: corners of
 // vertex w are corner[start[w] .. start[w + 1]); a corner is 3 t + k.

@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "assets/corner_sets.hpp"
 #include "core/exact_trig.hpp"
 
 namespace facet {
@@ -159,19 +160,6 @@ CornersAtVertex corners_at_vertices(const Surface& s, const std::vector<uint32_t
         at.corner[fill[weld[s.vertex(c)]]++] = static_cast<uint32_t>(c);
     return at;
 }
-
-// Disjoint sets over one vertex's corners; the root is the lowest.
-struct CornerSets {
-    std::vector<uint32_t> parent;
-    uint32_t find(uint32_t i) {
-        while (parent[i] != i) i = parent[i] = parent[parent[i]];
-        return i;
-    }
-    void join(uint32_t a, uint32_t b) {
-        a = find(a), b = find(b);
-        if (a != b) parent[std::max(a, b)] = std::min(a, b);
-    }
-};
 
 // Per corner, its group (step 3 and 5), numbered from 0 in order of the
 // groups' lowest corners; `count` receives the number of groups.
