@@ -125,8 +125,9 @@ TEST_CASE("pbr: a keyed environment rotation moves reflections and nothing else"
     const std::string mirror = "{ color: [1, 1, 1], metallic: 1, roughness: 0.05 }";
     const facet::FrameImages still = render_sphere(mirror, "environment: { rotation: 0 }");
     const facet::FrameImages turned = render_sphere(mirror, "environment: { rotation: 90 }");
-    CHECK(std::memcmp(still.surface.normal.pixels.data(), turned.surface.normal.pixels.data(),
-                      still.surface.normal.pixels.size() * sizeof(still.surface.normal.pixels[0])) == 0);
+    CHECK(std::memcmp(
+              still.surface.normal.pixels.data(), turned.surface.normal.pixels.data(),
+              still.surface.normal.pixels.size() * sizeof(still.surface.normal.pixels[0])) == 0);
     double difference = 0;
     for (size_t i = 0; i < still.color.pixels.size(); ++i)
         difference += std::fabs(facet::to_float(still.color.pixels[i]).r -
@@ -147,4 +148,76 @@ TEST_CASE("pbr: ior sets the dielectric's reflectance at normal incidence", "[re
         INFO("ior " << ior);
         CHECK(c.r == Approx(f0).epsilon(0.1));
     }
+}
+
+TEST_CASE("pbr: a clear coat keeps a white sphere in a white environment at 1", "[render][pbr]") {
+    for (const float roughness : {0.1f, 0.6f}) {
+        const facet::FrameImages images =
+            render_sphere("{ color: [1, 1, 1], metallic: 0, roughness: " + number(roughness) +
+                              ", clearcoat: 1, clearcoat_roughness: 0.2 }",
+                          "environment: { color: [1, 1, 1] }");
+        for (const float angle : {0.0f, 45.0f}) {
+            INFO("roughness " << roughness << ", angle " << angle);
+            const glm::vec4 c = pixel_at(images, images.color, sphere_point(angle));
+            CHECK(c.r == Approx(1.0).margin(0.03));
+        }
+    }
+}
+
+TEST_CASE(
+    "pbr: the environment as background fills what nothing covers, and a shadow "
+    "catcher darkens it",
+    "[render][pbr]") {
+    facet::test::TempDir dir("pbr-background");
+    const std::string text = R"(output: { size: [120, 90], tonemap: none, background: [0, 0, 1, 1] }
+camera: { position: [0, 3, 5], target: [0, 0.5, 0], fov: 40 }
+style: pbr
+environment: { color: [0.5, 0.25, 0.125], background: true }
+lights: [{ type: directional, direction: [0, -1, 0], intensity: 1, shadows: true }]
+objects:
+  - name: floor
+    primitive: { type: plane, size: 6 }
+    material: { shadow_catcher: true }
+  - name: cube
+    primitive: { type: cube, size: 1 }
+    translate: [0, 1, 0]
+)";
+    const facet::FrameImages images = facet::test::render_yaml(dir.path(), text, 1, 2);
+    // A corner above the horizon shows the environment, not the blue background.
+    const glm::vec4 sky = facet::to_float(images.color.at(2, 2));
+    CHECK(sky.r == Approx(0.5).margin(0.002));
+    CHECK(sky.g == Approx(0.25).margin(0.002));
+    CHECK(sky.b == Approx(0.125).margin(0.002));
+    CHECK(sky.a == 1.0f);
+    // Under the cube the catcher's shadow darkens the environment behind it.
+    const glm::vec4 shadow = pixel_at(images, images.color, {0.0f, 0.0f, 0.45f});
+    CHECK(shadow.r < 0.3f);
+    CHECK(shadow.b == Approx(shadow.r / 4).margin(0.01));
+}
+
+TEST_CASE(
+    "pbr: a frame rendered alone is the same bytes as in its sequence, with a keyed "
+    "rotation",
+    "[render][pbr][cli]") {
+    facet::test::TempDir dir("pbr-frames");
+    const std::string scene = facet::test::write_text(dir.file("scene.yaml"), R"(
+output: { size: [64, 48], frames: "1-3" }
+camera: { position: [0, 0, 4], target: [0, 0, 0], fov: 35 }
+style: pbr
+environment: { rotation: { keys: { 1: 0, 3: 120 } } }
+objects:
+  - primitive: { type: sphere, radius: 1 }
+    material: { color: [0.9, 0.9, 0.9], metallic: 1, roughness: 0.2 }
+)");
+    const auto all =
+        facet::test::run_facet("render '" + scene + "' -q -o '" + dir.file("all") + "'");
+    const auto one =
+        facet::test::run_facet("render '" + scene + "' -q -f 3 -o '" + dir.file("one") + "'");
+    REQUIRE(all.exit_code == 0);
+    REQUIRE(one.exit_code == 0);
+    const std::string in_sequence = facet::test::read_file(dir.file("all/scene/color.0003.png"));
+    CHECK_FALSE(in_sequence.empty());
+    CHECK(in_sequence == facet::test::read_file(dir.file("one/scene/color.0003.png")));
+    // The rotation moved the reflections between frames 1 and 3.
+    CHECK(in_sequence != facet::test::read_file(dir.file("all/scene/color.0001.png")));
 }

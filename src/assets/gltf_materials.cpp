@@ -336,8 +336,8 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                     "drawn with its clearcoatRoughnessFactor alone", TexelMeaning::data);
         if (e.Has("clearcoatNormalTexture"))
             warnings.push_back(file_warning(
-                path, what + " clearcoatNormalTexture is not drawn: the coat follows the base's "
-                             "normals, so its own relief is lost"));
+                path, what + " clearcoatNormalTexture is not drawn: the coat follows the mesh's "
+                             "smooth normals, so its own relief is lost"));
     }
 }
 
