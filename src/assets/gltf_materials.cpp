@@ -4,6 +4,7 @@
 #include <cmath>
 #include <memory>
 #include <optional>
+#include <sstream>
 
 #include "assets/gltf_accessors.hpp"
 #include "assets/gltf_extensions.hpp"
@@ -243,6 +244,14 @@ tinygltf::TextureInfo texture_info_of(const tinygltf::Value& extension, const ch
     return info;
 }
 
+// A bound as a message writes it: 1, 10, 0.5 (std::to_string gives
+// "10.000000", and cutting that short gave "10.").
+std::string bound_text(double v) {
+    std::ostringstream text;
+    text << v;
+    return text.str();
+}
+
 // A number of an extension, `fallback` when absent; outside [low, high]
 // (or not finite) it is an error naming the material and the field.
 float extension_number(const tinygltf::Value& extension, const char* key, float fallback,
@@ -250,8 +259,8 @@ float extension_number(const tinygltf::Value& extension, const char* key, float 
     if (!extension.Has(key)) return fallback;
     const double v = extension.Get(key).GetNumberAsDouble();
     if (!(v >= low && v <= high))
-        bad(path, what + ": " + key + " must be from " + std::to_string(low).substr(0, 3) + " to " +
-                      std::to_string(high).substr(0, 3));
+        bad(path,
+            what + ": " + key + " must be from " + bound_text(low) + " to " + bound_text(high));
     return static_cast<float>(v);
 }
 
@@ -337,7 +346,7 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         if (e.Has("clearcoatNormalTexture"))
             warnings.push_back(file_warning(
                 path, what + " clearcoatNormalTexture is not drawn: the coat follows the mesh's "
-                             "smooth normals, so its own relief is lost"));
+                             "own normals (not the base's normal map), so its relief is lost"));
     }
 }
 

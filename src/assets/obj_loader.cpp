@@ -182,13 +182,17 @@ std::map<std::string, int> mtllib_lines(const std::string& text) {
     return lines;
 }
 
-// Marks a material whose library gives a roughness or metalness (the PBR
-// extension of MTL: Pr, Pm, map_Pr, map_Pm): tinyobjloader reads an absent
-// Pr as 0, a mirror, which must not be mistaken for one that was given.
-constexpr const char* kPhysicalTermsGiven = "facet:physical";
+// Marks a material whose library gives its roughness (Pr) or metalness
+// (Pm), the PBR extension of MTL: tinyobjloader reads an absent Pr as 0, a
+// mirror, and an absent Pm as 0, which must not be mistaken for values that
+// were given. Each is marked on its own: a material that gives Pm alone
+// still takes its roughness from Ns.
+constexpr const char* kRoughnessGiven = "facet:Pr";
+constexpr const char* kMetalnessGiven = "facet:Pm";
 
-std::set<std::string> materials_with_physical_terms(const std::string& mtl) {
-    std::set<std::string> names;
+// The scalar PBR keys (Pr, Pm) each material of a library gives, by name.
+std::map<std::string, std::set<std::string>> materials_with_physical_terms(const std::string& mtl) {
+    std::map<std::string, std::set<std::string>> given;
     std::istringstream lines(mtl);
     std::string line, current;
     while (std::getline(lines, line)) {
@@ -199,11 +203,11 @@ std::set<std::string> materials_with_physical_terms(const std::string& mtl) {
             std::getline(words >> std::ws, current);
             while (!current.empty() && (current.back() == '\r' || current.back() == ' '))
                 current.pop_back();
-        } else if (key == "Pr" || key == "Pm" || key == "map_Pr" || key == "map_Pm") {
-            names.insert(current);
+        } else if (key == "Pr" || key == "Pm") {
+            given[current].insert(key);
         }
     }
-    return names;
+    return given;
 }
 
 // .mtl files named by mtllib, resolved and checked by the asset path policy
@@ -242,10 +246,13 @@ class MtlReader : public tinyobj::MaterialReader {
         std::istringstream in(text);
         const size_t first = materials->size();
         tinyobj::LoadMtl(names, materials, &in, warn, err);
-        const std::set<std::string> physical = materials_with_physical_terms(text);
+        const auto physical = materials_with_physical_terms(text);
         for (size_t i = first; i < materials->size(); ++i) {
             auto& m = (*materials)[i];
-            if (physical.count(m.name)) m.unknown_parameter[kPhysicalTermsGiven] = "1";
+            if (const auto keys = physical.find(m.name); keys != physical.end()) {
+                if (keys->second.count("Pr")) m.unknown_parameter[kRoughnessGiven] = "1";
+                if (keys->second.count("Pm")) m.unknown_parameter[kMetalnessGiven] = "1";
+            }
             std::string key = material_key(m.name);
             if (key == m.name) continue;
             auto it = names->find(m.name);
@@ -358,38 +365,52 @@ std::shared_ptr<const Texture> material_texture(const std::string& texname, cons
 }
 
 // MTL's roughness and metalness maps (each a grey image) as glTF's one
-// metallic-roughness map: G roughness, B metalness, at the roughness map's
-// size (the metal map read bilinearly there when their sizes differ).
+// metallic-roughness map: G roughness, B metalness. It takes the larger of
+// the two sizes on each axis, so that neither map loses its detail; a map
+// of another size is read bilinearly there (one of the same size keeps its
+// texels exactly, read at their centres).
 std::shared_ptr<const Texture> metal_rough_texture(const Texture* roughness, const Texture* metal) {
-    const Texture& size = roughness ? *roughness : *metal;
-    std::vector<glm::vec4> texels(static_cast<size_t>(size.width) * size.height);
-    for (int y = 0; y < size.height; ++y)
-        for (int x = 0; x < size.width; ++x) {
-            const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(size.width),
-                               (static_cast<float>(y) + 0.5f) / static_cast<float>(size.height));
-            const float r = roughness ? roughness->texel(0, x, y).r : 1.0f;
-            const float m = metal ? metal->sample(uv).r : 1.0f;
-            texels[static_cast<size_t>(y) * size.width + x] = {1.0f, r, m, 1.0f};
-        }
-    Texture combined =
-        Texture::from_linear(size.width, size.height, texels, Texture::Format::data8);
-    combined.sampler = size.sampler;
+    const Texture& first = roughness ? *roughness : *metal;
+    const int width = std::max(roughness ? roughness->width : 0, metal ? metal->width : 0);
+    const int height = std::max(roughness ? roughness->height : 0, metal ? metal->height : 0);
+    // A map's R at texel (x, y) of the combined map; 1 without the map.
+    auto read = [&](const Texture* map, int x, int y) {
+        if (!map) return 1.0f;
+        if (map->width == width && map->height == height) return map->texel(0, x, y).r;
+        const glm::vec2 uv((static_cast<float>(x) + 0.5f) / static_cast<float>(width),
+                           (static_cast<float>(y) + 0.5f) / static_cast<float>(height));
+        return map->sample(uv).r;
+    };
+    std::vector<glm::vec4> texels(static_cast<size_t>(width) * height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            texels[static_cast<size_t>(y) * width + x] = {1.0f, read(roughness, x, y),
+                                                          read(metal, x, y), 1.0f};
+    Texture combined = Texture::from_linear(width, height, texels, Texture::Format::data8);
+    combined.sampler = first.sampler;
     return std::make_shared<const Texture>(std::move(combined));
 }
 
-// MTL's PBR extension (Pr, Pm, map_Pr, map_Pm, norm). Without Pr the
-// roughness follows the Phong exponent: GGX's alpha^2 = 2 / (Ns + 2), the
-// usual match of a Blinn-Phong lobe's width (Walter et al. 2007, eq. 33).
+// MTL's PBR extension (Pr, Pm, map_Pr, map_Pm, norm). A map multiplies
+// its value (as glTF's factors); a map given without its value is the
+// value itself (factor 1). Without Pr or map_Pr the roughness follows the
+// Phong exponent: GGX's alpha^2 = 2 / (Ns + 2), the usual match of a
+// Blinn-Phong lobe's width (Walter et al. 2007, eq. 33); without Pm or
+// map_Pm the material is a dielectric.
 void obj_physical_terms(const tinyobj::material_t& m, const std::string& path,
                         const AssetContext& context, TextureCache& textures, Material& mat) {
-    const bool given = m.unknown_parameter.count(kPhysicalTermsGiven) > 0;
-    if (given) {
+    if (m.unknown_parameter.count(kRoughnessGiven)) {
         mat.roughness = std::clamp(m.roughness, 0.0f, 1.0f);
-        mat.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+    } else if (!m.roughness_texname.empty()) {
+        mat.roughness = 1.0f;
     } else {
         const float alpha = std::sqrt(2.0f / (mat.shininess + 2.0f));
         mat.roughness = std::clamp(std::sqrt(alpha), 0.0f, 1.0f);
     }
+    if (m.unknown_parameter.count(kMetalnessGiven))
+        mat.metallic = std::clamp(m.metallic, 0.0f, 1.0f);
+    else
+        mat.metallic = m.metallic_texname.empty() ? 0.0f : 1.0f;
     std::shared_ptr<const Texture> roughness, metal;
     if (!m.roughness_texname.empty())
         roughness = material_texture(m.roughness_texname, "map_Pr", mat.name, path, context,

@@ -29,7 +29,7 @@ TextureSlot scene_map(const MaterialDesc::Map& map, bool data, TextureFiles& tex
         try {
             colour = std::make_shared<Texture>(load_texture(map.path, &budget));
         } catch (const Error& e) {
-            fail_input(map.at, "", e.what());
+            fail_input(map.at, map.key, e.what());
         }
     }
     TextureSlot slot;
@@ -83,9 +83,12 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, Textur
         m.base_color_map.texture = scene_map(*desc.texture, false, textures, budget).texture;
     resolve_physical_terms(desc, textures, budget, m);
     // uv_scale multiplies the coordinates the file's mapping gives, and
-    // wrap replaces its samplers', for every map alike.
-    for (TextureSlot* slot : {&m.base_color_map, &m.normal_map, &m.occlusion_map,
-                              &m.metal_rough_map, &m.emissive_map}) {
+    // wrap replaces its samplers', for every map alike: the file's
+    // specular and clearcoat maps too, or they would slide off the others.
+    for (TextureSlot* slot :
+         {&m.base_color_map, &m.normal_map, &m.occlusion_map, &m.metal_rough_map, &m.emissive_map,
+          &m.specular_weight_map, &m.specular_color_map, &m.clearcoat_map,
+          &m.clearcoat_roughness_map}) {
         if (!*slot) continue;
         if (desc.uv_scale) slot->transform = slot->transform.scaled(glm::dvec2(*desc.uv_scale));
         if (desc.wrap) {

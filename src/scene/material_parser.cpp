@@ -9,6 +9,11 @@
 namespace facet {
 namespace {
 
+// A map's file, where the scene names it and its key.
+MaterialDesc::Map map_of(const Field& f, const std::string& base_dir) {
+    return {existing_file(f, base_dir), f.where(), f.path()};
+}
+
 // The keys of the `pbr` model (docs/pbr.md, "Material keys").
 void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialDesc& m) {
     if (f.has("metallic")) m.metallic = f["metallic"].animated_number(0, 1);
@@ -22,7 +27,7 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
     number("clearcoat", m.clearcoat, 0, 1);
     number("clearcoat_roughness", m.clearcoat_roughness, 0, 1);
     auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
-        if (f.has(key)) out = MaterialDesc::Map{existing_file(f[key], base_dir), f[key].where()};
+        if (f.has(key)) out = map_of(f[key], base_dir);
     };
     map("normal_map", m.normal_map);
     map("occlusion_map", m.occlusion_map);
@@ -77,8 +82,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     if (auto v = coefficient("diffuse", "kd")) m.diffuse = v->animated_number(0, 1000);
     if (auto v = coefficient("specular", "ks")) m.specular = v->animated_number(0, 1000);
     if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
-    if (f.has("texture"))
-        m.texture = MaterialDesc::Map{existing_file(f["texture"], base_dir), f["texture"].where()};
+    if (f.has("texture")) m.texture = map_of(f["texture"], base_dir);
     if (f.has("wrap"))
         m.wrap =
             std::map<std::string, Wrap>{

@@ -158,10 +158,11 @@ struct MaterialDesc {
     std::optional<Animated<glm::vec3>> color;
     std::optional<Animated<float>> ambient, diffuse, specular, shininess;
     // A file the material reads, resolved against the scene file, with
-    // where the scene names it.
+    // where the scene names it and its key (for errors reading it).
     struct Map {
         std::string path;
         SourceLocation at;
+        std::string key;
     };
     std::optional<Map> texture;         // the base colour map
     std::optional<Wrap> wrap;           // both axes
