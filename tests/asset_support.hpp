@@ -194,6 +194,23 @@ inline std::string write_png(const std::string& path, const ColorImage& image) {
     return write_bytes(path, png_bytes(image));
 }
 
+// An 8-bit PNG of `channels` channels, its samples given row by row, as
+// they are: no transfer curve (data maps, or colour already in sRGB bytes).
+inline std::vector<uint8_t> png_of(int width, int height, int channels,
+                                   std::vector<uint8_t> samples) {
+    PngSamples png;
+    png.width = width;
+    png.height = height;
+    png.channels = channels;
+    png.bytes = std::move(samples);
+    return encode_png(png, 6);
+}
+
+// A 2 x 2 RGB PNG every sample of which is `byte`.
+inline std::vector<uint8_t> flat_png(uint8_t byte) {
+    return png_of(2, 2, 3, std::vector<uint8_t>(12, byte));
+}
+
 // --- glTF files -------------------------------------------------------------
 
 constexpr int kByte = 5120, kUByte = 5121, kShort = 5122, kUShort = 5123, kUInt = 5125,

@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "output/encoders.hpp"
+#include "asset_support.hpp"
 #include "render_check.hpp"
 #include "shade/normal_map.hpp"
 #include "support.hpp"
@@ -31,18 +31,16 @@ glm::vec3 bump_normal(float u, float v) {
 
 // The map as 8-bit RGB bytes, (n + 1) / 2; `flip_green` negates y.
 void write_bump_map(const std::string& path, bool flip_green) {
-    facet::PngSamples png;
-    png.width = png.height = kMapSize;
-    png.channels = 3;
+    std::vector<uint8_t> samples;
     for (int y = 0; y < kMapSize; ++y)
         for (int x = 0; x < kMapSize; ++x) {
             glm::vec3 n = bump_normal((static_cast<float>(x) + 0.5f) / kMapSize,
                                       (static_cast<float>(y) + 0.5f) / kMapSize);
             if (flip_green) n.y = -n.y;
             for (int a = 0; a < 3; ++a)
-                png.bytes.push_back(static_cast<uint8_t>(std::lround((n[a] + 1.0f) * 127.5f)));
+                samples.push_back(static_cast<uint8_t>(std::lround((n[a] + 1.0f) * 127.5f)));
         }
-    facet::test::write_bytes(path, facet::encode_png(png, 6));
+    facet::test::write_bytes(path, facet::test::png_of(kMapSize, kMapSize, 3, samples));
 }
 
 // A 2 x 2 plane (u along +X, v along +Z) seen from above, its normal pass.

@@ -41,21 +41,6 @@ float as_srgb_colour(uint8_t byte) {
     return static_cast<float>(v <= 0.04045 ? v / 12.92 : std::pow((v + 0.055) / 1.055, 2.4));
 }
 
-// An 8-bit PNG of `channels` channels, its samples given row by row.
-std::vector<uint8_t> png_of(int width, int height, int channels, std::vector<uint8_t> samples) {
-    PngSamples png;
-    png.width = width;
-    png.height = height;
-    png.channels = channels;
-    png.bytes = std::move(samples);
-    return encode_png(png, 6);
-}
-
-// A 2 x 2 RGB PNG every sample of which is `byte`.
-std::vector<uint8_t> flat_png(uint8_t byte) {
-    return png_of(2, 2, 3, std::vector<uint8_t>(12, byte));
-}
-
 // A 2 x 2 quad facing +Z with normals and texture coordinates, showing
 // material 0 of `materials`.
 void quad_with_materials(Gltf& g, const json& materials) {

@@ -30,15 +30,6 @@ namespace {
 // colour 0.2158.
 constexpr uint8_t kMidByte = 128;
 
-// A 2 x 2 RGB PNG of kMidByte everywhere.
-std::vector<uint8_t> mid_grey_png() {
-    PngSamples png;
-    png.width = png.height = 2;
-    png.channels = 3;
-    png.bytes.assign(12, kMidByte);
-    return encode_png(png, 6);
-}
-
 // The slot's texture is read as numbers (byte / 255).
 void require_data(const TextureSlot& slot) {
     REQUIRE(slot.texture);
@@ -115,7 +106,7 @@ TEST_CASE("scene maps resolve against the scene's folder, data maps read numbers
           "[pbr][scene]") {
     TempDir dir("pbr-scene");
     for (const char* name : {"normal", "occlusion", "metal_rough", "glow", "shared"})
-        write_bytes(dir.file(std::string("maps/") + name + ".png"), mid_grey_png());
+        write_bytes(dir.file(std::string("maps/") + name + ".png"), flat_png(kMidByte));
     const std::string path = write_text(
         dir.file("scene/maps.yaml"),
         cube_scene("pbr",
@@ -158,10 +149,10 @@ TEST_CASE("scene maps resolve against the scene's folder, data maps read numbers
 TEST_CASE("uv_scale and wrap apply to every map, the file's specular and coat maps too",
           "[pbr][scene]") {
     TempDir dir("pbr-scene");
-    write_bytes(dir.file("grey.png"), mid_grey_png());
+    write_bytes(dir.file("grey.png"), flat_png(kMidByte));
     // A glTF quad with a texture in each of its nine map slots.
     Gltf g;
-    g.doc["images"] = {{{"uri", "data:image/png;base64," + base64(mid_grey_png())}}};
+    g.doc["images"] = {{{"uri", "data:image/png;base64," + base64(flat_png(kMidByte))}}};
     g.doc["textures"] = {{{"source", 0}}};
     const json slot = {{"index", 0}};
     g.doc["materials"] = {
@@ -291,7 +282,7 @@ TEST_CASE("a scene map or environment file that cannot be read names its key", "
 TEST_CASE("a normal map under blinn-phong warns that relief and occlusion are lost",
           "[pbr][warnings]") {
     TempDir dir("pbr-scene");
-    write_bytes(dir.file("bump.png"), mid_grey_png());
+    write_bytes(dir.file("bump.png"), flat_png(kMidByte));
     const std::string material = "{ normal_map: bump.png, occlusion_map: bump.png }";
     const World phong =
         build_world(load(write_text(dir.file("phong.yaml"), cube_scene("blinn-phong", material))));

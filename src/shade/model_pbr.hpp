@@ -19,7 +19,7 @@
 namespace facet {
 
 namespace pbr {
-struct PrefilteredEnvironment;  // shade/environment_map.hpp
+class PrefilteredEnvironment;  // shade/environment_map.hpp
 }
 
 struct SurfaceLanes;
