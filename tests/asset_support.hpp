@@ -206,6 +206,10 @@ inline std::vector<uint8_t> png_of(int width, int height, int channels,
     return encode_png(png, 6);
 }
 
+// Mid-grey: read as a number 0.502, as sRGB colour 0.2158, far apart, so a
+// map read with the wrong meaning shows.
+constexpr uint8_t kMidByte = 128;
+
 // A 2 x 2 RGB PNG every sample of which is `byte`.
 inline std::vector<uint8_t> flat_png(uint8_t byte) {
     return png_of(2, 2, 3, std::vector<uint8_t>(12, byte));

@@ -44,7 +44,8 @@ void write_bump_map(const std::string& path, bool flip_green) {
 }
 
 // A 2 x 2 plane (u along +X, v along +Z) seen from above, its normal pass.
-facet::FrameImages render_bump(bool flip_green, const std::string& style = "pbr") {
+facet::FrameImages render_bump(bool flip_green, const std::string& style = "pbr",
+                               const std::string& extra_material = "") {
     facet::test::TempDir dir("normal-map");
     write_bump_map(dir.file("bump.png"), flip_green);
     const std::string text = R"(output: { size: [200, 200], passes: [color, normal] }
@@ -53,7 +54,8 @@ style: )" + style + R"(
 objects:
   - name: quad
     primitive: { type: plane, size: 2 }
-    material: { color: [0.8, 0.8, 0.8], normal_map: bump.png, roughness: 0.5 }
+    material: { color: [0.8, 0.8, 0.8], normal_map: bump.png, roughness: 0.5)" +
+                             extra_material + R"( }
 )";
     return facet::test::render_yaml(dir.path(), text, 1, 2);
 }
@@ -139,4 +141,15 @@ TEST_CASE("mapped_normal: seen from the back, the whole frame turns over", "[pbr
     CHECK(degrees_between(facet::mapped_normal(n, t, false, texel, 0.0f), n) < 1e-3f);
     // A tangent along the normal cannot make a frame: the normal stays.
     CHECK(facet::mapped_normal(n, glm::vec4(0, 1, 0, 1), false, texel, 1.0f) == n);
+}
+
+TEST_CASE("normal map: a mirrored mapping (uv_scale -1) still gives the hemisphere's normals",
+          "[render][pbr][normal_map]") {
+    // u' = -u, v' = -v: the map is read turned half round, and its stored
+    // directions must turn with it, or the bump lights as a dent.
+    const facet::FrameImages images = render_bump(false, "pbr", ", uv_scale: -1");
+    for (const glm::vec3& p : bump_points()) {
+        INFO("point " << p.x << ", " << p.z);
+        CHECK(degrees_between(normal_at(images, p), hemisphere_normal(p.x, p.z)) < 2.0f);
+    }
 }

@@ -25,10 +25,6 @@ using json = nlohmann::json;
 
 namespace {
 
-// The byte every map here holds: mid-grey, whose sRGB decode (0.2158) is
-// far from its value as a number (0.502).
-constexpr uint8_t kMidByte = 128;
-
 // A byte as a number, as data maps read it.
 float as_number(uint8_t byte) {
     return static_cast<float>(byte) / 255.0f;

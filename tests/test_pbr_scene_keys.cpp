@@ -26,10 +26,6 @@ using json = nlohmann::json;
 
 namespace {
 
-// The byte every map here holds: mid-grey, as a number 0.502, as sRGB
-// colour 0.2158.
-constexpr uint8_t kMidByte = 128;
-
 // The slot's texture is read as numbers (byte / 255).
 void require_data(const TextureSlot& slot) {
     REQUIRE(slot.texture);

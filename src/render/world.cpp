@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <span>
 
 #include <glm/geometric.hpp>
 
@@ -351,7 +352,7 @@ std::shared_ptr<const pbr::PrefilteredEnvironment> scene_environment(const Scene
                             "lights only `shading: pbr` styles, and the scene has none: it is "
                             "not drawn (give `background: true` to show it behind the scene)"});
     if ((!lights && !shown) || (e && e->source == EnvironmentDesc::Source::none)) return nullptr;
-    if (!e || e->source == EnvironmentDesc::Source::studio) return pbr::studio_environment();
+    if (!e || e->source == EnvironmentDesc::Source::studio) return pbr::shared_studio_environment();
     if (e->source == EnvironmentDesc::Source::color) return pbr::uniform_environment(e->color);
     try {
         return pbr::load_environment(e->file, warnings);
@@ -363,7 +364,7 @@ std::shared_ptr<const pbr::PrefilteredEnvironment> scene_environment(const Scene
 // Objects drawn by another model than `pbr` lose their materials'
 // physically based inputs: said once per object.
 void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
-                               const std::vector<Material>& materials, Warnings& warnings) {
+                               std::span<const Material> materials, Warnings& warnings) {
     const StyleDesc& style = object_style(scene, scene.objects[object]);
     if (style.shading == ShadingModel::pbr) return;
     // Metal and roughness factors alone are read as a Phong highlight
@@ -429,10 +430,9 @@ World build_world(const SceneDesc& scene) {
             world.materials.push_back(resolve_material(m, obj.material, textures, texture_budget));
             world.material_object.push_back(o);
         }
-        warn_unlit_physical_terms(
-            scene, o,
-            std::vector<Material>(world.materials.begin() + material_base, world.materials.end()),
-            world.warnings);
+        warn_unlit_physical_terms(scene, o,
+                                  std::span<const Material>(world.materials).subspan(material_base),
+                                  world.warnings);
         // The scene's material may give a normal map to a mesh whose file
         // had none; a cloth's vertices are its solver's and do not split.
         mesh = with_object_tangents(world, material_base, mesh, obj.cloth.has_value());

@@ -125,6 +125,10 @@ SharedEnvironment uniform_environment(const glm::vec3& radiance);
 EquirectRadiance studio_image();
 // build_environment(studio_image(), threads).
 SharedEnvironment studio_environment(unsigned threads = 0);
+// The studio, prefiltered on first use and then shared (a function-local
+// static const, like the DFG table): the preview rebuilds its world on
+// every edit, and the studio is the same each time.
+SharedEnvironment shared_studio_environment();
 
 // Reads an equirectangular environment image: a Radiance .hdr (RGBE,
 // stb_image) or an OpenEXR .exr (its R, G and B channels), told apart by

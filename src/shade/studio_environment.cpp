@@ -103,4 +103,9 @@ SharedEnvironment studio_environment(unsigned threads) {
     return build_environment(studio_image(), threads);
 }
 
+SharedEnvironment shared_studio_environment() {
+    static const SharedEnvironment studio = studio_environment();
+    return studio;
+}
+
 }  // namespace facet::pbr
