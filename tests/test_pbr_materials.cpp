@@ -529,3 +529,20 @@ TEST_CASE("MTL norm is a normal map read as data", "[pbr][obj]") {
     require_read_as_data(m.normal_map);
     require_read_as_colour(m.base_color_map);
 }
+
+TEST_CASE("MTL terms facet does not draw are named in one warning per material", "[pbr][obj]") {
+    TempDir dir("pbr-obj-lost");
+    write_bytes(dir.file("h.png"), flat_png(kMidByte));
+    write_text(dir.file("m.mtl"),
+               "newmtl lamp\nKd 1 1 1\nKe 1 0.5 0\nd 0.5\nmap_Bump h.png\nmap_Ks h.png\n"
+               "newmtl plain\nKd 0.5 0.5 0.5\nKe 0 0 0\n");
+    const std::string path = write_text(dir.file("m.obj"),
+                                        "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\n"
+                                        "usemtl lamp\nf 1 2 3\nusemtl plain\nf 1 2 3\n");
+    const Mesh mesh = load_obj(path);
+    const std::string all = all_warnings(mesh);
+    INFO(all);
+    CHECK_THAT(all, Contains("material 'lamp': bump (a height map; `norm` is read), map_Ks, "
+                             "Ke (emission), d (transparency) not drawn"));
+    CHECK_THAT(all, !Contains("material 'plain'"));
+}

@@ -425,6 +425,32 @@ void obj_physical_terms(const tinyobj::material_t& m, const std::string& path,
             material_texture(m.normal_texname, "norm", mat.name, path, context, textures, true);
 }
 
+// What an MTL material gives that facet does not draw, named by its key
+// and what is lost, in one warning per material.
+void warn_undrawn_mtl_terms(const tinyobj::material_t& m, const std::string& path,
+                            Warnings& warnings) {
+    const std::pair<const std::string*, const char*> maps[] = {
+        {&m.bump_texname, "bump (a height map; `norm` is read)"},
+        {&m.displacement_texname, "disp"},
+        {&m.specular_texname, "map_Ks"},
+        {&m.specular_highlight_texname, "map_Ns"},
+        {&m.alpha_texname, "map_d"},
+        {&m.ambient_texname, "map_Ka"},
+        {&m.emissive_texname, "map_Ke"},
+        {&m.reflection_texname, "refl"},
+        {&m.sheen_texname, "map_Ps"},
+    };
+    std::string lost;
+    for (const auto& [name, key] : maps)
+        if (!name->empty()) lost += (lost.empty() ? "" : ", ") + std::string(key);
+    if (m.emission[0] > 0 || m.emission[1] > 0 || m.emission[2] > 0)
+        lost += (lost.empty() ? "" : ", ") + std::string("Ke (emission)");
+    if (m.dissolve < 1.0f) lost += (lost.empty() ? "" : ", ") + std::string("d (transparency)");
+    if (lost.empty()) return;
+    warnings.push_back(file_warning(path, "material '" + material_name(m.name) + "': " + lost +
+                                              " not drawn: the surface shows without them"));
+}
+
 Material obj_material(const tinyobj::material_t& m, const std::string& path,
                       const AssetContext& context, TextureCache& textures) {
     Material mat;
@@ -578,8 +604,10 @@ Mesh load_obj(const std::string& path, const AssetContext& context) {
         mesh.warnings.push_back(file_warning(path, line));
 
     TextureCache textures;
-    for (const auto& m : obj.materials)
+    for (const auto& m : obj.materials) {
         mesh.materials.push_back(obj_material(m, path, context, textures));
+        warn_undrawn_mtl_terms(m, path, mesh.warnings);
+    }
 
     PartAssembly assembly(obj.attrib, path, static_cast<uint32_t>(mesh.materials.size()));
     for (const auto& shape : obj.shapes) assembly.add_shape(shape);
