@@ -61,23 +61,43 @@ DfgTerms integrate_dfg_node(double n_dot_v, double alpha) {
 }  // namespace
 
 DfgTerms DfgTable::lookup(float n_dot_v, float roughness) const {
-    const float x = std::clamp(n_dot_v, 0.0f, 1.0f) * kLast;
-    const float y = (std::clamp(roughness, kMinRoughness, 1.0f) - kMinRoughness) /
-                    (1.0f - kMinRoughness) * kLast;
-    const int i = std::min(static_cast<int>(x), kLast - 1);  // x >= 0: truncation is floor
-    const int j = std::min(static_cast<int>(y), kLast - 1);
-    const float tx = x - static_cast<float>(i), ty = y - static_cast<float>(j);
-    const DfgTerms& t00 = terms[j * kSize + i];
-    const DfgTerms& t10 = terms[j * kSize + i + 1];
-    const DfgTerms& t01 = terms[(j + 1) * kSize + i];
-    const DfgTerms& t11 = terms[(j + 1) * kSize + i + 1];
-    const auto blend = [&](float a00, float a10, float a01, float a11) {
-        const float low = a00 + (a10 - a00) * tx;
-        const float high = a01 + (a11 - a01) * tx;
+    const Lanes lanes = lookup(simd::splat(n_dot_v), simd::splat(roughness));
+    return {lanes.scale[0], lanes.bias[0]};
+}
+
+DfgTable::Lanes DfgTable::lookup(simd::vf n_dot_v, simd::vf roughness) const {
+    using simd::splat;
+    using simd::vf;
+    using simd::vi;
+    // vmax(x, low) first: a NaN becomes the low end.
+    const float last = static_cast<float>(kLast);
+    const vf x = simd::vmin(simd::vmax(n_dot_v, splat(0.0f)), splat(1.0f)) * last;
+    const vf y =
+        (simd::vmin(simd::vmax(roughness, splat(kMinRoughness)), splat(1.0f)) - kMinRoughness) /
+        (1.0f - kMinRoughness) * last;
+    // x, y >= 0: truncation is floor.
+    vi i = __builtin_convertvector(x, vi), j = __builtin_convertvector(y, vi);
+    const vi highest = simd::splat_i(kLast - 1);
+    i = i < highest ? i : highest;
+    j = j < highest ? j : highest;
+    const vf tx = x - __builtin_convertvector(i, vf), ty = y - __builtin_convertvector(j, vf);
+    // The four nodes round each point, read one lane at a time.
+    vf scale[4], bias[4];
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+        const DfgTerms* low = &terms[static_cast<size_t>(j[lane] * kSize + i[lane])];
+        const DfgTerms* high = low + kSize;
+        const DfgTerms* nodes[4] = {low, low + 1, high, high + 1};
+        for (int k = 0; k < 4; ++k) {
+            scale[k][lane] = nodes[k]->scale;
+            bias[k][lane] = nodes[k]->bias;
+        }
+    }
+    const auto blend = [&](const vf(&a)[4]) {
+        const vf low = a[0] + (a[1] - a[0]) * tx;
+        const vf high = a[2] + (a[3] - a[2]) * tx;
         return low + (high - low) * ty;
     };
-    return {blend(t00.scale, t10.scale, t01.scale, t11.scale),
-            blend(t00.bias, t10.bias, t01.bias, t11.bias)};
+    return {blend(scale), blend(bias)};
 }
 
 DfgTable compute_dfg_table() {

@@ -34,6 +34,8 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/simd_math.hpp"
+
 #include "shade/light_sample.hpp"  // dot3
 
 namespace facet::pbr {
@@ -186,6 +188,12 @@ struct DfgTable {
     // The terms at any n.v and perceptual roughness, each clamped to the
     // table's range.
     DfgTerms lookup(float n_dot_v, float roughness) const;
+    // The same for eight points at once, to the bit (the scalar form is its
+    // lane 0). A NaN reads the table's low end, never beyond it.
+    struct Lanes {
+        simd::vf scale, bias;
+    };
+    Lanes lookup(simd::vf n_dot_v, simd::vf roughness) const;
 };
 
 // Computes the table by quasi-Monte Carlo integration: kSamples Hammersley

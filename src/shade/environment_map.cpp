@@ -47,6 +47,42 @@ glm::vec3 PrefilteredEnvironment::specular(const glm::vec3& reflected,
     return lower + (upper - lower) * t;
 }
 
+void PrefilteredEnvironment::diffuse(const simd::vf (&n)[3], simd::vf (&radiance)[3]) const {
+    diffuse_radiance(sh_, n, radiance);
+    for (simd::vf& channel : radiance)  // glm::max's order: a NaN stays
+        channel = channel < simd::splat(0.0f) ? simd::splat(0.0f) : channel;
+}
+
+void PrefilteredEnvironment::specular(const simd::vf (&reflected)[3], simd::vf perceptual_roughness,
+                                      simd::vf (&radiance)[3]) const {
+    using simd::splat;
+    using simd::vf;
+    using simd::vi;
+    // As the one-point form, with std::max and std::min's order: NaN is 0.
+    const vf clamped_high = splat(1.0f) < perceptual_roughness ? splat(1.0f) : perceptual_roughness;
+    const vf roughness = splat(0.0f) < clamped_high ? clamped_high : splat(0.0f);
+    const vf position = roughness * static_cast<float>(kEnvironmentLevels - 1);
+    const vi last = simd::splat_i(kEnvironmentLevels - 1);
+    vi k = __builtin_convertvector(position, vi);
+    k = last < k ? last : k;
+    const vf t = position - __builtin_convertvector(k, vf);
+    vf px, py;
+    octahedral_encode(reflected[0], reflected[1], reflected[2], px, py);
+    const OctahedralMap* lower_maps[simd::kLanes];
+    const OctahedralMap* upper_maps[simd::kLanes];
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+        lower_maps[lane] = &levels_[static_cast<size_t>(k[lane])];
+        upper_maps[lane] = &levels_[static_cast<size_t>(std::min(k[lane] + 1, last[lane]))];
+    }
+    OctahedralMap::sample(lower_maps, px, py, radiance);
+    const vi on_level = t == splat(0.0f);
+    if (simd::movemask(on_level) == 0xffu) return;
+    vf upper[3];
+    OctahedralMap::sample(upper_maps, px, py, upper);
+    for (int c = 0; c < 3; ++c)
+        radiance[c] = on_level ? radiance[c] : radiance[c] + (upper[c] - radiance[c]) * t;
+}
+
 SharedEnvironment build_environment(const EquirectRadiance& image, unsigned threads) {
     if (image.width <= 0 || image.height <= 0 ||
         image.rgb.size() != static_cast<size_t>(image.width) * image.height * 3)

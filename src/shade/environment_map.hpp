@@ -80,6 +80,12 @@ class PrefilteredEnvironment {
     // rather than memory beyond the maps.
     glm::vec3 specular(const glm::vec3& reflected, float perceptual_roughness) const;
 
+    // diffuse and specular for eight points at once, to the bit: the
+    // shading model's form.
+    void diffuse(const simd::vf (&n)[3], simd::vf (&radiance)[3]) const;
+    void specular(const simd::vf (&reflected)[3], simd::vf perceptual_roughness,
+                  simd::vf (&radiance)[3]) const;
+
     // The environment as a background in the unit direction d: blur 0 is
     // the sharp image (level 0), blur b in (0, 1] the image as a mirror of
     // roughness b reflects it. specular(d, blur), named for its use.

@@ -4,7 +4,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "shade/shadow_map.hpp"
+#include "shade/light_lanes.hpp"
 
 namespace facet {
 
@@ -50,66 +50,10 @@ struct UnitVectors {
     }
 }
 
-// What a light brings to each lane: the unit vector towards it, its
-// radiance there, and where it arrives at all.
-struct Incoming {
-    vf lx, ly, lz, rr, rg, rb;
-    vi usable;
-};
-
-[[gnu::always_inline]] inline Incoming incoming_light(const ShadeLight& light,
-                                                      const SurfaceBatch& p) {
-    const vf zero = splat(0.0f);
-    vf lx, ly, lz, rr, rg, rb;
-    vi usable = simd::splat_i(-1);
-    if (light.is_point) {
-        vf dx = light.position.x - p.px, dy = light.position.y - p.py, dz = light.position.z - p.pz;
-        vf dist2 = dx * dx + dy * dy + dz * dz;
-        usable = dist2 > zero;
-        vf safe = usable ? dist2 : splat(1.0f);
-        vf inv_len = 1.0f / simd::vsqrt(safe);
-        lx = dx * inv_len;
-        ly = dy * inv_len;
-        lz = dz * inv_len;
-        vf falloff = 1.0f / safe;  // inverse-square
-        if (light.inv_range > 0.0f) falloff *= range_window(dist2, light.inv_range);
-        if (light.is_spot)
-            falloff *= spot_cone(
-                lx * light.direction.x + ly * light.direction.y + lz * light.direction.z, light);
-        usable &= falloff > zero;
-        rr = light.radiance.x * falloff;
-        rg = light.radiance.y * falloff;
-        rb = light.radiance.z * falloff;
-    } else {
-        lx = splat(light.direction.x);
-        ly = splat(light.direction.y);
-        lz = splat(light.direction.z);
-        rr = splat(light.radiance.x);
-        rg = splat(light.radiance.y);
-        rb = splat(light.radiance.z);
-    }
-    return {lx, ly, lz, rr, rg, rb, usable};
-}
-
-// Darkens the light's radiance by its shadow map.
-[[gnu::always_inline]] inline void apply_shadow(const ShadowMap& shadow, const SurfaceBatch& p,
-                                                const UnitVectors& s, vi lit, Incoming& in) {
-    // Shadow-map lookups one lane at a time, only where the light
-    // arrives and the surface receives shadows.
-    vf visible = splat(1.0f);
-    for (int i = 0; i < simd::kLanes; ++i)
-        if (lit[i] && p.receives_shadow[i] > 0.0f)
-            visible[i] =
-                shadow_visibility(shadow, {p.px[i], p.py[i], p.pz[i]}, {s.nx[i], s.ny[i], s.nz[i]});
-    in.rr *= visible;
-    in.rg *= visible;
-    in.rb *= visible;
-}
-
 // The cosine the highlight's power raises: of the half vector and the
 // normal (Blinn), or of the reflected light and the eye vector (Phong).
 [[gnu::always_inline]] inline vf highlight_cosine(Highlight highlight, const UnitVectors& s,
-                                                  const Incoming& in, vf n_dot_l) {
+                                                  const IncomingLight& in, vf n_dot_l) {
     const vf zero = splat(0.0f);
     const vf lx = in.lx, ly = in.ly, lz = in.lz;
     vf cosine;
@@ -133,10 +77,10 @@ struct Incoming {
                                              const UnitVectors& s, Highlight highlight,
                                              LightingBatch& out) {
     const vf zero = splat(0.0f);
-    Incoming in = incoming_light(light, p);
+    IncomingLight in = incoming_light(light, p);
     vf n_dot_l = s.nx * in.lx + s.ny * in.ly + s.nz * in.lz;
     vi lit = in.usable & (n_dot_l > zero);
-    if (light.shadow) apply_shadow(*light.shadow, p, s, lit, in);
+    if (light.shadow) apply_shadow(*light.shadow, p, s.nx, s.ny, s.nz, lit, in);
     vf d = lit ? p.diffuse * n_dot_l : zero;
     out.dr += d * in.rr;
     out.dg += d * in.rg;

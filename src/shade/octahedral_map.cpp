@@ -32,6 +32,44 @@ OctahedralMap::OctahedralMap(int size, const glm::vec3& fill)
         throw std::invalid_argument("octahedral map: the size must be a power of two");
 }
 
+void OctahedralMap::sample(const OctahedralMap* const (&maps)[simd::kLanes], simd::vf px,
+                           simd::vf py, simd::vf (&out)[3]) {
+    using simd::splat;
+    using simd::vf;
+    using simd::vi;
+    vi sizes;
+    for (int lane = 0; lane < simd::kLanes; ++lane) sizes[lane] = maps[lane]->size_;
+    const vf size = __builtin_convertvector(sizes, vf);
+    // As sample() does with std::max and std::min, in the same order, so
+    // that a NaN becomes the low end here too.
+    const auto std_min = [](vf a, vf b) { return b < a ? b : a; };
+    const auto std_max = [](vf a, vf b) { return a < b ? b : a; };
+    const auto coordinate = [&](vf along) {
+        return std_max(splat(0.5f), std_min((along * 0.5f + 0.5f) * size + 0.5f, size + 0.5f));
+    };
+    const vf x = coordinate(px), y = coordinate(py);
+    vi column = __builtin_convertvector(x, vi), row = __builtin_convertvector(y, vi);
+    column = column < sizes ? column : sizes;
+    row = row < sizes ? row : sizes;
+    const vf tx = x - __builtin_convertvector(column, vf);
+    const vf ty = y - __builtin_convertvector(row, vf);
+    vf texel[4][3];  // upper left, upper right, lower left, lower right
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+        const OctahedralMap& map = *maps[lane];
+        const glm::vec3* upper = &map.texels_[static_cast<size_t>(row[lane]) * map.stride() +
+                                              static_cast<size_t>(column[lane])];
+        const glm::vec3* corners[4] = {upper, upper + 1, upper + map.stride(),
+                                       upper + map.stride() + 1};
+        for (int k = 0; k < 4; ++k)
+            for (int c = 0; c < 3; ++c) texel[k][c][lane] = (*corners[k])[c];
+    }
+    for (int c = 0; c < 3; ++c) {
+        const vf top = texel[0][c] + (texel[1][c] - texel[0][c]) * tx;
+        const vf bottom = texel[2][c] + (texel[3][c] - texel[2][c]) * tx;
+        out[c] = top + (bottom - top) * ty;
+    }
+}
+
 void OctahedralMap::fill_border() {
     const int last = size_ - 1;
     // Beyond an edge, the texel at distance k from the edge's midpoint on

@@ -29,6 +29,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/simd_math.hpp"
+
 namespace facet::pbr {
 
 // The point of the square [-1, 1]^2 for the direction d, any length. A
@@ -45,6 +47,27 @@ inline glm::vec2 octahedral_encode(const glm::vec3& d) {
     // zero counts as positive, always.
     const float sign_x = x >= 0.0f ? 1.0f : -1.0f, sign_z = z >= 0.0f ? 1.0f : -1.0f;
     return {(1.0f - std::abs(z)) * sign_x, (1.0f - std::abs(x)) * sign_z};
+}
+
+// octahedral_encode for eight directions at once, to the bit: the points'
+// coordinates in `x` and `y`.
+[[gnu::always_inline]] inline void octahedral_encode(simd::vf dx, simd::vf dy, simd::vf dz,
+                                                     simd::vf& x, simd::vf& y) {
+    using simd::splat;
+    using simd::vf;
+    using simd::vi;
+    const auto abs = [](vf v) { return (vf)((vi)v & 0x7fffffff); };
+    const vf l1 = abs(dx) + abs(dy) + abs(dz);
+    const vi valid = (l1 > splat(0.0f)) & (l1 <= splat(FLT_MAX));
+    const vf inverse = 1.0f / (valid ? l1 : splat(1.0f));
+    const vf px = dx * inverse, pz = dz * inverse;
+    const vf sign_x = px >= splat(0.0f) ? splat(1.0f) : splat(-1.0f);
+    const vf sign_z = pz >= splat(0.0f) ? splat(1.0f) : splat(-1.0f);
+    const vi upper = dy >= splat(0.0f);
+    x = upper ? px : (1.0f - abs(pz)) * sign_x;
+    y = upper ? pz : (1.0f - abs(px)) * sign_z;
+    x = valid ? x : splat(0.0f);
+    y = valid ? y : splat(0.0f);
 }
 
 // The unit direction at the point p of [-1, 1]^2: octahedral_encode's
@@ -98,6 +121,11 @@ class OctahedralMap {
         const glm::vec3* lower = upper + stride();
         return lerp(lerp(upper[0], upper[1], tx), lerp(lower[0], lower[1], tx), ty);
     }
+
+    // sample() at eight points, lane i's in *maps[i] (maps may repeat), to
+    // the bit: the coordinates over lanes, the four texels one lane at a time.
+    static void sample(const OctahedralMap* const (&maps)[simd::kLanes], simd::vf px, simd::vf py,
+                       simd::vf (&out)[3]);
 
     // The solid angle of texel (column, row), up to a factor common to
     // every texel of the map: the square's area element maps to the solid

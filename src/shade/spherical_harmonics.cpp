@@ -79,15 +79,30 @@ RadianceSh project_direction(const glm::vec3& direction,
     return sh;
 }
 
+// The scalar forms are lane 0 of the eight-lane ones: one formula.
 glm::vec3 irradiance(const RadianceSh& sh, const glm::vec3& n) {
-    const std::array<float, kShCount> y = sh_basis(n.x, n.y, n.z);
-    glm::vec3 e(0.0f);
-    for (int i = 0; i < kShCount; ++i) e += sh.coefficients[i] * (kCosineFactors[i] * y[i]);
-    return e;
+    const simd::vf lanes[3] = {simd::splat(n.x), simd::splat(n.y), simd::splat(n.z)};
+    simd::vf e[3];
+    irradiance(sh, lanes, e);
+    return {e[0][0], e[1][0], e[2][0]};
+}
+
+void irradiance(const RadianceSh& sh, const simd::vf (&n)[3], simd::vf (&e)[3]) {
+    const std::array<simd::vf, kShCount> y = sh_basis(n[0], n[1], n[2]);
+    for (int c = 0; c < 3; ++c) e[c] = simd::splat(0.0f);
+    for (int i = 0; i < kShCount; ++i) {
+        const simd::vf weighted = kCosineFactors[i] * y[i];
+        for (int c = 0; c < 3; ++c) e[c] += sh.coefficients[i][c] * weighted;
+    }
 }
 
 glm::vec3 diffuse_radiance(const RadianceSh& sh, const glm::vec3& n) {
     return irradiance(sh, n) / static_cast<float>(kPiDouble);
+}
+
+void diffuse_radiance(const RadianceSh& sh, const simd::vf (&n)[3], simd::vf (&radiance)[3]) {
+    irradiance(sh, n, radiance);
+    for (simd::vf& channel : radiance) channel = channel / static_cast<float>(kPiDouble);
 }
 
 }  // namespace facet::pbr

@@ -21,9 +21,12 @@
 // operations, so its bits do not depend on threads or CPU. No global
 // mutable state.
 #include <array>
+#include <type_traits>
 #include <vector>
 
 #include <glm/vec3.hpp>
+
+#include "core/simd_math.hpp"
 
 namespace facet::pbr {
 
@@ -54,17 +57,28 @@ constexpr double kShCosineBand2 = 3.14159265358979323846 / 4.0;        // pi / 4
 // (2,1), (2,2). Written, as in the paper, with z as the polar axis; which
 // world axis is polar does not matter here, since irradiance sums whole
 // bands, and every band is closed under rotation.
+// A constant as Real: the float or double itself, or eight lanes of the
+// float (simd::vf has no conversion from a number).
+template <typename Real>
+Real sh_constant(double c) {
+    if constexpr (std::is_same_v<Real, simd::vf>)
+        return simd::splat(static_cast<float>(c));
+    else
+        return Real(c);
+}
+
 template <typename Real>
 std::array<Real, kShCount> sh_basis(Real x, Real y, Real z) {
-    return {Real(kSh0),
-            Real(kSh1) * y,
-            Real(kSh1) * z,
-            Real(kSh1) * x,
-            Real(kSh2) * x * y,
-            Real(kSh2) * y * z,
-            Real(kSh20) * (Real(3) * z * z - Real(1)),
-            Real(kSh2) * x * z,
-            Real(kSh22) * (x * x - y * y)};
+    const auto k = [](double c) { return sh_constant<Real>(c); };
+    return {k(kSh0),
+            k(kSh1) * y,
+            k(kSh1) * z,
+            k(kSh1) * x,
+            k(kSh2) * x * y,
+            k(kSh2) * y * z,
+            k(kSh20) * (k(3) * z * z - k(1)),
+            k(kSh2) * x * z,
+            k(kSh22) * (x * x - y * y)};
 }
 
 // The coefficients L_lm of an environment's radiance, one RGB triple per
@@ -122,9 +136,12 @@ RadianceSh project_direction(const glm::vec3& direction,
 // truncation can make it slightly negative for a strongly directional
 // environment; it is not clamped here.
 glm::vec3 irradiance(const RadianceSh& sh, const glm::vec3& n);
+// The same for eight normals at once, to the bit: the shading model's form.
+void irradiance(const RadianceSh& sh, const simd::vf (&n)[3], simd::vf (&e)[3]);
 
 // The radiance a white Lambertian surface of normal n reflects, E(n) / pi:
 // multiplied by an albedo, the diffuse colour the shading model will use.
 glm::vec3 diffuse_radiance(const RadianceSh& sh, const glm::vec3& n);
+void diffuse_radiance(const RadianceSh& sh, const simd::vf (&n)[3], simd::vf (&radiance)[3]);
 
 }  // namespace facet::pbr
