@@ -17,6 +17,7 @@
 #include "assets/mesh.hpp"
 #include "assets/texture.hpp"
 #include "output/encoders.hpp"
+#include "render_check.hpp"
 
 using namespace facet;
 using namespace facet::test;
@@ -250,16 +251,19 @@ TEST_CASE("KHR_materials_clearcoat gives the coat and its maps, and its normal m
     require_read_as_data(m.clearcoat_roughness_map);
     CHECK_FALSE(warns(mesh, "clearcoatNormalTexture"));
 
+    CHECK_FALSE(m.clearcoat_normal_map);
+
+    // The coat's own normal map is read as data with its scale (the test
+    // below draws it, with tangent frames made though the base has no map).
     json with_normal = coat;
-    with_normal["clearcoatNormalTexture"] = {{"index", 2}, {"scale", 1}};
+    with_normal["clearcoatNormalTexture"] = {{"index", 2}, {"scale", 0.6}};
     const Mesh relief = load_quad(
         dir, {{"name", "lacquer"}, {"extensions", {{"KHR_materials_clearcoat", with_normal}}}},
         "coat-normal.gltf");
     INFO(all_warnings(relief));
-    CHECK(warns(relief, "coat-normal.gltf"));
-    CHECK(warns(relief, "material 'lacquer' clearcoatNormalTexture is not drawn"));
-    CHECK(warns(relief, "relief is lost"));
-    // The coat itself is still read.
+    CHECK_FALSE(warns(relief, "clearcoatNormalTexture"));
+    require_read_as_data(relief.materials[0].clearcoat_normal_map);
+    CHECK(relief.materials[0].clearcoat_normal_scale == Approx(0.6f));
     CHECK(relief.materials[0].clearcoat == Approx(0.7f));
 
     for (const char* field : {"clearcoatFactor", "clearcoatRoughnessFactor"}) {
@@ -273,6 +277,57 @@ TEST_CASE("KHR_materials_clearcoat gives the coat and its maps, and its normal m
         const std::string path = g.write(dir.file("bad-coat.gltf"));
         require_input_error([&] { load_gltf(path); },
                             path + ": material 'lacquer': " + field + " must be from 0 to 1");
+    }
+}
+
+// A black, rough base under a smooth coat, lit from the camera's direction:
+// the coat's mirror highlight fills the middle of the quad. A coat normal
+// map tilted by 25 degrees turns it away (the light no longer reflects into
+// the camera), a flat one keeps it, and neither touches the base's normal.
+TEST_CASE("glTF clearcoatNormalTexture tilts the coat's highlight, not the base", "[pbr][gltf]") {
+    TempDir dir("pbr-coat-normal");
+    const auto quad_with_coat_map = [&](const std::string& name, const glm::vec3& texel) {
+        Gltf g;
+        const auto byte = [](float v) { return static_cast<uint8_t>(std::lround(v * 255.0f)); };
+        std::vector<uint8_t> samples;
+        for (int i = 0; i < 4; ++i)
+            for (int a = 0; a < 3; ++a) samples.push_back(byte(texel[a]));
+        g.doc["images"].push_back(
+            {{"uri", "data:image/png;base64," + base64(png_of(2, 2, 3, samples))}});
+        g.doc["textures"].push_back({{"source", 0}});
+        json coat = {{"clearcoatFactor", 1}, {"clearcoatRoughnessFactor", 0.3}};
+        if (texel.z > 0.0f) coat["clearcoatNormalTexture"] = {{"index", 0}};
+        quad_with_materials(
+            g, json::array({{{"pbrMetallicRoughness",
+                              {{"baseColorFactor", {0, 0, 0, 1}}, {"metallicFactor", 0}}},
+                             {"extensions", {{"KHR_materials_clearcoat", coat}}}}}));
+        g.write(dir.file(name));
+        const std::string text =
+            R"(output: { size: [64, 64], tonemap: none, passes: [color, normal] }
+camera: { position: [0, 0, 4], target: [0, 0, 0], fov: 30 }
+style: pbr
+environment: none
+lights: [{ type: directional, direction: [0, 0, -1], intensity: 1 }]
+objects:
+  - { name: quad, mesh: )" +
+            name + " }\n";
+        return render_yaml(dir.path(), text, 1, 2);
+    };
+    const float tilt = glm::radians(25.0f);
+    const FrameImages smooth = quad_with_coat_map("smooth.gltf", glm::vec3(0.0f));
+    const FrameImages flat = quad_with_coat_map("flat.gltf", {0.5f, 0.5f, 1.0f});
+    const FrameImages tilted = quad_with_coat_map(
+        "tilted.gltf", {0.5f + 0.5f * std::sin(tilt), 0.5f, 0.5f + 0.5f * std::cos(tilt)});
+    const glm::vec3 middle(0.0f, 0.0f, 0.0f);
+    const float highlight = pixel_at(smooth, smooth.color, middle).g;
+    INFO("coat highlight " << highlight);
+    CHECK(highlight > 0.5f);
+    CHECK(pixel_at(flat, flat.color, middle).g == Approx(highlight).epsilon(0.03));
+    CHECK(pixel_at(tilted, tilted.color, middle).g < 0.1f * highlight);
+    // The base's normal (the normal pass) stays the mesh's.
+    for (const FrameImages* images : {&flat, &tilted}) {
+        const glm::vec3 n = images->surface.normal.at(32, 32);  // the middle
+        CHECK(n.z == Approx(1.0f).margin(1e-3));
     }
 }
 

@@ -303,6 +303,32 @@ void read_metal_rough(const tinygltf::Material& m, TextureCache& cache, const st
     mat.occlusion_strength = static_cast<float>(m.occlusionTexture.strength);
 }
 
+// clearcoatNormalTexture.scale (1 when absent; its type was checked).
+float coat_normal_scale(const tinygltf::Value& coat, const std::string& path,
+                        const std::string& what) {
+    if (!coat.Has("clearcoatNormalTexture")) return 1.0f;
+    const tinygltf::Value& info = coat.Get("clearcoatNormalTexture");
+    if (!info.Has("scale")) return 1.0f;
+    const double scale = info.Get("scale").GetNumberAsDouble();
+    if (!std::isfinite(scale)) bad(path, what + ": clearcoatNormalTexture.scale is not finite");
+    return static_cast<float>(scale);
+}
+
+// One tangent frame serves both normal maps, made along the base's map's
+// coordinates: a coat map on another set would tilt the wrong way.
+void warn_coat_normal_coordinates(Material& mat, const std::string& path, const std::string& what,
+                                  Warnings& warnings) {
+    if (!mat.normal_map || !mat.clearcoat_normal_map ||
+        mat.normal_map.uv_set == mat.clearcoat_normal_map.uv_set)
+        return;
+    warnings.push_back(file_warning(
+        path, what + " clearcoatNormalTexture reads TEXCOORD_" +
+                  std::to_string(mat.clearcoat_normal_map.uv_set) + " but normalTexture TEXCOORD_" +
+                  std::to_string(mat.normal_map.uv_set) +
+                  ": the tangent frames follow one set, so the coat is drawn smooth"));
+    mat.clearcoat_normal_map = {};
+}
+
 // KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat.
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
@@ -343,10 +369,11 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
             slot_of(texture_info_of(e, "clearcoatRoughnessTexture"), cache, path,
                     what + " clearcoatRoughnessTexture", warnings,
                     "drawn with its clearcoatRoughnessFactor alone", TexelMeaning::data);
-        if (e.Has("clearcoatNormalTexture"))
-            warnings.push_back(file_warning(
-                path, what + " clearcoatNormalTexture is not drawn: the coat follows the mesh's "
-                             "own normals (not the base's normal map), so its relief is lost"));
+        mat.clearcoat_normal_map = slot_of(texture_info_of(e, "clearcoatNormalTexture"), cache,
+                                           path, what + " clearcoatNormalTexture", warnings,
+                                           "drawn with a smooth coat", TexelMeaning::data);
+        mat.clearcoat_normal_scale = coat_normal_scale(e, path, what);
+        warn_coat_normal_coordinates(mat, path, what, warnings);
     }
 }
 

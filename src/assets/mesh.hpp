@@ -82,6 +82,17 @@ struct Material {
     float clearcoat = 0.0f;
     float clearcoat_roughness = 0.0f;
     TextureSlot clearcoat_map, clearcoat_roughness_map;
+    // The coat's own tangent-space normals (clearcoatNormalTexture), tilted
+    // by clearcoat_normal_scale. Without it the coat follows the surface's
+    // normal before normal_map: smooth lacquer over the base's relief.
+    TextureSlot clearcoat_normal_map;
+    float clearcoat_normal_scale = 1.0f;
+
+    // The map whose texture coordinates the tangent frames follow: the
+    // base's normal map, else the coat's (glTF gives both one tangent frame).
+    const TextureSlot& tangent_space_map() const {
+        return normal_map ? normal_map : clearcoat_normal_map;
+    }
 };
 
 struct Bounds {

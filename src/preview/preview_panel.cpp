@@ -194,6 +194,26 @@ void lights_section(PreviewState& state) {
     }
 }
 
+// `environment.background`: a checkbox, and the blur when it shows. A blur
+// makes the key a mapping ({blur: b}), so the two tweaks never stand together.
+void environment_background(PreviewState& state, const EnvironmentDesc& scene_desc) {
+    const std::string flag_key = "environment.background", blur_key = "environment.background.blur";
+    const bool blur_tweaked = state.tweaks.count(blur_key) > 0;
+    const std::string flag =
+        shown(state, flag_key, std::string(scene_desc.background ? "true" : "false"));
+    bool show = blur_tweaked || flag == "true";
+    if (ImGui::Checkbox("show behind the scene##environment.background", &show)) {
+        state.tweaks.erase(blur_key);
+        state.tweaks[flag_key] = std::string(show ? "true" : "false");
+    }
+    if (!show) return;
+    float blur = shown(state, blur_key, scene_desc.background_blur);
+    if (ImGui::SliderFloat("blur##environment.background.blur", &blur, 0.0f, 1.0f, "%.3g")) {
+        state.tweaks.erase(flag_key);
+        state.tweaks[blur_key] = blur;
+    }
+}
+
 // The environment of the `pbr` model (docs/pbr.md): a file, its
 // intensity and rotation, and whether it shows behind the scene.
 void environment_section(PreviewState& state) {
@@ -207,11 +227,7 @@ void environment_section(PreviewState& state) {
         ImGui::TextUnformatted("the built-in studio (no file)");
     edit_float(state, "intensity", "environment.intensity", shown_desc.intensity, 0, 4);
     edit_float(state, "rotation", "environment.rotation", shown_desc.rotation, -180, 180);
-    const std::string background = shown(state, "environment.background",
-                                         std::string(shown_desc.background ? "true" : "false"));
-    bool show = background == "true";
-    if (ImGui::Checkbox("show behind the scene##environment.background", &show))
-        state.tweaks["environment.background"] = std::string(show ? "true" : "false");
+    environment_background(state, shown_desc);
 }
 
 // Metallic and roughness of each object's materials, for `pbr` styles.

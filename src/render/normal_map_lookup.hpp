@@ -12,15 +12,17 @@
 
 namespace facet {
 
-// Whether `m` turns the normals of `triangle`: it has a normal map and the
-// triangle's draw has tangents (texture coordinates to make them from).
-bool draws_normal_map(const World& world, const TransformedVertices& vertices, const Material& m,
-                      uint32_t triangle);
+// Whether `map` (a material's normal_map or clearcoat_normal_map) turns the
+// normals of `triangle`: it is set and the triangle's draw has tangents
+// (texture coordinates to make them from).
+bool draws_normal_map(const World& world, const TransformedVertices& vertices,
+                      const TextureSlot& map, uint32_t triangle);
 
-// The mapped normal, unit, on the viewer's side. `pixel` carries the
-// derivatives of one output pixel; `front` is the interpolated vertex normal
-// of the triangle's front side, unit.
+// The normal `map` gives, tilted by `scale`, unit, on the viewer's side.
+// `pixel` carries the derivatives of one output pixel; `front` is the
+// interpolated vertex normal of the triangle's front side, unit.
 glm::vec3 normal_from_map(const World& world, const TransformedVertices& vertices,
-                          const Material& m, const SurfaceSample& pixel, const glm::vec3& front);
+                          const TextureSlot& map, float scale, const SurfaceSample& pixel,
+                          const glm::vec3& front);
 
 }  // namespace facet

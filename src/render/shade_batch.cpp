@@ -159,8 +159,8 @@ template <bool Single>
             }
         b.any_texture = b.any_texture || m.base_color_map;
         b.any_physical_map = b.any_physical_map || m.metal_rough_map || m.occlusion_map ||
-                             m.normal_map || m.specular_weight_map || m.specular_color_map ||
-                             m.clearcoat_map || m.clearcoat_roughness_map;
+                             m.normal_map || m.clearcoat_normal_map || m.specular_weight_map ||
+                             m.specular_color_map || m.clearcoat_map || m.clearcoat_roughness_map;
         b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
         b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
         b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
@@ -350,17 +350,29 @@ void apply_physical_maps(const ShadeInputs& in, ShadeBatch& b) {
 
 // Normal maps turn the shading normal, lane by lane, in the tangent frame
 // the vertices carry (shade/normal_map.hpp). The G-buffer's normal (outlines,
-// occlusion, the normal pass) turns with it.
+// occlusion, the normal pass) turns with it. A clear coat's own map turns
+// the coat's normal from the same unmapped normal: its relief is not the base's.
 void apply_normal_maps(const ShadeInputs& in, ShadeBatch& b) {
     SurfaceBatch& s = b.lanes.surface;
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
-        if (!draws_normal_map(in.world, in.vertices, m, b.setup[i]->source_triangle)) continue;
+        const uint32_t triangle = b.setup[i]->source_triangle;
+        const bool base = draws_normal_map(in.world, in.vertices, m.normal_map, triangle);
+        const bool coat = m.clearcoat > 0.0f &&
+                          draws_normal_map(in.world, in.vertices, m.clearcoat_normal_map, triangle);
+        if (!base && !coat) continue;
         const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
         const glm::vec3 shown(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
         const glm::vec3 front =
             normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
-        const glm::vec3 n = normal_from_map(in.world, in.vertices, m, pixel, front);
+        if (coat) {
+            const glm::vec3 n = normal_from_map(in.world, in.vertices, m.clearcoat_normal_map,
+                                                m.clearcoat_normal_scale, pixel, front);
+            for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a][i] = n[a];
+        }
+        if (!base) continue;
+        const glm::vec3 n =
+            normal_from_map(in.world, in.vertices, m.normal_map, m.normal_scale, pixel, front);
         for (int a = 0; a < 3; ++a) b.normal[a][i] = n[a];
         s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
     }

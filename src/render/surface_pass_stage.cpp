@@ -60,12 +60,12 @@ FragmentValues fragment_values(const SurfacePassInputs& in, const Rasterizer& ra
         n = length > 0.0f ? n / length : glm::vec3(0.0f);
         // A `pbr` style draws the normal map: the pass shows what it shades with.
         const Material& m = in.frame.materials[draw.material];
-        if (in.normal_mapped[draw.object] && draws_normal_map(world, in.vertices, m, s.triangle) &&
-            length > 0.0f) {
+        if (in.normal_mapped[draw.object] &&
+            draws_normal_map(world, in.vertices, m.normal_map, s.triangle) && length > 0.0f) {
             SurfaceSample pixel = s;
             pixel.ddx *= static_cast<float>(in.samples_per_side);
             pixel.ddy *= static_cast<float>(in.samples_per_side);
-            n = normal_from_map(world, in.vertices, m, pixel, n);
+            n = normal_from_map(world, in.vertices, m.normal_map, m.normal_scale, pixel, n);
         } else if (s.back_facing) {
             n = -n;  // the side the camera sees, as shading uses
         }

@@ -89,7 +89,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, Textur
     for (TextureSlot* slot :
          {&m.base_color_map, &m.normal_map, &m.occlusion_map, &m.metal_rough_map, &m.emissive_map,
           &m.specular_weight_map, &m.specular_color_map, &m.clearcoat_map,
-          &m.clearcoat_roughness_map}) {
+          &m.clearcoat_roughness_map, &m.clearcoat_normal_map}) {
         if (!*slot) continue;
         if (desc.uv_scale) slot->transform = slot->transform.scaled(glm::dvec2(*desc.uv_scale));
         if (desc.wrap) {
@@ -272,7 +272,7 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
     d.has_colors = !part.colors.empty();
     // Only the normal-mapped draws' frames are kept: the stages pay for
     // tangents only where a shader reads them.
-    d.has_tangents = world.materials[d.material].normal_map && !part.tangents.empty();
+    d.has_tangents = world.materials[d.material].tangent_space_map() && !part.tangents.empty();
     const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
     world.positions.insert(world.positions.end(), part.positions.begin(), part.positions.end());
     world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
