@@ -44,7 +44,8 @@ float value_at(const facet::FrameImages& images, glm::vec3 p) {
 TEST_CASE("occlusion darkens the corner where a wall meets the floor, not open faces",
           "[render][occlusion]") {
     const facet::FrameImages plain = render_corner("false", 2);
-    const facet::FrameImages occluded = render_corner("{ radius: 0.5 }", 2);
+    // Per pixel: the model itself (half resolution is compared with it below).
+    const facet::FrameImages occluded = render_corner("{ radius: 0.5, resolution: full }", 2);
     const glm::vec3 corner(0.3f, 0.0f, -0.85f);    // floor, 5 cm in front of the wall
     const glm::vec3 open_floor(0.3f, 0.0f, 1.2f);  // floor, 2 m in front of it
     const glm::vec3 open_wall(0.3f, 1.6f, -0.9f);  // the wall's face, 1.6 m up
@@ -63,4 +64,35 @@ TEST_CASE("occlusion is the same for any thread count", "[render][occlusion]") {
     const facet::FrameImages one = render_corner("{ radius: 0.5 }", 1);
     const facet::FrameImages three = render_corner("{ radius: 0.5 }", 3);
     CHECK(facet::to_float_image(one.color).pixels == facet::to_float_image(three.color).pixels);
+}
+
+// Half resolution (the default) finds the occlusion once per 2 x 2 pixels:
+// it darkens the same corner about as much as `resolution: full`, keeps
+// open faces open, and stays the same for any thread count.
+TEST_CASE("occlusion at half resolution matches full resolution", "[render][occlusion]") {
+    const facet::FrameImages full = render_corner("{ radius: 0.5, resolution: full }", 2);
+    const facet::FrameImages half = render_corner("{ radius: 0.5, resolution: half }", 2);
+    const facet::FrameImages by_default = render_corner("{ radius: 0.5 }", 2);
+    CHECK(facet::to_float_image(by_default.color).pixels ==
+          facet::to_float_image(half.color).pixels);
+    CHECK(facet::to_float_image(full.color).pixels != facet::to_float_image(half.color).pixels);
+    for (const glm::vec3 p : {glm::vec3(0.3f, 0.0f, -0.85f), glm::vec3(0.3f, 0.0f, -0.6f),
+                              glm::vec3(-1.0f, 0.0f, -0.8f), glm::vec3(0.3f, 0.0f, 1.2f),
+                              glm::vec3(0.3f, 1.6f, -0.9f)}) {
+        INFO("at " << p.x << ", " << p.y << ", " << p.z);
+        CHECK(value_at(half, p) == Approx(value_at(full, p)).margin(0.03));
+    }
+    // Across the frame, the two differ little on average.
+    const auto a = facet::to_float_image(full.color).pixels;
+    const auto b = facet::to_float_image(half.color).pixels;
+    double sum = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].r - b[i].r);
+    CHECK(sum / static_cast<double>(a.size()) < 0.004);
+    const facet::FrameImages three = render_corner("{ radius: 0.5, resolution: half }", 3);
+    CHECK(facet::to_float_image(three.color).pixels == facet::to_float_image(half.color).pixels);
+}
+
+TEST_CASE("occlusion resolution other than half or full is refused", "[render][occlusion]") {
+    CHECK_THROWS_WITH(render_corner("{ radius: 0.5, resolution: quarter }", 1),
+                      Catch::Matchers::Contains("resolution") && Catch::Matchers::Contains("half"));
 }

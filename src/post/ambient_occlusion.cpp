@@ -15,7 +15,7 @@
 namespace facet {
 namespace {
 
-constexpr int kBlurReach = 4;         // the blur's half-width, in samples
+constexpr int kBlurReach = 4;         // the blur's half-width, in pixels
 constexpr float kSpiralTurns = 7.0f;  // co-prime with the tap counts used, so taps spread
 constexpr float kBias = 0.05f;  // β: what rises less than ~3° over the plane (tessellation) is open
 
@@ -112,17 +112,87 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
     return std::clamp(a, 0.0f, 1.0f);
 }
 
+// One pass of a box blur, 9 cells along (step_x, step_y), over cells of
+// the same surface (depth within 2%), so the taps' noise averages out and
+// edges stay sharp.
+void blur_same_surface(const OutlineBuffers& cells, int reach, const std::vector<float>& from,
+                       std::vector<float>& to, int step_x, int step_y, ThreadPool& pool) {
+    const int w = cells.width, h = cells.height;
+    pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < w; ++x) {
+            const size_t at = cells.index(x, y);
+            const float depth = cells.depth[at];
+            if (!is_surface(depth)) {
+                to[at] = 1.0f;
+                continue;
+            }
+            float sum = 0.0f, weight = 0.0f;
+            for (int r = -reach; r <= reach; ++r) {
+                const int sx = x + r * step_x, sy = y + r * step_y;
+                if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
+                const size_t other = cells.index(sx, sy);
+                if (!(std::fabs(cells.depth[other] - depth) < 0.02f * depth)) continue;
+                sum += from[other];
+                weight += 1.0f;
+            }
+            to[at] = sum / weight;  // the cell itself always counts
+        }
+    });
+}
+
+// Each sample takes the value of its own cell when the cell's depth is
+// within 1% of its own (a surface seen whole: most samples), else of the
+// cell, among its own and the eight around it, whose depth is nearest its
+// own (the first on a tie), so a silhouette's samples take their own
+// surface's value.
+void hand_out_to_samples(const OutlineBuffers& samples, const OutlineBuffers& cells, int k,
+                         const std::vector<float>& values, std::vector<float>& factor,
+                         ThreadPool& pool) {
+    const int w = cells.width, h = cells.height;
+    factor.assign(static_cast<size_t>(samples.width) * static_cast<size_t>(samples.height), 1.0f);
+    pool.parallel_for(static_cast<size_t>(samples.height), [&](size_t row) {
+        const int y = static_cast<int>(row);
+        for (int x = 0; x < samples.width; ++x) {
+            const size_t at = samples.index(x, y);
+            const float depth = samples.depth[at];
+            if (!is_surface(depth)) continue;
+            const int px = std::min(x / k, w - 1), py = std::min(y / k, h - 1);
+            const size_t own = cells.index(px, py);
+            if (std::fabs(cells.depth[own] - depth) <= 0.01f * depth) {
+                factor[at] = values[own];
+                continue;
+            }
+            float best_gap = std::numeric_limits<float>::infinity();
+            float value = 1.0f;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int qx = px + dx, qy = py + dy;
+                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
+                    const size_t q = cells.index(qx, qy);
+                    const float gap = std::fabs(cells.depth[q] - depth);
+                    if (gap < best_gap) {
+                        best_gap = gap;
+                        value = values[q];
+                    }
+                }
+            factor[at] = value;
+        }
+    });
+}
+
 }  // namespace
 
 void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, const glm::mat4& view,
                        const glm::mat4& projection, const OcclusionStyle& style,
                        OcclusionScratch& scratch, std::vector<float>& factor, ThreadPool& pool) {
-    // Occlusion changes slowly across a surface, so it is found per pixel,
-    // from each pixel's first sample (a quarter of the work and of the
-    // memory the taps wander over at 2 x 2 samples), then handed to every
-    // sample from the neighbouring pixel at the nearest depth, which keeps
+    // Occlusion changes slowly across a surface, so it is found per pixel
+    // or per 2 x 2 pixels (style.pixels_per_value), from each cell's first
+    // sample (a quarter of the work and of the memory the taps wander over
+    // at 2 x 2 samples, and a quarter again at half resolution), then handed
+    // to every sample from a neighbouring cell at its depth, which keeps
     // silhouettes sharp and anti-aliased.
-    const int k = std::max(samples_per_side, 1);
+    const int k = std::max(samples_per_side, 1) * std::max(style.pixels_per_value, 1);
     const int w = samples.width / k, h = samples.height / k;
     OutlineBuffers& pixels = scratch.pixels;
     if (pixels.width != w || pixels.height != h) pixels.reset(w, h);
@@ -148,61 +218,11 @@ void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, cons
         for (int x = 0; x < w; ++x)
             raw[pixels.index(x, y)] = occlusion_at(pixels, unproject, to_view, style, spiral, x, y);
     });
-    // A separable box blur, 9 pixels each way, over pixels of the same
-    // surface (depth within 2%), so the taps' noise averages out and edges
-    // stay sharp: rows from `raw` into `blurred`, then columns back.
-    auto blur = [&](const std::vector<float>& from, std::vector<float>& to, int step_x,
-                    int step_y) {
-        pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
-            const int y = static_cast<int>(row);
-            for (int x = 0; x < w; ++x) {
-                const size_t at = pixels.index(x, y);
-                const float depth = pixels.depth[at];
-                if (!is_surface(depth)) {
-                    to[at] = 1.0f;
-                    continue;
-                }
-                float sum = 0.0f, weight = 0.0f;
-                for (int r = -kBlurReach; r <= kBlurReach; ++r) {
-                    const int sx = x + r * step_x, sy = y + r * step_y;
-                    if (sx < 0 || sy < 0 || sx >= w || sy >= h) continue;
-                    const size_t other = pixels.index(sx, sy);
-                    if (!(std::fabs(pixels.depth[other] - depth) < 0.02f * depth)) continue;
-                    sum += from[other];
-                    weight += 1.0f;
-                }
-                to[at] = sum / weight;  // the pixel itself always counts
-            }
-        });
-    };
-    blur(raw, blurred, 1, 0);
-    blur(blurred, raw, 0, 1);
-    // Each sample takes the value of the pixel, among its own and the eight
-    // around it, whose depth is nearest its own (the first on a tie).
-    factor.assign(static_cast<size_t>(samples.width) * static_cast<size_t>(samples.height), 1.0f);
-    pool.parallel_for(static_cast<size_t>(samples.height), [&](size_t row) {
-        const int y = static_cast<int>(row);
-        for (int x = 0; x < samples.width; ++x) {
-            const size_t at = samples.index(x, y);
-            const float depth = samples.depth[at];
-            if (!is_surface(depth)) continue;
-            const int px = std::min(x / k, w - 1), py = std::min(y / k, h - 1);
-            float best_gap = std::numeric_limits<float>::infinity();
-            float value = 1.0f;
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int qx = px + dx, qy = py + dy;
-                    if (qx < 0 || qy < 0 || qx >= w || qy >= h) continue;
-                    const size_t q = pixels.index(qx, qy);
-                    const float gap = std::fabs(pixels.depth[q] - depth);
-                    if (gap < best_gap) {
-                        best_gap = gap;
-                        value = raw[q];
-                    }
-                }
-            factor[at] = value;
-        }
-    });
+    // A separable box blur: rows from `raw` into `blurred`, then columns back.
+    const int reach = std::max(kBlurReach / std::max(style.pixels_per_value, 1), 1);
+    blur_same_surface(pixels, reach, raw, blurred, 1, 0, pool);
+    blur_same_surface(pixels, reach, blurred, raw, 0, 1, pool);
+    hand_out_to_samples(samples, pixels, k, raw, factor, pool);
 }
 
 }  // namespace facet

@@ -93,7 +93,8 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
             evaluate_outlines(scene_.style.outlines, at, static_cast<float>(samples_per_side_));
     if (plan_.occlusion) {
         const OcclusionDesc& o = scene_.style.occlusion;
-        in.occlusion = {facet::evaluate(o.radius, at), facet::evaluate(o.strength, at), o.samples};
+        in.occlusion = {facet::evaluate(o.radius, at), facet::evaluate(o.strength, at), o.samples,
+                        o.half_resolution ? 2 : 1};
     }
     // Given straight, used premultiplied like every colour in the frame.
     const glm::vec4 background = scene_.style.background.value_or(scene_.output.background);

@@ -115,6 +115,7 @@ struct OcclusionDesc {
     Animated<float> radius = 0.5f;    // scene units
     Animated<float> strength = 1.0f;  // 0 none, 1 the paper's
     int samples = 16;                 // taps per sample
+    bool half_resolution = true;      // found per 2 x 2 pixels (`resolution: half`), or per pixel
 };
 
 struct WireframeDesc {

@@ -173,11 +173,12 @@ void apply_occlusion(const Field& f, OcclusionDesc& o) {
         o.enabled = f.boolean();
         return;
     }
-    f.check_keys({"enabled", "radius", "strength", "samples"});
+    f.check_keys({"enabled", "radius", "strength", "samples", "resolution"});
     o.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
     if (f.has("radius")) o.radius = f["radius"].animated_number(0.001, 1000);
     if (f.has("strength")) o.strength = f["strength"].animated_number(0, 10);
     if (f.has("samples")) o.samples = f["samples"].integer(4, 64);
+    if (f.has("resolution")) o.half_resolution = f["resolution"].choice({"half", "full"}) == "half";
 }
 
 void apply_wireframe(const Field& f, WireframeDesc& w) {
