@@ -54,21 +54,11 @@ struct Options {
 };
 
 // The suite, in the order of docs/performance.md.
-const char* kSuite[] = {"blob-5k",
-                        "blob-328k",
-                        "blob-1m",
-                        "blob-5k-unlit",
-                        "blob-328k-unlit",
-                        "blob-1m-unlit",
-                        "blob-textured",
-                        "blob-lights4",
-                        "blob-shadows",
-                        "blob-aa4",
-                        "../../scenes/turntable",
-                        "../../scenes/flag",
-                        "small",
-                        "medium",
-                        "large"};
+const char* kSuite[] = {
+    "blob-5k",           "blob-328k",     "blob-1m",       "blob-5k-unlit",
+    "blob-328k-unlit",   "blob-1m-unlit", "blob-textured", "blob-lights4",
+    "blob-shadows",      "blob-aa4",      "blob-328k-pbr", "../../scenes/turntable",
+    "../../scenes/flag", "small",         "medium",        "large"};
 
 std::vector<int> parse_int_list(const std::string& text, const char* option) {
     std::vector<int> out;

@@ -15,9 +15,9 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <stdexcept>
 
-#include <GL/osmesa.h>  // includes GL/gl.h and GL/glext.h
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -27,7 +27,10 @@
 #include "anim/frame_state.hpp"
 #include "bench_common.hpp"
 #include "core/color.hpp"
+#include "core/display_transform.hpp"
 #include "core/thread_pool.hpp"
+#include "llvmpipe_gl.hpp"
+#include "llvmpipe_pbr.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/pose_stage.hpp"
@@ -35,65 +38,6 @@
 
 namespace facet_bench {
 namespace {
-
-template <typename F>
-F gl_proc(const char* name) {
-    OSMESAproc p = OSMesaGetProcAddress(name);
-    if (!p) throw std::runtime_error(std::string("OSMesaGetProcAddress failed for ") + name);
-    return reinterpret_cast<F>(p);
-}
-
-// clang-format off
-#define FACET_GL_FUNCTIONS(X) \
-    X(CreateShader, PFNGLCREATESHADERPROC) \
-    X(ShaderSource, PFNGLSHADERSOURCEPROC) \
-    X(CompileShader, PFNGLCOMPILESHADERPROC) \
-    X(GetShaderiv, PFNGLGETSHADERIVPROC) \
-    X(GetShaderInfoLog, PFNGLGETSHADERINFOLOGPROC) \
-    X(CreateProgram, PFNGLCREATEPROGRAMPROC) \
-    X(AttachShader, PFNGLATTACHSHADERPROC) \
-    X(BindAttribLocation, PFNGLBINDATTRIBLOCATIONPROC) \
-    X(LinkProgram, PFNGLLINKPROGRAMPROC) \
-    X(GetProgramiv, PFNGLGETPROGRAMIVPROC) \
-    X(GetProgramInfoLog, PFNGLGETPROGRAMINFOLOGPROC) \
-    X(UseProgram, PFNGLUSEPROGRAMPROC) \
-    X(GetUniformLocation, PFNGLGETUNIFORMLOCATIONPROC) \
-    X(UniformMatrix4fv, PFNGLUNIFORMMATRIX4FVPROC) \
-    X(UniformMatrix3fv, PFNGLUNIFORMMATRIX3FVPROC) \
-    X(Uniform1i, PFNGLUNIFORM1IPROC) \
-    X(Uniform1f, PFNGLUNIFORM1FPROC) \
-    X(Uniform2fv, PFNGLUNIFORM2FVPROC) \
-    X(Uniform3fv, PFNGLUNIFORM3FVPROC) \
-    X(Uniform4fv, PFNGLUNIFORM4FVPROC) \
-    X(GenBuffers, PFNGLGENBUFFERSPROC) \
-    X(BindBuffer, PFNGLBINDBUFFERPROC) \
-    X(BufferData, PFNGLBUFFERDATAPROC) \
-    X(BufferSubData, PFNGLBUFFERSUBDATAPROC) \
-    X(VertexAttribPointer, PFNGLVERTEXATTRIBPOINTERPROC) \
-    X(EnableVertexAttribArray, PFNGLENABLEVERTEXATTRIBARRAYPROC) \
-    X(ActiveTexture, PFNGLACTIVETEXTUREPROC) \
-    X(GenerateMipmap, PFNGLGENERATEMIPMAPPROC) \
-    X(GenFramebuffers, PFNGLGENFRAMEBUFFERSPROC) \
-    X(BindFramebuffer, PFNGLBINDFRAMEBUFFERPROC) \
-    X(FramebufferTexture2D, PFNGLFRAMEBUFFERTEXTURE2DPROC) \
-    X(FramebufferRenderbuffer, PFNGLFRAMEBUFFERRENDERBUFFERPROC) \
-    X(CheckFramebufferStatus, PFNGLCHECKFRAMEBUFFERSTATUSPROC) \
-    X(GenRenderbuffers, PFNGLGENRENDERBUFFERSPROC) \
-    X(BindRenderbuffer, PFNGLBINDRENDERBUFFERPROC) \
-    X(RenderbufferStorageMultisample, PFNGLRENDERBUFFERSTORAGEMULTISAMPLEPROC) \
-    X(BlitFramebuffer, PFNGLBLITFRAMEBUFFERPROC)
-// clang-format on
-
-struct Gl {
-#define FACET_GL_MEMBER(name, type) type name = nullptr;
-    FACET_GL_FUNCTIONS(FACET_GL_MEMBER)
-#undef FACET_GL_MEMBER
-    void load() {
-#define FACET_GL_LOAD(name, type) name = gl_proc<type>("gl" #name);
-        FACET_GL_FUNCTIONS(FACET_GL_LOAD)
-#undef FACET_GL_LOAD
-    }
-};
 
 // The light loop, term for term what src/shade/lighting_batch.cpp computes:
 // ambient * (sum of ambient lights, or white), then per light Lambert and
@@ -124,29 +68,37 @@ float shadow(vec3 p) {
                    shadow2D(u_shadow_map, s.xyz + vec3(d, d, 0.0)).r);
 }
 #endif
+// Light i arriving at p, and l towards it. The kind flags are constants in
+// the pbr program, which is compiled for the scene's lights (llvmpipe_pbr.cpp).
+vec3 light_arriving(int i, vec3 p, bool point, bool ranged, bool spot, out vec3 l) {
+    l = u_light_pos[i].xyz;
+    if (!point) return u_radiance[i];
+    vec3 d = u_light_pos[i].xyz - p;
+    float dist2 = dot(d, d);
+    if (dist2 <= 0.0) {  // at the light itself: no direction, no light
+        l = vec3(0.0, 1.0, 0.0);
+        return vec3(0.0);
+    }
+    l = d / sqrt(dist2);
+    float falloff = 1.0 / dist2;
+    if (ranged) {
+        float x = dist2 * u_light_axis[i].w * u_light_axis[i].w;
+        float w = clamp(1.0 - x * x, 0.0, 1.0);
+        falloff *= w * w;
+    }
+    if (spot) {
+        float t = clamp(dot(l, u_light_axis[i].xyz) * u_spot[i].x + u_spot[i].y, 0.0, 1.0);
+        falloff *= t * t * (3.0 - 2.0 * t);
+    }
+    return u_radiance[i] * falloff;
+}
 void light_point(vec3 p, vec3 n, vec3 to_eye, bool phong, out vec3 diffuse, out vec3 specular) {
     diffuse = u_terms.x * u_ambient_light;
     specular = vec3(0.0);
     for (int i = 0; i < u_light_count; ++i) {
         vec3 l;
-        vec3 radiance = u_radiance[i];
-        if (u_light_pos[i].w > 0.5) {
-            vec3 d = u_light_pos[i].xyz - p;
-            float dist2 = dot(d, d);
-            if (dist2 <= 0.0) continue;
-            l = d / sqrt(dist2);
-            float falloff = 1.0 / dist2;
-            if (u_light_axis[i].w > 0.0) {
-                float x = dist2 * u_light_axis[i].w * u_light_axis[i].w;
-                float w = clamp(1.0 - x * x, 0.0, 1.0);
-                falloff *= w * w;
-            }
-            float t = clamp(dot(l, u_light_axis[i].xyz) * u_spot[i].x + u_spot[i].y, 0.0, 1.0);
-            falloff *= t * t * (3.0 - 2.0 * t);
-            radiance *= falloff;
-        } else {
-            l = u_light_pos[i].xyz;
-        }
+        vec3 radiance =
+            light_arriving(i, p, u_light_pos[i].w > 0.5, u_light_axis[i].w > 0.0, true, l);
         float n_dot_l = dot(n, l);
         if (n_dot_l <= 0.0) continue;
 #ifdef SHADOWS
@@ -319,9 +271,9 @@ struct Program {
         shadow_matrix, shadow_texel, texture;
 };
 
-Program make_program(const Gl& gl, const std::string& defines) {
+Program make_program(const Gl& gl, const std::string& defines, const std::string& fragment) {
     Program p;
-    p.id = link(gl, defines, kVertexShader, kFragmentShader, true);
+    p.id = link(gl, defines, kVertexShader, fragment.c_str(), true);
     auto loc = [&](const char* name) { return gl.GetUniformLocation(p.id, name); };
     p.model = loc("u_model"), p.normal_matrix = loc("u_normal_matrix");
     p.view_projection = loc("u_view_projection"), p.eye = loc("u_eye");
@@ -353,13 +305,18 @@ class Reference {
         make_buffers();
         make_textures();
         make_targets();
-        for (bool textured : {false, true})
-            programs_[textured] = make_program(gl_, defines(textured));
+        if (model_ == facet::ShadingModel::pbr) pbr_.emplace(gl_, scene, world, shadow_light_);
+        for (bool textured : {false, true}) {
+            programs_[textured] = make_program(gl_, defines(textured),
+                                               pbr_ ? pbr_->fragment_shader() : kFragmentShader);
+            if (pbr_) pbr_->prepare(programs_[textured].id);
+        }
         if (shadow_light_ >= 0) make_shadow_map();
     }
 
     std::string features() const {
         std::string f = facet::shading_model_name(model_);
+        if (pbr_) f += " (" + pbr_->features() + ")";
         if (!textures_.empty()) f += ", textured (mipmapped)";
         if (shadow_light_ >= 0) f += ", shadow map " + std::to_string(shadow_size_) + "^2";
         if (samples_ > 1) f += ", " + std::to_string(samples_) + "x MSAA";
@@ -390,6 +347,7 @@ class Reference {
             const Program& p = programs_[textured];
             gl_.UseProgram(p.id);
             set_lights(p, lights, cam.position, view_projection);
+            if (pbr_) pbr_->set_draw(p.id, state, m);
             const glm::mat4& model_matrix = state.objects[d.object].transform;
             const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model_matrix)));
             gl_.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model_matrix));
@@ -665,7 +623,8 @@ class Reference {
     GLuint depth_program_ = 0;
     GLint depth_clip_ = -1;
     glm::mat4 shadow_matrix_{1};
-    Program programs_[2];  // untextured, textured
+    Program programs_[2];         // untextured, textured
+    std::optional<PbrPeer> pbr_;  // the `pbr` model's GLSL port and its textures
 };
 
 // facet's first frame against llvmpipe's, both as 8-bit sRGB.
@@ -696,7 +655,9 @@ void compare_first_frame(const facet::SceneDesc& scene, const facet::World& worl
             }
             if (!our_hit) continue;
             ++both;
-            const glm::vec4 c = facet::to_float(ours.color.at(x, y));
+            // As facet's PNG: exposure and tone curve, then sRGB.
+            const glm::vec4 c =
+                facet::display_color(facet::to_float(ours.color.at(x, y)), scene.output.display);
             int worst = 0;
             for (int k = 0; k < 3; ++k) {
                 const int mine = static_cast<int>(
