@@ -126,18 +126,6 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
 }
 #endif
 
-// Eight floats from base[offset[i]] (offsets >= 0, within the array): one
-// gather instruction with AVX2, else eight loads.
-[[gnu::always_inline]] inline vf gather(const float* base, vi offset) {
-#if !defined(FACET_SIMD_GENERIC) && defined(__AVX2__)
-    return (vf)_mm256_i32gather_ps(base, (__m256i)offset, 4);
-#else
-    vf out;
-    for (int i = 0; i < kLanes; ++i) out[i] = base[offset[i]];
-    return out;
-#endif
-}
-
 // log2 for positive, normal x. The mantissa is centred on 1 (in
 // [sqrt(1/2), sqrt(2))) and log(m) summed as 2 atanh((m-1)/(m+1)), whose
 // odd series converges fast there: five terms give about 1e-7 relative.

@@ -54,28 +54,14 @@ void OctahedralMap::sample(const OctahedralMap* const (&maps)[simd::kLanes], sim
     const vf tx = x - __builtin_convertvector(column, vf);
     const vf ty = y - __builtin_convertvector(row, vf);
     vf texel[4][3];  // upper left, upper right, lower left, lower right
-    const bool one_map = std::all_of(std::begin(maps), std::end(maps),
-                                     [&](const OctahedralMap* map) { return map == maps[0]; });
-    static_assert(sizeof(glm::vec3) == 3 * sizeof(float), "texels are packed floats");
-    if (one_map) {  // the usual case: a material of one roughness
-        const OctahedralMap& map = *maps[0];
-        const float* base = &map.texels_[0].x;
-        const int stride = map.stride();
-        const vi upper_left = (row * stride + column) * 3;
-        const int corner_offsets[4] = {0, 3, stride * 3, stride * 3 + 3};
+    for (int lane = 0; lane < simd::kLanes; ++lane) {
+        const OctahedralMap& map = *maps[lane];
+        const glm::vec3* upper = &map.texels_[static_cast<size_t>(row[lane]) * map.stride() +
+                                              static_cast<size_t>(column[lane])];
+        const glm::vec3* corners[4] = {upper, upper + 1, upper + map.stride(),
+                                       upper + map.stride() + 1};
         for (int k = 0; k < 4; ++k)
-            for (int c = 0; c < 3; ++c)
-                texel[k][c] = simd::gather(base, upper_left + (corner_offsets[k] + c));
-    } else {  // lanes between different levels: one lane at a time
-        for (int lane = 0; lane < simd::kLanes; ++lane) {
-            const OctahedralMap& map = *maps[lane];
-            const glm::vec3* upper = &map.texels_[static_cast<size_t>(row[lane]) * map.stride() +
-                                                  static_cast<size_t>(column[lane])];
-            const glm::vec3* corners[4] = {upper, upper + 1, upper + map.stride(),
-                                           upper + map.stride() + 1};
-            for (int k = 0; k < 4; ++k)
-                for (int c = 0; c < 3; ++c) texel[k][c][lane] = (*corners[k])[c];
-        }
+            for (int c = 0; c < 3; ++c) texel[k][c][lane] = (*corners[k])[c];
     }
     for (int c = 0; c < 3; ++c) {
         const vf top = texel[0][c] + (texel[1][c] - texel[0][c]) * tx;

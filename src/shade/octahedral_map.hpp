@@ -123,8 +123,7 @@ class OctahedralMap {
     }
 
     // sample() at eight points, lane i's in *maps[i] (maps may repeat), to
-    // the bit: the coordinates over lanes, the four texels gathered (one
-    // instruction per corner and channel when every lane reads one map).
+    // the bit: the coordinates over lanes, the four texels one lane at a time.
     static void sample(const OctahedralMap* const (&maps)[simd::kLanes], simd::vf px, simd::vf py,
                        simd::vf (&out)[3]);
 
