@@ -81,9 +81,7 @@ PbrPoints points_of(const SurfaceLanes& in, const glm::vec3& eye) {
     p.position = {s.px, s.py, s.pz};
     p.n = normalise_or({s.nx, s.ny, s.nz}, {splat(0.0f), splat(1.0f), splat(0.0f)});
     p.v = normalise_or({eye.x - s.px, eye.y - s.py, eye.z - s.pz}, p.n);
-    p.coat_n = normalise_or(lanes3(l.coat_normal), p.n);
     p.n_dot_v = simd::vmax(dot(p.n, p.v), splat(pbr::kMinNdotV));
-    p.coat_n_dot_v = simd::vmax(dot(p.coat_n, p.v), splat(pbr::kMinNdotV));
     p.base = lanes3(in.albedo);
     p.metallic = clamp01(l.metallic);
     p.roughness = clamp01(l.roughness);
@@ -99,7 +97,11 @@ PbrPoints points_of(const SurfaceLanes& in, const glm::vec3& eye) {
     const vi coated = p.coat > splat(0.0f);
     p.any_coat = simd::movemask(coated) != 0;
     p.coat_dfg = {splat(0.0f), splat(0.0f)};
+    p.coat_n = p.n;
+    p.coat_n_dot_v = p.n_dot_v;
     if (p.any_coat) {
+        p.coat_n = normalise_or(lanes3(l.coat_normal), p.n);
+        p.coat_n_dot_v = simd::vmax(dot(p.coat_n, p.v), splat(pbr::kMinNdotV));
         const pbr::DfgTable::Lanes terms = table.lookup(p.coat_n_dot_v, p.coat_roughness);
         p.coat_dfg = {coated ? terms.scale : splat(0.0f), coated ? terms.bias : splat(0.0f)};
     }
