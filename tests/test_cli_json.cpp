@@ -93,7 +93,7 @@ TEST_CASE("json: info and styles", "[cli][json]") {
         CHECK_THAT(text.output, Catch::Contains(fact));
     const RunResult obj =
         run_stdout("info '" + source_path("tests/scenes/open_tube.obj") + "' --json");
-    CHECK(nlohmann::json::parse(obj.output)["loader"] == "tinyobjloader");
+    CHECK(nlohmann::json::parse(obj.output)["loader"] == "facet");
     const std::string stl = "/usr/share/assimp/models/STL/Wuson.stl";
     if (std::filesystem::exists(stl))
         CHECK(nlohmann::json::parse(run_stdout("info '" + stl + "' --json").output)["loader"] ==

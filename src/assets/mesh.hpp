@@ -18,6 +18,8 @@
 
 namespace facet {
 
+class ThreadPool;
+
 enum class AlphaMode { opaque, mask, blend };
 
 // A material's highlight coefficient when neither the scene nor the file
@@ -153,7 +155,7 @@ struct GltfLight {
 
 struct Mesh {
     std::string source;  // file it came from, or the primitive's description
-    std::string loader;  // what read it: "tinygltf", "tinyobjloader", "assimp" or "facet"
+    std::string loader;  // what read it: "tinygltf", "assimp" or "facet" (OBJ and primitives)
     std::vector<MeshPart> parts;
     std::vector<Material> materials;
     Warnings warnings;  // non-fatal problems found while loading, each naming the file
@@ -189,9 +191,13 @@ struct AssetContext {
     // `facet info`: a file that requires an extension facet does not read
     // is still loaded as far as it can be, the refusal a warning.
     bool inspect_only = false;
+    // Threads that may read one big file (OBJ): 0 uses every core the
+    // process may run on (available_cores). The mesh is the same for any
+    // count.
+    unsigned threads = 0;
 };
 
-// Loads .obj (with .mtl, through tinyobjloader), .gltf or .glb (through
+// Loads .obj (facet's own reader; .mtl through tinyobjloader), .gltf or .glb (through
 // tinygltf), or .stl, .ply, .fbx, .dae or .3ds (through libassimp) by
 // extension. Throws facet::Error (invalid_input) with the file name and
 // what is wrong.
@@ -214,9 +220,11 @@ GltfCameras load_gltf_cameras(const std::string& path, const AssetContext& conte
 // given, it receives for each new vertex the index of the old vertex it was
 // copied from. O(n log n) in the corners for any input; when `work` is
 // given, the count of steps taken besides sorting is added to it (tests
-// bound it).
+// bound it). With a pool, the vertices are smoothed on its threads; the
+// normals are the same without one.
 void compute_normals(MeshPart& part, float crease_degrees,
-                     std::vector<uint32_t>* source_vertex = nullptr, uint64_t* work = nullptr);
+                     std::vector<uint32_t>* source_vertex = nullptr, uint64_t* work = nullptr,
+                     ThreadPool* pool = nullptr);
 
 // Checks indices against vertex counts and drops degenerate index triples;
 // throws if an index is out of range.

@@ -1,8 +1,10 @@
 // Shared mesh building steps: bounds, normals, validation, and loading by extension.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <tuple>
 
 #include <glm/geometric.hpp>
@@ -12,6 +14,7 @@
 #include "assets/mesh.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
+#include "core/thread_pool.hpp"
 
 namespace facet {
 
@@ -107,32 +110,57 @@ CornersAtVertex corners_at_vertices(const std::vector<uint32_t>& indices,
     return c;
 }
 
+bool same_bits(const glm::vec3& a, const glm::vec3& b) {
+    return float_bits(a.x) == float_bits(b.x) && float_bits(a.y) == float_bits(b.y) &&
+           float_bits(a.z) == float_bits(b.z);
+}
+
+// For each corner, the first corner with the same vertex and normal bits.
+// Most vertices have one normal (a smooth surface), so each corner is
+// compared with the first corner at its vertex; only the others (at
+// creases) are sorted. No hashing: O(n + k log k) for k such corners,
+// whatever the file.
+std::vector<uint32_t> first_same_corners(const std::vector<uint32_t>& idx, size_t vertex_count,
+                                         const std::vector<glm::vec3>& corner_normal) {
+    constexpr uint32_t kNone = ~0u;
+    std::vector<uint32_t> first_at(vertex_count, kNone);
+    std::vector<uint32_t> first(idx.size());
+    std::vector<uint32_t> others;
+    for (uint32_t c = 0; c < idx.size(); ++c) {
+        uint32_t& at = first_at[idx[c]];
+        if (at == kNone) at = c;
+        if (same_bits(corner_normal[at], corner_normal[c]))
+            first[c] = at;
+        else
+            others.push_back(c);
+    }
+    auto key = [&](uint32_t c) {
+        const glm::vec3& n = corner_normal[c];
+        return std::tuple(idx[c], float_bits(n.x), float_bits(n.y), float_bits(n.z), c);
+    };
+    std::sort(others.begin(), others.end(),
+              [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+    for (size_t i = 0; i < others.size(); ++i) {
+        const uint32_t c = others[i], before = i > 0 ? others[i - 1] : kNone;
+        const bool same = before != kNone && idx[before] == idx[c] &&
+                          same_bits(corner_normal[before], corner_normal[c]);
+        first[c] = same ? first[before] : c;
+    }
+    return first;
+}
+
 // The part rebuilt with one vertex per distinct (vertex, normal), numbered
-// in order of first use, found by sorting the corners rather than hashing
-// them. Returns the steps taken besides sorting.
+// in order of first use. Returns the steps taken besides sorting.
 uint64_t split_by_normal(MeshPart& part, const std::vector<glm::vec3>& corner_normal,
                          std::vector<uint32_t>* source_vertex) {
     const std::vector<uint32_t>& idx = part.indices;
-    struct CornerKey {
-        uint32_t vertex, nx, ny, nz, corner;
-        auto tie() const { return std::tie(vertex, nx, ny, nz, corner); }
-    };
-    std::vector<CornerKey> keys(idx.size());
-    for (size_t c = 0; c < idx.size(); ++c)
-        keys[c] = {idx[c], float_bits(corner_normal[c].x), float_bits(corner_normal[c].y),
-                   float_bits(corner_normal[c].z), static_cast<uint32_t>(c)};
-    std::sort(keys.begin(), keys.end(),
-              [](const CornerKey& a, const CornerKey& b) { return a.tie() < b.tie(); });
-    std::vector<uint32_t> first_use(idx.size());  // per corner: the first corner like it
-    for (size_t i = 0; i < keys.size(); ++i) {
-        const bool same = i > 0 && keys[i].vertex == keys[i - 1].vertex &&
-                          keys[i].nx == keys[i - 1].nx && keys[i].ny == keys[i - 1].ny &&
-                          keys[i].nz == keys[i - 1].nz;
-        first_use[keys[i].corner] = same ? first_use[keys[i - 1].corner] : keys[i].corner;
-    }
+    const std::vector<uint32_t> first_use =
+        first_same_corners(idx, part.positions.size(), corner_normal);
     MeshPart out;
     out.material = part.material;
     out.indices.resize(idx.size());
+    out.positions.reserve(part.positions.size());
+    out.normals.reserve(part.positions.size());
     std::vector<uint32_t> new_index(idx.size());
     if (source_vertex) source_vertex->clear();
     for (size_t c = 0; c < idx.size(); ++c) {
@@ -153,36 +181,17 @@ uint64_t split_by_normal(MeshPart& part, const std::vector<glm::vec3>& corner_no
     return 2 * static_cast<uint64_t>(corner_normal.size());
 }
 
-}  // namespace
+// What smoothing reads about the part's triangles, shared by every vertex.
+struct SmoothingInput {
+    const std::vector<uint32_t>& idx;
+    const std::vector<uint32_t>& weld_id;
+    const CornersAtVertex& at;
+    std::vector<glm::vec3> face_normal, face_unit;
+    float cos_crease;
+};
 
-// Smooth groups round each vertex, as modelling tools define them: two
-// faces at a vertex share a normal when they share an edge there and meet
-// within the crease angle, and so on through the fan. Every step is linear
-// in the corners or a sort of them, whatever the file: a million copies of
-// one triangle cost what a million distinct triangles cost.
-void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>* source_vertex,
-                     uint64_t* work) {
-    const std::vector<uint32_t>& idx = part.indices;
-    const size_t triangles = idx.size() / 3;
-    uint64_t steps = 0;
-    // Weld by exact position so faces that share a corner in space, but not
-    // an index (because their UVs differ), still smooth across each other.
-    size_t welded = 0;
-    const std::vector<uint32_t> weld_id = weld_by_position(part.positions, welded);
-
-    std::vector<glm::vec3> face_normal(triangles), face_unit(triangles);
-    for (size_t t = 0; t < triangles; ++t) {
-        const glm::vec3& a = part.positions[idx[3 * t]];
-        const glm::vec3& b = part.positions[idx[3 * t + 1]];
-        const glm::vec3& c = part.positions[idx[3 * t + 2]];
-        face_normal[t] = glm::cross(b - a, c - a);  // length = twice the area: area weighting
-        const float len = glm::length(face_normal[t]);
-        face_unit[t] = len > 0 ? face_normal[t] / len : glm::vec3(0);
-    }
-    const CornersAtVertex at = corners_at_vertices(idx, weld_id, welded);
-
-    const float cos_crease = std::cos(glm::radians(std::clamp(crease_degrees, 0.0f, 180.0f)));
-    std::vector<glm::vec3> corner_normal(idx.size());
+// Buffers reused from vertex to vertex by one thread.
+struct SmoothingScratch {
     struct Edge {
         uint32_t other;  // welded vertex at the edge's far end
         uint32_t local;  // the corner's place round this vertex
@@ -190,44 +199,105 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
     std::vector<Edge> edges;
     CornerSets sets;
     std::vector<glm::vec3> sums;
-    for (size_t w = 0; w < welded; ++w) {
-        const uint32_t first = at.start[w], count = at.start[w + 1] - first;
-        edges.clear();
-        for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t c = at.corner[first + i], t = c / 3, k = c % 3;
-            for (uint32_t step : {1u, 2u}) {
-                const uint32_t other = weld_id[idx[3 * t + (k + step) % 3]];
-                if (other != w) edges.push_back({other, i});
-            }
-        }
-        std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
-            return a.other != b.other ? a.other < b.other : a.local < b.local;
-        });
-        sets.parent.resize(count);
-        for (uint32_t i = 0; i < count; ++i) sets.parent[i] = i;
-        for (size_t e = 1; e < edges.size(); ++e) {
-            if (edges[e].other != edges[e - 1].other) continue;
-            const uint32_t ta = at.corner[first + edges[e - 1].local] / 3;
-            const uint32_t tb = at.corner[first + edges[e].local] / 3;
-            if (glm::dot(face_unit[ta], face_unit[tb]) >= cos_crease)
-                sets.join(edges[e - 1].local, edges[e].local);
-        }
-        sums.assign(count, glm::vec3(0));
-        for (uint32_t i = 0; i < count; ++i)
-            sums[sets.find(i)] += face_normal[at.corner[first + i] / 3];
-        for (uint32_t i = 0; i < count; ++i) {
-            const uint32_t c = at.corner[first + i], t = c / 3;
-            const glm::vec3 sum = sums[sets.find(i)];
-            const float len = glm::length(sum);
-            corner_normal[c] =
-                len > 0 ? sum / len
-                        : (glm::length(face_unit[t]) > 0 ? face_unit[t] : glm::vec3(0, 1, 0));
-        }
-        steps += count + edges.size();
-    }
+};
 
-    steps += split_by_normal(part, corner_normal, source_vertex);
-    if (work) *work += steps;
+// The normals of the corners round welded vertex w: the faces of each
+// smooth group summed, area weighted. Returns the steps taken.
+uint64_t smooth_corners_at(const SmoothingInput& in, uint32_t w, SmoothingScratch& scratch,
+                           std::vector<glm::vec3>& corner_normal) {
+    const uint32_t first = in.at.start[w], count = in.at.start[w + 1] - first;
+    auto& edges = scratch.edges;
+    edges.clear();
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t c = in.at.corner[first + i], t = c / 3, k = c % 3;
+        for (uint32_t step : {1u, 2u}) {
+            const uint32_t other = in.weld_id[in.idx[3 * t + (k + step) % 3]];
+            if (other != w) edges.push_back({other, i});
+        }
+    }
+    using Edge = SmoothingScratch::Edge;
+    std::sort(edges.begin(), edges.end(), [](const Edge& a, const Edge& b) {
+        return a.other != b.other ? a.other < b.other : a.local < b.local;
+    });
+    CornerSets& sets = scratch.sets;
+    sets.parent.resize(count);
+    for (uint32_t i = 0; i < count; ++i) sets.parent[i] = i;
+    for (size_t e = 1; e < edges.size(); ++e) {
+        if (edges[e].other != edges[e - 1].other) continue;
+        const uint32_t ta = in.at.corner[first + edges[e - 1].local] / 3;
+        const uint32_t tb = in.at.corner[first + edges[e].local] / 3;
+        if (glm::dot(in.face_unit[ta], in.face_unit[tb]) >= in.cos_crease)
+            sets.join(edges[e - 1].local, edges[e].local);
+    }
+    scratch.sums.assign(count, glm::vec3(0));
+    for (uint32_t i = 0; i < count; ++i)
+        scratch.sums[sets.find(i)] += in.face_normal[in.at.corner[first + i] / 3];
+    for (uint32_t i = 0; i < count; ++i) {
+        const uint32_t c = in.at.corner[first + i], t = c / 3;
+        const glm::vec3 sum = scratch.sums[sets.find(i)];
+        const float len = glm::length(sum);
+        corner_normal[c] =
+            len > 0 ? sum / len
+                    : (glm::length(in.face_unit[t]) > 0 ? in.face_unit[t] : glm::vec3(0, 1, 0));
+    }
+    return count + edges.size();
+}
+
+// Runs task(first, last) over [0, count) in fixed ranges, on the pool when
+// there is one: each range's result depends on the range alone.
+void for_ranges(ThreadPool* pool, size_t count, const std::function<void(size_t, size_t)>& task) {
+    constexpr size_t kRange = 16384;
+    if (pool && count > kRange)
+        pool->parallel_for_chunks(count, kRange, task);
+    else
+        task(0, count);
+}
+
+}  // namespace
+
+// Smooth groups round each vertex, as modelling tools define them: two
+// faces at a vertex share a normal when they share an edge there and meet
+// within the crease angle, and so on through the fan. Every step is linear
+// in the corners or a sort of them, whatever the file: a million copies of
+// one triangle cost what a million distinct triangles cost. Each vertex's
+// corners are smoothed on their own, so vertices run in parallel.
+void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>* source_vertex,
+                     uint64_t* work, ThreadPool* pool) {
+    const std::vector<uint32_t>& idx = part.indices;
+    const size_t triangles = idx.size() / 3;
+    // Weld by exact position so faces that share a corner in space, but not
+    // an index (because their UVs differ), still smooth across each other.
+    size_t welded = 0;
+    const std::vector<uint32_t> weld_id = weld_by_position(part.positions, welded);
+    const CornersAtVertex at = corners_at_vertices(idx, weld_id, welded);
+    SmoothingInput in{idx,
+                      weld_id,
+                      at,
+                      std::vector<glm::vec3>(triangles),
+                      std::vector<glm::vec3>(triangles),
+                      std::cos(glm::radians(std::clamp(crease_degrees, 0.0f, 180.0f)))};
+    for_ranges(pool, triangles, [&](size_t first, size_t last) {
+        for (size_t t = first; t < last; ++t) {
+            const glm::vec3& a = part.positions[idx[3 * t]];
+            const glm::vec3& b = part.positions[idx[3 * t + 1]];
+            const glm::vec3& c = part.positions[idx[3 * t + 2]];
+            // Length = twice the area: area weighting.
+            in.face_normal[t] = glm::cross(b - a, c - a);
+            const float len = glm::length(in.face_normal[t]);
+            in.face_unit[t] = len > 0 ? in.face_normal[t] / len : glm::vec3(0);
+        }
+    });
+    std::vector<glm::vec3> corner_normal(idx.size());
+    std::atomic<uint64_t> steps{0};
+    for_ranges(pool, welded, [&](size_t first, size_t last) {
+        SmoothingScratch scratch;
+        uint64_t range_steps = 0;
+        for (size_t w = first; w < last; ++w)
+            range_steps += smooth_corners_at(in, static_cast<uint32_t>(w), scratch, corner_normal);
+        steps += range_steps;
+    });
+    const uint64_t split_steps = split_by_normal(part, corner_normal, source_vertex);
+    if (work) *work += steps + split_steps;
 }
 
 void validate_part(const MeshPart& part, const std::string& source) {

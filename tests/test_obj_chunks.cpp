@@ -1,0 +1,220 @@
+// Wavefront OBJ files big enough to be read in parallel chunks
+// (src/assets/obj_parse.cpp): the mesh is bit-identical for any thread
+// count, relative indices and materials carry across chunk boundaries, and
+// errors far into the file name their line and column.
+#include <catch2/catch.hpp>
+
+#include <cstring>
+#include <map>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "asset_support.hpp"
+#include "assets/mesh.hpp"
+#include "core/thread_pool.hpp"
+
+using namespace facet::test;
+
+namespace {
+
+// Enough lines for several 1 MB chunks, and more than the 4 MB from which
+// the loader reads in parallel.
+constexpr int kStrips = 60000;
+
+// Strip i: three vertices at x = i, a texture coordinate and a normal for
+// some, and faces that name them in every form OBJ has: absolute and
+// relative, v, v/vt, v//vn and v/vt/vn, triangles and quads, with CRLF
+// and comments mixed in (a comment after a face's corners is refused, as
+// other readers do), and a material change every 997 strips.
+std::string strips_obj() {
+    std::string text = "mtllib strips.mtl\n# strips\n";
+    text.reserve(size_t(kStrips) * 120);
+    int vertices = 0;
+    for (int i = 0; i < kStrips; ++i) {
+        const std::string x = std::to_string(i);
+        text += "v " + x + " 0 0\nv " + x + " 1.5 0\r\nv " + x + ".0 0 -2.25e0\n";
+        text += "vt 0." + std::to_string(i % 10) + " 1\nvn 1 0 0\n";
+        vertices += 3;
+        if (i % 997 == 0) text += std::string("usemtl ") + (i % 2 ? "odd" : "even") + "\n";
+        switch (i % 4) {
+            case 0:
+                text += "f -3 -2 -1\n";
+                break;
+            case 1:
+                text += "f -3/-1 -2/-1 -1/-1\n# a comment\n";
+                break;
+            case 2:
+                text += "f " + std::to_string(vertices - 2) + "//" + std::to_string(i + 1) + " " +
+                        std::to_string(vertices - 1) + "//-1 " + std::to_string(vertices) +
+                        "//-1\n";
+                break;
+            default:  // a quad with the strip before: two triangles
+                text += "f -6/-1/-1 -3/-1/-1 -1/-1/-1 -4/-1/-1\n";
+                break;
+        }
+    }
+    return text;
+}
+
+struct StripsFile {
+    TempDir dir{"obj-chunks"};
+    std::string path;
+    StripsFile() {
+        write_text(dir.file("strips.mtl"), "newmtl even\nKd 1 0 0\nnewmtl odd\nKd 0 0 1\n");
+        path = write_text(dir.file("strips.obj"), strips_obj());
+    }
+};
+
+facet::Mesh load_with_threads(const std::string& path, unsigned threads) {
+    facet::AssetContext context;
+    context.threads = threads;
+    return facet::load_obj(path, context);
+}
+
+template <class T>
+bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
+    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0;
+}
+
+void require_identical(const facet::Mesh& a, const facet::Mesh& b) {
+    REQUIRE(a.parts.size() == b.parts.size());
+    for (size_t p = 0; p < a.parts.size(); ++p) {
+        INFO("part " << p);
+        CHECK(a.parts[p].material == b.parts[p].material);
+        CHECK(same_bytes(a.parts[p].positions, b.parts[p].positions));
+        CHECK(same_bytes(a.parts[p].normals, b.parts[p].normals));
+        CHECK(same_bytes(a.parts[p].uvs, b.parts[p].uvs));
+        CHECK(same_bytes(a.parts[p].indices, b.parts[p].indices));
+    }
+    CHECK(a.warnings.size() == b.warnings.size());
+}
+
+}  // namespace
+
+TEST_CASE("OBJ read in chunks is bit-identical on any number of threads", "[assets][obj]") {
+    const StripsFile file;
+    const facet::Mesh one = load_with_threads(file.path, 1);
+    check_sane(one);
+    // Three strips in four are a triangle, the fourth a quad.
+    CHECK(one.triangle_count() == size_t(kStrips) / 4 * 5);
+    for (unsigned threads : {2u, 3u, 0u}) {
+        DYNAMIC_SECTION(threads << " threads") {
+            require_identical(one, load_with_threads(file.path, threads));
+        }
+    }
+}
+
+TEST_CASE("OBJ chunks resolve relative indices and materials across their seams", "[assets][obj]") {
+    const StripsFile file;
+    const facet::Mesh mesh = load_with_threads(file.path, 2);
+    std::map<std::string, size_t> by_material;
+    std::set<float> strips;
+    for (const auto& part : mesh.parts) {
+        by_material[material_of(mesh, part).name] += part.triangle_count();
+        for (size_t t = 0; t < part.triangle_count(); ++t) {
+            const glm::vec3 a = corner(part, t, 0), b = corner(part, t, 1), c = corner(part, t, 2);
+            // A triangle of one strip lies in the plane x = i; a quad's
+            // triangles join strip i - 1 to strip i.
+            const float low = std::min({a.x, b.x, c.x}), high = std::max({a.x, b.x, c.x});
+            INFO("triangle " << t << " at x " << low << ".." << high);
+            CHECK((high == low || high == low + 1));
+            strips.insert(high);
+        }
+    }
+    CHECK(strips.size() == size_t(kStrips));
+    CHECK(*strips.rbegin() == float(kStrips - 1));
+    // usemtl every 997 strips: even, odd, even...; the file has no default faces.
+    CHECK(by_material.size() == 2);
+    CHECK(by_material["even"] + by_material["odd"] == mesh.triangle_count());
+    CHECK(by_material["even"] > by_material["odd"]);
+}
+
+TEST_CASE("OBJ errors far into a chunked file name their line and column", "[assets][obj]") {
+    TempDir dir("obj-chunks");
+    std::string body = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+    for (int i = 0; i < 600000; ++i) body += "f 1 2 3\n";  // lines 4 .. 600003: 4.8 MB
+    struct Case {
+        const char* name;
+        std::string line;  // line 600004
+        const char* message;
+    };
+    const std::vector<Case> cases = {
+        {"a word in a vertex", "v 1 nan 0\n", "bad.obj:600004:5: 'nan' is not a finite number"},
+        {"a zero index", "f 1 0 2\n", "bad.obj:600004:5: '0' is not a vertex reference"},
+        {"a vertex past the end", "f 1 2 9\n", "bad.obj:600004:7: '9' refers to vertex 9"},
+        {"a relative index before the first", "f -1 -2 -4\n",
+         "bad.obj:600004:9: '-4' counts back past the first vertex"},
+        {"a coordinate too large for a float", "v 1e39 0 0\n",
+         "bad.obj:600004:3: '1e39' is too large for a float"},
+    };
+    for (const Case& c : cases) {
+        DYNAMIC_SECTION(c.name) {
+            const std::string path = write_text(dir.file("bad.obj"), body + c.line + "f 1 2 3\n");
+            require_input_error([&] { load_with_threads(path, 2); }, c.message);
+        }
+    }
+}
+
+TEST_CASE("OBJ notes what it reads but does not draw, naming the first place", "[assets][obj]") {
+    TempDir dir("obj");
+    const std::string path =
+        write_text(dir.file("notes.obj"),
+                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\n"
+                   "f 1 2\nf 1//1 2//7 3//1\nf 1/1/1 2/9/1 3/1/1\nf 1/1 2/1 3/-5\nf 3\n");
+    const facet::Mesh mesh = facet::load_obj(path);
+    CHECK(mesh.triangle_count() == 3);
+    std::vector<std::string> text;
+    for (const auto& w : mesh.warnings) text.push_back(w.describe());
+    REQUIRE(text.size() == 3);
+    CHECK_THAT(text[0], Catch::StartsWith(path + ":6:1: a face of fewer than three corners"));
+    CHECK_THAT(text[0], Catch::Contains("(and 1 more)"));
+    CHECK_THAT(text[1], Catch::StartsWith(path + ":8:9: '2/9/1' names a texture coordinate"));
+    CHECK_THAT(text[1], Catch::Contains("(and 1 more)"));
+    CHECK_THAT(text[2], Catch::StartsWith(path + ":7:8: '2//7' names a normal"));
+}
+
+TEST_CASE("OBJ numbers: what other readers make of odd words", "[assets][obj]") {
+    TempDir dir("obj");
+    // "+1" is 1, "-" and "1e" are no numbers (0), a number below the
+    // smallest float is 0, a CR alone ends a line (old Mac files), and a
+    // NUL ends a line's data.
+    const std::string path = write_text(
+        dir.file("odd.obj"), std::string("v +1 - 1e\rv 1e-60 2 0\rv 0 0 3 # comment\r\nv 5 5 5") +
+                                 '\0' + " 9\nf 1 2 3\n");
+    const facet::Mesh mesh = facet::load_obj(path);
+    REQUIRE(mesh.triangle_count() == 1);
+    const auto& part = mesh.parts[0];
+    CHECK(corner(part, 0, 0) == glm::vec3(1, 0, 0));
+    CHECK(corner(part, 0, 1) == glm::vec3(0, 2, 0));
+    CHECK(corner(part, 0, 2) == glm::vec3(0, 0, 3));
+}
+
+TEST_CASE("Normals computed on a pool are those computed on one thread", "[assets][normals]") {
+    // A grid of 300 x 300 quads folded along a crease: enough vertices for
+    // many ranges, smooth and sharp ones both.
+    facet::MeshPart part;
+    const int n = 300;
+    for (int y = 0; y <= n; ++y)
+        for (int x = 0; x <= n; ++x)
+            part.positions.push_back({float(x), float(y), x < n / 2 ? 0.0f : float(x - n / 2)});
+    for (int y = 0; y < n; ++y)
+        for (int x = 0; x < n; ++x) {
+            const uint32_t a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            part.indices.insert(part.indices.end(), {a, b, d, a, d, c});
+        }
+    part.normals.assign(part.positions.size(), glm::vec3(0));
+    facet::MeshPart pooled = part;
+    uint64_t work = 0, pooled_work = 0;
+    std::vector<uint32_t> source, pooled_source;
+    facet::compute_normals(part, 30.0f, &source, &work);
+    facet::ThreadPool pool(3);
+    facet::compute_normals(pooled, 30.0f, &pooled_source, &pooled_work, &pool);
+    // The crease splits the column of vertices along it: one more each.
+    CHECK(part.positions.size() == size_t(n + 1) * (n + 1) + (n + 1));
+    CHECK(same_bytes(part.positions, pooled.positions));
+    CHECK(same_bytes(part.normals, pooled.normals));
+    CHECK(same_bytes(part.indices, pooled.indices));
+    CHECK(source == pooled_source);
+    CHECK(work == pooled_work);
+}
