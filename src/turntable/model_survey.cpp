@@ -82,7 +82,7 @@ Bounds posed_bounds(const Mesh& mesh, const SurveyRequest& request, UpAxis up, d
 void check_size(const ModelSurvey& survey) {
     const double size = survey.size();
     if (size < kSmallestModel || size > kLargestModel) {
-        char text[160];
+        char text[256];
         std::snprintf(text, sizeof text,
                       ": the model is %g units across, too %s to frame (a turntable takes "
                       "models from %g to %g units): scale it in a scene of your own",

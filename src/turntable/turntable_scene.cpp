@@ -50,11 +50,10 @@ std::vector<Override> with_item_names(std::vector<Override> overrides) {
 
 void write_header(YamlWriter& w, const ModelSurvey& s, const std::string& mesh_reference) {
     const glm::vec3 extent = s.bounds.max - s.bounds.min;
-    char facts[200];
-    std::snprintf(facts, sizeof facts, "%s: %s, %zu triangles, %s x %s x %s units upright",
-                  fs::path(mesh_reference).filename().string().c_str(),
-                  mesh_format_name(s.format).c_str(), s.triangles, yaml_rounded(extent.x).c_str(),
-                  yaml_rounded(extent.y).c_str(), yaml_rounded(extent.z).c_str());
+    const std::string facts =
+        fs::path(mesh_reference).filename().string() + ": " + mesh_format_name(s.format) + ", " +
+        std::to_string(s.triangles) + " triangles, " + yaml_rounded(extent.x) + " x " +
+        yaml_rounded(extent.y) + " x " + yaml_rounded(extent.z) + " units upright";
     w.comment("facet's turntable of a model: the scene `facet render MODEL` renders, which");
     w.comment("`facet scene MODEL` writes. Rendering this file gives the same images, bit for");
     w.comment("bit, as long as its name is the model's (the name goes into the images);");

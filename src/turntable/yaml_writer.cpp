@@ -19,6 +19,14 @@ std::string value_text(const std::string& value) {
     return value;
 }
 
+// Comment text on one line: a line break in a file name or a -D value
+// would end the comment and turn the rest into scene keys.
+std::string one_line(std::string text) {
+    for (char& c : text)
+        if (c == '\n' || c == '\r') c = ' ';
+    return text;
+}
+
 }  // namespace
 
 std::string yaml_number(double value) {
@@ -71,7 +79,7 @@ void YamlWriter::write_line(int depth, const std::string& text, const std::strin
     line += text;
     if (!note.empty()) {
         line.resize(std::max(line.size() + 2, kNoteColumn), ' ');
-        line += "# " + note;
+        line += "# " + one_line(note);
     }
     text_ += line + "\n";
 }
@@ -82,7 +90,7 @@ void YamlWriter::comment(const std::string& text) {
         text_ += "\n";
         return;
     }
-    text_ += std::string(static_cast<size_t>(indent()), ' ') + "# " + text + "\n";
+    text_ += std::string(static_cast<size_t>(indent()), ' ') + "# " + one_line(text) + "\n";
 }
 
 void YamlWriter::value(const std::string& key, const std::string& yaml, const std::string& note) {
