@@ -221,6 +221,26 @@ TEST_CASE(
           listed_hashes(read_manifest_json(dir.file("from-file/column"))));
 }
 
+TEST_CASE("turntable: --environment lights it with an .hdr, --ground none leaves no ground",
+          "[turntable]") {
+    TempDir dir("turntable-environment");
+    const std::string model = write_obj(dir.file("house.obj"), house());
+    // A grey sky of radiance 1 (Radiance texels: mantissas, then the exponent).
+    std::string sky = "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 4 +X 8\n";
+    for (int i = 0; i < 32; ++i) sky += std::string("\x80\x80\x80\x81", 4);
+    write_text(dir.file("sky.hdr"), sky);
+    const std::string run = render_model(model, dir.file("out"),
+                                         " --size 96x54 --frames 1 --passes color,object_id "
+                                         "--formats exr --ground none --environment '" +
+                                             dir.file("sky.hdr") + "'");
+    const TurntableFrame f = read_turntable_frame(run, 1);
+    CHECK_FALSE(pixels_of(f, 1).empty());
+    CHECK(pixels_of(f, 2).empty());
+    const nlohmann::json m = read_manifest_json(run);
+    CHECK(m["model"]["options"]["environment"] == dir.file("sky.hdr"));
+    CHECK(m["model"]["options"]["ground"] == "none");
+}
+
 TEST_CASE("turntable: --video writes a movie of the turntable", "[turntable][video]") {
     TempDir dir("turntable-video");
     const std::string model = write_obj(dir.file("house.obj"), house());
