@@ -24,6 +24,7 @@
 #include <glm/mat4x4.hpp>
 
 #include "assets/mesh.hpp"
+#include "assets/mesh_format.hpp"
 #include "assets/ply_check.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
@@ -190,7 +191,9 @@ Mesh load_assimp(const std::string& path, const AssetContext& context) {
     // The file's size is checked against the policy before assimp reads it,
     // and a PLY file's structure (assets/ply_check.hpp).
     const std::vector<uint8_t> bytes = read_input_file(path, "mesh", context.paths.max_file_bytes);
-    if (lower(std::filesystem::path(path).extension().string()) == ".ply") check_ply(bytes, path);
+    if (mesh_format_of_bytes(bytes, bytes.size()) == MeshFormat::ply ||
+        lower(std::filesystem::path(path).extension().string()) == ".ply")
+        check_ply(bytes, path);
     Assimp::Importer importer;
     importer.SetIOHandler(new OneFileSystem(path));  // the importer owns it
     // Points and lines are split off and left out; polygons become

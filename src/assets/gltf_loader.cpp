@@ -33,6 +33,7 @@
 #include "assets/gltf_primitives.hpp"
 #include "assets/gltf_rig_loader.hpp"
 #include "assets/mesh.hpp"
+#include "assets/mesh_format.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
@@ -131,8 +132,9 @@ std::string trimmed(std::string s) {
 bool parse_model(const std::string& path, const gltf_detail::ExtensionLists& lists,
                  tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& err,
                  std::string& warn, int& placeholder_view) {
-    const bool binary = std::filesystem::path(path).extension() == ".glb" ||
-                        std::filesystem::path(path).extension() == ".GLB";
+    // By the file's magic number, as load_mesh chose the loader, so a .glb
+    // saved under another name is read as what it is.
+    const bool binary = recognise_mesh_file(path) == MeshFormat::glb;
     const bool meshopt = lists.lists("EXT_meshopt_compression");
     const bool draco = lists.lists("KHR_draco_mesh_compression");
     if (!meshopt && !draco)

@@ -197,16 +197,13 @@ struct AssetContext {
     unsigned threads = 0;
 };
 
-// Loads .obj (facet's own reader; .mtl through tinyobjloader), .gltf or .glb (through
-// tinygltf), or .stl, .ply, .fbx, .dae or .3ds (through libassimp) by
-// extension. Throws facet::Error (invalid_input) with the file name and
-// what is wrong.
+// Loads a mesh file by the loader its bytes call for, or else its name
+// (assets/mesh_format.hpp): .obj (facet's own reader; .mtl through
+// tinyobjloader), .gltf or .glb (through tinygltf), or .stl, .ply, .fbx,
+// .dae or .3ds (through libassimp). Throws facet::Error (invalid_input)
+// with the file name and what is wrong.
 Mesh load_mesh(const std::string& path, const AssetContext& context = {});
 Mesh load_obj(const std::string& path, const AssetContext& context = {});
-// Whether load_mesh reads files with this extension (lower case, with its
-// dot), and the list of them for messages: ".obj, .gltf, ...".
-bool is_mesh_extension(const std::string& extension);
-std::string mesh_extensions();
 Mesh load_gltf(const std::string& path, const AssetContext& context = {});
 Mesh load_assimp(const std::string& path, const AssetContext& context = {});
 // The cameras of a .gltf or .glb, which need hold no triangles. Throws

@@ -1,4 +1,4 @@
-// Shared mesh building steps: bounds, normals, validation, and loading by extension.
+// Shared mesh building steps: bounds, normals, validation, and loading by format.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -12,6 +12,7 @@
 
 #include "assets/corner_sets.hpp"
 #include "assets/mesh.hpp"
+#include "assets/mesh_format.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
@@ -320,39 +321,27 @@ void validate_part(const MeshPart& part, const std::string& source) {
 }
 
 namespace {
-// Through libassimp: the formats users bring that have no loader of their
-// own (PLY files are checked first: assets/ply_check.hpp).
-const std::vector<std::string> kAssimpExtensions = {".stl", ".ply", ".fbx", ".dae", ".3ds"};
-}  // namespace
 
-bool is_mesh_extension(const std::string& extension) {
-    return extension == ".obj" || extension == ".gltf" || extension == ".glb" ||
-           std::find(kAssimpExtensions.begin(), kAssimpExtensions.end(), extension) !=
-               kAssimpExtensions.end();
-}
-
-std::string mesh_extensions() {
-    std::string list = ".obj, .gltf, .glb";
-    for (const std::string& e : kAssimpExtensions) list += ", " + e;
-    return list;
-}
-
-namespace {
-
-Mesh load_by_extension(const std::string& path, const AssetContext& context) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".obj") return load_obj(path, context);
-    if (ext == ".gltf" || ext == ".glb") return load_gltf(path, context);
-    if (is_mesh_extension(ext)) return load_assimp(path, context);
-    throw Error(ExitCode::invalid_input,
-                path + ": unsupported mesh format '" + ext + "' (use " + mesh_extensions() + ")");
+// The loader the file's bytes call for, or else its name's.
+Mesh load_by_format(const std::string& path, const AssetContext& context) {
+    const std::optional<MeshFormat> format = recognise_mesh_file(path);
+    if (!format) {
+        require_input_file(path, "mesh");
+        std::string ext = std::filesystem::path(path).extension().string();
+        throw Error(ExitCode::invalid_input,
+                    path + ": not a mesh format facet reads (" +
+                        (ext.empty() ? std::string("no extension") : "'" + ext + "'") +
+                        ", and its content is none of " + mesh_formats_read() + ")");
+    }
+    if (*format == MeshFormat::obj) return load_obj(path, context);
+    if (*format == MeshFormat::gltf || *format == MeshFormat::glb) return load_gltf(path, context);
+    return load_assimp(path, context);
 }
 
 }  // namespace
 
 Mesh load_mesh(const std::string& path, const AssetContext& context) {
-    Mesh mesh = load_by_extension(path, context);
+    Mesh mesh = load_by_format(path, context);
     // Once the file's materials are known, whichever format gave them.
     add_normal_map_tangents(mesh, mesh.materials, mesh.warnings);
     return mesh;

@@ -17,6 +17,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/farm_commands.hpp"
 #include "cli/inspect_commands.hpp"
+#include "cli/model_commands.hpp"
 #include "cli/option_values.hpp"
 #include "cli/options.hpp"
 #include "cli/preview_command.hpp"
@@ -212,8 +213,8 @@ int compare_with_reference(const RenderArgs& args, const SceneDesc& scene,
 int render_command(const RenderArgs& args) {
     // Installed first, so an interrupt while loading also ends cleanly.
     catch_interrupts();
-    const SceneOptions scene_opts = scene_options(args);
-    SceneDesc scene = load_scene(args.scene, scene_opts);
+    SceneOptions scene_opts = scene_options(args);
+    SceneDesc scene = load_scene_or_model(args, scene_opts);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
     // A farm task: its part of the job's frames.
@@ -285,8 +286,8 @@ void print_validation(const SceneDesc& scene, const World& world, const RenderOp
 int validate_command(const RenderArgs& args) {
     Warnings warnings;
     try {
-        const SceneOptions scene_opts = scene_options(args);
-        SceneDesc scene = load_scene(args.scene, scene_opts);
+        SceneOptions scene_opts = scene_options(args);
+        SceneDesc scene = load_scene_or_model(args, scene_opts);
         warnings = scene.warnings;
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
@@ -358,14 +359,12 @@ int bench_command(const BenchArgs& args) {
     return 0;
 }
 
-// Paths named inside meshes (mtllib, map_Kd, glTF URIs) stay inside the
-// mesh's folder unless this is given (core/input_file.hpp).
+}  // namespace
+
 void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
     cmd->add_flag("--allow-asset-paths-outside", allow,
                   "Let meshes name files outside their own folder (trusted assets only)");
 }
-
-}  // namespace
 
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
@@ -420,8 +419,12 @@ namespace {
 // The subcommands' options, one function each (add_subcommands stays a
 // list of commands).
 CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
-    CLI::App* cmd = app.add_subcommand("render", "Render a scene's frames to PNG/EXR files");
+    CLI::App* cmd = app.add_subcommand(
+        "render", "Render a scene's frames to PNG/EXR files, or a turntable of a model file");
     add_scene_options(cmd, args);
+    cmd->get_option("scene")->description(
+        "Scene file (YAML), or a model (a mesh file: .glb, .gltf, .obj, .stl, .ply, .fbx, .dae, "
+        ".3ds) to render facet's turntable of");
     add_output_option(cmd, args.out, "Output folder (files go to OUTPUT/SCENE/)");
     add_threads_option(cmd, args.threads);
     cmd->add_option("--video", args.video,
@@ -437,6 +440,7 @@ CLI::App* add_render_command(CLI::App& app, RenderArgs& args) {
     cmd->add_option("--reference", args.comparison.ref,
                     "Compare the output with this reference folder (facet compare)");
     add_comparison_options(cmd, args.comparison, false);
+    add_turntable_options(cmd, args.turntable);
     return cmd;
 }
 
@@ -461,6 +465,8 @@ CLI::App* add_validate_command(CLI::App& app, RenderArgs& args) {
     add_strict_flag(cmd, args.strict);
     add_output_option(cmd, args.out,
                       "Output folder a render would use (checks its manifest's settings)");
+    cmd->get_option("scene")->description("Scene file (YAML), or a model (a mesh file)");
+    add_turntable_options(cmd, args.turntable);
     return cmd;
 }
 
@@ -562,6 +568,7 @@ struct CommandArgs {
     RenderArgs render;
     CompareArgs compare;
     RenderArgs validate;
+    SceneFileArgs scene;
     StylesArgs styles;
     SheetArgs sheet;
     BenchArgs bench;
@@ -576,8 +583,8 @@ struct CommandArgs {
 
 // The subcommands, to tell which one was given.
 struct Subcommands {
-    CLI::App *render, *compare, *validate, *styles, *sheet, *bench, *info, *video, *preview, *merge,
-        *farm, *completion, *man, *help;
+    CLI::App *render, *scene, *compare, *validate, *styles, *sheet, *bench, *info, *video, *preview,
+        *merge, *farm, *completion, *man, *help;
 };
 
 // Every subcommand, in the order the help lists them.
@@ -586,6 +593,7 @@ Subcommands add_subcommands(CLI::App& app, CommandArgs& args) {
     cmd.render = add_render_command(app, args.render);
     cmd.compare = add_compare_command(app, args.compare);
     cmd.validate = add_validate_command(app, args.validate);
+    cmd.scene = add_scene_command(app, args.scene);
     cmd.styles = add_styles_command(app, args.styles);
     cmd.sheet = add_sheet_command(app, args.sheet);
     cmd.bench = add_bench_command(app, args.bench);
@@ -635,6 +643,7 @@ int run_subcommand(CLI::App& app, const Subcommands& cmd, CommandArgs& args) {
     }
     args.validate.output_given = cmd.validate->get_option("--output")->count() > 0;
     if (cmd.render->parsed()) return render_command(args.render);
+    if (cmd.scene->parsed()) return scene_command(args.scene);
     if (cmd.compare->parsed()) return compare_command(args.compare);
     if (cmd.validate->parsed()) return validate_command(args.validate);
     if (cmd.info->parsed())

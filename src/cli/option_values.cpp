@@ -5,6 +5,7 @@
 
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
+#include "core/suggest.hpp"
 
 namespace facet {
 namespace {
@@ -79,6 +80,21 @@ std::pair<int, int> parse_size(std::string_view text, const std::string& option)
                           "WIDTHxHEIGHT with each side from 1 to " + std::to_string(kMaxImageSide) +
                               " (e.g. 1280x720)");
     return {*width, *height};
+}
+
+std::string parse_word(std::string_view text, const std::string& option,
+                       std::span<const std::string_view> words) {
+    for (std::string_view word : words)
+        if (text == word) return std::string(word);
+    std::string expected;
+    for (size_t i = 0; i < words.size(); ++i)
+        expected += std::string(i == 0                  ? ""
+                                : i + 1 == words.size() ? " or "
+                                                        : ", ") +
+                    std::string(words[i]);
+    fail_input(
+        command_line(option), "",
+        "expected " + expected + ", got '" + std::string(text) + "'" + did_you_mean(text, words));
 }
 
 std::vector<std::string> parse_list(std::string_view text, const std::string& option,

@@ -7,6 +7,7 @@
 //   16384 (e.g. 1280x720), got '12abc'
 // Grammars of their own (--frames lists, --chunk I/N, -t kind.key=value)
 // read their numbers with the same primitives.
+#include <span>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -38,6 +39,11 @@ double parse_decimal_number(std::string_view text, const std::string& option, do
 
 // "1280x720" (or "1280X720") -> {1280, 720}, each side from 1 to kMaxImageSide.
 std::pair<int, int> parse_size(std::string_view text, const std::string& option);
+
+// One of `words`, exactly: "command line --ground: expected shadow, floor
+// or none, got 'flor'; did you mean 'floor'?".
+std::string parse_word(std::string_view text, const std::string& option,
+                       std::span<const std::string_view> words);
 
 // Comma-separated items, each kept as typed (names may hold spaces):
 // "front,side" -> {"front", "side"}. "" is the option not given: no items.

@@ -23,6 +23,14 @@ struct ChunkArgs {
     bool skip_existing = false;  // --skip-existing
 };
 
+// render, validate and scene given a model file: the built-in turntable's
+// options (docs/turntables.md), as typed; "" when not given.
+struct TurntableArgs {
+    std::string turns, elevation, background, ground, environment, up;
+    // The first option given, "--turns" say, or "" for none.
+    std::string first_given() const;
+};
+
 struct RenderArgs {
     std::string scene;
     FrameSelection frames;
@@ -46,6 +54,7 @@ struct RenderArgs {
     std::vector<std::string> command_line;  // as typed, for the manifest
     CompareArgs comparison;                 // render --reference DIR
     ChunkArgs chunk;                        // render: a farm task's part
+    TurntableArgs turntable;                // render, validate: when `scene` is a model
 };
 
 // Command-line settings become overrides of the scene's values, so they go
@@ -60,6 +69,11 @@ void add_scene_options(CLI::App* command, RenderArgs& args);
 // --camera A,B: the names as given ("all" is one of them, for
 // select_cameras); none when the option was not given.
 std::vector<std::string> camera_names(const std::string& cameras);
+
+// --allow-asset-paths-outside: paths named inside meshes (mtllib, map_Kd,
+// glTF URIs) stay inside the mesh's folder unless this is given
+// (core/input_file.hpp).
+void add_asset_paths_flag(CLI::App* command, bool& allow);
 
 // --strict: for CI users who want any warning to fail the run.
 void add_strict_flag(CLI::App* command, bool& strict);

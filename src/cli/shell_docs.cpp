@@ -90,6 +90,11 @@ std::string bash_completion(const CLI::App& app, const std::vector<std::string>&
            "        --formats) COMPREPLY=($(compgen -W \"png exr\" -- \"$cur\")); return ;;\n"
            "        --update-reference) COMPREPLY=($(compgen -W \"failed missing all\" -- "
            "\"$cur\")); return ;;\n"
+           "        --ground) COMPREPLY=($(compgen -W \"shadow floor none\" -- \"$cur\")); "
+           "return ;;\n"
+           "        --up) COMPREPLY=($(compgen -W \"y z\" -- \"$cur\")); return ;;\n"
+           "        --background) COMPREPLY=($(compgen -W \"transparent gradient\" -- "
+           "\"$cur\")); return ;;\n"
            "    esac\n"
            "    case \"${COMP_WORDS[1]}\" in\n" +
            cases +
@@ -110,7 +115,9 @@ std::string man_page(const CLI::App& app, const std::string& version) {
     page += ".SH SYNOPSIS\n.B facet\n.I command\n[\\fIoptions\\fR]\n";
     page += ".SH DESCRIPTION\n" + roff(app.get_description()) +
             ". It reads a YAML scene and style presets, renders frames through its own CPU "
-            "rasterizer and writes PNG and EXR passes with a manifest.\n";
+            "rasterizer and writes PNG and EXR passes with a manifest. Given a model file (a "
+            "mesh) instead of a scene, it renders its built-in turntable scene around the "
+            "model, which \\fBfacet scene\\fR writes to a file to edit.\n";
     page += ".SH COMMANDS\n";
     auto describe = [&](const CLI::App& command, const std::string& name) {
         page += ".SS \"facet " + name + "\"\n" + roff(command.get_description()) + "\n";

@@ -73,10 +73,17 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
         std::filesystem::weakly_canonical(std::filesystem::absolute(output_dir), ec);
     m.scene = scene_path.lexically_relative(folder).generic_string();
     if (m.scene.empty()) m.scene = scene.path;
-    try {
-        m.scene_sha256 = sha256_hex(read_input_file(scene.path, "scene"));
-    } catch (const Error&) {
-        // The scene was read moments ago; a scene that vanished has no hash.
+    if (scene.built) {
+        // A scene facet built around a model: its text, the model and the
+        // options it was built with (docs/turntables.md).
+        m.scene_sha256 = scene.built->text_sha256;
+        m.model = ManifestModel{m.scene, scene.built->model_sha256, scene.built->options};
+    } else {
+        try {
+            m.scene_sha256 = sha256_hex(read_input_file(scene.path, "scene"));
+        } catch (const Error&) {
+            // The scene was read moments ago; a scene that vanished has no hash.
+        }
     }
     m.style = scene.style.name;
     m.width = scene.output.width;

@@ -99,6 +99,22 @@ Json job_json(const Manifest& m) {
     return job;
 }
 
+Json model_json(const ManifestModel& model) {
+    Json options = Json::object();
+    for (const auto& [name, value] : model.options) options[name] = value;
+    return {{"file", model.file}, {"sha256", model.sha256}, {"options", options}};
+}
+
+ManifestModel read_model(const nlohmann::json& j) {
+    ManifestModel model;
+    model.file = j.at("file").get<std::string>();
+    model.sha256 = j.at("sha256").get<std::string>();
+    const nlohmann::json options = j.value("options", nlohmann::json::object());
+    for (const auto& [name, value] : options.items())
+        model.options.emplace_back(name, value.get<std::string>());
+    return model;
+}
+
 Json part_json(const ManifestPart& part) {
     Json j;
     j["frames"] = format_frame_ranges(part.frames);
@@ -184,6 +200,9 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         m.height = whole<int>(j.at("size").at(1), "size");
         m.output_template = j.value("output_template", "");
         m.scene_sha256 = j.value("scene_sha256", "");
+        entry = "model";
+        if (j.contains("model")) m.model = read_model(j["model"]);
+        entry = "";
         m.fps = j.value("fps", 24.0);
         if (j.contains("display")) {
             m.display.exposure = j["display"].value("exposure", 0.0f);
@@ -260,8 +279,16 @@ std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
     // A version-1 manifest recorded no template or scene hash: not a difference.
     if (!a.output_template.empty() && a.output_template != b.output_template)
         return differ("output template", a.output_template, b.output_template);
+    if (a.model.has_value() != b.model.has_value())
+        return std::string("the scene is ") + (a.model ? "" : "not ") +
+               "built around a model there, and " + (b.model ? "" : "not ") + "now";
+    // A model's turntable: its scene text follows from the model (and from
+    // facet's version), so the model is the change to name.
+    if (a.model && a.model->sha256 != b.model->sha256)
+        return "the model file changed since the manifest was written";
     if (!a.scene_sha256.empty() && !b.scene_sha256.empty() && a.scene_sha256 != b.scene_sha256)
-        return "the scene file changed since the manifest was written";
+        return a.model ? "facet's turntable scene changed since the manifest was written"
+                       : "the scene file changed since the manifest was written";
     // The overrides as a set: order does not matter, the last value of a key
     // wins, and settings that change no pixel are left out.
     auto overrides = [](const Manifest& m) {
@@ -295,6 +322,7 @@ std::string manifest_json(Manifest manifest, bool indented) {
                   {"build", manifest.facet_build}};
     j["scene"] = manifest.scene;
     j["scene_sha256"] = manifest.scene_sha256;
+    if (manifest.model) j["model"] = model_json(*manifest.model);
     j["style"] = manifest.style;
     j["size"] = {manifest.width, manifest.height};
     j["fps"] = manifest.fps;

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/display_transform.hpp"
@@ -64,11 +65,22 @@ struct ManifestOverride {
     std::string key, value, origin;
 };
 
+// A scene facet built around a model (`facet render MODEL`): the model,
+// its SHA-256 and the turntable's options (docs/turntables.md).
+struct ManifestModel {
+    std::string file;    // relative to the manifest's folder
+    std::string sha256;  // of the model file: an edited model is other settings
+    std::vector<std::pair<std::string, std::string>> options;  // name, value
+};
+
 struct Manifest {
     // Provenance: the build that wrote it (core/version.hpp).
     std::string facet_version, facet_commit, facet_build;
-    std::string scene;         // relative to the manifest's folder
-    std::string scene_sha256;  // of the scene file's bytes: an edited scene is other settings
+    std::string scene;  // relative to the manifest's folder
+    // Of the scene file's bytes (an edited scene is other settings); of the
+    // text facet made, for a scene built around a model.
+    std::string scene_sha256;
+    std::optional<ManifestModel> model;  // set when the scene was built around a model
     std::string style;
     int width = 0, height = 0;
     double fps = 24;           // the scene's, for movies made from the files
@@ -93,7 +105,7 @@ std::string partial_manifest_name(int first, int last);
 bool is_partial_manifest_name(const std::string& file_name);
 
 // What must be equal for two runs to share a manifest: scene (path and
-// content), style, size, output template and overrides (as a set, without
+// content, and a model's content), style, size, output template and overrides (as a set, without
 // ones that change no pixel). "" when they are; else the first
 // difference, e.g. "style: 'toon' there, 'wireframe' now".
 std::string manifest_settings_difference(const Manifest& existing, const Manifest& run);

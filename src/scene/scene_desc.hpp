@@ -277,8 +277,17 @@ struct EnvironmentDesc {
     SourceLocation where;
 };
 
+// A scene facet built instead of reading it from a file (`facet render
+// MODEL`, docs/turntables.md): what the manifest records of its making.
+struct BuiltScene {
+    std::string text_sha256;   // of the YAML text facet made and read
+    std::string model_sha256;  // of the model file's bytes
+    // The turntable's options as resolved (name, value), defaults included.
+    std::vector<std::pair<std::string, std::string>> options;
+};
+
 struct SceneDesc {
-    std::string path;       // the scene file as given
+    std::string path;       // the scene file as given (a built scene: the model's)
     std::string name;       // its stem, used in output paths
     std::string directory;  // where relative paths resolve
     OutputDesc output;
@@ -292,6 +301,8 @@ struct SceneDesc {
     std::optional<EnvironmentDesc> environment;
     // Values read but without effect, with where they are (printed by the CLI).
     Warnings warnings;
+    // Set when facet made the scene rather than reading it from `path`.
+    std::optional<BuiltScene> built;
 };
 
 // One `-D key.path=value` (or a command-line option turned into one).
@@ -320,8 +331,24 @@ struct SceneOptions {
 };
 
 // Reads and checks a scene file. Throws facet::Error (exit code 2) naming
-// file, line, column and key for anything wrong.
+// file, line, column and key for anything wrong; for a file that is a mesh
+// (`facet render MESH` makes its turntable) or neither a scene nor a mesh,
+// an error that says so.
 SceneDesc load_scene(const std::string& path, const SceneOptions& options);
+
+// Reads and checks a scene given as YAML text, as load_scene reads a file:
+// its name, folder (where relative paths resolve) and output folder are
+// those of `path`; errors in the text name `text_name`.
+SceneDesc load_scene_text(const std::string& text, const std::string& text_name,
+                          const std::string& path, const SceneOptions& options);
+
+// What a file given where a scene is expected holds: a scene (a .yaml or
+// .yml file, or text that is no mesh), a mesh facet reads (by its bytes,
+// else by its name: assets/mesh_format.hpp), or neither (other binary
+// data). A file that cannot be read is a scene, unless its name says mesh:
+// reading it then says why not.
+enum class SceneInputKind { scene, mesh, neither };
+SceneInputKind scene_input_kind(const std::string& path);
 
 // Reads a style preset file.
 StyleDesc load_style_file(const std::string& path, const std::vector<std::string>& style_dirs);

@@ -2,9 +2,11 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 
+#include "assets/mesh_format.hpp"
 #include "core/frame_range.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
@@ -541,10 +543,12 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (f.has("mesh")) {
         obj.mesh = existing_file(f["mesh"], base_dir);
         obj.mesh_at = f["mesh"].where();
-        std::string ext = fs::path(obj.mesh).extension().string();
-        for (auto& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-        if (!is_mesh_extension(ext))
-            f["mesh"].fail("unsupported mesh format '" + ext + "' (use " + mesh_extensions() + ")");
+        // Known by its bytes or by its name (assets/mesh_format.hpp).
+        if (!recognise_mesh_file(obj.mesh)) {
+            const std::string ext = fs::path(obj.mesh).extension().string();
+            f["mesh"].fail("unsupported mesh format '" + ext + "': its content is none of " +
+                           mesh_formats_read() + " either");
+        }
     } else if (f.has("primitive")) {
         obj.primitive = parse_primitive(f["primitive"]);
     } else {
@@ -607,10 +611,30 @@ void check_object_references(const SceneDesc& scene) {
     }
 }
 
-}  // namespace
+bool has_yaml_name(const std::string& path) {
+    std::string ext = fs::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return ext == ".yaml" || ext == ".yml";
+}
 
-SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
-    auto doc = read_yaml_file(path);
+// What a scene file holds and what a mesh file is, for a file that is neither.
+std::string neither_scene_nor_mesh() {
+    return "neither a scene nor a mesh facet reads: a scene is a YAML file (.yaml) whose top "
+           "level is a mapping (output, camera, objects, ...), and the meshes facet reads are " +
+           mesh_formats_read();
+}
+
+// The checks of the top of the document, before its keys.
+void check_scene_root(const Field& root, const std::string& path) {
+    if (root.is_null()) root.fail("the scene file is empty");
+    // Text in another format than YAML, named as something else than YAML,
+    // is no scene: saying so helps more than "must be a mapping".
+    if (!root.is_map() && !has_yaml_name(path))
+        fail_input({path, 0, 0, ""}, "", neither_scene_nor_mesh());
+}
+
+SceneDesc scene_from_document(const std::shared_ptr<YamlDocument>& doc, const std::string& path,
+                              const SceneOptions& options) {
     // -D style.KEY=VALUE changes the style whatever the scene's `style:` is
     // (a preset name is a plain value with no keys to set), so these
     // overrides form a layer of their own, applied after the scene's style.
@@ -619,7 +643,7 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
         (ov.path.rfind("style.", 0) == 0 ? style_overrides : scene_overrides).push_back(ov);
     apply_overrides(*doc, scene_overrides);
     Field root = root_field(doc);
-    if (root.is_null()) root.fail("the scene file is empty");
+    check_scene_root(root, path);
 
     SceneDesc scene;
     scene.path = path;
@@ -696,6 +720,41 @@ SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
     }
     check_object_references(scene);
     return scene;
+}
+
+}  // namespace
+
+SceneInputKind scene_input_kind(const std::string& path) {
+    if (has_yaml_name(path)) return SceneInputKind::scene;
+    if (!input_file_problem(path).empty())
+        return mesh_format_of_name(path) ? SceneInputKind::mesh : SceneInputKind::scene;
+    if (recognise_mesh_file(path)) return SceneInputKind::mesh;
+    // A YAML scene is text: a NUL byte at its start says it is not one.
+    std::ifstream in(path, std::ios::binary);
+    std::string head(4096, '\0');
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(in.gcount()));
+    return head.find('\0') == std::string::npos ? SceneInputKind::scene : SceneInputKind::neither;
+}
+
+SceneDesc load_scene(const std::string& path, const SceneOptions& options) {
+    const SceneInputKind kind = scene_input_kind(path);
+    if (kind == SceneInputKind::mesh) {
+        const std::optional<MeshFormat> format = recognise_mesh_file(path);
+        fail_input({path, 0, 0, ""}, "",
+                   "a mesh (" + (format ? mesh_format_name(*format) : std::string("?")) +
+                       "), not a scene: `facet render " + path +
+                       "` makes a turntable of it, and `facet scene " + path + " -o " +
+                       fs::path(path).stem().string() +
+                       ".yaml` writes that turntable as a scene file to edit");
+    }
+    if (kind == SceneInputKind::neither) fail_input({path, 0, 0, ""}, "", neither_scene_nor_mesh());
+    return scene_from_document(read_yaml_file(path), path, options);
+}
+
+SceneDesc load_scene_text(const std::string& text, const std::string& text_name,
+                          const std::string& path, const SceneOptions& options) {
+    return scene_from_document(read_yaml_text(text, text_name), path, options);
 }
 
 }  // namespace facet

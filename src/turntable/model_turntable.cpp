@@ -1,0 +1,91 @@
+#include "turntable/model_turntable.hpp"
+
+#include <filesystem>
+
+#include "assets/texture.hpp"
+#include "core/input_file.hpp"
+#include "core/sha256.hpp"
+
+namespace facet {
+namespace {
+
+namespace fs = std::filesystem;
+
+ModelSurvey survey_of(const TurntableRequest& request) {
+    // The model is read as a scene's mesh is: its paths kept to its folder
+    // and its textures to the default budget.
+    TextureBudget textures(kDefaultTextureBudget);
+    SurveyRequest survey;
+    survey.path = request.model;
+    survey.assets.paths.allow_outside = request.allow_asset_paths_outside;
+    survey.assets.textures = &textures;
+    survey.up = request.options.up;
+    survey.frames = kTurntableFrames;
+    survey.fps = kTurntableFps;
+    return survey_model(survey);
+}
+
+// Where errors in the scene's own text point (none should: its values
+// are facet's, and the user's come with their options as origin).
+std::string text_name(const std::string& model) {
+    return model + " (facet's turntable scene)";
+}
+
+// The options' overrides, then the user's: -D has the last word.
+std::vector<Override> all_overrides(const TurntableRequest& request, const std::string& scene_dir) {
+    std::vector<Override> overrides = turntable_overrides(request.options, scene_dir);
+    overrides.insert(overrides.end(), request.scene_options.overrides.begin(),
+                     request.scene_options.overrides.end());
+    return overrides;
+}
+
+SceneDesc read_scene(const std::string& text, const std::string& name, const std::string& path,
+                     const SceneOptions& base, std::vector<Override> overrides) {
+    SceneOptions options = base;
+    options.overrides = std::move(overrides);
+    return load_scene_text(text, name, path, options);
+}
+
+}  // namespace
+
+Turntable load_turntable(const TurntableRequest& request) {
+    Turntable turntable;
+    turntable.survey = survey_of(request);
+    const fs::path parent = fs::path(request.model).parent_path();
+    const std::string folder = parent.empty() ? std::string(".") : parent.string();
+    std::vector<Override> unused;
+    const std::string text = turntable_scene_yaml(
+        turntable.survey, fs::path(request.model).filename().string(), {}, unused);
+    turntable.overrides = all_overrides(request, folder);
+    turntable.scene = read_scene(text, text_name(request.model), request.model,
+                                 request.scene_options, turntable.overrides);
+    turntable.scene.built = BuiltScene{sha256_hex(text.data(), text.size()),
+                                       sha256_hex(read_input_file(request.model, "mesh")),
+                                       turntable_option_record(request.options, turntable.survey)};
+    return turntable;
+}
+
+TurntableFile turntable_scene_file(const TurntableRequest& request, const std::string& scene_dir) {
+    const ModelSurvey survey = survey_of(request);
+    const std::string reference = path_from_scene(scene_dir, request.model);
+    const std::vector<Override> overrides = all_overrides(request, scene_dir);
+    // A scene file in scene_dir named after the model: how render reads it.
+    const std::string as_file =
+        (fs::path(scene_dir) / (fs::path(request.model).stem().string() + ".yaml")).string();
+    // Every value is checked first as -D would check it, so that an error
+    // names the option that gave it.
+    std::vector<Override> unused;
+    read_scene(turntable_scene_yaml(survey, reference, {}, unused), text_name(request.model),
+               as_file, request.scene_options, overrides);
+    const std::string text = turntable_scene_yaml(survey, reference, overrides, unused);
+    if (!unused.empty())
+        fail_input({"", 0, 0, unused.front().origin}, unused.front().path,
+                   "facet scene writes only the keys its file has, and this is not one of "
+                   "them: write the file, then add the key to it");
+    // The text as written must read back as the scene just checked.
+    read_scene(text, "the scene facet scene wrote for " + request.model, as_file,
+               request.scene_options, {});
+    return {text, survey};
+}
+
+}  // namespace facet
