@@ -115,10 +115,14 @@ TEST_CASE("exr_compression per pass, one for all, and the default", "[scene][exr
     };
     const ExrCompressionChoice fallback = load("  size: [8, 8]\n");
     CHECK(fallback.of(Pass::color) == ExrCompression::zip);
-    CHECK(fallback.of(Pass::depth) == ExrCompression::zip);
+    CHECK(fallback.of(Pass::depth) == ExrCompression::none);
+    CHECK(fallback.of(Pass::normal) == ExrCompression::zip);
+    CHECK(fallback.all == ExrCompression::zip);  // a multilayer file
     const ExrCompressionChoice one = load("  exr_compression: rle\n");
     CHECK(one.of(Pass::color) == ExrCompression::rle);
     CHECK(one.of(Pass::normal) == ExrCompression::rle);
+    CHECK(one.of(Pass::depth) == ExrCompression::rle);
+    CHECK(load("  exr_compression: {color: piz}\n").of(Pass::depth) == ExrCompression::zip);
     const ExrCompressionChoice mapped =
         load("  exr_compression: {default: piz, depth: none, normal: dwaa}\n");
     CHECK(mapped.all == ExrCompression::piz);

@@ -26,10 +26,18 @@
 namespace facet {
 
 // `output.exr_compression`: one method for every EXR file, or one per pass
-// over a default (which a multilayer file takes).
+// over a default (which a multilayer file takes). Unset: zip, but depth
+// stored as it is: float depth barely compresses (about 1.4:1 with the
+// fast deflate), and its deflate cost more than the rest of the frame's
+// files together (docs/performance.md, "Encoding (issue 36)").
 struct ExrCompressionChoice {
     ExrCompression all = ExrCompression::zip;
-    std::array<std::optional<ExrCompression>, kPassCount> per_pass{};
+    std::array<std::optional<ExrCompression>, kPassCount> per_pass = unset_depth_stored();
+    static std::array<std::optional<ExrCompression>, kPassCount> unset_depth_stored() {
+        std::array<std::optional<ExrCompression>, kPassCount> passes{};
+        passes[static_cast<size_t>(Pass::depth)] = ExrCompression::none;
+        return passes;
+    }
     ExrCompression of(Pass p) const { return per_pass[static_cast<size_t>(p)].value_or(all); }
 };
 

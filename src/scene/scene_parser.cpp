@@ -76,6 +76,7 @@ ExrCompression parse_exr_compression_name(const Field& f) {
 // for the passes not named and multilayer files) to method names.
 ExrCompressionChoice parse_exr_compression(const Field& f) {
     ExrCompressionChoice choice;
+    choice.per_pass = {};  // what the key says replaces the default, depth's too
     if (!f.is_map()) {
         choice.all = parse_exr_compression_name(f);
         return choice;
