@@ -27,6 +27,7 @@
 #include "bench_common.hpp"
 #include "bench_report.hpp"
 #include "blob_mesh.hpp"
+#include "codec_study.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
 #include "job/render_job.hpp"
@@ -51,6 +52,7 @@ struct Options {
     uint32_t seed = 1;        // with make_meshes
     bool gl_child = false;    // internal: the llvmpipe side of one scene
     std::string png_dir;      // internal, with gl_child
+    bool codecs = false;      // time each file encoder on each scene's first frame instead
 };
 
 // The suite, in the order of docs/performance.md.
@@ -85,6 +87,8 @@ void usage(std::ostream& os) {
           ".\n"
           "  --frames N        N frames spread evenly over the scene's range (default: all)\n"
           "  --render-only     skip the whole jobs (files written): a quicker check\n"
+          "  --codecs          instead, each file encoder's MB/s and ratio on each scene's first\n"
+          "                    frame (one thread, median of 5)\n"
           "  --make-meshes DIR the blobs (5k, 328k, 1.31M triangles) and the texture the suite\n"
           "                    reads; --seed picks the displacement (a new seed: unseen meshes)\n";
 }
@@ -105,6 +109,8 @@ Options parse_options(int argc, char** argv) {
             o.lp_threads = parse_int_list(value(), "--llvmpipe-threads");
         } else if (a == "--no-llvmpipe") {
             o.llvmpipe = false;
+        } else if (a == "--codecs") {
+            o.codecs = true;
         } else if (a == "--render-only") {
             o.jobs = false;
         } else if (a == "--plot") {
@@ -309,6 +315,21 @@ SceneResult bench_scene(const std::string& path, const Options& o) {
     return sr;
 }
 
+// --codecs: the encoders timed on each scene's first frame, rendered on 2 threads.
+int codec_study(const Options& o) {
+    std::cout << codec_table_header();
+    for (const std::string& path : o.scenes) {
+        const facet::SceneDesc scene = load(path);
+        const facet::World world = facet::build_world(scene);
+        facet::ThreadPool pool(2);
+        facet::FrameRenderer renderer(scene, world, pool);
+        facet::FrameImages images;
+        renderer.render(scene.output.frames.front(), 0, images);
+        std::cout << codec_rows(scene.name, images, 5) << std::flush;
+    }
+    return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -330,6 +351,7 @@ int main(int argc, char** argv) {
             o.llvmpipe = false;
         }
 #endif
+        if (o.codecs) return codec_study(o);
         std::vector<SceneResult> results;
         for (const std::string& path : o.scenes) results.push_back(bench_scene(path, o));
         std::cout << report_markdown(results, o.threads, o.lp_threads);

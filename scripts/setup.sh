@@ -37,7 +37,7 @@ bench=0
 packages=(g++ cmake make pkg-config ccache
           libyaml-cpp-dev libtinygltf-dev libtinyobjloader-dev nlohmann-json3-dev libstb-dev
           libopenexr-dev libimath-dev libglm-dev libcli11-dev catch2 libpng-dev
-          libdeflate-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
+          libdeflate-dev zlib1g-dev libssl-dev libmeshoptimizer-dev libdraco-dev libassimp-dev
           libavcodec-dev libavformat-dev libavutil-dev libswscale-dev
           libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri libwebp-dev libavif-dev)
 for arg in "$@"; do

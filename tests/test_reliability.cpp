@@ -189,9 +189,10 @@ TEST_CASE("a full disk leaves the finished images listed and no file of an unfin
     TempDir dir("reliability-disk");
     const std::string out = dir.file("small");
     std::filesystem::create_directories(out);
-    // A 100 KB file system of its own, in a mount namespace of its own:
-    // room for three frames of these four files, not for thirty.
-    const std::string inside = "mount -t tmpfs -o size=100k tmpfs " + shell_quote(out) +
+    // A 180 KB file system of its own, in a mount namespace of its own:
+    // room for a few frames of these four files (the depth EXR stored
+    // uncompressed), not for thirty.
+    const std::string inside = "mount -t tmpfs -o size=180k tmpfs " + shell_quote(out) +
                                " || exit 77; " + shell_quote(facet::test::facet_executable()) +
                                " render " + shell_quote(source_path("tests/scenes/shapes.yaml")) +
                                " --size 96x54 --frames 1-30 --allow-outside --passes color,depth "

@@ -148,7 +148,8 @@ void encode_frame_files(
                     const std::vector<ExrChannel> c = exr_pass_channels(pass, images, true);
                     layers.insert(layers.end(), c.begin(), c.end());
                 }
-            write(file, encode_exr(width, height, layers, facts.exr_attributes));
+            write(file,
+                  encode_exr(width, height, layers, facts.exr_attributes, out.exr_compression.all));
             continue;
         }
         const Pass pass = *pass_from_name(file.pass);
@@ -156,7 +157,7 @@ void encode_frame_files(
             write(file, encode_png_view(pass, out, images, facts));
         else
             write(file, encode_exr(width, height, exr_pass_channels(pass, images, false),
-                                   facts.exr_attributes));
+                                   facts.exr_attributes, out.exr_compression.of(pass)));
     }
 }
 

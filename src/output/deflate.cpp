@@ -6,11 +6,17 @@
 #include <memory>
 
 #include "core/error.hpp"
+#include "output/fast_deflate.hpp"
 
 namespace facet {
 
-void zlib_compress(const uint8_t* data, size_t size, int level, std::vector<uint8_t>& out) {
+void zlib_compress(const uint8_t* data, size_t size, int level, std::vector<uint8_t>& out,
+                   size_t repeat_distance) {
     level = std::clamp(level, 0, kMaxDeflateLevel);
+    if (level == kRunsDeflateLevel) {
+        zlib_compress_runs(data, size, repeat_distance, out);
+        return;
+    }
     const std::unique_ptr<libdeflate_compressor, decltype(&libdeflate_free_compressor)> compressor(
         libdeflate_alloc_compressor(level), &libdeflate_free_compressor);
     if (!compressor) throw Error(ExitCode::runtime_failure, "deflate: out of memory");

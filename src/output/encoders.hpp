@@ -14,6 +14,7 @@
 
 #include "core/half.hpp"
 #include "core/image.hpp"
+#include "output/exr_compression.hpp"
 
 namespace facet {
 
@@ -70,7 +71,7 @@ std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compressi
                                       const std::vector<PngText>& text = {});
 std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 
-// OpenEXR scanline files, ZIP compression (16 scanlines a chunk).
+// OpenEXR scanline files, compressed as output/exr_compression.hpp says.
 enum class ExrSample { half, float32, uint32 };
 
 // One channel: its samples at base + y * row_stride + x * x_stride.
@@ -86,16 +87,28 @@ struct ExrAttribute {
     std::string name, value;
 };
 
+// The same pixels give the same bytes with every compression, whatever
+// the thread count.
 std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> channels,
-                                const std::vector<ExrAttribute>& attributes = {});
+                                const std::vector<ExrAttribute>& attributes = {},
+                                ExrCompression compression = ExrCompression::zip);
 
 // Half-float linear RGBA: channels R, G, B, A.
 std::vector<uint8_t> encode_exr_color(const HalfColorImage& image,
-                                      const std::vector<ExrAttribute>& attributes = {});
+                                      const std::vector<ExrAttribute>& attributes = {},
+                                      ExrCompression compression = ExrCompression::zip);
 
 // One float32 channel "Z" with linear view depth, +inf background.
 std::vector<uint8_t> encode_exr_depth(const DepthImage& depth,
-                                      const std::vector<ExrAttribute>& attributes = {});
+                                      const std::vector<ExrAttribute>& attributes = {},
+                                      ExrCompression compression = ExrCompression::zip);
+
+// rle, piz and dwaa: the file written by OpenEXR's C++ library into memory,
+// channels sorted by name (output/exr_library_writer.cpp).
+std::vector<uint8_t> encode_exr_with_library(int width, int height,
+                                             const std::vector<ExrChannel>& channels,
+                                             const std::vector<ExrAttribute>& attributes,
+                                             ExrCompression compression);
 
 // A decoded PNG, samples widened to 16 bits (8-bit files keep 0..255).
 struct DecodedPng {

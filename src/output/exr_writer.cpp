@@ -1,6 +1,7 @@
 // OpenEXR files written through OpenEXR's C core (the header, the chunk
-// offset table and the file layout are the library's), with the ZIP
-// compression of each chunk done here by libdeflate: OpenEXR 3.1 compresses
+// offset table and the file layout are the library's), with the ZIP and
+// ZIPS compression of each chunk done here by libdeflate (NONE stores the
+// packed chunk as it is): OpenEXR 3.1 compresses
 // with zlib, several times slower. The chunk data follows the OpenEXR file
 // layout: 16 scanlines per chunk, within each scanline the channels in name
 // order, little-endian samples; ZIP splits the bytes into two halves (even
@@ -18,7 +19,16 @@
 namespace facet {
 namespace {
 
-constexpr int kScanlinesPerChunk = 16;  // ZIP
+// Scanlines per chunk, as the format fixes them: 16 for ZIP, 1 for ZIPS and NONE.
+int scanlines_per_chunk(ExrCompression compression) {
+    return compression == ExrCompression::zip ? 16 : 1;
+}
+
+exr_compression_t core_compression(ExrCompression compression) {
+    return compression == ExrCompression::zip    ? EXR_COMPRESSION_ZIP
+           : compression == ExrCompression::zips ? EXR_COMPRESSION_ZIPS
+                                                 : EXR_COMPRESSION_NONE;
+}
 // libdeflate level for EXR chunks: its fastest, level 1, is about as small
 // as zlib's 6 on rendered half and float data.
 constexpr int kExrDeflateLevel = 1;
@@ -112,9 +122,13 @@ void zip_chunk(const std::vector<uint8_t>& raw, std::vector<uint8_t>& split,
 }  // namespace
 
 std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> channels,
-                                const std::vector<ExrAttribute>& attributes) {
+                                const std::vector<ExrAttribute>& attributes,
+                                ExrCompression compression) {
     std::sort(channels.begin(), channels.end(),
               [](const ExrChannel& a, const ExrChannel& b) { return a.name < b.name; });
+    if (compression != ExrCompression::zip && compression != ExrCompression::zips &&
+        compression != ExrCompression::none)
+        return encode_exr_with_library(width, height, channels, attributes, compression);
     std::vector<uint8_t> file;
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = &file;
@@ -124,7 +138,8 @@ std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> c
     try {
         int part = 0;
         check(exr_add_part(ctxt, "", EXR_STORAGE_SCANLINE, &part), "part");
-        check(exr_initialize_required_attr_simple(ctxt, part, width, height, EXR_COMPRESSION_ZIP),
+        check(exr_initialize_required_attr_simple(ctxt, part, width, height,
+                                                  core_compression(compression)),
               "attributes");
         for (const ExrChannel& c : channels)
             check(exr_add_channel(ctxt, part, c.name.c_str(), pixel_type(c.type),
@@ -134,10 +149,15 @@ std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> c
             check(exr_attr_set_string(ctxt, part, a.name.c_str(), a.value.c_str()), "attribute");
         check(exr_write_header(ctxt), "header");
         std::vector<uint8_t> raw, split, predicted, packed;
-        for (int y = 0; y < height; y += kScanlinesPerChunk) {
-            pack_chunk(channels, width, y, std::min(height, y + kScanlinesPerChunk), raw);
-            zip_chunk(raw, split, predicted, packed);
-            check(exr_write_scanline_chunk(ctxt, part, y, packed.data(), packed.size()), "chunk");
+        const int step = scanlines_per_chunk(compression);
+        for (int y = 0; y < height; y += step) {
+            pack_chunk(channels, width, y, std::min(height, y + step), raw);
+            const std::vector<uint8_t>* chunk = &raw;
+            if (compression != ExrCompression::none) {
+                zip_chunk(raw, split, predicted, packed);
+                chunk = &packed;
+            }
+            check(exr_write_scanline_chunk(ctxt, part, y, chunk->data(), chunk->size()), "chunk");
         }
     } catch (...) {
         exr_finish(&ctxt);
@@ -148,23 +168,25 @@ std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> c
 }
 
 std::vector<uint8_t> encode_exr_color(const HalfColorImage& image,
-                                      const std::vector<ExrAttribute>& attributes) {
+                                      const std::vector<ExrAttribute>& attributes,
+                                      ExrCompression compression) {
     const uint8_t* base = reinterpret_cast<const uint8_t*>(image.pixels.data());
     const size_t row = sizeof(Rgba16F) * static_cast<size_t>(image.width);
     std::vector<ExrChannel> channels;
     const char* names[4] = {"R", "G", "B", "A"};
     for (int c = 0; c < 4; ++c)
         channels.push_back({names[c], ExrSample::half, base + 2 * c, sizeof(Rgba16F), row});
-    return encode_exr(image.width, image.height, channels, attributes);
+    return encode_exr(image.width, image.height, channels, attributes, compression);
 }
 
 std::vector<uint8_t> encode_exr_depth(const DepthImage& depth,
-                                      const std::vector<ExrAttribute>& attributes) {
+                                      const std::vector<ExrAttribute>& attributes,
+                                      ExrCompression compression) {
     const uint8_t* base = reinterpret_cast<const uint8_t*>(depth.pixels.data());
     return encode_exr(depth.width, depth.height,
                       {{"Z", ExrSample::float32, base, sizeof(float),
                         sizeof(float) * static_cast<size_t>(depth.width)}},
-                      attributes);
+                      attributes, compression);
 }
 
 }  // namespace facet

@@ -35,7 +35,8 @@ void put_chunk(std::vector<uint8_t>& out, const char type[4], const uint8_t* dat
 // A whole PNG from filtered scanlines (each a filter byte and the row).
 std::vector<uint8_t> png_file(int width, int height, int bit_depth, uint8_t color_type,
                               const std::vector<uint8_t>& scanlines,
-                              const std::vector<PngText>& text, int compression) {
+                              const std::vector<PngText>& text, int compression,
+                              size_t bytes_per_pixel) {
     std::vector<uint8_t> out(kSignature, kSignature + 8);
     uint8_t header[13];
     const uint32_t w = static_cast<uint32_t>(width), h = static_cast<uint32_t>(height);
@@ -59,7 +60,7 @@ std::vector<uint8_t> png_file(int width, int height, int bit_depth, uint8_t colo
     }
     std::vector<uint8_t> idat;
     zlib_compress(scanlines.data(), scanlines.size(), std::clamp(compression, 0, kMaxDeflateLevel),
-                  idat);
+                  idat, bytes_per_pixel);
     put_chunk(out, "IDAT", idat.data(), idat.size());
     put_chunk(out, "IEND", nullptr, 0);
     return out;
@@ -89,7 +90,7 @@ std::vector<uint8_t> encode_png(const PngSamples& samples, int compression,
                          : samples.channels == 3 ? kColorRgb
                                                  : kColorGrey;
     return png_file(samples.width, samples.height, samples.bit_depth, type, scanlines, text,
-                    compression);
+                    compression, bpp);
 }
 
 std::vector<uint8_t> encode_png_color(const HalfColorImage& image, int compression,

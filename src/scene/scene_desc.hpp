@@ -2,6 +2,7 @@
 // The scene as plain records, straight from the YAML files, each value that a
 // user can get wrong keeping the place it came from. Nothing here loads
 // meshes or builds render objects: that happens later, from these records.
+#include <array>
 #include <optional>
 #include <string>
 #include <vector>
@@ -16,12 +17,29 @@
 #include "core/diagnostics.hpp"
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
+#include "output/exr_compression.hpp"
 #include "output/passes.hpp"
 #include "scene/animated.hpp"
 #include "scene/style_desc.hpp"
 #include "shapes/primitives.hpp"
 
 namespace facet {
+
+// `output.exr_compression`: one method for every EXR file, or one per pass
+// over a default (which a multilayer file takes). Unset: zip, but depth
+// stored as it is: float depth barely compresses (about 1.4:1 with the
+// fast deflate), and its deflate cost more than the rest of the frame's
+// files together (docs/performance.md, "Encoding (issue 36)").
+struct ExrCompressionChoice {
+    ExrCompression all = ExrCompression::zip;
+    std::array<std::optional<ExrCompression>, kPassCount> per_pass = unset_depth_stored();
+    static std::array<std::optional<ExrCompression>, kPassCount> unset_depth_stored() {
+        std::array<std::optional<ExrCompression>, kPassCount> passes{};
+        passes[static_cast<size_t>(Pass::depth)] = ExrCompression::none;
+        return passes;
+    }
+    ExrCompression of(Pass p) const { return per_pass[static_cast<size_t>(p)].value_or(all); }
+};
 
 struct OutputDesc {
     int width = 1280;
@@ -50,6 +68,7 @@ struct OutputDesc {
     }
     DisplayTransform display;  // exposure and tone curve: PNG, video, sheets (not EXR)
     int png_compression = 1;   // zlib level 0..9; 1 is fast, 9 small
+    ExrCompressionChoice exr_compression;
     // File names relative to the output folder (docs/output-naming.md);
     // unset: {scene}/{pass}.{frame}.{ext}, with {camera}/ after {scene} when
     // a run renders several cameras. Checked before rendering starts.

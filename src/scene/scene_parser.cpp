@@ -65,12 +65,44 @@ void check_pass_formats(const Field& f, const OutputDesc& out) {
         }
 }
 
+ExrCompression parse_exr_compression_name(const Field& f) {
+    const std::vector<std::string_view> names(kExrCompressionNames.begin(),
+                                              kExrCompressionNames.end());
+    const std::string name = f.text();
+    for (size_t i = 0; i < names.size(); ++i)
+        if (names[i] == name) return static_cast<ExrCompression>(i);
+    f.fail_not_one_of(name, names);
+}
+
+// A method name for every file, or a mapping of pass names (and `default`,
+// for the passes not named and multilayer files) to method names.
+ExrCompressionChoice parse_exr_compression(const Field& f) {
+    ExrCompressionChoice choice;
+    choice.per_pass = {};  // what the key says replaces the default, depth's too
+    if (!f.is_map()) {
+        choice.all = parse_exr_compression_name(f);
+        return choice;
+    }
+    std::vector<std::string_view> keys(kPassNames.begin(), kPassNames.end());
+    keys.push_back("default");
+    for (const std::string& key : f.keys()) {
+        if (key == "default") {
+            choice.all = parse_exr_compression_name(f[key]);
+            continue;
+        }
+        const std::optional<Pass> pass = pass_from_name(key);
+        if (!pass) f.key(key).fail_not_one_of(key, keys);
+        choice.per_pass[static_cast<size_t>(*pass)] = parse_exr_compression_name(f[key]);
+    }
+    return choice;
+}
+
 OutputDesc parse_output(const Field& f) {
     OutputDesc out;
     out.where = f.where();
     f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
-                  "png_compression", "depth_range", "path", "normals", "exr", "exposure",
-                  "tonemap"});
+                  "png_compression", "depth_range", "path", "normals", "exr", "exposure", "tonemap",
+                  "exr_compression"});
     if (f.has("path")) {
         out.path = f["path"].text();
         out.path_at = f["path"].where();
@@ -118,6 +150,7 @@ OutputDesc parse_output(const Field& f) {
         out.display.tonemap =
             tonemap_from_name(f["tonemap"].choice({"none", "aces", "filmic", "neutral", "agx"}));
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
+    if (f.has("exr_compression")) out.exr_compression = parse_exr_compression(f["exr_compression"]);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();
     return out;
 }
