@@ -10,6 +10,7 @@
 #include "render/hatch_charts.hpp"
 #include "render/normal_map_lookup.hpp"
 #include "shade/brdf.hpp"
+#include "shade/environment_map.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
 #include "shade/style_math.hpp"
@@ -172,14 +173,15 @@ template <bool Single>
 // lane, per colour channel: the lights lit twice at the lane, with and
 // without their shadow maps, and the diffuse light compared. Ambient,
 // material coefficients and highlights are left out: this is the lights'
-// share.
+// share. `unshadowed`, when given, is light no shadow map blocks (the `pbr`
+// model's environment), added to both sides.
 struct ShadowShare {
     vf channel[3];  // red, green, blue
     vf luminance;   // the same by the light's Rec. 709 luminance
 };
 
 ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> lights,
-                         const SurfaceBatch& surface) {
+                         const SurfaceBatch& surface, const vf* unshadowed = nullptr) {
     SurfaceBatch open = surface;
     open.ambient = simd::splat(0.0f);
     open.diffuse = simd::splat(1.0f);
@@ -189,8 +191,11 @@ ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> ligh
     SurfaceBatch shadowed = open;
     shadowed.receives_shadow = surface.receives_shadow;
     const glm::vec3 eye = in.frame.camera.position;
-    const LightingBatch with = light_surface_batch(shadowed, eye, lights, Highlight::blinn);
-    const LightingBatch without = light_surface_batch(open, eye, lights, Highlight::blinn);
+    LightingBatch with = light_surface_batch(shadowed, eye, lights, Highlight::blinn);
+    LightingBatch without = light_surface_batch(open, eye, lights, Highlight::blinn);
+    if (unshadowed)
+        for (LightingBatch* l : {&with, &without})
+            l->dr += unshadowed[0], l->dg += unshadowed[1], l->db += unshadowed[2];
     const vf zero = simd::splat(0.0f), one = simd::splat(1.0f);
     auto share = [&](vf kept, vf full) {
         const vf s = one - kept / (full > zero ? full : one);
@@ -390,6 +395,27 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
     }
 }
 
+// Under `pbr`, the light the environment gives a white matte surface at
+// each lane (its diffuse radiance times the intensity): what lights a
+// shadow catcher's shadow, which the lights' shadow maps do not block.
+// False, and nothing written, without an environment.
+bool environment_diffuse(const ShadeInputs& in, const StyleState& style, const SurfaceBatch& s,
+                         vf (&out)[3]) {
+    const EnvironmentLighting& e = in.frame.environment;
+    if (style.model != ShadingModel::pbr || !e.map || !(e.intensity > 0.0f)) return false;
+    const vf length = simd::vsqrt(s.nx * s.nx + s.ny * s.ny + s.nz * s.nz);
+    const vi ok = length > simd::splat(0.0f);
+    const vf inverse = 1.0f / (ok ? length : simd::splat(1.0f));
+    const vf n[3] = {ok ? s.nx * inverse : simd::splat(0.0f),
+                     ok ? s.ny * inverse : simd::splat(1.0f),
+                     ok ? s.nz * inverse : simd::splat(0.0f)};
+    vf turned[3];
+    e.to_map(n, turned);
+    e.map->diffuse(turned, out);
+    for (vf& channel : out) channel *= e.intensity;
+    return true;
+}
+
 // Shadow catchers: the share of the light the shadows take at each point,
 // from the same lights lit twice, with and without their shadow maps, and
 // compared by the diffuse light's luminance. The lane then shows the
@@ -398,8 +424,12 @@ void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
 // nothing shows.
 void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     const glm::vec4 background = in.frame.background;
+    vf environment[3];
+    const bool lit_by_environment = environment_diffuse(in, style, b.lanes.surface, environment);
     const vf share = needs_of(style, false).position
-                         ? shadow_share(in, in.lights, b.lanes.surface).luminance
+                         ? shadow_share(in, in.lights, b.lanes.surface,
+                                        lit_by_environment ? environment : nullptr)
+                               .luminance
                          : simd::splat(0.0f);
     for (int i = 0; i < b.count; ++i) {
         if (!b.material[i]->shadow_catcher) continue;

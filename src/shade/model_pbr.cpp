@@ -252,10 +252,11 @@ Lanes3 reflect_view(const Lanes3& n, const Lanes3& v) {
     return {twice * n[0] - v[0], twice * n[1] - v[1], twice * n[2] - v[2]};
 }
 
-// EnvironmentLighting::to_map over lanes.
 Lanes3 to_map(const EnvironmentLighting& e, const Lanes3& d) {
-    return {e.cos_rotation * d[0] - e.sin_rotation * d[2], d[1],
-            e.sin_rotation * d[0] + e.cos_rotation * d[2]};
+    const vf in[3] = {d[0], d[1], d[2]};
+    vf out[3];
+    e.to_map(in, out);
+    return lanes3(out);
 }
 
 Lanes3 environment_light(const PbrPoints& p, const EnvironmentLighting& environment) {

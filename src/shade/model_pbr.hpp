@@ -53,6 +53,12 @@ struct EnvironmentLighting {
         return {cos_rotation * d.x - sin_rotation * d.z, d.y,
                 sin_rotation * d.x + cos_rotation * d.z};
     }
+    // The same for eight directions.
+    void to_map(const simd::vf (&d)[3], simd::vf (&out)[3]) const {
+        out[0] = cos_rotation * d[0] - sin_rotation * d[2];
+        out[1] = d[1];
+        out[2] = sin_rotation * d[0] + cos_rotation * d[2];
+    }
 };
 
 // The rotation's cosine and sine, for EnvironmentLighting, from exact
