@@ -307,8 +307,9 @@ SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& 
 }
 
 ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows) {
-    const std::string head = model_defines(model, textured, shadows) + kLightUniformsGlsl +
-                             kGeneralLightLoopGlsl + kGeneralMaterialGlsl;
+    // Sidedness is the material's: the general program flips every back face.
+    const std::string head = model_defines(model, textured, shadows) + "#define TWO_SIDED\n" +
+                             kLightUniformsGlsl + kGeneralLightLoopGlsl + kGeneralMaterialGlsl;
     return {head + kPhongVertexShader, head + kFragmentShader};
 }
 
