@@ -50,6 +50,7 @@ struct GlResult {
     bool ok = false;
     std::string error;
     int lp_threads = 0;
+    bool specialised = true;  // the peer's shaders written for the scene, or the general ones
     // Render only: draw, glFinish, and read back colour (RGB8) and depth (float).
     Stat render_ms;
     double render_cpu_ms = NAN;  // median process CPU time per frame
@@ -69,8 +70,10 @@ struct GlResult {
 // Draws `frames` of the scene with OpenGL on llvmpipe through OSMesa, in this
 // process (LP_NUM_THREADS must already be set), and compares its first frame
 // with facet's. Defined only when OSMesa was found (FACET_BENCH_HAVE_OSMESA).
-// `png_dir` receives the whole job's PNG files.
+// `png_dir` receives the whole job's PNG files. `specialised`: the shaders
+// written for the scene (llvmpipe_phong.hpp), else the general ones.
 GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world,
-                        const std::vector<int>& frames, const std::string& png_dir);
+                        const std::vector<int>& frames, const std::string& png_dir,
+                        bool specialised);
 
 }  // namespace facet_bench

@@ -35,7 +35,7 @@ struct SceneResult {
     std::vector<FacetRun> render;  // per thread count
     FacetRun job_png;              // `facet render`, PNG colour only
     FacetRun job_all;              // PNG + EXR, colour + depth
-    std::vector<GlResult> gl;      // per LP_NUM_THREADS
+    std::vector<GlResult> gl;      // per LP_NUM_THREADS and peer (specialised, general)
     Load load;
 };
 
@@ -44,7 +44,7 @@ std::string describe(const GlResult& gl);
 
 // The child's result as one line of key=value words, and back.
 std::string format_gl_result(const GlResult& r);
-GlResult parse_gl_result(const std::string& line, int lp_threads);
+GlResult parse_gl_result(const std::string& line, int lp_threads, bool specialised);
 
 std::string report_markdown(const std::vector<SceneResult>& results,
                             const std::vector<int>& threads, const std::vector<int>& lp_threads);

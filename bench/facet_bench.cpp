@@ -46,13 +46,15 @@ struct Options {
     std::vector<int> threads = {1, 2};
     std::vector<int> lp_threads = {2};
     bool llvmpipe = true;
-    bool jobs = true;         // also time `facet render` writing files
-    std::string plot;         // PNG of the ratios, if set
-    std::string make_meshes;  // write the blobs into this folder and stop
-    uint32_t seed = 1;        // with make_meshes
-    bool gl_child = false;    // internal: the llvmpipe side of one scene
-    std::string png_dir;      // internal, with gl_child
-    bool codecs = false;      // time each file encoder on each scene's first frame instead
+    bool general_peer = true;  // llvmpipe with its general shaders too, beside the specialised
+    bool jobs = true;          // also time `facet render` writing files
+    std::string plot;          // PNG of the ratios, if set
+    std::string make_meshes;   // write the blobs into this folder and stop
+    uint32_t seed = 1;         // with make_meshes
+    bool gl_child = false;     // internal: the llvmpipe side of one scene
+    std::string png_dir;       // internal, with gl_child
+    bool specialised = true;   // internal, with gl_child: which shaders
+    bool codecs = false;       // time each file encoder on each scene's first frame instead
 };
 
 // The suite, in the order of docs/performance.md.
@@ -79,7 +81,8 @@ std::vector<int> parse_int_list(const std::string& text, const char* option) {
 
 void usage(std::ostream& os) {
     os << "usage: facet_bench [--frames N] [--threads 1,2] [--llvmpipe-threads 2] [--no-llvmpipe]\n"
-          "                   [--render-only] [--plot FILE.png] [scene.yaml ...]\n"
+          "                   [--no-general-peer] [--render-only] [--plot FILE.png] "
+          "[scene.yaml ...]\n"
           "       facet_bench --make-meshes DIR [--seed N]\n"
           "Renders each scene with facet (render only, then the whole job writing PNGs) and with\n"
           "OpenGL on llvmpipe, and prints markdown tables. Default: the suite "
@@ -89,6 +92,8 @@ void usage(std::ostream& os) {
           "  --render-only     skip the whole jobs (files written): a quicker check\n"
           "  --codecs          instead, each file encoder's MB/s and ratio on each scene's first\n"
           "                    frame (one thread, median of 5)\n"
+          "  --no-general-peer llvmpipe with the shaders written for each scene only, not also\n"
+          "                    with its general (uniform light loop) shaders\n"
           "  --make-meshes DIR the blobs (5k, 328k, 1.31M triangles) and the texture the suite\n"
           "                    reads; --seed picks the displacement (a new seed: unseen meshes)\n";
 }
@@ -111,6 +116,13 @@ Options parse_options(int argc, char** argv) {
             o.llvmpipe = false;
         } else if (a == "--codecs") {
             o.codecs = true;
+        } else if (a == "--no-general-peer") {
+            o.general_peer = false;
+        } else if (a == "--peer") {
+            const std::string peer = value();
+            if (peer != "specialised" && peer != "general")
+                throw std::invalid_argument("--peer: specialised or general, not " + peer);
+            o.specialised = peer == "specialised";
         } else if (a == "--render-only") {
             o.jobs = false;
         } else if (a == "--plot") {
@@ -212,15 +224,18 @@ std::string self_path() {
 
 // Runs `facet_bench --gl-child` for one scene with LP_NUM_THREADS set and
 // reads back its one result line.
-GlResult run_gl_child(const std::string& scene_path, int frames, int lp_threads) {
+GlResult run_gl_child(const std::string& scene_path, int frames, int lp_threads, bool specialised) {
     GlResult r;
     r.lp_threads = lp_threads;
+    r.specialised = specialised;
     const fs::path dir = fs::temp_directory_path() / ("facet-bench-gl-" + std::to_string(getpid()));
     fs::remove_all(dir);
     fs::create_directories(dir);
     std::string cmd = "LP_NUM_THREADS=" + std::to_string(lp_threads) + " GALLIUM_DRIVER=llvmpipe " +
-                      shell_quote(self_path()) + " --gl-child --frames " + std::to_string(frames) +
-                      " --png-dir " + shell_quote(dir.string()) + " " + shell_quote(scene_path);
+                      shell_quote(self_path()) + " --gl-child --peer " +
+                      (specialised ? "specialised" : "general") + " --frames " +
+                      std::to_string(frames) + " --png-dir " + shell_quote(dir.string()) + " " +
+                      shell_quote(scene_path);
     std::FILE* pipe = popen(cmd.c_str(), "r");
     if (!pipe) {
         r.error = "popen failed";
@@ -238,7 +253,7 @@ GlResult run_gl_child(const std::string& scene_path, int frames, int lp_threads)
         r.error = "llvmpipe child failed (status " + std::to_string(status) + ")";
         return r;
     }
-    return parse_gl_result(result, lp_threads);
+    return parse_gl_result(result, lp_threads, specialised);
 }
 
 int gl_child_main(const Options& o) {
@@ -247,7 +262,8 @@ int gl_child_main(const Options& o) {
         if (o.scenes.size() != 1) throw std::invalid_argument("--gl-child takes one scene");
         facet::SceneDesc scene = load(o.scenes[0]);
         facet::World world = facet::build_world(scene);
-        const GlResult r = bench_llvmpipe(scene, world, pick_frames(scene, o.frames), o.png_dir);
+        const GlResult r =
+            bench_llvmpipe(scene, world, pick_frames(scene, o.frames), o.png_dir, o.specialised);
         std::printf("GLRESULT %s\n", format_gl_result(r).c_str());
 #else
         (void)o;
@@ -306,11 +322,14 @@ SceneResult bench_scene(const std::string& path, const Options& o) {
                   << "T: " << describe(sr.job_all) << "\n";
     }
     if (o.llvmpipe)
-        for (int lp : o.lp_threads) {
-            const GlResult g = run_gl_child(path, o.frames, lp);
-            std::cerr << "  llvmpipe LP_NUM_THREADS=" << lp << ": " << describe(g) << "\n";
-            sr.gl.push_back(g);
-        }
+        for (int lp : o.lp_threads)
+            for (bool specialised : {true, false}) {
+                if (!specialised && !o.general_peer) continue;
+                const GlResult g = run_gl_child(path, o.frames, lp, specialised);
+                std::cerr << "  llvmpipe " << (specialised ? "specialised" : "general")
+                          << " LP_NUM_THREADS=" << lp << ": " << describe(g) << "\n";
+                sr.gl.push_back(g);
+            }
     sr.load = load_between(before, cpu_snapshot());
     return sr;
 }

@@ -31,6 +31,7 @@
 #include "core/thread_pool.hpp"
 #include "llvmpipe_gl.hpp"
 #include "llvmpipe_pbr.hpp"
+#include "llvmpipe_phong.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/pose_stage.hpp"
@@ -38,150 +39,6 @@
 
 namespace facet_bench {
 namespace {
-
-// The light loop, term for term what src/shade/lighting_batch.cpp computes:
-// ambient * (sum of ambient lights, or white), then per light Lambert and
-// the Phong or Blinn highlight, with inverse-square falloff, the range
-// window and the spot cone for point and spot lights, and the shadow map's
-// visibility for the light that has one.
-const char* kLightingGlsl = R"(
-const int kMaxLights = 8;
-uniform int u_light_count;
-uniform vec4 u_light_pos[kMaxLights];   // xyz: position, or direction to the light; w: 1 point or spot
-uniform vec4 u_light_axis[kMaxLights];  // xyz: spot axis towards the light; w: 1 / range or 0
-uniform vec3 u_radiance[kMaxLights];
-uniform vec2 u_spot[kMaxLights];        // cone scale and offset; (0, 1) for no cone
-uniform vec3 u_ambient_light;
-uniform vec4 u_terms;  // ambient, diffuse, specular, shininess
-uniform int u_shadow_light;
-#ifdef SHADOWS
-uniform sampler2DShadow u_shadow_map;
-uniform mat4 u_shadow_matrix;  // world -> shadow map [0, 1]^3
-uniform float u_shadow_texel;
-float shadow(vec3 p) {
-    vec4 s = u_shadow_matrix * vec4(p, 1.0);
-    // Four bilinear comparisons round the point: a 4 x 4 texel filter.
-    float d = u_shadow_texel;
-    return 0.25 * (shadow2D(u_shadow_map, s.xyz + vec3(-d, -d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(d, -d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(-d, d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(d, d, 0.0)).r);
-}
-#endif
-// Light i arriving at p, and l towards it. The kind flags are constants in
-// the pbr program, which is compiled for the scene's lights (llvmpipe_pbr.cpp).
-vec3 light_arriving(int i, vec3 p, bool point, bool ranged, bool spot, out vec3 l) {
-    l = u_light_pos[i].xyz;
-    if (!point) return u_radiance[i];
-    vec3 d = u_light_pos[i].xyz - p;
-    float dist2 = dot(d, d);
-    if (dist2 <= 0.0) {  // at the light itself: no direction, no light
-        l = vec3(0.0, 1.0, 0.0);
-        return vec3(0.0);
-    }
-    l = d / sqrt(dist2);
-    float falloff = 1.0 / dist2;
-    if (ranged) {
-        float x = dist2 * u_light_axis[i].w * u_light_axis[i].w;
-        float w = clamp(1.0 - x * x, 0.0, 1.0);
-        falloff *= w * w;
-    }
-    if (spot) {
-        float t = clamp(dot(l, u_light_axis[i].xyz) * u_spot[i].x + u_spot[i].y, 0.0, 1.0);
-        falloff *= t * t * (3.0 - 2.0 * t);
-    }
-    return u_radiance[i] * falloff;
-}
-void light_point(vec3 p, vec3 n, vec3 to_eye, bool phong, out vec3 diffuse, out vec3 specular) {
-    diffuse = u_terms.x * u_ambient_light;
-    specular = vec3(0.0);
-    for (int i = 0; i < u_light_count; ++i) {
-        vec3 l;
-        vec3 radiance =
-            light_arriving(i, p, u_light_pos[i].w > 0.5, u_light_axis[i].w > 0.0, true, l);
-        float n_dot_l = dot(n, l);
-        if (n_dot_l <= 0.0) continue;
-#ifdef SHADOWS
-        if (i == u_shadow_light) radiance *= shadow(p);
-#endif
-        diffuse += u_terms.y * n_dot_l * radiance;
-        float cosine;
-        if (phong) {
-            cosine = dot(2.0 * n_dot_l * n - l, to_eye);
-        } else {
-            vec3 h = l + to_eye;
-            float hl = length(h);
-            cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;
-        }
-        if (cosine > 0.0 && u_terms.z > 0.0)
-            specular += u_terms.z * pow(min(cosine, 1.0), u_terms.w) * radiance;
-    }
-}
-)";
-
-const char* kVertexShader = R"(
-in vec3 a_position;
-in vec3 a_normal;
-in vec2 a_uv;
-uniform mat4 u_model;
-uniform mat3 u_normal_matrix;
-uniform mat4 u_view_projection;
-uniform vec3 u_eye;
-out vec3 v_world;
-out vec3 v_normal;
-out vec2 v_uv;
-#ifdef GOURAUD
-out vec3 v_diffuse;
-out vec3 v_specular;
-#endif
-void main() {
-    vec4 world = u_model * vec4(a_position, 1.0);
-    v_world = world.xyz;
-    vec3 n = u_normal_matrix * a_normal;
-    float len = length(n);
-    v_normal = len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
-    v_uv = a_uv;
-#ifdef GOURAUD
-    light_point(v_world, v_normal, normalize(u_eye - v_world), false, v_diffuse, v_specular);
-#endif
-    gl_Position = u_view_projection * world;
-}
-)";
-
-const char* kFragmentShader = R"(
-in vec3 v_world;
-in vec3 v_normal;
-in vec2 v_uv;
-#ifdef GOURAUD
-in vec3 v_diffuse;
-in vec3 v_specular;
-#endif
-uniform vec3 u_eye;
-uniform vec3 u_albedo;
-uniform vec2 u_uv_scale;
-#ifdef TEXTURED
-uniform sampler2D u_texture;
-#endif
-out vec4 frag_color;
-void main() {
-    vec3 albedo = u_albedo;
-#ifdef TEXTURED
-    albedo *= texture(u_texture, v_uv * u_uv_scale).rgb;
-#endif
-#if defined(UNLIT)
-    frag_color = vec4(albedo, 1.0);
-#elif defined(GOURAUD)
-    frag_color = vec4(albedo * v_diffuse + v_specular, 1.0);
-#else
-    float len = length(v_normal);
-    vec3 n = len > 0.0 ? v_normal / len : vec3(0.0, 1.0, 0.0);
-    if (!gl_FrontFacing) n = -n;
-    vec3 diffuse, specular;
-    light_point(v_world, n, normalize(u_eye - v_world), PHONG, diffuse, specular);
-    frag_color = vec4(albedo * diffuse + specular, 1.0);
-#endif
-}
-)";
 
 const char* kDepthVertexShader = R"(
 in vec3 a_position;
@@ -205,12 +62,10 @@ GLuint compile(const Gl& gl, GLenum type, const std::string& source) {
     return s;
 }
 
-GLuint link(const Gl& gl, const std::string& defines, const char* vertex, const char* fragment,
-            bool lighting) {
-    const std::string head = "#version 130\n" + defines + (lighting ? kLightingGlsl : "");
+GLuint link(const Gl& gl, const ShaderSources& sources) {
     GLuint program = gl.CreateProgram();
-    gl.AttachShader(program, compile(gl, GL_VERTEX_SHADER, head + vertex));
-    gl.AttachShader(program, compile(gl, GL_FRAGMENT_SHADER, head + fragment));
+    gl.AttachShader(program, compile(gl, GL_VERTEX_SHADER, "#version 130\n" + sources.vertex));
+    gl.AttachShader(program, compile(gl, GL_FRAGMENT_SHADER, "#version 130\n" + sources.fragment));
     gl.BindAttribLocation(program, 0, "a_position");
     gl.BindAttribLocation(program, 1, "a_normal");
     gl.BindAttribLocation(program, 2, "a_uv");
@@ -271,9 +126,9 @@ struct Program {
         shadow_matrix, shadow_texel, texture;
 };
 
-Program make_program(const Gl& gl, const std::string& defines, const std::string& fragment) {
+Program make_program(const Gl& gl, const ShaderSources& sources) {
     Program p;
-    p.id = link(gl, defines, kVertexShader, fragment.c_str(), true);
+    p.id = link(gl, sources);
     auto loc = [&](const char* name) { return gl.GetUniformLocation(p.id, name); };
     p.model = loc("u_model"), p.normal_matrix = loc("u_normal_matrix");
     p.view_projection = loc("u_view_projection"), p.eye = loc("u_eye");
@@ -289,7 +144,9 @@ Program make_program(const Gl& gl, const std::string& defines, const std::string
 // Everything the reference draws with, made once.
 class Reference {
   public:
-    Reference(const facet::SceneDesc& scene, const facet::World& world)
+    // `specialised`: the Phong family's programs are written for the scene
+    // (llvmpipe_phong.hpp); the `pbr` port always is.
+    Reference(const facet::SceneDesc& scene, const facet::World& world, bool specialised)
         : scene_(scene), world_(world), width_(scene.output.width), height_(scene.output.height) {
         gl_.load();
         model_ = scene.style.shading;
@@ -305,18 +162,24 @@ class Reference {
         make_buffers();
         make_textures();
         make_targets();
-        if (model_ == facet::ShadingModel::pbr) pbr_.emplace(gl_, scene, world, shadow_light_);
-        for (bool textured : {false, true}) {
-            programs_[textured] = make_program(gl_, defines(textured),
-                                               pbr_ ? pbr_->fragment_shader() : kFragmentShader);
-            if (pbr_) pbr_->prepare(programs_[textured].id);
-        }
+        // The shadow map first: a specialised program compiles in its size.
         if (shadow_light_ >= 0) make_shadow_map();
+        if (model_ == facet::ShadingModel::pbr) pbr_.emplace(gl_, scene, world, shadow_light_);
+        if (specialised && !pbr_)
+            make_specialised_programs();
+        else
+            make_general_programs();
     }
 
     std::string features() const {
         std::string f = facet::shading_model_name(model_);
-        if (pbr_) f += " (" + pbr_->features() + ")";
+        if (pbr_)
+            f += " (" + pbr_->features() + ")";
+        else if (specialised_)
+            f += " (specialised: " + std::to_string(programs_.size()) +
+                 " program(s), lights unrolled, material constants)";
+        else
+            f += " (general: uniform light loop)";
         if (!textures_.empty()) f += ", textured (mipmapped)";
         if (shadow_light_ >= 0) f += ", shadow map " + std::to_string(shadow_size_) + "^2";
         if (samples_ > 1) f += ", " + std::to_string(samples_) + "x MSAA";
@@ -344,7 +207,8 @@ class Reference {
         for (const facet::Draw& d : world_.draws) {
             const facet::Material& m = world_.materials[d.material];
             const bool textured = m.base_color_map && d.has_uvs;
-            const Program& p = programs_[textured];
+            const Program& p =
+                programs_.at({specialised_ ? static_cast<int>(d.material) : -1, textured});
             gl_.UseProgram(p.id);
             set_lights(p, lights, cam.position, view_projection);
             if (pbr_) pbr_->set_draw(p.id, state, m);
@@ -385,15 +249,33 @@ class Reference {
     }
 
   private:
-    std::string defines(bool textured) const {
-        std::string d;
-        if (model_ == facet::ShadingModel::unlit) d += "#define UNLIT\n";
-        if (model_ == facet::ShadingModel::gouraud) d += "#define GOURAUD\n";
-        d += std::string("#define PHONG ") +
-             (model_ == facet::ShadingModel::phong ? "true" : "false") + "\n";
-        if (textured) d += "#define TEXTURED\n";
-        if (shadow_light_ >= 0) d += "#define SHADOWS\n";
-        return d;
+    void make_general_programs() {
+        for (bool textured : {false, true}) {
+            const bool shadows = shadow_light_ >= 0;
+            // The pbr port's fragment shader follows the light uniforms.
+            const std::string pbr_head = std::string(textured ? "#define TEXTURED\n" : "") +
+                                         (shadows ? "#define SHADOWS\n" : "") + kLightUniformsGlsl;
+            const ShaderSources sources = pbr_ ? ShaderSources{pbr_head + kPhongVertexShader,
+                                                               pbr_head + pbr_->fragment_shader()}
+                                               : general_phong_program(model_, textured, shadows);
+            const Program p = make_program(gl_, sources);
+            if (pbr_) pbr_->prepare(p.id);
+            programs_[{-1, textured}] = p;
+        }
+    }
+
+    // One program per material and texture use the draws need.
+    void make_specialised_programs() {
+        specialised_ = true;
+        const SceneLighting lighting = scene_lighting(scene_, world_, shadow_light_);
+        for (const facet::Draw& d : world_.draws) {
+            const facet::Material& m = world_.materials[d.material];
+            const std::pair<int, bool> key{static_cast<int>(d.material),
+                                           m.base_color_map && d.has_uvs};
+            if (programs_.count(key)) continue;
+            programs_[key] = make_program(
+                gl_, specialised_phong_program(model_, lighting, m, key.second, shadow_size_));
+        }
     }
 
     void make_buffers() {
@@ -509,7 +391,7 @@ class Reference {
         glReadBuffer(GL_NONE);
         if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             throw std::runtime_error("shadow framebuffer incomplete");
-        depth_program_ = link(gl_, "", kDepthVertexShader, kDepthFragmentShader, false);
+        depth_program_ = link(gl_, {kDepthVertexShader, kDepthFragmentShader});
         depth_clip_ = gl_.GetUniformLocation(depth_program_, "u_clip");
     }
 
@@ -623,7 +505,9 @@ class Reference {
     GLuint depth_program_ = 0;
     GLint depth_clip_ = -1;
     glm::mat4 shadow_matrix_{1};
-    Program programs_[2];         // untextured, textured
+    // By (material, textured); the general programs' material is -1.
+    std::map<std::pair<int, bool>, Program> programs_;
+    bool specialised_ = false;
     std::optional<PbrPeer> pbr_;  // the `pbr` model's GLSL port and its textures
 };
 
@@ -673,7 +557,8 @@ void compare_first_frame(const facet::SceneDesc& scene, const facet::World& worl
 }  // namespace
 
 GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world,
-                        const std::vector<int>& frames, const std::string& png_dir) {
+                        const std::vector<int>& frames, const std::string& png_dir,
+                        bool specialised) {
     GlResult r;
     const char* lp = std::getenv("LP_NUM_THREADS");
     r.lp_threads = lp ? std::atoi(lp) : -1;
@@ -689,7 +574,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     r.renderer += " / GL ";
     r.renderer += reinterpret_cast<const char*>(glGetString(GL_VERSION));
 
-    Reference reference(scene, world);
+    Reference reference(scene, world, specialised);
     r.features = reference.features();
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

@@ -1,0 +1,333 @@
+#include "llvmpipe_phong.hpp"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "anim/frame_state.hpp"
+#include "render/shade_lights.hpp"
+
+namespace facet_bench {
+
+// Term for term what src/shade/lighting_batch.cpp computes: inverse-square
+// falloff, the range window and the spot cone for point and spot lights,
+// and the shadow map's visibility for the light that has one.
+const char* const kLightUniformsGlsl = R"(
+const int kMaxLights = 8;
+uniform int u_light_count;
+uniform vec4 u_light_pos[kMaxLights];   // xyz: position, or direction to the light; w: 1 point or spot
+uniform vec4 u_light_axis[kMaxLights];  // xyz: spot axis towards the light; w: 1 / range or 0
+uniform vec3 u_radiance[kMaxLights];
+uniform vec2 u_spot[kMaxLights];        // cone scale and offset; (0, 1) for no cone
+uniform vec3 u_ambient_light;
+uniform int u_shadow_light;
+#ifdef SHADOWS
+#ifndef SHADOW_TEXEL
+uniform float u_shadow_texel;
+#define SHADOW_TEXEL u_shadow_texel
+#endif
+uniform sampler2DShadow u_shadow_map;
+uniform mat4 u_shadow_matrix;  // world -> shadow map [0, 1]^3
+float shadow(vec3 p) {
+    vec4 s = u_shadow_matrix * vec4(p, 1.0);
+    // Four bilinear comparisons round the point: a 4 x 4 texel filter.
+    float d = SHADOW_TEXEL;
+    return 0.25 * (shadow2D(u_shadow_map, s.xyz + vec3(-d, -d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(d, -d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(-d, d, 0.0)).r +
+                   shadow2D(u_shadow_map, s.xyz + vec3(d, d, 0.0)).r);
+}
+#endif
+// Light i arriving at p, and l towards it. The general program passes the
+// kind flags from uniforms; the others pass constants.
+vec3 light_arriving(int i, vec3 p, bool point, bool ranged, bool spot, out vec3 l) {
+    l = u_light_pos[i].xyz;
+    if (!point) return u_radiance[i];
+    vec3 d = u_light_pos[i].xyz - p;
+    float dist2 = dot(d, d);
+    if (dist2 <= 0.0) {  // at the light itself: no direction, no light
+        l = vec3(0.0, 1.0, 0.0);
+        return vec3(0.0);
+    }
+    l = d / sqrt(dist2);
+    float falloff = 1.0 / dist2;
+    if (ranged) {
+        float x = dist2 * u_light_axis[i].w * u_light_axis[i].w;
+        float w = clamp(1.0 - x * x, 0.0, 1.0);
+        falloff *= w * w;
+    }
+    if (spot) {
+        float t = clamp(dot(l, u_light_axis[i].xyz) * u_spot[i].x + u_spot[i].y, 0.0, 1.0);
+        falloff *= t * t * (3.0 - 2.0 * t);
+    }
+    return u_radiance[i] * falloff;
+}
+)";
+
+namespace {
+
+// The general light loop: ambient * (sum of ambient lights, or white), then
+// per light Lambert and the Phong or Blinn highlight.
+const char* kGeneralLightLoopGlsl = R"(
+uniform vec4 u_terms;  // ambient, diffuse, specular, shininess
+void light_point(vec3 p, vec3 n, vec3 to_eye, out vec3 diffuse, out vec3 specular) {
+    diffuse = u_terms.x * u_ambient_light;
+    specular = vec3(0.0);
+    for (int i = 0; i < u_light_count; ++i) {
+        vec3 l;
+        vec3 radiance =
+            light_arriving(i, p, u_light_pos[i].w > 0.5, u_light_axis[i].w > 0.0, true, l);
+        float n_dot_l = dot(n, l);
+        if (n_dot_l <= 0.0) continue;
+#ifdef SHADOWS
+        if (i == u_shadow_light) radiance *= shadow(p);
+#endif
+        diffuse += u_terms.y * n_dot_l * radiance;
+        float cosine;
+        if (PHONG) {
+            cosine = dot(2.0 * n_dot_l * n - l, to_eye);
+        } else {
+            vec3 h = l + to_eye;
+            float hl = length(h);
+            cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;
+        }
+        if (cosine > 0.0 && u_terms.z > 0.0)
+            specular += u_terms.z * pow(min(cosine, 1.0), u_terms.w) * radiance;
+    }
+}
+)";
+
+// The material's colour and texture scale: uniforms in the general program.
+const char* kGeneralMaterialGlsl = R"(
+uniform vec3 u_albedo;
+uniform vec2 u_uv_scale;
+#define ALBEDO u_albedo
+#define UV_SCALE u_uv_scale
+)";
+
+const char* kFragmentShader = R"(
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
+#ifdef GOURAUD
+in vec3 v_diffuse;
+in vec3 v_specular;
+#endif
+uniform vec3 u_eye;
+#ifdef TEXTURED
+uniform sampler2D u_texture;
+#endif
+out vec4 frag_color;
+void main() {
+    vec3 albedo = ALBEDO;
+#ifdef TEXTURED
+    albedo *= texture(u_texture, v_uv * UV_SCALE).rgb;
+#endif
+#if defined(UNLIT)
+    frag_color = vec4(albedo, 1.0);
+#elif defined(GOURAUD)
+    frag_color = vec4(albedo * v_diffuse + v_specular, 1.0);
+#else
+    float len = length(v_normal);
+    vec3 n = len > 0.0 ? v_normal / len : vec3(0.0, 1.0, 0.0);
+#ifdef TWO_SIDED  // a single-sided material's back faces are culled
+    if (!gl_FrontFacing) n = -n;
+#endif
+    vec3 diffuse, specular;
+    light_point(v_world, n, normalize(u_eye - v_world), diffuse, specular);
+    frag_color = vec4(albedo * diffuse + specular, 1.0);
+#endif
+}
+)";
+
+// GLSL float literals, exact for the float they print.
+std::string literal(float v) {
+    char buf[48];
+    std::snprintf(buf, sizeof buf, "%.9g", static_cast<double>(v));
+    std::string s = buf;
+    if (s.find_first_of(".eE") == std::string::npos) s += ".0";
+    return s;
+}
+
+std::string literal(const glm::vec3& v) {
+    return "vec3(" + literal(v.x) + ", " + literal(v.y) + ", " + literal(v.z) + ")";
+}
+
+std::string model_defines(facet::ShadingModel model, bool textured, bool shadows) {
+    std::string d;
+    if (model == facet::ShadingModel::unlit) d += "#define UNLIT\n";
+    if (model == facet::ShadingModel::gouraud) d += "#define GOURAUD\n";
+    d += std::string("#define PHONG ") + (model == facet::ShadingModel::phong ? "true" : "false") +
+         "\n";
+    if (textured) d += "#define TEXTURED\n";
+    if (shadows) d += "#define SHADOWS\n";
+    return d;
+}
+
+bool same_light(const facet::ShadeLight& a, const facet::ShadeLight& b) {
+    return a.is_point == b.is_point && a.is_spot == b.is_spot && a.direction == b.direction &&
+           a.position == b.position && a.radiance == b.radiance && a.spot_scale == b.spot_scale &&
+           a.spot_offset == b.spot_offset && a.inv_range == b.inv_range;
+}
+
+// Light i's l and radiance at p, into the light_point's locals: a static
+// light's position, axis, cone, range and radiance as constants, a moving
+// one's from the uniforms, both with its kind compiled in.
+std::string arrival_glsl(const SceneLighting& lighting, size_t i) {
+    const facet::ShadeLight& light = lighting.lights[i];
+    const bool ranged = light.is_point && light.inv_range > 0.0f;
+    if (lighting.moving[i]) {
+        auto flag = [](bool b) { return b ? "true" : "false"; };
+        return "    radiance = light_arriving(" + std::to_string(i) + ", p, " +
+               flag(light.is_point) + ", " + flag(ranged) + ", " + flag(light.is_spot) + ", l);\n";
+    }
+    if (!light.is_point)
+        return "    l = " + literal(light.direction) +
+               ";\n    radiance = " + literal(light.radiance) + ";\n";
+    // At the light itself there is no direction and no light.
+    std::string g = "    {\n        vec3 d = " + literal(light.position) +
+                    " - p;\n"
+                    "        float dist2 = dot(d, d);\n"
+                    "        l = dist2 > 0.0 ? d / sqrt(dist2) : vec3(0.0, 1.0, 0.0);\n"
+                    "        float falloff = dist2 > 0.0 ? 1.0 / dist2 : 0.0;\n";
+    if (ranged)
+        g += "        float x = dist2 * " + literal(light.inv_range) + " * " +
+             literal(light.inv_range) +
+             ";\n"
+             "        float w = clamp(1.0 - x * x, 0.0, 1.0);\n"
+             "        falloff *= w * w;\n";
+    if (light.is_spot)
+        g += "        float t = clamp(dot(l, " + literal(light.direction) + ") * " +
+             literal(light.spot_scale) + " + " + literal(light.spot_offset) +
+             ", 0.0, 1.0);\n"
+             "        falloff *= t * t * (3.0 - 2.0 * t);\n";
+    return g + "        radiance = " + literal(light.radiance) + " * falloff;\n    }\n";
+}
+
+// light_point for one material under the scene's lights, unrolled.
+std::string specialised_light_point(facet::ShadingModel model, const SceneLighting& lighting,
+                                    const facet::Material& m) {
+    const std::string ambient =
+        lighting.ambient_moving ? std::string("u_ambient_light") : literal(lighting.ambient);
+    std::string g =
+        "void light_point(vec3 p, vec3 n, vec3 to_eye, out vec3 diffuse, out vec3 "
+        "specular) {\n    diffuse = " +
+        literal(m.ambient) + " * " + ambient +
+        ";\n    specular = vec3(0.0);\n    vec3 l, radiance;\n    float n_dot_l;\n";
+    for (size_t i = 0; i < lighting.lights.size(); ++i) {
+        g += arrival_glsl(lighting, i);
+        g += "    n_dot_l = dot(n, l);\n    if (n_dot_l > 0.0) {\n";
+        if (static_cast<int>(i) == lighting.shadow_index) g += "        radiance *= shadow(p);\n";
+        g += "        diffuse += " + literal(m.diffuse) + " * n_dot_l * radiance;\n";
+        if (m.specular > 0.0f) {
+            if (model == facet::ShadingModel::phong)
+                g += "        float cosine = dot(2.0 * n_dot_l * n - l, to_eye);\n";
+            else
+                g += "        vec3 h = l + to_eye;\n        float hl = length(h);\n"
+                     "        float cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;\n";
+            g += "        specular += cosine > 0.0 ? " + literal(m.specular) +
+                 " * pow(min(cosine, 1.0), " + literal(m.shininess) + ") * radiance : vec3(0.0);\n";
+        }
+        g += "    }\n";
+    }
+    return g + "}\n";
+}
+
+}  // namespace
+
+const char* const kPhongVertexShader = R"(
+in vec3 a_position;
+in vec3 a_normal;
+in vec2 a_uv;
+uniform mat4 u_model;
+uniform mat3 u_normal_matrix;
+uniform mat4 u_view_projection;
+uniform vec3 u_eye;
+out vec3 v_world;
+out vec3 v_normal;
+out vec2 v_uv;
+#ifdef GOURAUD
+out vec3 v_diffuse;
+out vec3 v_specular;
+#endif
+void main() {
+    vec4 world = u_model * vec4(a_position, 1.0);
+    v_world = world.xyz;
+    vec3 n = u_normal_matrix * a_normal;
+    float len = length(n);
+    v_normal = len > 0.0 ? n / len : vec3(0.0, 1.0, 0.0);
+    v_uv = a_uv;
+#ifdef GOURAUD
+    light_point(v_world, v_normal, normalize(u_eye - v_world), v_diffuse, v_specular);
+#endif
+    gl_Position = u_view_projection * world;
+}
+)";
+
+SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& world,
+                             int shadow_light) {
+    SceneLighting lighting;
+    bool first = true;
+    for (int frame : scene.output.frames) {
+        const facet::FrameState state = facet::evaluate_frame(scene, world.object_bounds, frame);
+        std::vector<facet::ShadeLight> lights;
+        glm::vec3 ambient(0.0f);
+        bool any_ambient = false;
+        for (const facet::ShadeLight& l : facet::make_shade_lights(state.lights)) {
+            if (l.is_ambient) {
+                ambient += l.radiance;
+                any_ambient = true;
+            } else if (lights.size() < 8) {
+                lights.push_back(l);
+            }
+        }
+        if (!any_ambient) ambient = glm::vec3(1.0f);
+        if (first) {
+            lighting.lights = lights;
+            lighting.moving.assign(lights.size(), false);
+            lighting.ambient = ambient;
+            first = false;
+            continue;
+        }
+        if (lights.size() != lighting.lights.size())
+            throw std::runtime_error("the scene's lights come and go between frames");
+        for (size_t i = 0; i < lights.size(); ++i)
+            if (!same_light(lights[i], lighting.lights[i])) lighting.moving[i] = true;
+        if (ambient != lighting.ambient) lighting.ambient_moving = true;
+    }
+    // make_shade_lights keeps scene order for the lights that shine from
+    // somewhere: the shadow light's index among them counts the non-ambient
+    // scene lights before it.
+    if (shadow_light >= 0) {
+        lighting.shadow_index = 0;
+        for (int i = 0; i < shadow_light; ++i)
+            if (scene.lights[static_cast<size_t>(i)].type != facet::LightType::ambient)
+                ++lighting.shadow_index;
+    }
+    return lighting;
+}
+
+ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows) {
+    // Sidedness is the material's: the general program flips every back face.
+    const std::string head = model_defines(model, textured, shadows) + "#define TWO_SIDED\n" +
+                             kLightUniformsGlsl + kGeneralLightLoopGlsl + kGeneralMaterialGlsl;
+    return {head + kPhongVertexShader, head + kFragmentShader};
+}
+
+ShaderSources specialised_phong_program(facet::ShadingModel model, const SceneLighting& lighting,
+                                        const facet::Material& m, bool textured, int shadow_size) {
+    const bool shadows = lighting.shadow_index >= 0;
+    std::string head = model_defines(model, textured, shadows);
+    if (m.double_sided) head += "#define TWO_SIDED\n";
+    head += "#define ALBEDO " + literal(m.color) + "\n";
+    head += "#define UV_SCALE vec2(" + literal(m.base_color_map.transform.linear[0].x) + ", " +
+            literal(m.base_color_map.transform.linear[1].y) + ")\n";
+    if (model != facet::ShadingModel::unlit) {
+        if (shadows)
+            head +=
+                "#define SHADOW_TEXEL " + literal(1.0f / static_cast<float>(shadow_size)) + "\n";
+        head += kLightUniformsGlsl + specialised_light_point(model, lighting, m);
+    }
+    return {head + kPhongVertexShader, head + kFragmentShader};
+}
+
+}  // namespace facet_bench
