@@ -218,3 +218,18 @@ TEST_CASE("Normals computed on a pool are those computed on one thread", "[asset
     CHECK(source == pooled_source);
     CHECK(work == pooled_work);
 }
+
+TEST_CASE("OBJ line, point and free-form elements are named as not drawn", "[assets][obj]") {
+    TempDir dir("obj");
+    const std::string path = write_text(dir.file("elements.obj"),
+                                        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nl 1 2\np 3\nl 2 3\n"
+                                        "cstype bspline\ncurv 0 1 1 2\nend\n");
+    const facet::Mesh mesh = facet::load_obj(path);
+    CHECK(mesh.triangle_count() == 1);
+    std::vector<std::string> text;
+    for (const auto& w : mesh.warnings) text.push_back(w.describe());
+    REQUIRE(text.size() == 2);
+    CHECK_THAT(text[0], Catch::StartsWith(path + ":5:1: line ('l') and point ('p') elements"));
+    CHECK_THAT(text[0], Catch::Contains("(and 2 more)"));
+    CHECK_THAT(text[1], Catch::StartsWith(path + ":9:1: free-form curves and surfaces"));
+}

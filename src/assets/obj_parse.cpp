@@ -108,6 +108,7 @@ enum class Keyword {
     parameter,  // vp
     face,
     line_element,  // l
+    free_form,     // curv, curv2, surf and their statements: curves and surfaces
     point,         // p
     use_material,
     material_library,
@@ -135,11 +136,12 @@ Statement classify(std::string_view line) {
         Keyword keyword;
     };
     static constexpr Name kNames[] = {
-        {"v", Keyword::position}, {"vt", Keyword::uv},
-        {"vn", Keyword::normal},  {"vp", Keyword::parameter},
-        {"f", Keyword::face},     {"l", Keyword::line_element},
-        {"p", Keyword::point},    {"mtllib", Keyword::material_library},
-        {"g", Keyword::group},
+        {"v", Keyword::position},      {"vt", Keyword::uv},
+        {"vn", Keyword::normal},       {"vp", Keyword::parameter},
+        {"f", Keyword::face},          {"l", Keyword::line_element},
+        {"p", Keyword::point},         {"mtllib", Keyword::material_library},
+        {"g", Keyword::group},         {"curv", Keyword::free_form},
+        {"curv2", Keyword::free_form}, {"surf", Keyword::free_form},
     };
     for (const Name& n : kNames)
         if (word == n.word) return {n.keyword, end + 1};
@@ -203,8 +205,11 @@ struct Occurrences {
 // The things a chunk counts for warnings.
 struct ChunkNotes {
     Occurrences short_faces, missing_uvs, missing_normals, empty_groups;
+    Occurrences lines_and_points, curves_and_surfaces;
 
     void add(const ChunkNotes& later) {
+        lines_and_points.add(later.lines_and_points);
+        curves_and_surfaces.add(later.curves_and_surfaces);
         short_faces.add(later.short_faces);
         missing_uvs.add(later.missing_uvs);
         missing_normals.add(later.missing_normals);
@@ -361,7 +366,11 @@ class ChunkParser {
                 break;
             case Keyword::line_element:
             case Keyword::point:
+                notes.lines_and_points.add(line_, 1);
                 check_corners(line, s.args);
+                break;
+            case Keyword::free_form:
+                notes.curves_and_surfaces.add(line_, 1);
                 break;
             case Keyword::use_material:
                 use_material(line, s.args);
@@ -558,6 +567,17 @@ void add_warnings(const ChunkNotes& notes, const std::string& path, ObjGeometry&
             quoted(notes.missing_normals.token) +
                 " names a normal the file does not have: its part's normals are computed" +
                 times(notes.missing_normals.count)));
+    if (notes.lines_and_points.count)
+        file.warnings.push_back(line_warning(
+            path, notes.lines_and_points,
+            "line ('l') and point ('p') elements are not drawn: facet draws faces only" +
+                times(notes.lines_and_points.count)));
+    if (notes.curves_and_surfaces.count)
+        file.warnings.push_back(line_warning(
+            path, notes.curves_and_surfaces,
+            "free-form curves and surfaces (curv, curv2, surf) are not drawn: facet reads "
+            "polygon faces only" +
+                times(notes.curves_and_surfaces.count)));
     if (notes.empty_groups.count)
         file.warnings.push_back(
             line_warning(path, notes.empty_groups,
