@@ -253,6 +253,7 @@ std::vector<uint8_t> bytes_of(const std::vector<T>& values) {
 // Builds a .gltf with one buffer held in a base64 data URI.
 struct Gltf {
     nlohmann::json doc = {{"asset", {{"version", "2.0"}}}};
+
     std::vector<uint8_t> bin;
     std::string buffer_uri;  // written instead of the data URI when not empty
 
@@ -307,6 +308,18 @@ struct Gltf {
                         nlohmann::json node_extra = nlohmann::json::object()) {
         node_extra["mesh"] = mesh(primitive);
         scene({node(std::move(node_extra))});
+    }
+    // The scene is a 2 x 2 quad facing +Z, with normals and texture
+    // coordinates, showing material 0.
+    void one_quad_scene() {
+        Gltf& g = *this;
+        g.one_node_scene(
+            {{"attributes",
+              {{"POSITION", g.floats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3")},
+               {"NORMAL", g.floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")},
+               {"TEXCOORD_0", g.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2")}}},
+             {"indices", g.indices(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, kUShort)},
+             {"material", 0}});
     }
     std::string write(const std::string& path) {
         if (!bin.empty())

@@ -42,12 +42,7 @@ float as_srgb_colour(uint8_t byte) {
 // material 0 of `materials`.
 void quad_with_materials(Gltf& g, const json& materials) {
     g.doc["materials"] = materials;
-    g.one_node_scene({{"attributes",
-                       {{"POSITION", g.floats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3")},
-                        {"NORMAL", g.floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")},
-                        {"TEXCOORD_0", g.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2")}}},
-                      {"indices", g.indices(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, kUShort)},
-                      {"material", 0}});
+    g.one_quad_scene();
 }
 
 // `count` textures, texture i showing image i, each a flat_png(kMidByte).

@@ -163,12 +163,7 @@ TEST_CASE("uv_scale and wrap apply to every map, the file's specular and coat ma
             {{"clearcoatFactor", 1},
              {"clearcoatTexture", slot},
              {"clearcoatRoughnessTexture", slot}}}}}}};
-    g.one_node_scene({{"attributes",
-                       {{"POSITION", g.floats({-1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0}, "VEC3")},
-                        {"NORMAL", g.floats({0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1}, "VEC3")},
-                        {"TEXCOORD_0", g.floats({0, 1, 1, 1, 1, 0, 0, 0}, "VEC2")}}},
-                      {"indices", g.indices(std::vector<uint16_t>{0, 1, 2, 0, 2, 3}, kUShort)},
-                      {"material", 0}});
+    g.one_quad_scene();
     g.write(dir.file("coated.gltf"));
     const std::string text =
         "output: { size: [32, 32] }\nstyle: pbr\nobjects:\n"
