@@ -91,8 +91,11 @@ TEST_CASE("fast deflate: level 1 of zlib_compress, level 2 libdeflate's", "[outp
 TEST_CASE("fast deflate: PNG files decode through libpng to the same samples",
           "[output][deflate][png]") {
     std::mt19937 rng(4);
-    // The layouts facet writes: 16-bit grey depth, 8-bit grey, RGB and RGBA.
-    for (const auto& [channels, bit_depth] : {std::pair{1, 16}, {1, 8}, {3, 8}, {4, 8}}) {
+    // The layouts facet writes (16-bit grey depth, 8-bit grey, RGB and RGBA),
+    // and 16-bit colour, which facet compares when others write it: its
+    // samples must come back as stored, neither linearised nor premultiplied.
+    for (const auto& [channels, bit_depth] :
+         {std::pair{1, 16}, {1, 8}, {3, 8}, {4, 8}, {3, 16}, {4, 16}}) {
         INFO(channels << " channels, " << bit_depth << " bits");
         PngSamples samples{97, 61, channels, bit_depth, {}};
         samples.bytes.resize(static_cast<size_t>(97 * 61 * channels * bit_depth / 8));

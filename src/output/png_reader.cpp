@@ -1,56 +1,99 @@
 #include <png.h>
 
+#include <csetjmp>
+#include <cstring>
+
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "output/encoders.hpp"
 
 namespace facet {
 
 namespace {
 
-// The rest of a read once libpng has the header: `path` names the file in errors.
-DecodedPng finish_reading(png_image& image, const std::string& path) {
-    DecodedPng out;
-    out.width = static_cast<int>(image.width);
-    out.height = static_cast<int>(image.height);
-    const bool sixteen = (image.format & PNG_FORMAT_FLAG_LINEAR) != 0;
-    const bool colour = (image.format & PNG_FORMAT_FLAG_COLOR) != 0;
-    const bool alpha = (image.format & PNG_FORMAT_FLAG_ALPHA) != 0;
-    out.channels = (colour ? 3 : 1) + (alpha ? 1 : 0);
-    out.bit_depth = sixteen ? 16 : 8;
-    // Ask for the file's own layout, so values are not converted.
-    image.format = (colour ? PNG_FORMAT_FLAG_COLOR : 0) | (alpha ? PNG_FORMAT_FLAG_ALPHA : 0) |
-                   (sixteen ? PNG_FORMAT_FLAG_LINEAR : 0);
-    const size_t count = static_cast<size_t>(out.width) * out.height * out.channels;
-    if (sixteen) {
-        out.samples.resize(count);
-        if (!png_image_finish_read(&image, nullptr, out.samples.data(), 0, nullptr))
-            throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
-    } else {
-        std::vector<uint8_t> bytes(count);
-        if (!png_image_finish_read(&image, nullptr, bytes.data(), 0, nullptr))
-            throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
-        out.samples.assign(bytes.begin(), bytes.end());
-    }
-    png_image_free(&image);
-    return out;
+// libpng's classic reader, not its simplified one: the simplified reader
+// treats 16-bit samples as linear light, so it converts sRGB-tagged files
+// and premultiplies colour by alpha. A compare must see the stored values.
+struct PngSource {
+    std::span<const uint8_t> bytes;
+    size_t offset = 0;
+    char message[200] = "";
+};
+
+void read_from_memory(png_structp png, png_bytep out, png_size_t count) {
+    auto* source = static_cast<PngSource*>(png_get_io_ptr(png));
+    if (count > source->bytes.size() - source->offset) png_error(png, "the file ends early");
+    std::memcpy(out, source->bytes.data() + source->offset, count);
+    source->offset += count;
+}
+
+void on_png_error(png_structp png, png_const_charp message) {
+    auto* source = static_cast<PngSource*>(png_get_error_ptr(png));
+    std::strncpy(source->message, message, sizeof source->message - 1);
+    png_longjmp(png, 1);
+}
+
+void on_png_warning(png_structp, png_const_charp) {}
+
+// Buffers that outlive a longjmp: C++ allows one only past objects with
+// trivial destructors, so decode_rows keeps none of its own.
+struct PngRows {
+    std::vector<uint8_t> bytes;
+    std::vector<png_bytep> pointers;
+};
+
+// Expands palettes, low-bit grey and tRNS to whole 8-bit channels and
+// keeps 16-bit samples as stored; false when libpng reports an error.
+bool decode_rows(png_structp png, png_infop info, DecodedPng& out, PngRows& rows) {
+    if (setjmp(png_jmpbuf(png))) return false;
+    png_read_info(png, info);
+    png_set_expand(png);
+    png_set_interlace_handling(png);
+    png_read_update_info(png, info);
+    out.width = static_cast<int>(png_get_image_width(png, info));
+    out.height = static_cast<int>(png_get_image_height(png, info));
+    out.channels = png_get_channels(png, info);
+    out.bit_depth = png_get_bit_depth(png, info);
+    const size_t row_bytes = png_get_rowbytes(png, info);
+    rows.bytes.resize(row_bytes * static_cast<size_t>(out.height));
+    rows.pointers.resize(static_cast<size_t>(out.height));
+    for (size_t y = 0; y < rows.pointers.size(); ++y)
+        rows.pointers[y] = rows.bytes.data() + y * row_bytes;
+    png_read_image(png, rows.pointers.data());
+    png_read_end(png, nullptr);
+    return true;
 }
 
 }  // namespace
 
-DecodedPng read_png(const std::string& path) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_file(&image, path.c_str()))
-        throw Error(ExitCode::invalid_input, path + ": cannot read PNG: " + image.message);
-    return finish_reading(image, path);
+DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what) {
+    PngSource source{bytes};
+    png_structp png =
+        png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, on_png_error, on_png_warning);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+        png_destroy_read_struct(&png, nullptr, nullptr);
+        throw Error(ExitCode::io_failure, what + ": cannot read PNG: out of memory");
+    }
+    png_set_read_fn(png, &source, read_from_memory);
+    DecodedPng out;
+    PngRows rows;
+    const bool read = decode_rows(png, info, out, rows);
+    png_destroy_read_struct(&png, &info, nullptr);
+    if (!read)
+        throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + source.message);
+    const size_t count = static_cast<size_t>(out.width) * out.height * out.channels;
+    out.samples.resize(count);
+    if (out.bit_depth == 16)
+        for (size_t i = 0; i < count; ++i)
+            out.samples[i] = static_cast<uint16_t>(rows.bytes[2 * i] << 8 | rows.bytes[2 * i + 1]);
+    else
+        out.samples.assign(rows.bytes.begin(), rows.bytes.end());
+    return out;
 }
 
-DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what) {
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    if (!png_image_begin_read_from_memory(&image, bytes.data(), bytes.size()))
-        throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + image.message);
-    return finish_reading(image, what);
+DecodedPng read_png(const std::string& path) {
+    return decode_png(read_input_file(path, "PNG"), path);
 }
 
 }  // namespace facet
