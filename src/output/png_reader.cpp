@@ -80,8 +80,7 @@ DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what) {
     PngRows rows;
     const bool read = decode_rows(png, info, out, rows);
     png_destroy_read_struct(&png, &info, nullptr);
-    if (!read)
-        throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + source.message);
+    if (!read) throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + source.message);
     const size_t count = static_cast<size_t>(out.width) * out.height * out.channels;
     out.samples.resize(count);
     if (out.bit_depth == 16)
