@@ -110,6 +110,20 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
 #endif
 }
 
+// Bit i set where byte i of the 16 bytes at `a` equals byte i of the 16 at
+// `b` (unaligned): the deflate coder's search for repeated bytes.
+[[gnu::always_inline]] inline unsigned equal_bytes16(const uint8_t* a, const uint8_t* b) {
+#if FACET_SIMD_SSE2
+    const __m128i x = _mm_loadu_si128(reinterpret_cast<const __m128i*>(a));
+    const __m128i y = _mm_loadu_si128(reinterpret_cast<const __m128i*>(b));
+    return static_cast<unsigned>(_mm_movemask_epi8(_mm_cmpeq_epi8(x, y)));
+#else
+    unsigned mask = 0;
+    for (int i = 0; i < 16; ++i) mask |= (a[i] == b[i] ? 1u : 0u) << i;
+    return mask;
+#endif
+}
+
 // Orders the streaming stores before whatever follows (another thread
 // reading the buffer); without them there is nothing to order.
 [[gnu::always_inline]] inline void streaming_stores_done() {

@@ -38,8 +38,13 @@ constexpr int kExrDeflateLevel = 1;
 int64_t write_to_memory(exr_const_context_t, void* userdata, const void* buffer, uint64_t size,
                         uint64_t offset, exr_stream_error_func_ptr_t) {
     auto* out = static_cast<std::vector<uint8_t>*>(userdata);
+    const auto* bytes = static_cast<const uint8_t*>(buffer);
+    if (offset == out->size()) {  // the usual case: appended, not zeroed first
+        out->insert(out->end(), bytes, bytes + size);
+        return static_cast<int64_t>(size);
+    }
     if (offset + size > out->size()) out->resize(offset + size);
-    std::memcpy(out->data() + offset, buffer, size);
+    std::memcpy(out->data() + offset, bytes, size);
     return static_cast<int64_t>(size);
 }
 
@@ -129,7 +134,16 @@ std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> c
     if (compression != ExrCompression::zip && compression != ExrCompression::zips &&
         compression != ExrCompression::none)
         return encode_exr_with_library(width, height, channels, attributes, compression);
+    // Room for the whole file at once: a chunk is never stored larger than
+    // its raw bytes, and growing a 16 MB buffer step by step cost more than
+    // the writing (copies, and the kernel clearing each fresh page).
+    size_t raw_bytes = 0, header_bytes = 4096;
+    for (const ExrChannel& c : channels)
+        raw_bytes += sample_bytes(c.type) * static_cast<size_t>(width) * height;
+    for (const ExrAttribute& a : attributes) header_bytes += a.name.size() + a.value.size() + 32;
+    const size_t chunk_count = static_cast<size_t>(height) / scanlines_per_chunk(compression) + 1;
     std::vector<uint8_t> file;
+    file.reserve(header_bytes + raw_bytes + chunk_count * 16);
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = &file;
     init.write_fn = write_to_memory;

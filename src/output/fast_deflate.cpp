@@ -11,7 +11,8 @@
 #include <array>
 #include <cstring>
 #include <memory>
-#include <queue>
+
+#include "core/simd_math.hpp"
 
 namespace facet {
 namespace {
@@ -35,34 +36,39 @@ constexpr std::array<uint8_t, 29> kLengthExtra = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 
 constexpr std::array<uint8_t, 19> kCodeLengthOrder = {16, 17, 18, 0, 8,  7, 9,  6, 10, 5,
                                                       11, 4,  12, 3, 13, 2, 14, 1, 15};
 
-// The length symbol (0-based, from 257) of a copy of `length` bytes.
+// The length symbol (0-based, from 257) of a copy of each length 3..258.
+constexpr std::array<uint8_t, 259> kLengthSlot = [] {
+    std::array<uint8_t, 259> slots{};
+    for (size_t length = 3, slot = 0; length <= 258; ++length) {
+        while (slot + 1 < kLengthBase.size() && kLengthBase[slot + 1] <= length) ++slot;
+        slots[length] = static_cast<uint8_t>(slot);
+    }
+    return slots;
+}();
 int length_slot(size_t length) {
-    int slot = 0;
-    while (slot + 1 < 29 && kLengthBase[slot + 1] <= length) ++slot;
-    return slot;
+    return kLengthSlot[length];
 }
 
 // Bits go out least significant first, as deflate packs them, into a
-// buffer the caller sized for the worst case.
+// buffer the caller sized for the worst case plus kBitWriterSlack bytes:
+// each put stores eight bytes and keeps fewer than eight bits back, so it
+// takes up to 56 bits with no branch.
+constexpr size_t kBitWriterSlack = 8;
 class BitWriter {
   public:
     explicit BitWriter(uint8_t* out) : start_(out), at_(out) {}
-    void put(uint32_t bits, int count) {
-        buffer_ |= static_cast<uint64_t>(bits) << filled_;
+    void put(uint64_t bits, int count) {
+        buffer_ |= bits << filled_;
         filled_ += count;
-        if (filled_ >= 32) {
-            for (int i = 0; i < 4; ++i) at_[i] = static_cast<uint8_t>(buffer_ >> (8 * i));
-            at_ += 4;
-            buffer_ >>= 32;
-            filled_ -= 32;
-        }
+        std::memcpy(at_, &buffer_, 8);  // little-endian: the first bits first
+        at_ += filled_ >> 3;
+        buffer_ >>= filled_ & ~7;
+        filled_ &= 7;
     }
     // Pads with zero bits to the next byte; the bytes written.
     size_t flush() {
-        for (; filled_ > 0; filled_ -= 8) {
-            *at_++ = static_cast<uint8_t>(buffer_);
-            buffer_ >>= 8;
-        }
+        if (filled_ > 0) *at_++ = static_cast<uint8_t>(buffer_);
+        buffer_ = 0;
         filled_ = 0;
         return static_cast<size_t>(at_ - start_);
     }
@@ -76,24 +82,42 @@ class BitWriter {
 
 // Huffman code lengths for `freq` (at least two symbols used), none longer
 // than `limit`: a Huffman tree, with the counts halved and rebuilt while
-// it is too deep. Ties break on the node's index, so the lengths depend
-// only on the counts.
+// it is too deep. The tree is built with two queues (van Leeuwen, 1976):
+// the leaves sorted by (count, symbol), and the inner nodes, which are
+// made in order of weight. Taking the smaller front by (weight, index),
+// inner nodes numbered from N on, joins the same pairs as a priority
+// queue would, without a heap; the lengths depend only on the counts.
 template <size_t N>
 std::array<uint8_t, N> code_lengths(std::array<uint32_t, N> freq, int limit) {
     for (;;) {
-        using Node = std::pair<uint64_t, int>;  // weight, index
-        std::priority_queue<Node, std::vector<Node>, std::greater<>> queue;
-        std::vector<int> parent(2 * N, -1);
-        int next = static_cast<int>(N);
+        std::array<uint16_t, N> leaves;
+        size_t leaf_count = 0;
         for (size_t s = 0; s < N; ++s)
-            if (freq[s]) queue.push({freq[s], static_cast<int>(s)});
-        while (queue.size() > 1) {
-            const Node a = queue.top();
-            queue.pop();
-            const Node b = queue.top();
-            queue.pop();
-            parent[static_cast<size_t>(a.second)] = parent[static_cast<size_t>(b.second)] = next;
-            queue.push({a.first + b.first, next++});
+            if (freq[s]) leaves[leaf_count++] = static_cast<uint16_t>(s);
+        std::sort(leaves.begin(), leaves.begin() + leaf_count, [&](uint16_t a, uint16_t b) {
+            return freq[a] != freq[b] ? freq[a] < freq[b] : a < b;
+        });
+        std::array<uint64_t, N> inner_weight;
+        std::array<int, 2 * N> parent;
+        parent.fill(-1);
+        size_t next_leaf = 0, next_inner = 0, inner_count = 0;
+        // The lighter front of the two queues, as (weight, node index).
+        auto take = [&]() -> std::pair<uint64_t, int> {
+            const bool leaf =
+                next_leaf < leaf_count &&
+                (next_inner == inner_count || freq[leaves[next_leaf]] <= inner_weight[next_inner]);
+            if (leaf) {
+                const uint16_t symbol = leaves[next_leaf++];
+                return {freq[symbol], symbol};
+            }
+            const size_t i = next_inner++;
+            return {inner_weight[i], static_cast<int>(N + i)};
+        };
+        for (size_t joined = 1; joined < leaf_count; ++joined) {
+            const auto a = take(), b = take();
+            parent[static_cast<size_t>(a.second)] = parent[static_cast<size_t>(b.second)] =
+                static_cast<int>(N + inner_count);
+            inner_weight[inner_count++] = a.first + b.first;
         }
         std::array<uint8_t, N> lengths{};
         int deepest = 0;
@@ -171,18 +195,41 @@ struct Run {
     size_t start, length;
 };
 
+// Which of the 16 bytes from `at` on equal the byte `distance` before
+// each, one bit each; `at` >= `distance`, and 16 bytes from `at` readable.
+unsigned repeat_mask16(const uint8_t* data, size_t at, size_t distance) {
+    return simd::equal_bytes16(data + at, data + at - distance);
+}
+
 // How many bytes from `at` on repeat the bytes `distance` before them, up to `end`.
 size_t run_length(const uint8_t* data, size_t at, size_t end, size_t distance) {
     size_t n = 0;
-    while (at + n + 8 <= end) {
-        uint64_t here, back;
-        std::memcpy(&here, data + at + n, 8);
-        std::memcpy(&back, data + at + n - distance, 8);
-        if (here != back) break;
-        n += 8;
+    while (at + n + 16 <= end) {
+        const unsigned mask = repeat_mask16(data, at + n, distance);
+        if (mask != 0xffff) return n + static_cast<size_t>(__builtin_ctz(~mask));
+        n += 16;
     }
     while (at + n < end && data[at + n] == data[at + n - distance]) ++n;
     return n;
+}
+
+// The first position in [at, end) where kMinRun bytes in a row repeat the
+// bytes `distance` before them, or `end`. Sixteen positions a step: most
+// of a rendered image's bytes are literals, and a test per byte
+// mispredicted often enough to be the coder's largest cost.
+size_t next_run_start(const uint8_t* data, size_t at, size_t end, size_t distance) {
+    static_assert(kMinRun == 4, "the masks below test four positions in a row");
+    at = std::max(at, distance);
+    // Two masks give 32 positions; a run can start at the first 29 of them.
+    for (; at + 32 <= end; at += 29) {
+        const unsigned m =
+            repeat_mask16(data, at, distance) | repeat_mask16(data, at + 16, distance) << 16;
+        const unsigned starts = m & m >> 1 & m >> 2 & m >> 3 & 0x1fffffffu;
+        if (starts) return at + static_cast<size_t>(__builtin_ctz(starts));
+    }
+    for (; at + kMinRun <= end; ++at)
+        if (run_length(data, at, at + kMinRun, distance) == kMinRun) return at;
+    return end;
 }
 
 // The bytes a run leaves over after its copies: none, or one or two
@@ -195,25 +242,20 @@ size_t run_leftover(size_t length) {
 // Counts the literals and copies of data[begin, end) and finds its runs.
 void count_block(const uint8_t* data, size_t begin, size_t end, size_t distance,
                  std::vector<Run>& runs, std::array<uint32_t, kLiteralSymbols>& freq) {
-    size_t i = begin;
-    while (i < end) {
-        if (i >= distance && i + kMinRun <= end && data[i] == data[i - distance]) {
-            const size_t n = run_length(data, i, end, distance);
-            if (n >= kMinRun) {
-                runs.push_back({i, n});
-                const size_t leftover = run_leftover(n);
-                for (size_t left = n - leftover; left > 0;) {
-                    const size_t copy = std::min(left, kMaxCopy);
-                    ++freq[static_cast<size_t>(257 + length_slot(copy))];
-                    left -= copy;
-                }
-                for (size_t k = i + n - leftover; k < i + n; ++k) ++freq[data[k]];
-                i += n;
-                continue;
-            }
+    for (size_t i = begin; i < end;) {
+        const size_t start = next_run_start(data, i, end, distance);
+        for (; i < start; ++i) ++freq[data[i]];
+        if (start == end) break;
+        const size_t n = run_length(data, start, end, distance);
+        runs.push_back({start, n});
+        const size_t leftover = run_leftover(n);
+        for (size_t left = n - leftover; left > 0;) {
+            const size_t copy = std::min(left, kMaxCopy);
+            ++freq[static_cast<size_t>(257 + length_slot(copy))];
+            left -= copy;
         }
-        ++freq[data[i]];
-        ++i;
+        for (size_t k = start + n - leftover; k < start + n; ++k) ++freq[data[k]];
+        i = start + n;
     }
 }
 
@@ -276,17 +318,20 @@ BlockCodes write_block_header(BitWriter& bits, std::array<uint32_t, kLiteralSymb
     return codes;
 }
 
-// Two literals at a time (at most 30 bits), one table load each: the
+// Three literals at a time (at most 45 bits), one table load each: the
 // hottest loop, as most bytes of an image's busy parts are literals.
 void write_literals(BitWriter& bits, const std::array<uint32_t, 256>& code_and_length,
                     const uint8_t* data, size_t begin, size_t end) {
     size_t i = begin;
-    for (; i + 2 <= end; i += 2) {
-        const uint32_t a = code_and_length[data[i]], b = code_and_length[data[i + 1]];
-        const int a_bits = static_cast<int>(a >> 16);
-        bits.put((a & 0xffff) | (b & 0xffff) << a_bits, a_bits + static_cast<int>(b >> 16));
+    for (; i + 3 <= end; i += 3) {
+        const uint32_t a = code_and_length[data[i]], b = code_and_length[data[i + 1]],
+                       c = code_and_length[data[i + 2]];
+        const int a_bits = static_cast<int>(a >> 16), b_bits = static_cast<int>(b >> 16);
+        bits.put(uint64_t{a & 0xffff} | uint64_t{b & 0xffff} << a_bits |
+                     uint64_t{c & 0xffff} << (a_bits + b_bits),
+                 a_bits + b_bits + static_cast<int>(c >> 16));
     }
-    if (i < end)
+    for (; i < end; ++i)
         bits.put(code_and_length[data[i]] & 0xffff,
                  static_cast<int>(code_and_length[data[i]] >> 16));
 }
@@ -312,11 +357,16 @@ void write_run(BitWriter& bits, const BlockCodes& c, const uint8_t* data, const 
         const size_t copy = std::min(left, kMaxCopy);
         const int slot = length_slot(copy);
         const size_t symbol = static_cast<size_t>(257 + slot);
-        bits.put(c.codes[symbol], c.lengths[symbol]);
-        bits.put(static_cast<uint32_t>(copy - kLengthBase[static_cast<size_t>(slot)]),
-                 kLengthExtra[static_cast<size_t>(slot)]);
-        bits.put(distance.symbol == 0 ? 0 : 1, 1);
-        bits.put(distance.extra, distance.extra_bits);
+        // Length code, its extra bits, distance code and its extra bit: at
+        // most 15 + 5 + 1 + 1 bits, in one put.
+        uint64_t word = c.codes[symbol];
+        int count = c.lengths[symbol];
+        word |= uint64_t{copy - kLengthBase[static_cast<size_t>(slot)]} << count;
+        count += kLengthExtra[static_cast<size_t>(slot)];
+        word |= uint64_t{distance.symbol == 0 ? 0u : 1u} << count;
+        count += 1;
+        word |= uint64_t{distance.extra} << count;
+        bits.put(word, count + distance.extra_bits);
         left -= copy;
     }
     for (size_t k = run.start + run.length - leftover; k < run.start + run.length; ++k)
@@ -332,7 +382,7 @@ void zlib_compress_runs(const uint8_t* data, size_t size, size_t distance,
     // No code is longer than 15 bits and a copy's bits are fewer than its
     // bytes', so a block takes at most 15/8 of its bytes plus its header.
     const size_t blocks = size / kBlockBytes + 1;
-    const size_t bound = size / 8 * 15 + 15 + blocks * kMaxHeaderBytes;
+    const size_t bound = size / 8 * 15 + 15 + blocks * kMaxHeaderBytes + kBitWriterSlack;
     const std::unique_ptr<uint8_t[]> scratch(new uint8_t[bound]);  // not cleared: written first
     BitWriter bits(scratch.get());
     std::vector<Run> runs;

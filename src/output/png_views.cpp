@@ -4,9 +4,11 @@
 // not values to read back (the EXR files hold those).
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include "core/display_transform.hpp"
 #include "core/integer_hash.hpp"
+#include "core/simd_math.hpp"
 #include "output/encoders.hpp"
 
 namespace facet {
@@ -52,6 +54,24 @@ inline uint16_t unit_to_u16(float v) {
     if (!(v > 0.0f)) return 0;  // also NaN
     if (v >= 1.0f) return 65535;
     return static_cast<uint16_t>(v * 65535.0f + 0.5f);
+}
+
+// Eight depths as png_depth_samples writes them: unit_to_u16 of
+// (far - d) / span with selects for its branches, the same IEEE operations
+// lane by lane, so the same values; infinity (background) gives 0.
+void depth_to_png_lanes(const float* depth, float far, float span, uint8_t* out) {
+    simd::vf d;
+    std::memcpy(&d, depth, sizeof d);
+    const simd::vf t = (simd::splat(far) - d) / simd::splat(span);
+    simd::vf unit = simd::vmax(t, simd::splat(0.0f));  // NaN gives 0
+    unit = simd::vmin(unit, simd::splat(1.0f));
+    const simd::vi infinite = ((simd::vi)d & simd::splat_i(0x7fffffff)) == 0x7f800000;
+    unit = (simd::vf)((simd::vi)unit & ~infinite);
+    const simd::vi v =
+        __builtin_convertvector(unit * simd::splat(65535.0f) + simd::splat(0.5f), simd::vi);
+    const simd::vi big_endian = (v >> 8 & 0xff) | (v & 0xff) << 8;  // as PNG stores samples
+    const simd::vh samples = __builtin_convertvector(big_endian, simd::vh);
+    std::memcpy(out, &samples, sizeof samples);
 }
 
 // Room for `width` x `height` pixels of `channels` samples each, for the
@@ -147,11 +167,16 @@ PngSamples png_color_samples(const HalfColorImage& image) {
 PngSamples png_depth_samples(const DepthImage& depth, glm::vec2 range) {
     PngSamples samples = blank_samples(depth.width, depth.height, 1, 16);
     const float span = range.y - range.x;
-    for (size_t i = 0; i < depth.pixels.size(); ++i) {
+    uint8_t* out = samples.bytes.data();
+    const size_t count = depth.pixels.size();
+    size_t i = 0;
+    for (; i + simd::kLanes <= count; i += simd::kLanes)
+        depth_to_png_lanes(depth.pixels.data() + i, range.y, span, out + 2 * i);
+    for (; i < count; ++i) {
         const float d = depth.pixels[i];
         const uint16_t v = std::isinf(d) ? 0 : unit_to_u16((range.y - d) / span);
-        samples.bytes[2 * i] = static_cast<uint8_t>(v >> 8);  // PNG samples are big-endian
-        samples.bytes[2 * i + 1] = static_cast<uint8_t>(v);
+        out[2 * i] = static_cast<uint8_t>(v >> 8);  // PNG samples are big-endian
+        out[2 * i + 1] = static_cast<uint8_t>(v);
     }
     return samples;
 }
