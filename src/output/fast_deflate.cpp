@@ -239,12 +239,31 @@ size_t run_leftover(size_t length) {
     return tail < 3 ? tail : 0;
 }
 
+// Byte counts kept in four tables, each byte's table by its position:
+// with one, a byte equal to the one before waits for that one's count to
+// be stored, and images have many such bytes.
+struct ByteCounts {
+    std::array<std::array<uint32_t, 256>, 4> tables{};
+    void add(const uint8_t* data, size_t begin, size_t end) {
+        size_t i = begin;
+        for (; i + 4 <= end; i += 4)
+            for (size_t t = 0; t < 4; ++t) ++tables[t][data[i + t]];
+        for (; i < end; ++i) ++tables[0][data[i]];
+    }
+    void add_to(std::array<uint32_t, kLiteralSymbols>& freq) const {
+        for (const auto& table : tables)
+            for (size_t b = 0; b < 256; ++b) freq[b] += table[b];
+    }
+};
+
 // Counts the literals and copies of data[begin, end) and finds its runs.
 void count_block(const uint8_t* data, size_t begin, size_t end, size_t distance,
                  std::vector<Run>& runs, std::array<uint32_t, kLiteralSymbols>& freq) {
+    ByteCounts literals;
     for (size_t i = begin; i < end;) {
         const size_t start = next_run_start(data, i, end, distance);
-        for (; i < start; ++i) ++freq[data[i]];
+        literals.add(data, i, start);
+        i = start;
         if (start == end) break;
         const size_t n = run_length(data, start, end, distance);
         runs.push_back({start, n});
@@ -254,9 +273,10 @@ void count_block(const uint8_t* data, size_t begin, size_t end, size_t distance,
             ++freq[static_cast<size_t>(257 + length_slot(copy))];
             left -= copy;
         }
-        for (size_t k = start + n - leftover; k < start + n; ++k) ++freq[data[k]];
+        literals.add(data, start + n - leftover, start + n);
         i = start + n;
     }
+    literals.add_to(freq);
 }
 
 }  // namespace
