@@ -298,7 +298,7 @@ std::string direct_light_glsl(const std::vector<LightKind>& kinds, int shadow_in
                 flag(kinds[i].point) + ", " + flag(kinds[i].ranged) + ", " + flag(kinds[i].spot) +
                 ", l);\n";
         if (static_cast<int>(i) == shadow_index)
-            glsl += "    if (dot(s.n, l) > 0.0) radiance *= shadow(s.position);\n";
+            glsl += "    if (dot(s.n, l) > 0.0) radiance *= shadow(s.position, s.n);\n";
         glsl += "    sum += kPi * radiance * light_response(s, l);\n";
     }
     return glsl + "    return sum;\n}\n";

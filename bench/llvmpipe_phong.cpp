@@ -1,5 +1,7 @@
 #include "llvmpipe_phong.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -26,16 +28,42 @@ uniform float u_shadow_texel;
 #define SHADOW_TEXEL u_shadow_texel
 #endif
 uniform sampler2DShadow u_shadow_map;
-uniform mat4 u_shadow_matrix;  // world -> shadow map [0, 1]^3
-float shadow(vec3 p) {
-    vec4 s = u_shadow_matrix * vec4(p, 1.0);
-    // Four bilinear comparisons round the point: a 4 x 4 texel filter.
-    float d = SHADOW_TEXEL;
-    return 0.25 * (shadow2D(u_shadow_map, s.xyz + vec3(-d, -d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(d, -d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(-d, d, 0.0)).r +
-                   shadow2D(u_shadow_map, s.xyz + vec3(d, d, 0.0)).r);
+uniform mat4 u_shadow_matrix;   // world -> shadow map [0, 1]^3
+uniform mat3 u_shadow_view;     // world -> the sun's view: x right, y up, z towards the sun
+uniform vec2 u_shadow_offsets;  // normal offset (scene units), depth bias (map depth units)
+// facet's lookup (shade/shadow_map.cpp) with the GL's comparisons: the
+// point moved off the surface along its unit normal n by a texel times
+// sin(angle to the sun), a depth bias of half a texel plus half a texel
+// per unit of the receiver's slope, and facet's box filter of SHADOW_TAPS
+// texels a side as that many bilinear comparisons a side, SHADOW_STEP
+// texels apart, each against the receiver's plane at its centre (facet's
+// plane is per texel).
+float shadow(vec3 p, vec3 n) {
+    vec3 nv = u_shadow_view * n;
+    float sin_light = sqrt(max(0.0, 1.0 - nv.z * nv.z));
+    vec4 s = u_shadow_matrix * vec4(p + n * (u_shadow_offsets.x * sin_light), 1.0);
+    vec2 slope = clamp(nv.xy / max(nv.z, 1e-6), -10.0, 10.0);
+    // The map's depth per tap step along the receiver's plane.
+    vec2 step_depth = slope * (u_shadow_offsets.y * SHADOW_STEP);
+    float depth = s.z - u_shadow_offsets.y * (0.5 + 0.5 * max(abs(slope.x), abs(slope.y)));
+    float lit = 0.0;
+    for (int j = 0; j < SHADOW_TAPS; ++j)
+        for (int i = 0; i < SHADOW_TAPS; ++i) {
+            vec2 k = vec2(float(i), float(j)) - 0.5 * float(SHADOW_TAPS - 1);
+            lit += shadow2D(u_shadow_map, vec3(s.xy + k * (SHADOW_STEP * SHADOW_TEXEL),
+                                               depth + dot(k, step_depth))).r;
+        }
+    return lit * (1.0 / float(SHADOW_TAPS * SHADOW_TAPS));
 }
+#ifdef GOURAUD
+// Gouraud looks shadows up per pixel, as facet does (render/shade_batch.cpp):
+// the vertices are lit without them, and light_point keeps the shadow
+// light's direct diffuse and highlight here for the pixels to take out.
+vec3 g_direct_diffuse, g_direct_specular;
+#endif
+#ifndef SHADOW_TO_LIGHT
+#define SHADOW_TO_LIGHT u_light_pos[u_shadow_light].xyz
+#endif
 #endif
 // Light i arriving at p, and l towards it. The general program passes the
 // kind flags from uniforms; the others pass constants.
@@ -72,16 +100,21 @@ uniform vec4 u_terms;  // ambient, diffuse, specular, shininess
 void light_point(vec3 p, vec3 n, vec3 to_eye, out vec3 diffuse, out vec3 specular) {
     diffuse = u_terms.x * u_ambient_light;
     specular = vec3(0.0);
+#if defined(SHADOWS) && defined(GOURAUD)
+    g_direct_diffuse = vec3(0.0);
+    g_direct_specular = vec3(0.0);
+#endif
     for (int i = 0; i < u_light_count; ++i) {
         vec3 l;
         vec3 radiance =
             light_arriving(i, p, u_light_pos[i].w > 0.5, u_light_axis[i].w > 0.0, true, l);
         float n_dot_l = dot(n, l);
         if (n_dot_l <= 0.0) continue;
-#ifdef SHADOWS
-        if (i == u_shadow_light) radiance *= shadow(p);
+#if defined(SHADOWS) && !defined(GOURAUD)
+        if (i == u_shadow_light) radiance *= shadow(p, n);
 #endif
-        diffuse += u_terms.y * n_dot_l * radiance;
+        vec3 d = u_terms.y * n_dot_l * radiance;
+        diffuse += d;
         float cosine;
         if (PHONG) {
             cosine = dot(2.0 * n_dot_l * n - l, to_eye);
@@ -90,8 +123,13 @@ void light_point(vec3 p, vec3 n, vec3 to_eye, out vec3 diffuse, out vec3 specula
             float hl = length(h);
             cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;
         }
+        vec3 highlight = vec3(0.0);
         if (cosine > 0.0 && u_terms.z > 0.0)
-            specular += u_terms.z * pow(min(cosine, 1.0), u_terms.w) * radiance;
+            highlight = u_terms.z * pow(min(cosine, 1.0), u_terms.w) * radiance;
+        specular += highlight;
+#if defined(SHADOWS) && defined(GOURAUD)
+        if (i == u_shadow_light) g_direct_diffuse = d, g_direct_specular = highlight;
+#endif
     }
 }
 )";
@@ -102,6 +140,13 @@ uniform vec3 u_albedo;
 uniform vec2 u_uv_scale;
 #define ALBEDO u_albedo
 #define UV_SCALE u_uv_scale
+#ifdef FADE
+uniform vec2 u_fade;  // start and end; far beyond every point where the material does not fade
+uniform vec3 u_background;
+#define FADE_START u_fade.x
+#define FADE_END u_fade.y
+#define BACKGROUND u_background
+#endif
 )";
 
 const char* kFragmentShader = R"(
@@ -111,6 +156,13 @@ in vec2 v_uv;
 #ifdef GOURAUD
 in vec3 v_diffuse;
 in vec3 v_specular;
+#ifdef SHADOWS
+in vec3 v_direct_diffuse;
+in vec3 v_direct_specular;
+#endif
+#endif
+#ifdef FADE
+in vec3 v_model;
 #endif
 uniform vec3 u_eye;
 #ifdef TEXTURED
@@ -125,7 +177,20 @@ void main() {
 #if defined(UNLIT)
     frag_color = vec4(albedo, 1.0);
 #elif defined(GOURAUD)
-    frag_color = vec4(albedo * v_diffuse + v_specular, 1.0);
+    vec3 diffuse = v_diffuse, specular = v_specular;
+#ifdef SHADOWS
+    // facet's share: where the sun reaches the pixel's normal (turned to the
+    // viewer), its direct light less what the pixel's lookup finds blocked.
+    float len = length(v_normal);
+    vec3 n = len > 0.0 ? v_normal / len : vec3(0.0, 1.0, 0.0);
+#ifdef TWO_SIDED
+    if (!gl_FrontFacing) n = -n;
+#endif
+    float blocked = dot(n, SHADOW_TO_LIGHT) > 0.0 ? 1.0 - shadow(v_world, n) : 0.0;
+    diffuse -= blocked * v_direct_diffuse;
+    specular -= blocked * v_direct_specular;
+#endif
+    frag_color = vec4(albedo * diffuse + specular, 1.0);
 #else
     float len = length(v_normal);
     vec3 n = len > 0.0 ? v_normal / len : vec3(0.0, 1.0, 0.0);
@@ -135,6 +200,10 @@ void main() {
     vec3 diffuse, specular;
     light_point(v_world, n, normalize(u_eye - v_world), diffuse, specular);
     frag_color = vec4(albedo * diffuse + specular, 1.0);
+#endif
+#ifdef FADE  // into the background by the distance from the object's origin, as facet's fade
+    float kept = 1.0 - smoothstep(FADE_START, FADE_END, length(v_model));
+    frag_color.rgb = BACKGROUND + (frag_color.rgb - BACKGROUND) * kept;
 #endif
 }
 )";
@@ -213,20 +282,31 @@ std::string specialised_light_point(facet::ShadingModel model, const SceneLighti
         "specular) {\n    diffuse = " +
         literal(m.ambient) + " * " + ambient +
         ";\n    specular = vec3(0.0);\n    vec3 l, radiance;\n    float n_dot_l;\n";
+    // Gouraud: shadows per pixel (see the fragment shader).
+    const bool gouraud = model == facet::ShadingModel::gouraud;
+    if (gouraud && lighting.shadow_index >= 0)
+        g += "    g_direct_diffuse = vec3(0.0);\n    g_direct_specular = vec3(0.0);\n";
     for (size_t i = 0; i < lighting.lights.size(); ++i) {
         g += arrival_glsl(lighting, i);
         g += "    n_dot_l = dot(n, l);\n    if (n_dot_l > 0.0) {\n";
-        if (static_cast<int>(i) == lighting.shadow_index) g += "        radiance *= shadow(p);\n";
-        g += "        diffuse += " + literal(m.diffuse) + " * n_dot_l * radiance;\n";
+        const bool shadowed = static_cast<int>(i) == lighting.shadow_index;
+        if (shadowed && !gouraud) g += "        radiance *= shadow(p, n);\n";
+        g += "        vec3 d = " + literal(m.diffuse) + " * n_dot_l * radiance;\n";
+        g += "        diffuse += d;\n";
+        std::string highlight = "vec3(0.0)";
         if (m.specular > 0.0f) {
             if (model == facet::ShadingModel::phong)
                 g += "        float cosine = dot(2.0 * n_dot_l * n - l, to_eye);\n";
             else
                 g += "        vec3 h = l + to_eye;\n        float hl = length(h);\n"
                      "        float cosine = hl > 0.0 ? dot(n, h) / hl : 0.0;\n";
-            g += "        specular += cosine > 0.0 ? " + literal(m.specular) +
-                 " * pow(min(cosine, 1.0), " + literal(m.shininess) + ") * radiance : vec3(0.0);\n";
+            g += "        vec3 highlight = cosine > 0.0 ? " + literal(m.specular) +
+                 " * pow(min(cosine, 1.0), " + literal(m.shininess) +
+                 ") * radiance : vec3(0.0);\n        specular += highlight;\n";
+            highlight = "highlight";
         }
+        if (shadowed && gouraud)
+            g += "        g_direct_diffuse = d;\n        g_direct_specular = " + highlight + ";\n";
         g += "    }\n";
     }
     return g + "}\n";
@@ -248,6 +328,13 @@ out vec2 v_uv;
 #ifdef GOURAUD
 out vec3 v_diffuse;
 out vec3 v_specular;
+#ifdef SHADOWS
+out vec3 v_direct_diffuse;
+out vec3 v_direct_specular;
+#endif
+#endif
+#ifdef FADE
+out vec3 v_model;  // facet fades by the model-space position at rest
 #endif
 void main() {
     vec4 world = u_model * vec4(a_position, 1.0);
@@ -258,6 +345,13 @@ void main() {
     v_uv = a_uv;
 #ifdef GOURAUD
     light_point(v_world, v_normal, normalize(u_eye - v_world), v_diffuse, v_specular);
+#ifdef SHADOWS
+    v_direct_diffuse = g_direct_diffuse;
+    v_direct_specular = g_direct_specular;
+#endif
+#endif
+#ifdef FADE
+    v_model = a_position;
 #endif
     gl_Position = u_view_projection * world;
 }
@@ -297,7 +391,18 @@ SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& 
     // make_shade_lights keeps scene order for the lights that shine from
     // somewhere: the shadow light's index among them counts the non-ambient
     // scene lights before it.
+    const facet::FrameState first_frame =
+        facet::evaluate_frame(scene, world.object_bounds, scene.output.frames.front());
+    // As facet's frame inputs: premultiplied by its alpha.
+    const glm::vec4 bg = scene.style.background.value_or(scene.output.background);
+    lighting.background = glm::vec3(bg) * bg.a;
     if (shadow_light >= 0) {
+        // facet's box filter, 2 (softness + 1/2) texels a side, in as many
+        // bilinear taps a side, spread to its width.
+        const float width =
+            2.0f * first_frame.lights[static_cast<size_t>(shadow_light)].shadow_softness + 1.0f;
+        lighting.shadow_taps = std::max(1, static_cast<int>(std::lround(width)));
+        lighting.shadow_step = width / static_cast<float>(lighting.shadow_taps);
         lighting.shadow_index = 0;
         for (int i = 0; i < shadow_light; ++i)
             if (scene.lights[static_cast<size_t>(i)].type != facet::LightType::ambient)
@@ -306,10 +411,17 @@ SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& 
     return lighting;
 }
 
-ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows) {
+std::string shadow_filter_defines(const SceneLighting& lighting) {
+    return "#define SHADOW_TAPS " + std::to_string(lighting.shadow_taps) +
+           "\n#define SHADOW_STEP " + literal(lighting.shadow_step) + "\n";
+}
+
+ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows,
+                                    bool fade) {
     // Sidedness is the material's: the general program flips every back face.
     const std::string head = model_defines(model, textured, shadows) + "#define TWO_SIDED\n" +
-                             kLightUniformsGlsl + kGeneralLightLoopGlsl + kGeneralMaterialGlsl;
+                             (fade ? "#define FADE\n" : "") + kLightUniformsGlsl +
+                             kGeneralLightLoopGlsl + kGeneralMaterialGlsl;
     return {head + kPhongVertexShader, head + kFragmentShader};
 }
 
@@ -321,10 +433,21 @@ ShaderSources specialised_phong_program(facet::ShadingModel model, const SceneLi
     head += "#define ALBEDO " + literal(m.color) + "\n";
     head += "#define UV_SCALE vec2(" + literal(m.base_color_map.transform.linear[0].x) + ", " +
             literal(m.base_color_map.transform.linear[1].y) + ")\n";
+    if (m.fade_end > m.fade_start)
+        head += "#define FADE\n#define FADE_START " + literal(m.fade_start) +
+                "\n#define FADE_END " + literal(m.fade_end) + "\n#define BACKGROUND " +
+                literal(lighting.background) + "\n";
     if (model != facet::ShadingModel::unlit) {
-        if (shadows)
+        if (shadows) {
             head +=
                 "#define SHADOW_TEXEL " + literal(1.0f / static_cast<float>(shadow_size)) + "\n";
+            // The sun's direction: compiled in unless it moves.
+            const size_t sun = static_cast<size_t>(lighting.shadow_index);
+            head += "#define SHADOW_TO_LIGHT " +
+                    (lighting.moving[sun] ? "u_light_pos[" + std::to_string(sun) + "].xyz"
+                                          : literal(lighting.lights[sun].direction)) +
+                    "\n";
+        }
         head += kLightUniformsGlsl + specialised_light_point(model, lighting, m);
     }
     return {head + kPhongVertexShader, head + kFragmentShader};

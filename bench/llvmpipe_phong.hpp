@@ -40,6 +40,10 @@ struct SceneLighting {
     glm::vec3 ambient{1.0f};                // summed ambient lights, or white without any
     bool ambient_moving = false;
     int shadow_index = -1;  // among `lights`, the one with the shadow map, or -1
+    // The shadow filter's bilinear taps a side and their spacing in texels.
+    int shadow_taps = 1;
+    float shadow_step = 1.0f;
+    glm::vec3 background{0.0f};  // the first frame's, linear: what fading materials fade to
 };
 
 // Evaluates every frame of the scene. `shadow_light` is the scene light
@@ -52,8 +56,13 @@ struct ShaderSources {
     std::string vertex, fragment;
 };
 
-// The general program for a model, with or without a base colour texture.
-ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows);
+// SHADOW_TAPS and SHADOW_STEP, which kLightUniformsGlsl's shadow lookup reads.
+std::string shadow_filter_defines(const SceneLighting& lighting);
+
+// The general program for a model, with or without a base colour texture,
+// and with the fade when some material of the scene fades.
+ShaderSources general_phong_program(facet::ShadingModel model, bool textured, bool shadows,
+                                    bool fade);
 
 // The program for one material of the scene.
 ShaderSources specialised_phong_program(facet::ShadingModel model, const SceneLighting& lighting,

@@ -36,6 +36,7 @@
 #include "render/frame_renderer.hpp"
 #include "render/pose_stage.hpp"
 #include "render/shade_lights.hpp"
+#include "shade/shadow_map.hpp"
 
 namespace facet_bench {
 namespace {
@@ -123,7 +124,7 @@ struct Program {
     GLuint id = 0;
     GLint model, normal_matrix, view_projection, eye, albedo, uv_scale, terms, light_count,
         light_pos, light_axis, radiance, spot, ambient_light, shadow_light, shadow_map,
-        shadow_matrix, shadow_texel, texture;
+        shadow_matrix, shadow_texel, shadow_view, shadow_offsets, texture, fade, background;
 };
 
 Program make_program(const Gl& gl, const ShaderSources& sources) {
@@ -138,6 +139,8 @@ Program make_program(const Gl& gl, const ShaderSources& sources) {
     p.ambient_light = loc("u_ambient_light"), p.shadow_light = loc("u_shadow_light");
     p.shadow_map = loc("u_shadow_map"), p.shadow_matrix = loc("u_shadow_matrix");
     p.shadow_texel = loc("u_shadow_texel"), p.texture = loc("u_texture");
+    p.shadow_view = loc("u_shadow_view"), p.shadow_offsets = loc("u_shadow_offsets");
+    p.fade = loc("u_fade"), p.background = loc("u_background");
     return p;
 }
 
@@ -164,6 +167,7 @@ class Reference {
         make_targets();
         // The shadow map first: a specialised program compiles in its size.
         if (shadow_light_ >= 0) make_shadow_map();
+        lighting_ = scene_lighting(scene_, world_, shadow_light_);
         if (model_ == facet::ShadingModel::pbr) pbr_.emplace(gl_, scene, world, shadow_light_);
         if (specialised && !pbr_)
             make_specialised_programs();
@@ -184,6 +188,9 @@ class Reference {
         if (shadow_light_ >= 0) f += ", shadow map " + std::to_string(shadow_size_) + "^2";
         if (samples_ > 1) f += ", " + std::to_string(samples_) + "x MSAA";
         if (world_.deforms()) f += ", vertices posed and uploaded each frame";
+        if (scene_.style.occlusion.enabled)
+            f += "; not drawn: facet's ambient occlusion (style occlusion), so the check "
+                 "compares facet's frame without it";
         return f;
     }
 
@@ -222,6 +229,12 @@ class Reference {
                                                     m.base_color_map.transform.linear[1].y)));
             const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
             gl_.Uniform4fv(p.terms, 1, glm::value_ptr(terms));
+            // The general program's fade: beyond every point where none is asked for.
+            const bool fades = m.fade_end > m.fade_start;
+            const glm::vec2 fade =
+                fades ? glm::vec2(m.fade_start, m.fade_end) : glm::vec2(1e30f, 2e30f);
+            gl_.Uniform2fv(p.fade, 1, glm::value_ptr(fade));
+            gl_.Uniform3fv(p.background, 1, glm::value_ptr(lighting_.background));
             if (textured) {
                 gl_.ActiveTexture(GL_TEXTURE0);
                 glBindTexture(GL_TEXTURE_2D, textures_.at(m.base_color_map.texture.get()));
@@ -250,15 +263,20 @@ class Reference {
 
   private:
     void make_general_programs() {
+        bool fade = false;
+        for (const facet::Material& m : world_.materials) fade = fade || m.fade_end > m.fade_start;
+        const std::string filter = shadow_filter_defines(lighting_);
         for (bool textured : {false, true}) {
             const bool shadows = shadow_light_ >= 0;
             // The pbr port's fragment shader follows the light uniforms.
             const std::string pbr_head = std::string(textured ? "#define TEXTURED\n" : "") +
                                          (shadows ? "#define SHADOWS\n" : "") + kLightUniformsGlsl;
-            const ShaderSources sources = pbr_ ? ShaderSources{pbr_head + kPhongVertexShader,
-                                                               pbr_head + pbr_->fragment_shader()}
-                                               : general_phong_program(model_, textured, shadows);
-            const Program p = make_program(gl_, sources);
+            const ShaderSources sources =
+                pbr_ ? ShaderSources{pbr_head + kPhongVertexShader,
+                                     pbr_head + pbr_->fragment_shader()}
+                     : general_phong_program(model_, textured, shadows, fade);
+            const Program p =
+                make_program(gl_, {filter + sources.vertex, filter + sources.fragment});
             if (pbr_) pbr_->prepare(p.id);
             programs_[{-1, textured}] = p;
         }
@@ -267,14 +285,16 @@ class Reference {
     // One program per material and texture use the draws need.
     void make_specialised_programs() {
         specialised_ = true;
-        const SceneLighting lighting = scene_lighting(scene_, world_, shadow_light_);
+        const std::string filter = shadow_filter_defines(lighting_);
         for (const facet::Draw& d : world_.draws) {
             const facet::Material& m = world_.materials[d.material];
             const std::pair<int, bool> key{static_cast<int>(d.material),
                                            m.base_color_map && d.has_uvs};
             if (programs_.count(key)) continue;
-            programs_[key] = make_program(
-                gl_, specialised_phong_program(model_, lighting, m, key.second, shadow_size_));
+            const ShaderSources sources =
+                specialised_phong_program(model_, lighting_, m, key.second, shadow_size_);
+            programs_[key] =
+                make_program(gl_, {filter + sources.vertex, filter + sources.fragment});
         }
     }
 
@@ -395,8 +415,10 @@ class Reference {
         depth_clip_ = gl_.GetUniformLocation(depth_program_, "u_clip");
     }
 
-    // Pass one: the casters' depth from the sun, an orthographic box round
-    // their bounding sphere (as facet's shadow stage fits it).
+    // Pass one: the casters' depth from the sun, in the box facet's shadow
+    // stage fits (render/shadow_stage.cpp): round the casters' bounding
+    // sphere, its half width in steps of 2^(1/8) with a two-texel margin,
+    // its centre on whole texels, depth from 0 to twice the half width.
     void draw_shadow_map(const facet::FrameState& state, facet::PoseStage& pose) {
         const facet::PosedVertices posed = pose.pose(state);
         std::vector<facet::Sphere> spheres;
@@ -405,24 +427,32 @@ class Reference {
                 spheres.push_back(facet::transformed_box_sphere(posed.object_bounds[d.object],
                                                                 state.objects[d.object].transform));
         const facet::Sphere s = facet::enclosing_sphere(spheres);
+        const facet::LightState& light = state.lights[static_cast<size_t>(shadow_light_)];
+        const double steps = std::ceil(std::log2(std::max(s.radius, 1e-6)) * 8.0);
+        const float half = static_cast<float>(std::exp2(steps / 8.0)) *
+                           (1.0f + 2.0f / static_cast<float>(shadow_size_));
+        const float texel = 2.0f * half / static_cast<float>(shadow_size_);
+        const facet::ShadowBasis basis = facet::shadow_basis(glm::normalize(light.direction));
         const glm::vec3 centre(s.center);
-        const float r = static_cast<float>(s.radius);
-        const glm::vec3 dir =
-            glm::normalize(state.lights[static_cast<size_t>(shadow_light_)].direction);
-        const glm::vec3 up = std::abs(dir.y) > 0.99f ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
-        const glm::mat4 view = glm::lookAt(centre - dir * (2 * r), centre, up);
-        const glm::mat4 projection = glm::ortho(-r, r, -r, r, r, 3 * r);
-        const glm::mat4 light_clip = projection * view;
+        const float x = std::round(glm::dot(centre, basis.right) / texel) * texel;
+        const float y = std::round(glm::dot(centre, basis.up) / texel) * texel;
+        const float z = glm::dot(centre, basis.forward) - half;
+        const glm::mat4 view =
+            facet::shadow_view(basis, basis.right * x + basis.up * y + basis.forward * z);
+        const glm::mat4 light_clip = glm::ortho(-half, half, -half, half, 0.0f, 2.0f * half) * view;
         const glm::mat4 to_texture = glm::translate(glm::mat4(1), glm::vec3(0.5f)) *
                                      glm::scale(glm::mat4(1), glm::vec3(0.5f));
         shadow_matrix_ = to_texture * light_clip;
+        shadow_view_ = glm::mat3(view);
+        // The lookup's offsets (shade/shadow_map.cpp), scaled by the light's
+        // bias: the normal offset in scene units per unit of sin(angle to
+        // the light), the depth bias in map depth units per unit of slope.
+        shadow_offsets_ = glm::vec2(light.shadow_bias * texel, light.shadow_bias / shadow_size_);
 
         gl_.BindFramebuffer(GL_FRAMEBUFFER, shadow_fbo_);
         glViewport(0, 0, shadow_size_, shadow_size_);
         glClear(GL_DEPTH_BUFFER_BIT);
         glDisable(GL_CULL_FACE);  // both sides cast, as in facet
-        glEnable(GL_POLYGON_OFFSET_FILL);
-        glPolygonOffset(2.0f, 4.0f);
         gl_.UseProgram(depth_program_);
         for (const facet::Draw& d : world_.draws) {
             if (!world_.casts_shadows[d.object]) continue;
@@ -430,7 +460,6 @@ class Reference {
             gl_.UniformMatrix4fv(depth_clip_, 1, GL_FALSE, glm::value_ptr(clip));
             draw_elements(d);
         }
-        glDisable(GL_POLYGON_OFFSET_FILL);
     }
 
     void set_lights(const Program& p, const std::vector<facet::ShadeLight>& lights,
@@ -482,6 +511,8 @@ class Reference {
             gl_.Uniform1i(p.shadow_map, 1);
             gl_.UniformMatrix4fv(p.shadow_matrix, 1, GL_FALSE, glm::value_ptr(shadow_matrix_));
             gl_.Uniform1f(p.shadow_texel, 1.0f / static_cast<float>(shadow_size_));
+            gl_.UniformMatrix3fv(p.shadow_view, 1, GL_FALSE, glm::value_ptr(shadow_view_));
+            gl_.Uniform2fv(p.shadow_offsets, 1, glm::value_ptr(shadow_offsets_));
         }
     }
 
@@ -505,33 +536,37 @@ class Reference {
     GLuint depth_program_ = 0;
     GLint depth_clip_ = -1;
     glm::mat4 shadow_matrix_{1};
+    glm::mat3 shadow_view_{1};     // world -> the sun's view: right, up, towards the sun
+    glm::vec2 shadow_offsets_{0};  // see draw_shadow_map
     // By (material, textured); the general programs' material is -1.
     std::map<std::pair<int, bool>, Program> programs_;
     bool specialised_ = false;
+    SceneLighting lighting_;      // the scene's lights over its frames, its background
     std::optional<PbrPeer> pbr_;  // the `pbr` model's GLSL port and its textures
 };
 
-// facet's first frame against llvmpipe's, both as 8-bit sRGB.
+// facet's first frame against llvmpipe's, both as 8-bit sRGB, covered
+// where each drew a surface (its depth). The peer draws no ambient
+// occlusion, so facet's frame is drawn without it (features() says so).
 void compare_first_frame(const facet::SceneDesc& scene, const facet::World& world, int frame,
-                         const std::vector<uint8_t>& gl_rgb, GlResult& r) {
+                         const std::vector<uint8_t>& gl_rgb, const std::vector<float>& gl_depth,
+                         GlResult& r) {
     const int width = scene.output.width, height = scene.output.height;
     facet::ThreadPool pool(2);
-    facet::FrameRenderer renderer(scene, world, pool);
+    facet::SceneDesc as_drawn = scene;
+    as_drawn.style.occlusion.enabled = false;
+    facet::FrameRenderer renderer(as_drawn, world, pool);
     facet::FrameImages ours;
     renderer.render(frame, 0, ours);
-    const glm::vec4 bg = scene.style.background.value_or(scene.output.background);
-    uint8_t clear[3];
-    for (int c = 0; c < 3; ++c)
-        clear[c] = static_cast<uint8_t>(
-            std::lround(facet::linear_to_srgb(std::clamp(bg[c], 0.0f, 1.0f)) * 255));
     double diff_sum = 0;
     size_t both = 0;
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
-            const uint8_t* g = &gl_rgb[(static_cast<size_t>(height - 1 - y) * width + x) * 3];
-            const bool gl_hit =
-                std::abs(g[0] - clear[0]) + std::abs(g[1] - clear[1]) + std::abs(g[2] - clear[2]) >
-                3;
+            const size_t at =
+                static_cast<size_t>(height - 1 - y) * width + x;  // GL rows are bottom-up
+            const uint8_t* g = &gl_rgb[at * 3];
+            // By depth, not colour: a surface faded into the background is still drawn.
+            const bool gl_hit = gl_depth[at] < 1.0f;
             const bool our_hit = std::isfinite(ours.depth.at(x, y));
             if (gl_hit != our_hit) {
                 ++r.coverage_mismatch_px;
@@ -582,7 +617,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     glCullFace(GL_BACK);
     facet::PoseStage pose(scene, world);
     std::vector<uint8_t> rgb(static_cast<size_t>(width) * height * 3), first;
-    std::vector<float> depth(static_cast<size_t>(width) * height);
+    std::vector<float> depth(static_cast<size_t>(width) * height), first_depth;
 
     // One untimed frame first: llvmpipe compiles shader variants on first use.
     reference.draw(frames.front(), pose);
@@ -617,7 +652,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
                 for (size_t p = 0; p < rgb.size(); p += 3)
                     covered += std::memcmp(&rgb[p], clear, 3) != 0;
                 r.min_covered = std::min(r.min_covered, covered);
-                if (first.empty()) first = rgb;
+                if (first.empty()) first = rgb, first_depth = depth;
             }
         }
     }
@@ -628,7 +663,7 @@ GlResult bench_llvmpipe(const facet::SceneDesc& scene, const facet::World& world
     r.render_cpu_ms = median(render_cpu);
     r.job_ms = stat_of(job);
     r.job_cpu_ms = median(job_cpu);
-    compare_first_frame(scene, world, frames.front(), first, r);
+    compare_first_frame(scene, world, frames.front(), first, first_depth, r);
     r.ok = true;
     return r;
 }
