@@ -34,10 +34,10 @@ uniform vec2 u_shadow_offsets;  // normal offset (scene units), depth bias (map 
 // facet's lookup (shade/shadow_map.cpp) with the GL's comparisons: the
 // point moved off the surface along its unit normal n by a texel times
 // sin(angle to the sun), a depth bias of half a texel plus half a texel
-// per unit of the receiver's slope, and facet's box filter of SHADOW_TAPS
-// texels a side as that many bilinear comparisons a side, SHADOW_STEP
-// texels apart, each against the receiver's plane at its centre (facet's
-// plane is per texel).
+// per unit of the receiver's slope, and facet's box filter as SHADOW_TAPS
+// bilinear comparisons a side, SHADOW_STEP (about two) texels apart, each
+// covering two texels a side, against the receiver's plane at its centre
+// (facet's plane is per texel).
 float shadow(vec3 p, vec3 n) {
     vec3 nv = u_shadow_view * n;
     float sin_light = sqrt(max(0.0, 1.0 - nv.z * nv.z));
@@ -397,11 +397,13 @@ SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& 
     const glm::vec4 bg = scene.style.background.value_or(scene.output.background);
     lighting.background = glm::vec3(bg) * bg.a;
     if (shadow_light >= 0) {
-        // facet's box filter, 2 (softness + 1/2) texels a side, in as many
-        // bilinear taps a side, spread to its width.
+        // facet's box filter, 2 (softness + 1/2) texels a side. A bilinear
+        // comparison halfway between two texels weighs both equally, so
+        // taps two texels apart cover the box with a quarter of the taps,
+        // as a GL programmer would filter: a 4-texel box is 2 x 2 taps.
         const float width =
             2.0f * first_frame.lights[static_cast<size_t>(shadow_light)].shadow_softness + 1.0f;
-        lighting.shadow_taps = std::max(1, static_cast<int>(std::lround(width)));
+        lighting.shadow_taps = std::max(1, static_cast<int>(std::lround(width / 2.0f)));
         lighting.shadow_step = width / static_cast<float>(lighting.shadow_taps);
         lighting.shadow_index = 0;
         for (int i = 0; i < shadow_light; ++i)
