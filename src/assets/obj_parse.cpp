@@ -584,15 +584,6 @@ void add_warnings(const ChunkNotes& notes, const std::string& path, ObjGeometry&
                          "'g' without a group name" + times(notes.empty_groups.count)));
 }
 
-// Runs task(i) for i in [0, count), on the pool when there is one.
-void run_each(ThreadPool* pool, size_t count, const std::function<void(size_t)>& task) {
-    if (pool && count > 1) {
-        pool->parallel_for(count, task);
-    } else {
-        for (size_t i = 0; i < count; ++i) task(i);
-    }
-}
-
 // Parses the text; text with lone CRs or NULs is cleaned first
 // (clean_lines), which the first pass finds.
 ObjGeometry parse_text(std::string_view text, const std::string& path, ThreadPool* pool) {
