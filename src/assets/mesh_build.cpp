@@ -208,9 +208,17 @@ struct SmoothingInput {
     const std::vector<uint32_t>& idx;
     const std::vector<uint32_t>& weld_id;
     const CornersAtVertex& at;
-    std::vector<glm::vec3> face_normal, face_unit;
+    // Length: twice the area. The unit normals are worked out round each
+    // vertex instead of stored: a second array of triangles read at random
+    // cost more in cache misses than the square roots do.
+    std::vector<glm::vec3> face_normal;
     float cos_crease;
 };
+
+glm::vec3 unit_or_zero(const glm::vec3& v) {
+    const float len = glm::length(v);
+    return len > 0 ? v / len : glm::vec3(0);
+}
 
 // Buffers reused from vertex to vertex by one thread.
 struct SmoothingScratch {
@@ -221,6 +229,7 @@ struct SmoothingScratch {
     std::vector<Edge> edges;
     CornerSets sets;
     std::vector<glm::vec3> sums;
+    std::vector<glm::vec3> face_normal, face_unit;  // of each corner's triangle
 };
 
 // The normals of the corners round welded vertex w: the faces of each
@@ -230,8 +239,12 @@ uint64_t smooth_corners_at(const SmoothingInput& in, uint32_t w, SmoothingScratc
     const uint32_t first = in.at.start[w], count = in.at.start[w + 1] - first;
     auto& edges = scratch.edges;
     edges.clear();
+    scratch.face_normal.resize(count);
+    scratch.face_unit.resize(count);
     for (uint32_t i = 0; i < count; ++i) {
         const uint32_t c = in.at.corner[first + i], t = c / 3, k = c % 3;
+        scratch.face_normal[i] = in.face_normal[t];
+        scratch.face_unit[i] = unit_or_zero(scratch.face_normal[i]);
         for (uint32_t step : {1u, 2u}) {
             const uint32_t other = in.weld_id[in.idx[3 * t + (k + step) % 3]];
             if (other != w) edges.push_back({other, i});
@@ -246,21 +259,18 @@ uint64_t smooth_corners_at(const SmoothingInput& in, uint32_t w, SmoothingScratc
     for (uint32_t i = 0; i < count; ++i) sets.parent[i] = i;
     for (size_t e = 1; e < edges.size(); ++e) {
         if (edges[e].other != edges[e - 1].other) continue;
-        const uint32_t ta = in.at.corner[first + edges[e - 1].local] / 3;
-        const uint32_t tb = in.at.corner[first + edges[e].local] / 3;
-        if (glm::dot(in.face_unit[ta], in.face_unit[tb]) >= in.cos_crease)
-            sets.join(edges[e - 1].local, edges[e].local);
+        const glm::vec3& a = scratch.face_unit[edges[e - 1].local];
+        const glm::vec3& b = scratch.face_unit[edges[e].local];
+        if (glm::dot(a, b) >= in.cos_crease) sets.join(edges[e - 1].local, edges[e].local);
     }
     scratch.sums.assign(count, glm::vec3(0));
-    for (uint32_t i = 0; i < count; ++i)
-        scratch.sums[sets.find(i)] += in.face_normal[in.at.corner[first + i] / 3];
+    for (uint32_t i = 0; i < count; ++i) scratch.sums[sets.find(i)] += scratch.face_normal[i];
     for (uint32_t i = 0; i < count; ++i) {
-        const uint32_t c = in.at.corner[first + i], t = c / 3;
         const glm::vec3 sum = scratch.sums[sets.find(i)];
         const float len = glm::length(sum);
-        corner_normal[c] =
-            len > 0 ? sum / len
-                    : (glm::length(in.face_unit[t]) > 0 ? in.face_unit[t] : glm::vec3(0, 1, 0));
+        const glm::vec3& unit = scratch.face_unit[i];
+        corner_normal[in.at.corner[first + i]] =
+            len > 0 ? sum / len : (glm::length(unit) > 0 ? unit : glm::vec3(0, 1, 0));
     }
     return count + edges.size();
 }
@@ -282,11 +292,7 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
     size_t welded = 0;
     const std::vector<uint32_t> weld_id = weld_by_position(part.positions, welded, pool);
     const CornersAtVertex at = corners_at_vertices(idx, weld_id, welded, pool);
-    SmoothingInput in{idx,
-                      weld_id,
-                      at,
-                      std::vector<glm::vec3>(triangles),
-                      std::vector<glm::vec3>(triangles),
+    SmoothingInput in{idx, weld_id, at, std::vector<glm::vec3>(triangles),
                       std::cos(glm::radians(std::clamp(crease_degrees, 0.0f, 180.0f)))};
     run_ranges(pool, triangles, kRange, [&](size_t first, size_t last) {
         for (size_t t = first; t < last; ++t) {
@@ -295,8 +301,6 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
             const glm::vec3& c = part.positions[idx[3 * t + 2]];
             // Length = twice the area: area weighting.
             in.face_normal[t] = glm::cross(b - a, c - a);
-            const float len = glm::length(in.face_normal[t]);
-            in.face_unit[t] = len > 0 ? in.face_normal[t] / len : glm::vec3(0);
         }
     });
     std::vector<glm::vec3> corner_normal(idx.size());
