@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <atomic>
+#include <limits>
 #include <map>
 #include <tuple>
 
@@ -146,23 +147,36 @@ void triangulate_face(const ObjGeometry& geometry, const ObjCorner* face, size_t
         for (size_t corner : triangle) out.push_back(face[corner]);
 }
 
-// The faces sorted into one part per material (std::map: parts come out in
-// the order of their materials), triangulated, in file order.
-// Calls visit(material, corners, count) for each face, in file order.
+// Calls visit(material, corners, count, faces) in file order for runs of
+// `faces` faces of `count` corners each and one material: a chunk of
+// triangles alone comes in runs up to the next change of material (copied
+// whole), any other chunk face by face.
 template <class Visit>
-void for_each_face(const ObjGeometry& geometry, const std::vector<MaterialChange>& changes,
-                   uint32_t no_material, Visit&& visit) {
+void for_each_run(const ObjGeometry& geometry, const std::vector<MaterialChange>& changes,
+                  uint32_t no_material, Visit&& visit) {
     size_t face = 0, next_change = 0;
     uint32_t material = no_material;
     for (const ObjFaceChunk& chunk : geometry.faces) {
+        const size_t faces = chunk.corner_counts.size();
+        // Every face has three corners or more: three each when they add up so.
+        const bool triangles = chunk.corners.size() == 3 * faces;
         size_t offset = 0;
-        for (const uint32_t count : chunk.corner_counts) {
+        for (size_t f = 0; f < faces;) {
             for (; next_change < changes.size() && changes[next_change].first_face <= face;
                  ++next_change)
                 material = changes[next_change].material;
-            visit(material, &chunk.corners[offset], count);
-            offset += count;
-            ++face;
+            size_t run = 1;
+            if (triangles) {
+                const size_t next_face = next_change < changes.size()
+                                             ? changes[next_change].first_face
+                                             : std::numeric_limits<size_t>::max();
+                run = std::min(faces - f, next_face - face);
+            }
+            const uint32_t count = chunk.corner_counts[f];
+            visit(material, &chunk.corners[offset], count, run);
+            offset += count * run;
+            f += run;
+            face += run;
         }
     }
 }
@@ -183,15 +197,19 @@ std::map<uint32_t, PartCorners> sort_faces(const ObjGeometry& geometry,
         last_material = material;
         return *part;
     };
-    for_each_face(geometry, changes, no_material,
-                  [&](uint32_t material, const ObjCorner*, size_t count) {
-                      part_of(material).room += 3 * (count - 2);
-                  });
+    for_each_run(geometry, changes, no_material,
+                 [&](uint32_t material, const ObjCorner*, size_t count, size_t faces) {
+                     part_of(material).room += faces * 3 * (count - 2);
+                 });
     for (auto& [material, p] : parts) p.corners.reserve(p.room);
-    for_each_face(geometry, changes, no_material,
-                  [&](uint32_t material, const ObjCorner* corners, size_t count) {
-                      triangulate_face(geometry, corners, count, part_of(material).corners);
-                  });
+    for_each_run(geometry, changes, no_material,
+                 [&](uint32_t material, const ObjCorner* corners, size_t count, size_t faces) {
+                     std::vector<ObjCorner>& out = part_of(material).corners;
+                     if (count == 3)
+                         out.insert(out.end(), corners, corners + 3 * faces);
+                     else
+                         triangulate_face(geometry, corners, count, out);
+                 });
     return parts;
 }
 
