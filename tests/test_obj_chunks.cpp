@@ -4,14 +4,20 @@
 // errors far into the file name their line and column.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
+#include <cstdio>
 #include <cstring>
+#include <functional>
 #include <map>
 #include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "asset_support.hpp"
 #include "assets/mesh.hpp"
+#include "core/input_file.hpp"
+#include "core/parallel_sort.hpp"
 #include "core/thread_pool.hpp"
 
 using namespace facet::test;
@@ -190,33 +196,174 @@ TEST_CASE("OBJ numbers: what other readers make of odd words", "[assets][obj]") 
     CHECK(corner(part, 0, 2) == glm::vec3(0, 0, 3));
 }
 
-TEST_CASE("Normals computed on a pool are those computed on one thread", "[assets][normals]") {
-    // A grid of 300 x 300 quads folded along a crease: enough vertices for
-    // many ranges, smooth and sharp ones both.
+namespace {
+
+// A grid of n x n quads folded up and down at every other column (a crease
+// at each), with a seam down the middle: the vertices of column n / 2 are
+// repeated, with other texture coordinates, so that only the weld by
+// position joins the two sides. Enough vertices for many ranges, and
+// enough split corners to sort on several threads.
+facet::MeshPart folded_grid(int n) {
     facet::MeshPart part;
-    const int n = 300;
+    auto vertex = [&](int x, int y, float u) {
+        part.positions.push_back({float(x), float(y), (x % 2) * 1.5f});
+        part.uvs.push_back({u, float(y) / float(n)});
+        part.colors.push_back({float(x % 7) / 7, float(y % 5) / 5, 0.5f});
+    };
     for (int y = 0; y <= n; ++y)
-        for (int x = 0; x <= n; ++x)
-            part.positions.push_back({float(x), float(y), x < n / 2 ? 0.0f : float(x - n / 2)});
+        for (int x = 0; x <= n; ++x) vertex(x, y, float(x) / float(n));
+    const uint32_t seam = static_cast<uint32_t>(part.positions.size());
+    for (int y = 0; y <= n; ++y) vertex(n / 2, y, 2.0f);
+    auto at = [&](int x, int y) {
+        if (x == n / 2 && y % 3 == 0) return seam + static_cast<uint32_t>(y);
+        return static_cast<uint32_t>(y * (n + 1) + x);
+    };
     for (int y = 0; y < n; ++y)
         for (int x = 0; x < n; ++x) {
-            const uint32_t a = y * (n + 1) + x, b = a + 1, c = a + n + 1, d = c + 1;
+            const uint32_t a = at(x, y), b = at(x + 1, y), c = at(x, y + 1), d = at(x + 1, y + 1);
             part.indices.insert(part.indices.end(), {a, b, d, a, d, c});
         }
     part.normals.assign(part.positions.size(), glm::vec3(0));
-    facet::MeshPart pooled = part;
-    uint64_t work = 0, pooled_work = 0;
-    std::vector<uint32_t> source, pooled_source;
+    return part;
+}
+
+}  // namespace
+
+TEST_CASE("Normals computed on a pool are those computed on one thread", "[assets][normals]") {
+    const facet::MeshPart grid = folded_grid(300);
+    facet::MeshPart part = grid;
+    uint64_t work = 0;
+    std::vector<uint32_t> source;
     facet::compute_normals(part, 30.0f, &source, &work);
+    // Every fold splits its column of vertices in two.
+    CHECK(part.positions.size() > grid.positions.size() * 3 / 2);
+    for (unsigned threads : {2u, 3u, 4u}) {
+        DYNAMIC_SECTION(threads << " threads") {
+            facet::MeshPart pooled = grid;
+            uint64_t pooled_work = 0;
+            std::vector<uint32_t> pooled_source;
+            facet::ThreadPool pool(threads);
+            facet::compute_normals(pooled, 30.0f, &pooled_source, &pooled_work, &pool);
+            CHECK(same_bytes(part.positions, pooled.positions));
+            CHECK(same_bytes(part.normals, pooled.normals));
+            CHECK(same_bytes(part.uvs, pooled.uvs));
+            CHECK(same_bytes(part.colors, pooled.colors));
+            CHECK(same_bytes(part.indices, pooled.indices));
+            CHECK(source == pooled_source);
+            CHECK(work == pooled_work);
+        }
+    }
+}
+
+TEST_CASE("Normals split a vertex once per normal, numbered in order of first use",
+          "[assets][normals]") {
+    const facet::MeshPart grid = folded_grid(120);
+    facet::MeshPart part = grid;
+    std::vector<uint32_t> source;
     facet::ThreadPool pool(3);
-    facet::compute_normals(pooled, 30.0f, &pooled_source, &pooled_work, &pool);
-    // The crease splits the column of vertices along it: one more each.
-    CHECK(part.positions.size() == size_t(n + 1) * (n + 1) + (n + 1));
-    CHECK(same_bytes(part.positions, pooled.positions));
-    CHECK(same_bytes(part.normals, pooled.normals));
-    CHECK(same_bytes(part.indices, pooled.indices));
-    CHECK(source == pooled_source);
-    CHECK(work == pooled_work);
+    facet::compute_normals(part, 30.0f, &source, nullptr, &pool);
+    REQUIRE(part.indices.size() == grid.indices.size());
+    // Corners of one old vertex with the same normal bits share a new one,
+    // others do not, and new vertices appear in corner order.
+    std::map<std::tuple<uint32_t, uint32_t, uint32_t, uint32_t>, uint32_t> vertex_of;
+    uint32_t next = 0;
+    for (size_t c = 0; c < part.indices.size(); ++c) {
+        const uint32_t v = part.indices[c];
+        const glm::vec3 n = part.normals[v];
+        uint32_t bits[3];
+        std::memcpy(bits, &n, sizeof bits);
+        const auto key = std::tuple(grid.indices[c], bits[0], bits[1], bits[2]);
+        const auto [it, added] = vertex_of.emplace(key, next);
+        if (added) ++next;
+        INFO("corner " << c);
+        REQUIRE(v == it->second);
+        REQUIRE(source[v] == grid.indices[c]);
+    }
+    CHECK(next == part.positions.size());
+}
+
+TEST_CASE("parallel_sort sorts as std::sort does on any number of threads", "[core][sort]") {
+    // Few distinct keys, so that runs hold long stretches of equal keys
+    // that only the index tells apart.
+    std::vector<std::pair<uint32_t, uint32_t>> items;
+    uint32_t state = 12345;
+    for (uint32_t i = 0; i < 200000; ++i) {
+        state = state * 1664525u + 1013904223u;
+        items.push_back({state >> 28, i});
+    }
+    std::vector<std::pair<uint32_t, uint32_t>> expected = items;
+    std::sort(expected.begin(), expected.end());
+    for (unsigned threads : {1u, 2u, 3u, 4u, 5u}) {
+        DYNAMIC_SECTION(threads << " threads") {
+            std::vector<std::pair<uint32_t, uint32_t>> sorted = items;
+            facet::ThreadPool pool(threads);
+            facet::parallel_sort(sorted, std::less<>(), &pool);
+            CHECK(sorted == expected);
+        }
+    }
+}
+
+namespace {
+
+// The folded grid as an OBJ file without normals (facet computes them),
+// its seam written as texture coordinates of its own: some 9 MB, read in
+// parallel.
+std::string folded_grid_obj(const std::string& line_end) {
+    const facet::MeshPart grid = folded_grid(600);
+    std::string text;
+    text.reserve(grid.indices.size() * 20);
+    char line[96];
+    for (size_t v = 0; v < grid.positions.size(); ++v) {
+        const glm::vec3 p = grid.positions[v];
+        const glm::vec2 uv = grid.uvs[v];
+        text += std::string(line, std::snprintf(line, sizeof line, "v %g %g %g", p.x, p.y, p.z));
+        text += line_end;
+        text += std::string(line, std::snprintf(line, sizeof line, "vt %g %g", uv.x, uv.y));
+        text += line_end;
+    }
+    for (size_t t = 0; t < grid.indices.size(); t += 3) {
+        const uint32_t a = grid.indices[t] + 1, b = grid.indices[t + 1] + 1,
+                       c = grid.indices[t + 2] + 1;
+        // The seam's vertices are positions of their own, at the places of
+        // the grid's: only the weld by position joins them.
+        text += std::string(
+            line, std::snprintf(line, sizeof line, "f %u/%u %u/%u %u/%u", a, a, b, b, c, c));
+        text += line_end;
+    }
+    return text;
+}
+
+}  // namespace
+
+TEST_CASE("OBJ normals, seams and creases are bit-identical on any number of threads",
+          "[assets][obj]") {
+    TempDir dir("obj-chunks");
+    const std::string path = write_text(dir.file("folded.obj"), folded_grid_obj("\n"));
+    const facet::Mesh one = load_with_threads(path, 1);
+    check_sane(one);
+    for (unsigned threads : {2u, 3u, 0u}) {
+        DYNAMIC_SECTION(threads << " threads") {
+            require_identical(one, load_with_threads(path, threads));
+        }
+    }
+    // Lone CRs (old Mac files) make the reader clean the whole text first.
+    SECTION("CR line ends") {
+        const std::string cr = write_text(dir.file("folded-cr.obj"), folded_grid_obj("\r"));
+        require_identical(one, load_with_threads(cr, 2));
+    }
+}
+
+TEST_CASE("A file read by ranges says when it no longer holds a range", "[assets][obj]") {
+    TempDir dir("obj-chunks");
+    const std::string path = write_text(dir.file("short.obj"), "v 0 0 0\n");
+    const facet::InputFileReader file(path, "OBJ");
+    REQUIRE(file.size() == 8);
+    char bytes[16];
+    file.read_at(0, bytes, 8);
+    CHECK(std::string(bytes, 8) == "v 0 0 0\n");
+    // As when the file is cut short between the first pass and the second.
+    require_error([&] { file.read_at(4, bytes, 8); }, facet::ExitCode::io_failure,
+                  "was cut short while it was read");
 }
 
 TEST_CASE("OBJ line, point and free-form elements are named as not drawn", "[assets][obj]") {

@@ -38,6 +38,7 @@
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "core/memory.hpp"
+#include "core/thread_pool.hpp"
 
 namespace facet {
 namespace {
@@ -356,11 +357,13 @@ std::vector<GltfCamera> read_cameras(const tinygltf::Model& model, const std::st
 // before it is made.
 class NodeWalk {
   public:
-    NodeWalk(const tinygltf::Model& model, const std::string& path, Mesh& mesh, MeshRig* rig)
+    NodeWalk(const tinygltf::Model& model, const std::string& path, Mesh& mesh, MeshRig* rig,
+             ThreadPool* pool)
         : model_(model),
           path_(path),
           mesh_(mesh),
           rig_(rig),
+          pool_(pool),
           memory_(memory_available()),
           default_material_(static_cast<uint32_t>(model.materials.size())) {}
 
@@ -377,6 +380,7 @@ class NodeWalk {
     const std::string& path_;
     Mesh& mesh_;
     MeshRig* rig_;
+    ThreadPool* pool_;  // for the normals of primitives without them
     uint64_t memory_, planned_ = 0;
     uint32_t default_material_;
     bool used_default_ = false;
@@ -416,7 +420,7 @@ void NodeWalk::place(int node_index, size_t primitive, const gltf_detail::MeshSp
     const glm::dmat4 world = node_world * instance;
     mesh_.parts.push_back(gltf_detail::place_primitive(p, glm::mat4(world), path_,
                                                        first ? mesh_.warnings : repeated,
-                                                       rig_ ? &source_vertex : nullptr));
+                                                       rig_ ? &source_vertex : nullptr, pool_));
     used_default_ = used_default_ || p.material == default_material_;
     if (!rig_) return;
     const tinygltf::Node& node = model_.nodes[static_cast<size_t>(node_index)];
@@ -556,7 +560,14 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
     }
     mesh.materials =
         gltf_detail::read_materials(model, path, read.unread, context.textures, mesh.warnings);
-    NodeWalk walk(model, path, mesh, rig.get());
+    // Threads for the normals of a big file's primitives; a small file's
+    // would cost more to start than they save.
+    constexpr size_t kParallelBytes = size_t(4) << 20;
+    size_t buffer_bytes = 0;
+    for (const tinygltf::Buffer& b : model.buffers) buffer_bytes += b.data.size();
+    std::optional<ThreadPool> threads;
+    if (buffer_bytes >= kParallelBytes && context.threads != 1) threads.emplace(context.threads);
+    NodeWalk walk(model, path, mesh, rig.get(), threads ? &*threads : nullptr);
     for (int root : root_nodes(model, path, mesh.warnings)) walk.visit(root, glm::dmat4(1.0), 0);
     if (walk.used_default_material()) {
         Material fallback;

@@ -225,7 +225,7 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
 
 MeshPart place_primitive(const MeshSpacePrimitive& primitive, const glm::mat4& world,
                          const std::string& path, Warnings& warnings,
-                         std::vector<uint32_t>* source_vertex) {
+                         std::vector<uint32_t>* source_vertex, ThreadPool* pool) {
     MeshPart part;
     part.material = primitive.material;
     part.positions.reserve(primitive.positions.size());
@@ -241,7 +241,7 @@ MeshPart place_primitive(const MeshSpacePrimitive& primitive, const glm::mat4& w
     if (source_vertex) source_vertex->clear();
     if (primitive.normals.empty()) {
         // glTF §3.7.2.1: without normals, flat normals are used.
-        compute_normals(part, 0.0f, source_vertex);
+        compute_normals(part, 0.0f, source_vertex, nullptr, pool);
         validate_part(part, path);
         return part;
     }

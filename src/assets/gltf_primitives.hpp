@@ -43,8 +43,9 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
 // flat normals where the file has none and face normals where its normals
 // have no length (each with a warning). `source_vertex`, when given,
 // receives for each vertex of the part the primitive's vertex it came from.
+// Normals are computed on the pool's threads when there is one.
 MeshPart place_primitive(const MeshSpacePrimitive& primitive, const glm::mat4& world,
                          const std::string& path, Warnings& warnings,
-                         std::vector<uint32_t>* source_vertex);
+                         std::vector<uint32_t>* source_vertex, ThreadPool* pool);
 
 }  // namespace facet::gltf_detail

@@ -11,10 +11,12 @@
 #include <glm/trigonometric.hpp>
 
 #include "assets/corner_sets.hpp"
+#include "assets/corner_weld.hpp"
 #include "assets/mesh.hpp"
 #include "assets/mesh_format.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
+#include "core/parallel_sort.hpp"
 #include "core/thread_pool.hpp"
 
 namespace facet {
@@ -51,6 +53,9 @@ Bounds Mesh::bounds() const {
 
 namespace {
 
+// Items (vertices, triangles) handled on one thread at a time.
+constexpr size_t kRange = 16384;
+
 // An integer with the float's order (-0 and +0 alike; NaNs after +inf), so
 // that positions and normals sort without hashing: a file cannot make
 // sorting slow the way colliding keys make a hash table slow.
@@ -69,17 +74,22 @@ uint32_t float_bits(float f) {
 
 // For each vertex, an id shared by every vertex at exactly the same
 // position; `count` receives the number of ids. O(n log n).
-std::vector<uint32_t> weld_by_position(const std::vector<glm::vec3>& positions, size_t& count) {
+// The vertex is the last key, so no two keys tie and the sort is the same
+// on any number of threads.
+std::vector<uint32_t> weld_by_position(const std::vector<glm::vec3>& positions, size_t& count,
+                                       ThreadPool* pool) {
     struct Key {
         uint32_t x, y, z, vertex;
         auto tie() const { return std::tie(x, y, z, vertex); }
     };
     std::vector<Key> keys(positions.size());
-    for (size_t i = 0; i < positions.size(); ++i)
-        keys[i] = {float_order(positions[i].x), float_order(positions[i].y),
-                   float_order(positions[i].z), static_cast<uint32_t>(i)};
-    std::sort(keys.begin(), keys.end(),
-              [](const Key& a, const Key& b) { return a.tie() < b.tie(); });
+    run_ranges(pool, positions.size(), kRange, [&](size_t first, size_t last) {
+        for (size_t i = first; i < last; ++i)
+            keys[i] = {float_order(positions[i].x), float_order(positions[i].y),
+                       float_order(positions[i].z), static_cast<uint32_t>(i)};
+    });
+    parallel_sort(
+        keys, [](const Key& a, const Key& b) { return a.tie() < b.tie(); }, pool);
     std::vector<uint32_t> id(positions.size());
     count = 0;
     for (size_t i = 0; i < keys.size(); ++i) {
@@ -98,16 +108,42 @@ struct CornersAtVertex {
     std::vector<uint32_t> start, corner;
 };
 
+// A stable counting sort, so the same on any number of threads: each
+// thread counts and places the corners of one slice, after the corners of
+// the slices before it at each vertex. Slices are few: each counts every
+// vertex.
 CornersAtVertex corners_at_vertices(const std::vector<uint32_t>& indices,
-                                    const std::vector<uint32_t>& weld_id, size_t welded) {
+                                    const std::vector<uint32_t>& weld_id, size_t welded,
+                                    ThreadPool* pool) {
+    constexpr size_t kMaxSlices = 8, kMinSlice = size_t(1) << 16;
+    const size_t n = indices.size();
+    const size_t slices =
+        std::clamp<size_t>(std::min<size_t>(pool ? pool->size() : 1, n / kMinSlice), 1, kMaxSlices);
+    const size_t slice_size = (n + slices - 1) / slices;
+    // fill[s][w]: corners of vertex w in slice s, then where the slice's next one goes.
+    std::vector<std::vector<uint32_t>> fill(slices, std::vector<uint32_t>(welded, 0));
+    run_each(pool, slices, [&](size_t s) {
+        const size_t end = std::min(n, (s + 1) * slice_size);
+        for (size_t i = s * slice_size; i < end; ++i) ++fill[s][weld_id[indices[i]]];
+    });
     CornersAtVertex c;
-    c.start.assign(welded + 1, 0);
-    for (uint32_t v : indices) ++c.start[weld_id[v] + 1];
-    for (size_t i = 1; i < c.start.size(); ++i) c.start[i] += c.start[i - 1];
-    c.corner.resize(indices.size());
-    std::vector<uint32_t> fill(c.start.begin(), c.start.end() - 1);
-    for (size_t i = 0; i < indices.size(); ++i)
-        c.corner[fill[weld_id[indices[i]]]++] = static_cast<uint32_t>(i);
+    c.start.resize(welded + 1);
+    uint32_t total = 0;
+    for (size_t w = 0; w < welded; ++w) {
+        c.start[w] = total;
+        for (size_t s = 0; s < slices; ++s) {
+            const uint32_t here = fill[s][w];
+            fill[s][w] = total;
+            total += here;
+        }
+    }
+    c.start[welded] = total;
+    c.corner.resize(n);
+    run_each(pool, slices, [&](size_t s) {
+        const size_t end = std::min(n, (s + 1) * slice_size);
+        for (size_t i = s * slice_size; i < end; ++i)
+            c.corner[fill[s][weld_id[indices[i]]]++] = static_cast<uint32_t>(i);
+    });
     return c;
 }
 
@@ -116,68 +152,53 @@ bool same_bits(const glm::vec3& a, const glm::vec3& b) {
            float_bits(a.z) == float_bits(b.z);
 }
 
-// For each corner, the first corner with the same vertex and normal bits.
-// Most vertices have one normal (a smooth surface), so each corner is
-// compared with the first corner at its vertex; only the others (at
-// creases) are sorted. No hashing: O(n + k log k) for k such corners,
-// whatever the file.
-std::vector<uint32_t> first_same_corners(const std::vector<uint32_t>& idx, size_t vertex_count,
-                                         const std::vector<glm::vec3>& corner_normal) {
-    constexpr uint32_t kNone = ~0u;
-    std::vector<uint32_t> first_at(vertex_count, kNone);
-    std::vector<uint32_t> first(idx.size());
-    std::vector<uint32_t> others;
-    for (uint32_t c = 0; c < idx.size(); ++c) {
-        uint32_t& at = first_at[idx[c]];
-        if (at == kNone) at = c;
-        if (same_bits(corner_normal[at], corner_normal[c]))
-            first[c] = at;
-        else
-            others.push_back(c);
-    }
+// The part's vertices split by normal: one per distinct (vertex, normal
+// bits), numbered in order of first use (assets/corner_weld.hpp: most
+// vertices have one normal, a smooth surface, so each corner is compared
+// with the first corner at its vertex).
+WeldedCorners weld_by_normal(const std::vector<uint32_t>& idx, size_t vertex_count,
+                             const std::vector<glm::vec3>& corner_normal, ThreadPool* pool) {
     auto key = [&](uint32_t c) {
         const glm::vec3& n = corner_normal[c];
         return std::tuple(idx[c], float_bits(n.x), float_bits(n.y), float_bits(n.z), c);
     };
-    std::sort(others.begin(), others.end(),
-              [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-    for (size_t i = 0; i < others.size(); ++i) {
-        const uint32_t c = others[i], before = i > 0 ? others[i - 1] : kNone;
-        const bool same = before != kNone && idx[before] == idx[c] &&
-                          same_bits(corner_normal[before], corner_normal[c]);
-        first[c] = same ? first[before] : c;
-    }
-    return first;
+    return weld_corners(
+        idx.size(), vertex_count, [&](size_t c) { return idx[c]; },
+        [&](uint32_t a, uint32_t b) { return same_bits(corner_normal[a], corner_normal[b]); },
+        [&](uint32_t a, uint32_t b) { return key(a) < key(b); }, pool);
 }
 
 // The part rebuilt with one vertex per distinct (vertex, normal), numbered
 // in order of first use. Returns the steps taken besides sorting.
 uint64_t split_by_normal(MeshPart& part, const std::vector<glm::vec3>& corner_normal,
-                         std::vector<uint32_t>* source_vertex) {
-    const std::vector<uint32_t>& idx = part.indices;
-    const std::vector<uint32_t> first_use =
-        first_same_corners(idx, part.positions.size(), corner_normal);
+                         std::vector<uint32_t>* source_vertex, ThreadPool* pool) {
+    WeldedCorners welded = weld_by_normal(part.indices, part.positions.size(), corner_normal, pool);
+    const size_t vertices = welded.first_corner.size();
     MeshPart out;
     out.material = part.material;
-    out.indices.resize(idx.size());
-    out.positions.reserve(part.positions.size());
-    out.normals.reserve(part.positions.size());
-    std::vector<uint32_t> new_index(idx.size());
-    if (source_vertex) source_vertex->clear();
-    for (size_t c = 0; c < idx.size(); ++c) {
-        if (first_use[c] == c) {
-            const uint32_t v = idx[c];
-            new_index[c] = static_cast<uint32_t>(out.positions.size());
-            out.positions.push_back(part.positions[v]);
-            out.normals.push_back(corner_normal[c]);
-            if (!part.uvs.empty()) out.uvs.push_back(part.uvs[v]);
-            if (!part.uvs1.empty()) out.uvs1.push_back(part.uvs1[v]);
-            if (!part.tangents.empty()) out.tangents.push_back(part.tangents[v]);
-            if (!part.colors.empty()) out.colors.push_back(part.colors[v]);
-            if (source_vertex) source_vertex->push_back(v);
+    out.positions.resize(vertices);
+    out.normals.resize(vertices);
+    auto resize_if = [&](const auto& in, auto& attribute) {
+        if (!in.empty()) attribute.resize(vertices);
+    };
+    resize_if(part.uvs, out.uvs);
+    resize_if(part.uvs1, out.uvs1);
+    resize_if(part.tangents, out.tangents);
+    resize_if(part.colors, out.colors);
+    if (source_vertex) source_vertex->resize(vertices);
+    run_ranges(pool, vertices, kRange, [&](size_t first, size_t last) {
+        for (size_t n = first; n < last; ++n) {
+            const uint32_t c = welded.first_corner[n], v = part.indices[c];
+            out.positions[n] = part.positions[v];
+            out.normals[n] = corner_normal[c];
+            if (!out.uvs.empty()) out.uvs[n] = part.uvs[v];
+            if (!out.uvs1.empty()) out.uvs1[n] = part.uvs1[v];
+            if (!out.tangents.empty()) out.tangents[n] = part.tangents[v];
+            if (!out.colors.empty()) out.colors[n] = part.colors[v];
+            if (source_vertex) (*source_vertex)[n] = v;
         }
-        out.indices[c] = new_index[first_use[c]];
-    }
+    });
+    out.indices = std::move(welded.vertex);
     part = std::move(out);
     return 2 * static_cast<uint64_t>(corner_normal.size());
 }
@@ -187,9 +208,17 @@ struct SmoothingInput {
     const std::vector<uint32_t>& idx;
     const std::vector<uint32_t>& weld_id;
     const CornersAtVertex& at;
-    std::vector<glm::vec3> face_normal, face_unit;
+    // Length: twice the area. The unit normals are worked out round each
+    // vertex instead of stored: a second array of triangles read at random
+    // cost more in cache misses than the square roots do.
+    std::vector<glm::vec3> face_normal;
     float cos_crease;
 };
+
+glm::vec3 unit_or_zero(const glm::vec3& v) {
+    const float len = glm::length(v);
+    return len > 0 ? v / len : glm::vec3(0);
+}
 
 // Buffers reused from vertex to vertex by one thread.
 struct SmoothingScratch {
@@ -200,6 +229,7 @@ struct SmoothingScratch {
     std::vector<Edge> edges;
     CornerSets sets;
     std::vector<glm::vec3> sums;
+    std::vector<glm::vec3> face_normal, face_unit;  // of each corner's triangle
 };
 
 // The normals of the corners round welded vertex w: the faces of each
@@ -209,8 +239,12 @@ uint64_t smooth_corners_at(const SmoothingInput& in, uint32_t w, SmoothingScratc
     const uint32_t first = in.at.start[w], count = in.at.start[w + 1] - first;
     auto& edges = scratch.edges;
     edges.clear();
+    scratch.face_normal.resize(count);
+    scratch.face_unit.resize(count);
     for (uint32_t i = 0; i < count; ++i) {
         const uint32_t c = in.at.corner[first + i], t = c / 3, k = c % 3;
+        scratch.face_normal[i] = in.face_normal[t];
+        scratch.face_unit[i] = unit_or_zero(scratch.face_normal[i]);
         for (uint32_t step : {1u, 2u}) {
             const uint32_t other = in.weld_id[in.idx[3 * t + (k + step) % 3]];
             if (other != w) edges.push_back({other, i});
@@ -225,33 +259,20 @@ uint64_t smooth_corners_at(const SmoothingInput& in, uint32_t w, SmoothingScratc
     for (uint32_t i = 0; i < count; ++i) sets.parent[i] = i;
     for (size_t e = 1; e < edges.size(); ++e) {
         if (edges[e].other != edges[e - 1].other) continue;
-        const uint32_t ta = in.at.corner[first + edges[e - 1].local] / 3;
-        const uint32_t tb = in.at.corner[first + edges[e].local] / 3;
-        if (glm::dot(in.face_unit[ta], in.face_unit[tb]) >= in.cos_crease)
-            sets.join(edges[e - 1].local, edges[e].local);
+        const glm::vec3& a = scratch.face_unit[edges[e - 1].local];
+        const glm::vec3& b = scratch.face_unit[edges[e].local];
+        if (glm::dot(a, b) >= in.cos_crease) sets.join(edges[e - 1].local, edges[e].local);
     }
     scratch.sums.assign(count, glm::vec3(0));
-    for (uint32_t i = 0; i < count; ++i)
-        scratch.sums[sets.find(i)] += in.face_normal[in.at.corner[first + i] / 3];
+    for (uint32_t i = 0; i < count; ++i) scratch.sums[sets.find(i)] += scratch.face_normal[i];
     for (uint32_t i = 0; i < count; ++i) {
-        const uint32_t c = in.at.corner[first + i], t = c / 3;
         const glm::vec3 sum = scratch.sums[sets.find(i)];
         const float len = glm::length(sum);
-        corner_normal[c] =
-            len > 0 ? sum / len
-                    : (glm::length(in.face_unit[t]) > 0 ? in.face_unit[t] : glm::vec3(0, 1, 0));
+        const glm::vec3& unit = scratch.face_unit[i];
+        corner_normal[in.at.corner[first + i]] =
+            len > 0 ? sum / len : (glm::length(unit) > 0 ? unit : glm::vec3(0, 1, 0));
     }
     return count + edges.size();
-}
-
-// Runs task(first, last) over [0, count) in fixed ranges, on the pool when
-// there is one: each range's result depends on the range alone.
-void for_ranges(ThreadPool* pool, size_t count, const std::function<void(size_t, size_t)>& task) {
-    constexpr size_t kRange = 16384;
-    if (pool && count > kRange)
-        pool->parallel_for_chunks(count, kRange, task);
-    else
-        task(0, count);
 }
 
 }  // namespace
@@ -269,35 +290,29 @@ void compute_normals(MeshPart& part, float crease_degrees, std::vector<uint32_t>
     // Weld by exact position so faces that share a corner in space, but not
     // an index (because their UVs differ), still smooth across each other.
     size_t welded = 0;
-    const std::vector<uint32_t> weld_id = weld_by_position(part.positions, welded);
-    const CornersAtVertex at = corners_at_vertices(idx, weld_id, welded);
-    SmoothingInput in{idx,
-                      weld_id,
-                      at,
-                      std::vector<glm::vec3>(triangles),
-                      std::vector<glm::vec3>(triangles),
+    const std::vector<uint32_t> weld_id = weld_by_position(part.positions, welded, pool);
+    const CornersAtVertex at = corners_at_vertices(idx, weld_id, welded, pool);
+    SmoothingInput in{idx, weld_id, at, std::vector<glm::vec3>(triangles),
                       std::cos(glm::radians(std::clamp(crease_degrees, 0.0f, 180.0f)))};
-    for_ranges(pool, triangles, [&](size_t first, size_t last) {
+    run_ranges(pool, triangles, kRange, [&](size_t first, size_t last) {
         for (size_t t = first; t < last; ++t) {
             const glm::vec3& a = part.positions[idx[3 * t]];
             const glm::vec3& b = part.positions[idx[3 * t + 1]];
             const glm::vec3& c = part.positions[idx[3 * t + 2]];
             // Length = twice the area: area weighting.
             in.face_normal[t] = glm::cross(b - a, c - a);
-            const float len = glm::length(in.face_normal[t]);
-            in.face_unit[t] = len > 0 ? in.face_normal[t] / len : glm::vec3(0);
         }
     });
     std::vector<glm::vec3> corner_normal(idx.size());
     std::atomic<uint64_t> steps{0};
-    for_ranges(pool, welded, [&](size_t first, size_t last) {
+    run_ranges(pool, welded, kRange, [&](size_t first, size_t last) {
         SmoothingScratch scratch;
         uint64_t range_steps = 0;
         for (size_t w = first; w < last; ++w)
             range_steps += smooth_corners_at(in, static_cast<uint32_t>(w), scratch, corner_normal);
         steps += range_steps;
     });
-    const uint64_t split_steps = split_by_normal(part, corner_normal, source_vertex);
+    const uint64_t split_steps = split_by_normal(part, corner_normal, source_vertex, pool);
     if (work) *work += steps + split_steps;
 }
 

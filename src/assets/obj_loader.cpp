@@ -3,16 +3,20 @@
 // (assets/obj_materials.hpp).
 #include <algorithm>
 #include <array>
+#include <atomic>
+#include <limits>
 #include <map>
 #include <tuple>
 
 #include <glm/geometric.hpp>
 
+#include "assets/corner_weld.hpp"
 #include "assets/mesh.hpp"
 #include "assets/obj_materials.hpp"
 #include "assets/obj_parse.hpp"
 #include "assets/polygon_triangulation.hpp"
 #include "core/error.hpp"
+#include "core/input_file.hpp"
 #include "core/thread_pool.hpp"
 
 namespace facet {
@@ -65,29 +69,36 @@ std::string utf16_to_utf8(const std::vector<uint8_t>& raw, bool big_endian) {
     return out;
 }
 
-// The file as UTF-8 text, read once and not copied when it is UTF-8
-// already. Some exporters write UTF-16 with a byte order mark (assimp's
-// box_UTF16BE.obj), which would otherwise read as an empty model.
-struct ObjText {
-    std::vector<uint8_t> bytes;
-    std::string converted;
-    std::string_view text;
+// The pool for a file of `bytes`, or none: small files are read on the
+// calling thread.
+void start_threads(size_t bytes, const AssetContext& context, std::optional<ThreadPool>& threads) {
+    if (bytes >= kParallelBytes && context.threads != 1) threads.emplace(context.threads);
+}
 
-    explicit ObjText(const std::string& path) : bytes(read_input_file(path, "OBJ")) {
-        const auto n = bytes.size();
-        const char* data = reinterpret_cast<const char*>(bytes.data());
-        const bool be = n >= 2 && bytes[0] == 0xFE && bytes[1] == 0xFF;
-        const bool le = n >= 2 && bytes[0] == 0xFF && bytes[1] == 0xFE;
-        if (be || le) {
-            converted = utf16_to_utf8(bytes, be);
-            text = converted;
-        } else if (n >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF) {
-            text = std::string_view(data + 3, n - 3);
-        } else {
-            text = std::string_view(data, n);
-        }
+// The file's geometry. UTF-8 text is parsed from the file a chunk at a
+// time, never copied whole. Some exporters write UTF-16 with a byte order
+// mark (assimp's box_UTF16BE.obj), which would otherwise read as an empty
+// model: that is converted whole first.
+ObjGeometry parse_file(const std::string& path, const AssetContext& context,
+                       std::optional<ThreadPool>& threads) {
+    const InputFileReader file(path, "OBJ");
+    unsigned char mark[3] = {0, 0, 0};
+    const size_t size = static_cast<size_t>(file.size());
+    file.read_at(0, reinterpret_cast<char*>(mark), std::min<size_t>(size, 3));
+    const bool be = size >= 2 && mark[0] == 0xFE && mark[1] == 0xFF;
+    const bool le = size >= 2 && mark[0] == 0xFF && mark[1] == 0xFE;
+    if (be || le) {
+        std::vector<uint8_t> bytes(size);
+        file.read_at(0, reinterpret_cast<char*>(bytes.data()), size);
+        const std::string text = utf16_to_utf8(bytes, be);
+        start_threads(text.size(), context, threads);
+        return parse_obj_geometry(text, path, threads ? &*threads : nullptr);
     }
-};
+    const bool utf8_mark = size >= 3 && mark[0] == 0xEF && mark[1] == 0xBB && mark[2] == 0xBF;
+    const size_t offset = utf8_mark ? 3 : 0;
+    start_threads(size - offset, context, threads);
+    return parse_obj_geometry(file, offset, threads ? &*threads : nullptr);
+}
 
 // Where the material changes: from the face `first_face` on, faces have
 // `material`.
@@ -136,23 +147,36 @@ void triangulate_face(const ObjGeometry& geometry, const ObjCorner* face, size_t
         for (size_t corner : triangle) out.push_back(face[corner]);
 }
 
-// The faces sorted into one part per material (std::map: parts come out in
-// the order of their materials), triangulated, in file order.
-// Calls visit(material, corners, count) for each face, in file order.
+// Calls visit(material, corners, count, faces) in file order for runs of
+// `faces` faces of `count` corners each and one material: a chunk of
+// triangles alone comes in runs up to the next change of material (copied
+// whole), any other chunk face by face.
 template <class Visit>
-void for_each_face(const ObjGeometry& geometry, const std::vector<MaterialChange>& changes,
-                   uint32_t no_material, Visit&& visit) {
+void for_each_run(const ObjGeometry& geometry, const std::vector<MaterialChange>& changes,
+                  uint32_t no_material, Visit&& visit) {
     size_t face = 0, next_change = 0;
     uint32_t material = no_material;
     for (const ObjFaceChunk& chunk : geometry.faces) {
+        const size_t faces = chunk.corner_counts.size();
+        // Every face has three corners or more: three each when they add up so.
+        const bool triangles = chunk.corners.size() == 3 * faces;
         size_t offset = 0;
-        for (const uint32_t count : chunk.corner_counts) {
+        for (size_t f = 0; f < faces;) {
             for (; next_change < changes.size() && changes[next_change].first_face <= face;
                  ++next_change)
                 material = changes[next_change].material;
-            visit(material, &chunk.corners[offset], count);
-            offset += count;
-            ++face;
+            size_t run = 1;
+            if (triangles) {
+                const size_t next_face = next_change < changes.size()
+                                             ? changes[next_change].first_face
+                                             : std::numeric_limits<size_t>::max();
+                run = std::min(faces - f, next_face - face);
+            }
+            const uint32_t count = chunk.corner_counts[f];
+            visit(material, &chunk.corners[offset], count, run);
+            offset += count * run;
+            f += run;
+            face += run;
         }
     }
 }
@@ -173,52 +197,40 @@ std::map<uint32_t, PartCorners> sort_faces(const ObjGeometry& geometry,
         last_material = material;
         return *part;
     };
-    for_each_face(geometry, changes, no_material,
-                  [&](uint32_t material, const ObjCorner*, size_t count) {
-                      part_of(material).room += 3 * (count - 2);
-                  });
+    for_each_run(geometry, changes, no_material,
+                 [&](uint32_t material, const ObjCorner*, size_t count, size_t faces) {
+                     part_of(material).room += faces * 3 * (count - 2);
+                 });
     for (auto& [material, p] : parts) p.corners.reserve(p.room);
-    for_each_face(geometry, changes, no_material,
-                  [&](uint32_t material, const ObjCorner* corners, size_t count) {
-                      triangulate_face(geometry, corners, count, part_of(material).corners);
-                  });
+    for_each_run(geometry, changes, no_material,
+                 [&](uint32_t material, const ObjCorner* corners, size_t count, size_t faces) {
+                     std::vector<ObjCorner>& out = part_of(material).corners;
+                     if (count == 3)
+                         out.insert(out.end(), corners, corners + 3 * faces);
+                     else
+                         triangulate_face(geometry, corners, count, out);
+                 });
     return parts;
 }
 
-bool same_vertex(const ObjCorner& a, const ObjCorner& b) {
-    return a.position == b.position && a.uv == b.uv && a.normal == b.normal;
-}
-
-// For each corner, the first corner with the same position, texture
-// coordinate and normal: those become one vertex. Most positions carry
-// one such triple, so each corner is compared with the first corner at
-// its position; the rest (seams, creases) are sorted. No hashing: a file
-// cannot make this slow, whatever its indices. O(n + k log k) for k
-// corners that differ from the first at their position.
-std::vector<uint32_t> first_uses(const std::vector<ObjCorner>& corners, size_t position_count) {
-    constexpr uint32_t kNone = ~0u;
-    std::vector<uint32_t> first_at(position_count, kNone);
-    std::vector<uint32_t> first(corners.size());
-    std::vector<uint32_t> others;
-    for (uint32_t c = 0; c < corners.size(); ++c) {
-        uint32_t& at = first_at[corners[c].position];
-        if (at == kNone) at = c;
-        if (same_vertex(corners[at], corners[c]))
-            first[c] = at;
-        else
-            others.push_back(c);
-    }
+// The part's vertices: one per distinct (position, uv, normal) index
+// triple, in the order of first use (assets/corner_weld.hpp: each corner is
+// compared with the first corner at its position).
+WeldedCorners weld_part_corners(const std::vector<ObjCorner>& corners, size_t position_count,
+                                ThreadPool* pool) {
     auto key = [&](uint32_t c) {
         return std::tuple(corners[c].position, corners[c].uv, corners[c].normal, c);
     };
-    std::sort(others.begin(), others.end(),
-              [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
-    for (size_t i = 0; i < others.size(); ++i) {
-        const bool same = i > 0 && same_vertex(corners[others[i]], corners[others[i - 1]]);
-        first[others[i]] = same ? first[others[i - 1]] : others[i];
-    }
-    return first;
+    return weld_corners(
+        corners.size(), position_count, [&](size_t c) { return corners[c].position; },
+        [&](uint32_t a, uint32_t b) {
+            return corners[a].uv == corners[b].uv && corners[a].normal == corners[b].normal;
+        },
+        [&](uint32_t a, uint32_t b) { return key(a) < key(b); }, pool);
 }
+
+// Ranges of vertices filled or normalised on one thread.
+constexpr size_t kVertexRange = 16384;
 
 // One part: its vertices, one per distinct (position, uv, normal) in the
 // order of first use, normals computed where the file gives none, and
@@ -227,37 +239,42 @@ MeshPart build_part(const ObjGeometry& geometry, uint32_t material,
                     std::vector<ObjCorner>&& corners, const std::string& path, ThreadPool* pool) {
     MeshPart part;
     part.material = material;
-    std::vector<uint32_t> first = first_uses(corners, geometry.positions.size());
-    part.indices.resize(corners.size());
-    part.positions.reserve(geometry.positions.size());
-    part.normals.reserve(geometry.positions.size());
-    part.uvs.reserve(geometry.positions.size());
-    bool missing_normals = false, any_uv = false;
-    for (uint32_t c = 0; c < corners.size(); ++c) {
-        if (first[c] != c) {
-            part.indices[c] = part.indices[first[c]];
-            continue;
+    WeldedCorners welded = weld_part_corners(corners, geometry.positions.size(), pool);
+    const size_t vertices = welded.first_corner.size();
+    part.positions.resize(vertices);
+    part.normals.resize(vertices);
+    part.uvs.resize(vertices);
+    std::atomic<bool> missing_normals = false, any_uv = false;
+    run_ranges(pool, vertices, kVertexRange, [&](size_t first, size_t last) {
+        bool range_missing_normals = false, range_any_uv = false;
+        for (size_t v = first; v < last; ++v) {
+            const ObjCorner& k = corners[welded.first_corner[v]];
+            part.positions[v] = geometry.positions[k.position];
+            part.normals[v] = k.normal >= 0 ? geometry.normals[k.normal] : glm::vec3(0);
+            // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
+            const glm::vec2 uv = k.uv >= 0 ? geometry.uvs[k.uv] : glm::vec2(0);
+            part.uvs[v] = k.uv >= 0 ? glm::vec2(uv.x, 1.0f - uv.y) : uv;
+            range_missing_normals = range_missing_normals || k.normal < 0;
+            range_any_uv = range_any_uv || k.uv >= 0;
         }
-        const ObjCorner& k = corners[c];
-        part.indices[c] = static_cast<uint32_t>(part.positions.size());
-        part.positions.push_back(geometry.positions[k.position]);
-        part.normals.push_back(k.normal >= 0 ? geometry.normals[k.normal] : glm::vec3(0));
-        // OBJ puts v = 0 at the bottom of the image; facet samples from the top.
-        const glm::vec2 uv = k.uv >= 0 ? geometry.uvs[k.uv] : glm::vec2(0);
-        part.uvs.push_back(k.uv >= 0 ? glm::vec2(uv.x, 1.0f - uv.y) : uv);
-        missing_normals = missing_normals || k.normal < 0;
-        any_uv = any_uv || k.uv >= 0;
-    }
+        if (range_missing_normals) missing_normals = true;
+        if (range_any_uv) any_uv = true;
+    });
+    part.indices = std::move(welded.vertex);
     // The corners are not needed any more: free them before the normals'
     // buffers grow (a fifth of the peak memory on a big file).
     corners = {};
-    first = {};
+    welded.first_corner = {};
     if (!any_uv) part.uvs.clear();
     if (missing_normals) compute_normals(part, kObjCreaseDegrees, nullptr, nullptr, pool);
-    for (auto& n : part.normals) {
-        const float len = glm::length(n);
-        n = len > 0 ? n / len : glm::vec3(0, 1, 0);
-    }
+    // Smoothing splits vertices: there may be more now.
+    run_ranges(pool, part.normals.size(), kVertexRange, [&](size_t first, size_t last) {
+        for (size_t v = first; v < last; ++v) {
+            glm::vec3& n = part.normals[v];
+            const float len = glm::length(n);
+            n = len > 0 ? n / len : glm::vec3(0, 1, 0);
+        }
+    });
     validate_part(part, path);
     return part;
 }
@@ -265,14 +282,8 @@ MeshPart build_part(const ObjGeometry& geometry, uint32_t material,
 }  // namespace
 
 Mesh load_obj(const std::string& path, const AssetContext& context) {
-    ObjGeometry geometry;
     std::optional<ThreadPool> threads;
-    {
-        const ObjText text(path);
-        if (text.text.size() >= kParallelBytes && context.threads != 1)
-            threads.emplace(context.threads);
-        geometry = parse_obj_geometry(text.text, path, threads ? &*threads : nullptr);
-    }
+    ObjGeometry geometry = parse_file(path, context, threads);
     ThreadPool* const pool = threads ? &*threads : nullptr;
     Mesh mesh;
     mesh.source = path;

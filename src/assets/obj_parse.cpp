@@ -12,7 +12,9 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <memory>
 
+#include "core/input_file.hpp"
 #include "core/thread_pool.hpp"
 
 namespace facet {
@@ -84,14 +86,70 @@ std::string clean_lines(std::string_view text) {
     return out;
 }
 
+// Room for text read from a file, not zeroed first: it is read over at
+// once, and zeroing a megabyte per chunk and pass cost a tenth of the read.
+class ChunkBuffer {
+  public:
+    char* room(size_t size) {
+        if (size > capacity_) {
+            data_ = std::make_unique_for_overwrite<char[]>(size);
+            capacity_ = size;
+        }
+        return data_.get();
+    }
+
+  private:
+    std::unique_ptr<char[]> data_;
+    size_t capacity_ = 0;
+};
+
+// The text to parse: in memory, or a file from `offset` on, read a chunk
+// at a time into small buffers that are reused, so that a big file is
+// never copied whole (InputFileReader).
+class TextSource {
+  public:
+    explicit TextSource(std::string_view text) : text_(text), size_(text.size()) {}
+    TextSource(const InputFileReader& file, size_t offset)
+        : file_(&file), offset_(offset), size_(static_cast<size_t>(file.size()) - offset) {}
+
+    size_t size() const { return size_; }
+
+    // The text [begin, end), read into `buffer` from a file.
+    std::string_view view(size_t begin, size_t end, ChunkBuffer& buffer) const {
+        if (!file_) return text_.substr(begin, end - begin);
+        char* bytes = buffer.room(end - begin);
+        file_->read_at(offset_ + begin, bytes, end - begin);
+        return std::string_view(bytes, end - begin);
+    }
+
+    // Where the first LF at or after `from` is; npos when there is none.
+    size_t find_lf(size_t from) const {
+        if (!file_) return text_.find('\n', from);
+        constexpr size_t kWindow = 4096;
+        ChunkBuffer buffer;
+        for (size_t begin = from; begin < size_; begin += kWindow) {
+            const std::string_view window = view(begin, std::min(size_, begin + kWindow), buffer);
+            const size_t lf = window.find('\n');
+            if (lf != std::string_view::npos) return begin + lf;
+        }
+        return std::string_view::npos;
+    }
+
+  private:
+    std::string_view text_;
+    const InputFileReader* file_ = nullptr;
+    size_t offset_ = 0;
+    size_t size_ = 0;
+};
+
 // [begin, end) of each chunk: about kChunkBytes each, cut after a LF.
-std::vector<std::pair<size_t, size_t>> cut_chunks(std::string_view text) {
+std::vector<std::pair<size_t, size_t>> cut_chunks(const TextSource& text) {
     std::vector<std::pair<size_t, size_t>> chunks;
     size_t begin = 0;
     while (begin < text.size()) {
         size_t end = std::min(text.size(), begin + kChunkBytes);
         if (end < text.size()) {
-            const size_t lf = text.find('\n', end - 1);
+            const size_t lf = text.find_lf(end - 1);
             end = lf == std::string_view::npos ? text.size() : lf + 1;
         }
         chunks.emplace_back(begin, end);
@@ -300,6 +358,7 @@ int64_t resolve_index(int64_t raw, size_t before) {
 struct ChunkPlace {
     size_t first_line = 0;  // lines before the chunk
     ChunkCounts before;     // v, vt and vn statements before the chunk
+    ChunkCounts own;        // in the chunk, as the first pass counted them
     ChunkCounts total;      // in the whole file
 };
 
@@ -307,7 +366,11 @@ struct ChunkPlace {
 class ChunkParser {
   public:
     ChunkParser(const std::string& path, const ChunkPlace& place, ObjGeometry& file)
-        : path_(path), place_(place), file_(file), counts_(place.before) {}
+        : path_(path), place_(place), file_(file), counts_(place.before), limit_(place.before) {
+        limit_.positions += place.own.positions;
+        limit_.uvs += place.own.uvs;
+        limit_.normals += place.own.normals;
+    }
 
     void parse(std::string_view chunk) {
         // Room for the corners of a file of triangles ("f 1/1 2/2 3/3" is
@@ -320,6 +383,11 @@ class ChunkParser {
             line_ = static_cast<int>(place_.first_line + ++line_index);
             parse_line(line);
         });
+        // A file read twice may have changed in between: its vertices
+        // would not be where the first pass put them.
+        changed =
+            !error && (line_index != place_.own.lines || counts_.positions != limit_.positions ||
+                       counts_.uvs != limit_.uvs || counts_.normals != limit_.normals);
     }
 
     ObjFaceChunk faces;
@@ -327,6 +395,7 @@ class ChunkParser {
     ChunkNotes notes;
     std::optional<Error> error;
     int error_line = 0;
+    bool changed = false;  // the chunk is not what the first pass counted
 
   private:
     void fail(size_t column, const std::string& message) {
@@ -340,20 +409,21 @@ class ChunkParser {
         switch (s.keyword) {
             case Keyword::position: {
                 float xyz[3] = {0, 0, 0};
-                if (read_numbers(line, s.args, xyz, 3))
+                if (read_numbers(line, s.args, xyz, 3) && counts_.positions < limit_.positions)
                     file_.positions[counts_.positions] = {xyz[0], xyz[1], xyz[2]};
                 ++counts_.positions;
                 break;
             }
             case Keyword::uv: {
                 float uv[2] = {0, 0};
-                if (read_numbers(line, s.args, uv, 2)) file_.uvs[counts_.uvs] = {uv[0], uv[1]};
+                if (read_numbers(line, s.args, uv, 2) && counts_.uvs < limit_.uvs)
+                    file_.uvs[counts_.uvs] = {uv[0], uv[1]};
                 ++counts_.uvs;
                 break;
             }
             case Keyword::normal: {
                 float xyz[3] = {0, 0, 0};
-                if (read_numbers(line, s.args, xyz, 3))
+                if (read_numbers(line, s.args, xyz, 3) && counts_.normals < limit_.normals)
                     file_.normals[counts_.normals] = {xyz[0], xyz[1], xyz[2]};
                 ++counts_.normals;
                 break;
@@ -534,6 +604,7 @@ class ChunkParser {
     const ChunkPlace& place_;
     ObjGeometry& file_;
     ChunkCounts counts_;  // v, vt and vn statements before the current line
+    ChunkCounts limit_;   // before the next chunk: the chunk writes below these
     int line_ = 0;
 };
 
@@ -584,37 +655,20 @@ void add_warnings(const ChunkNotes& notes, const std::string& path, ObjGeometry&
                          "'g' without a group name" + times(notes.empty_groups.count)));
 }
 
-// Runs task(i) for i in [0, count), on the pool when there is one.
-void run_each(ThreadPool* pool, size_t count, const std::function<void(size_t)>& task) {
-    if (pool && count > 1) {
-        pool->parallel_for(count, task);
-    } else {
-        for (size_t i = 0; i < count; ++i) task(i);
-    }
-}
-
-// Parses the text; text with lone CRs or NULs is cleaned first
-// (clean_lines), which the first pass finds.
-ObjGeometry parse_text(std::string_view text, const std::string& path, ThreadPool* pool) {
-    const std::vector<std::pair<size_t, size_t>> chunks = cut_chunks(text);
-    auto chunk_text = [&](size_t i) {
-        return text.substr(chunks[i].first, chunks[i].second - chunks[i].first);
-    };
-    std::vector<ChunkCounts> counts(chunks.size());
-    run_each(pool, chunks.size(), [&](size_t i) { counts[i] = count_chunk(chunk_text(i)); });
-    for (const ChunkCounts& c : counts)
-        if (c.needs_cleanup) return parse_text(clean_lines(text), path, pool);
-
-    std::vector<ChunkPlace> places(chunks.size());
+// Each chunk's place from the first pass's counts; the file's arrays
+// made room for every vertex.
+std::vector<ChunkPlace> place_chunks(const std::vector<ChunkCounts>& counts,
+                                     const std::string& path, ObjGeometry& file) {
+    std::vector<ChunkPlace> places(counts.size());
     ChunkPlace running;
-    for (size_t i = 0; i < chunks.size(); ++i) {
+    for (size_t i = 0; i < counts.size(); ++i) {
         places[i] = running;
+        places[i].own = counts[i];
         running.first_line += counts[i].lines;
         running.before.positions += counts[i].positions;
         running.before.uvs += counts[i].uvs;
         running.before.normals += counts[i].normals;
     }
-    ObjGeometry file;
     const ChunkCounts total = running.before;
     for (ChunkPlace& p : places) p.total = total;
     constexpr size_t kMaxIndex = std::numeric_limits<int32_t>::max();
@@ -623,15 +677,16 @@ ObjGeometry parse_text(std::string_view text, const std::string& path, ThreadPoo
     file.positions.resize(total.positions);
     file.uvs.resize(total.uvs);
     file.normals.resize(total.normals);
+    return places;
+}
 
-    std::vector<ChunkParser> parsers;
-    parsers.reserve(chunks.size());
-    for (size_t i = 0; i < chunks.size(); ++i) parsers.emplace_back(path, places[i], file);
-    run_each(pool, chunks.size(), [&](size_t i) { parsers[i].parse(chunk_text(i)); });
-
+// The chunks' faces, statements and notes joined in file order.
+void join_chunks(std::vector<ChunkParser>& parsers, const std::string& path, ObjGeometry& file) {
     ChunkNotes notes;
     size_t faces_before = 0;
     for (ChunkParser& parser : parsers) {
+        if (parser.changed)
+            throw Error(ExitCode::io_failure, path + ": the OBJ file changed while it was read");
         if (parser.error && !file.error) {
             file.error = parser.error;
             file.error_line = parser.error_line;
@@ -645,6 +700,36 @@ ObjGeometry parse_text(std::string_view text, const std::string& path, ThreadPoo
         file.faces.push_back(std::move(parser.faces));
     }
     add_warnings(notes, path, file);
+}
+
+// Parses the text; text with lone CRs or NULs is cleaned first
+// (clean_lines), which the first pass finds.
+ObjGeometry parse_text(const TextSource& text, const std::string& path, ThreadPool* pool) {
+    const std::vector<std::pair<size_t, size_t>> chunks = cut_chunks(text);
+    auto chunk_text = [&](size_t i, ChunkBuffer& buffer) {
+        return text.view(chunks[i].first, chunks[i].second, buffer);
+    };
+    std::vector<ChunkCounts> counts(chunks.size());
+    run_each(pool, chunks.size(), [&](size_t i) {
+        ChunkBuffer buffer;
+        counts[i] = count_chunk(chunk_text(i, buffer));
+    });
+    for (const ChunkCounts& c : counts) {
+        if (!c.needs_cleanup) continue;
+        ChunkBuffer buffer;
+        const std::string cleaned = clean_lines(text.view(0, text.size(), buffer));
+        return parse_text(TextSource(cleaned), path, pool);
+    }
+    ObjGeometry file;
+    const std::vector<ChunkPlace> places = place_chunks(counts, path, file);
+    std::vector<ChunkParser> parsers;
+    parsers.reserve(chunks.size());
+    for (size_t i = 0; i < chunks.size(); ++i) parsers.emplace_back(path, places[i], file);
+    run_each(pool, chunks.size(), [&](size_t i) {
+        ChunkBuffer buffer;
+        parsers[i].parse(chunk_text(i, buffer));
+    });
+    join_chunks(parsers, path, file);
     return file;
 }
 
@@ -657,7 +742,11 @@ size_t ObjGeometry::face_count() const {
 }
 
 ObjGeometry parse_obj_geometry(std::string_view text, const std::string& path, ThreadPool* pool) {
-    return parse_text(text, path, pool);
+    return parse_text(TextSource(text), path, pool);
+}
+
+ObjGeometry parse_obj_geometry(const InputFileReader& file, size_t offset, ThreadPool* pool) {
+    return parse_text(TextSource(file, offset), file.path(), pool);
 }
 
 }  // namespace facet

@@ -243,7 +243,7 @@ int render_command(const RenderArgs& args) {
     if (args.video_only) options.out_dir = frames_folder.path;
     if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
-    World world = build_world(scene);
+    World world = build_world(scene, options.threads);
     if (!args.quiet) print_warnings(scene, world);
     refuse_warnings(args.strict, scene.warnings, world.warnings);
     ProgressReporter progress(stderr, args.quiet);
@@ -538,6 +538,7 @@ struct InfoArgs {
     std::string mesh;
     bool allow_outside = false;
     bool json = false;
+    unsigned threads = 0;  // that may read one big file
 };
 
 CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
@@ -548,6 +549,7 @@ CLI::App* add_info_command(CLI::App& app, InfoArgs& args) {
         ->required();
     cmd->add_flag("--json", args.json, "Print the description as JSON");
     add_asset_paths_flag(cmd, args.allow_outside);
+    add_threads_option(cmd, args.threads);
     return cmd;
 }
 
@@ -647,7 +649,8 @@ int run_subcommand(CLI::App& app, const Subcommands& cmd, CommandArgs& args) {
     if (cmd.compare->parsed()) return compare_command(args.compare);
     if (cmd.validate->parsed()) return validate_command(args.validate);
     if (cmd.info->parsed())
-        return info_command(args.info.mesh, args.info.allow_outside, args.info.json);
+        return info_command(args.info.mesh, args.info.allow_outside, args.info.json,
+                            args.info.threads);
     if (cmd.styles->parsed()) return styles_command(args.styles.name, args.styles.json);
     if (cmd.bench->parsed()) return bench_command(args.bench);
     if (cmd.sheet->parsed()) return sheet_command(args.sheet);

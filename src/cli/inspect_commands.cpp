@@ -214,13 +214,14 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
 
 }  // namespace
 
-int info_command(const std::string& path, bool allow_outside, bool json) {
+int info_command(const std::string& path, bool allow_outside, bool json, unsigned threads) {
     require_input_file(path, "mesh");
     TextureBudget textures(kDefaultTextureBudget);
     AssetContext assets;
     assets.paths.allow_outside = allow_outside;
     assets.textures = &textures;
     assets.inspect_only = true;
+    assets.threads = threads;
     const Mesh mesh = load_mesh(path, assets);
     if (json)
         print_mesh_json(path, mesh);

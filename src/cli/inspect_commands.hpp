@@ -8,7 +8,7 @@
 
 namespace facet {
 
-int info_command(const std::string& path, bool allow_outside, bool json);
+int info_command(const std::string& path, bool allow_outside, bool json, unsigned threads = 0);
 
 // `facet styles [NAME] [--json]`.
 int styles_command(const std::string& name, bool json);

@@ -1,5 +1,6 @@
 #include "core/input_file.hpp"
 
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -116,6 +117,43 @@ std::vector<uint8_t> read_input_file(const std::string& path, const std::string&
             ExitCode::invalid_input,
             path + ": cannot read " + what + ": over the limit of " + describe_bytes(max_bytes));
     return bytes;
+}
+
+InputFileReader::InputFileReader(const std::string& path, const std::string& what)
+    : path_(path), what_(what) {
+    require_input_file(path, what);
+    fd_ = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd_ < 0)
+        throw Error(ExitCode::io_failure,
+                    path + ": cannot open " + what + ": " + std::strerror(errno));
+    // The path may name another file by now: the open one is checked.
+    struct stat st {};
+    if (::fstat(fd_, &st) != 0 || !S_ISREG(st.st_mode)) {
+        ::close(fd_);
+        throw Error(ExitCode::invalid_input,
+                    path + ": cannot read " + what + ": is not a regular file");
+    }
+    size_ = static_cast<uint64_t>(st.st_size);
+}
+
+InputFileReader::~InputFileReader() {
+    ::close(fd_);
+}
+
+void InputFileReader::read_at(uint64_t offset, char* out, size_t count) const {
+    while (count > 0) {
+        const ssize_t got = ::pread(fd_, out, count, static_cast<off_t>(offset));
+        if (got < 0 && errno == EINTR) continue;
+        if (got < 0)
+            throw Error(ExitCode::io_failure,
+                        path_ + ": read error in " + what_ + ": " + std::strerror(errno));
+        if (got == 0)
+            throw Error(ExitCode::io_failure,
+                        path_ + ": " + what_ + " was cut short while it was read");
+        out += got;
+        offset += static_cast<uint64_t>(got);
+        count -= static_cast<size_t>(got);
+    }
 }
 
 std::string resolve_asset_reference(const std::string& asset, const std::string& where,

@@ -23,6 +23,31 @@ void require_input_file(const std::string& path, const std::string& what, uint64
 std::vector<uint8_t> read_input_file(const std::string& path, const std::string& what,
                                      uint64_t max_bytes = 0);
 
+// An input file read by ranges (pread), for a file too big to copy whole:
+// a fresh buffer the size of a 90 MB file costs more in page faults than
+// reading it does. Opened after require_input_file; its size is the one it
+// had when opened (checked as a regular file again, on the open file). No
+// mmap: a file cut short while mapped would kill the process (SIGBUS);
+// here a range the file no longer holds is an io_failure instead.
+class InputFileReader {
+  public:
+    InputFileReader(const std::string& path, const std::string& what);
+    ~InputFileReader();
+    InputFileReader(const InputFileReader&) = delete;
+    InputFileReader& operator=(const InputFileReader&) = delete;
+
+    uint64_t size() const { return size_; }
+    const std::string& path() const { return path_; }
+    // Bytes [offset, offset + count) into `out`; throws facet::Error
+    // (io_failure) when the file no longer has them.
+    void read_at(uint64_t offset, char* out, size_t count) const;
+
+  private:
+    std::string path_, what_;
+    int fd_ = -1;
+    uint64_t size_ = 0;
+};
+
 // "1.5 GB", "320 MB", "12 KB", "17 bytes".
 std::string describe_bytes(uint64_t bytes);
 

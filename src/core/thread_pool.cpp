@@ -95,4 +95,20 @@ void ThreadPool::parallel_for_chunks(size_t count, size_t chunk_size,
     });
 }
 
+void run_each(ThreadPool* pool, size_t count, const std::function<void(size_t)>& task) {
+    if (pool && count > 1) {
+        pool->parallel_for(count, task);
+    } else {
+        for (size_t i = 0; i < count; ++i) task(i);
+    }
+}
+
+void run_ranges(ThreadPool* pool, size_t count, size_t range_size,
+                const std::function<void(size_t, size_t)>& task) {
+    if (pool && count > range_size)
+        pool->parallel_for_chunks(count, range_size, task);
+    else
+        task(0, count);
+}
+
 }  // namespace facet

@@ -55,4 +55,15 @@ class ThreadPool {
     std::exception_ptr failure_;
 };
 
+// Runs task(i) for every i in [0, count): on the pool when there is one,
+// else on the calling thread.
+void run_each(ThreadPool* pool, size_t count, const std::function<void(size_t)>& task);
+
+// Runs task(first, last) over [0, count) in fixed ranges of `range_size`
+// items (as parallel_for_chunks): on the pool when there is one and the
+// work is more than one range, else as one range on the calling thread.
+// Callers make each item's result depend on the item alone.
+void run_ranges(ThreadPool* pool, size_t count, size_t range_size,
+                const std::function<void(size_t first, size_t last)>& task);
+
 }  // namespace facet

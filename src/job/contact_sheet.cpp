@@ -41,7 +41,7 @@ ColorImage render_contact_sheet(const SheetRequest& request) {
         size += "]";
         options.overrides.push_back({"output.size", size, "sheet cell size"});
         const SceneDesc scene = load_scene(request.scene, options);
-        const World world = build_world(scene);
+        const World world = build_world(scene, request.threads);
         FrameRenderer renderer(scene, world, pool);
         FrameImages images;
         const int frame = request.frame != 0 ? request.frame : scene.output.frames.front();

@@ -270,7 +270,7 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
             scene = std::make_shared<const SceneDesc>(std::move(spliced));
         } else {
             scene = std::make_shared<const SceneDesc>(std::move(read));
-            world = std::make_shared<const World>(build_world(*scene));
+            world = std::make_shared<const World>(build_world(*scene, loaded.pool.size()));
         }
         // As render does: a size or sample count the machine cannot hold is
         // an error to show, not a crash.

@@ -404,7 +404,7 @@ std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material
 
 }  // namespace
 
-World build_world(const SceneDesc& scene) {
+World build_world(const SceneDesc& scene, unsigned load_threads) {
     World world;
     const WorldExtras extras = extras_of(scene);
     std::map<std::string, std::shared_ptr<const Mesh>> meshes;
@@ -414,6 +414,7 @@ World build_world(const SceneDesc& scene) {
     assets.paths.allow_outside = scene.assets.allow_paths_outside;
     assets.paths.max_file_bytes = scene.assets.max_file_bytes;
     assets.textures = &texture_budget;
+    assets.threads = load_threads;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
         std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, world);
