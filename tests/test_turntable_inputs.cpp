@@ -8,6 +8,9 @@
 #include <filesystem>
 
 #include "assets/mesh_format.hpp"
+#include "render/world.hpp"
+#include "support.hpp"
+#include "turntable/model_turntable.hpp"
 #include "turntable/up_axis.hpp"
 #include "turntable/yaml_writer.hpp"
 #include "turntable_support.hpp"
@@ -218,4 +221,31 @@ TEST_CASE("turntable options get clear errors, and apply to models only", "[turn
     const RunResult tonemapped = run_facet("scene '" + obj + "' -q -D output.tonemap=agx");
     CHECK(tonemapped.exit_code == 0);
     CHECK_THAT(tonemapped.output, Contains("tonemap: agx"));
+}
+
+TEST_CASE("facet render MODEL reads the model once, unless -D asks for other asset settings",
+          "[turntable][assets]") {
+    TempDir dir("turntable-read-once");
+    const std::vector<glm::vec3> corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
+                                            {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    facet::TurntableRequest request;
+    request.model = write_obj(dir.file("tile"), corners);
+    request.scene_options.style_dirs = {facet::test::styles_dir()};
+    const facet::Turntable turntable = facet::load_turntable(request);
+    // The survey's mesh is offered under the path the scene's object names.
+    REQUIRE(turntable.meshes.size() == 1);
+    const auto& [path, mesh] = *turntable.meshes.begin();
+    CHECK(mesh == turntable.survey.mesh);
+    bool named = false;
+    for (const facet::ObjectDesc& object : turntable.scene.objects) named |= object.mesh == path;
+    CHECK(named);
+    // The world takes it, and is the world the file would give.
+    const facet::World taken = facet::build_world(turntable.scene, 1, &turntable.meshes);
+    const facet::World read = facet::build_world(turntable.scene, 1);
+    CHECK(taken.triangle_count() == read.triangle_count());
+    CHECK(taken.positions == read.positions);
+    // Another texture budget: the survey's reading is not the scene's, so
+    // nothing is offered and the world reads the file under the user's.
+    request.scene_options.overrides.push_back({"assets.texture_budget_mb", "64", "test"});
+    CHECK(facet::load_turntable(request).meshes.empty());
 }

@@ -3,6 +3,7 @@
 // of parts; each part has one material and its own indexed vertices.
 #include <cstdint>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -196,6 +197,12 @@ struct AssetContext {
     // count.
     unsigned threads = 0;
 };
+
+// Meshes already read, by the path a scene's `mesh:` gives, each read
+// under the scene's own asset settings: `facet render MODEL` surveys the
+// model before its scene exists, and the world takes that mesh instead of
+// reading the file again.
+using LoadedMeshes = std::map<std::string, std::shared_ptr<const Mesh>>;
 
 // Loads a mesh file by the loader its bytes call for, or else its name
 // (assets/mesh_format.hpp): .obj (facet's own reader; .mtl through

@@ -214,7 +214,8 @@ int render_command(const RenderArgs& args) {
     // Installed first, so an interrupt while loading also ends cleanly.
     catch_interrupts();
     SceneOptions scene_opts = scene_options(args);
-    SceneDesc scene = load_scene_or_model(args, scene_opts);
+    LoadedMeshes model_mesh;  // a model's turntable: the mesh its survey read
+    SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
     // A farm task: its part of the job's frames.
@@ -243,7 +244,8 @@ int render_command(const RenderArgs& args) {
     if (args.video_only) options.out_dir = frames_folder.path;
     if (args.dry_run) return dry_run(args, scene, options);
     check_outputs(scene, options);  // before the slow part: loading meshes
-    World world = build_world(scene, options.threads);
+    World world = build_world(scene, options.threads, &model_mesh);
+    model_mesh.clear();  // the world holds what it uses
     if (!args.quiet) print_warnings(scene, world);
     refuse_warnings(args.strict, scene.warnings, world.warnings);
     ProgressReporter progress(stderr, args.quiet);
@@ -287,7 +289,8 @@ int validate_command(const RenderArgs& args) {
     Warnings warnings;
     try {
         SceneOptions scene_opts = scene_options(args);
-        SceneDesc scene = load_scene_or_model(args, scene_opts);
+        LoadedMeshes model_mesh;
+        SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
         warnings = scene.warnings;
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
@@ -298,7 +301,7 @@ int validate_command(const RenderArgs& args) {
         // validating a scene must not depend on what some earlier run left in out/.
         options.overwrite = !args.output_given;
         check_outputs(scene, options);
-        World world = build_world(scene);
+        World world = build_world(scene, 0, &model_mesh);
         warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
         if (!args.json && !args.quiet && args.strict) print_warnings(scene, world);
         refuse_warnings(args.strict, scene.warnings, world.warnings);

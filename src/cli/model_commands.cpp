@@ -107,7 +107,7 @@ void add_turntable_options(CLI::App* cmd, TurntableArgs& args) {
         ->group(kGroup);
 }
 
-SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options) {
+SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options, LoadedMeshes* loaded) {
     if (scene_input_kind(args.scene) != SceneInputKind::mesh) {
         const std::string option = args.turntable.first_given();
         if (!option.empty())
@@ -118,6 +118,7 @@ SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options) {
     }
     Turntable turntable = load_turntable(turntable_request(args, options));
     options.overrides = turntable.overrides;
+    if (loaded) *loaded = std::move(turntable.meshes);
     if (!args.quiet) report_model(args.scene, turntable.survey);
     return std::move(turntable.scene);
 }

@@ -5,6 +5,7 @@
 // turntable as a scene file to grow into.
 #include <string>
 
+#include "assets/mesh.hpp"
 #include "cli/render_args.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -21,8 +22,11 @@ void add_turntable_options(CLI::App* command, TurntableArgs& args);
 // The scene `args.scene` names: a scene file as load_scene reads it, or
 // the turntable of a mesh file, whose options' overrides are then put
 // before the user's in `options` (the manifest lists them). Says on stderr
-// (unless args.quiet) which way up a model was taken and why.
-SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options);
+// (unless args.quiet) which way up a model was taken and why. `loaded`,
+// when given, receives the model's mesh as the survey read it, for
+// build_world to take instead of reading the file again.
+SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options,
+                              LoadedMeshes* loaded = nullptr);
 
 // `facet scene MODEL [options] [-o FILE]`.
 struct SceneFileArgs {

@@ -301,16 +301,18 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
 // The mesh object `o` shows: its file (loaded once per path, its warnings
 // kept), its cloth's rest pose, or its primitive. Errors point at its key.
 std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
-                                        const AssetContext& assets,
-                                        std::map<std::string, std::shared_ptr<const Mesh>>& meshes,
-                                        World& world) {
+                                        const AssetContext& assets, LoadedMeshes& meshes,
+                                        const LoadedMeshes* loaded, World& world) {
     const ObjectDesc& obj = scene.objects[o];
     const std::string key = "objects." + std::to_string(o);
     try {
         if (!obj.mesh.empty()) {
             auto& slot = meshes[obj.mesh];
             if (!slot) {
-                slot = std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
+                const auto read = loaded ? loaded->find(obj.mesh) : LoadedMeshes::const_iterator{};
+                slot = loaded && read != loaded->end()
+                           ? read->second
+                           : std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
                 world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
                                       slot->warnings.end());
             }
@@ -404,10 +406,10 @@ std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material
 
 }  // namespace
 
-World build_world(const SceneDesc& scene, unsigned load_threads) {
+World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMeshes* loaded) {
     World world;
     const WorldExtras extras = extras_of(scene);
-    std::map<std::string, std::shared_ptr<const Mesh>> meshes;
+    LoadedMeshes meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
     AssetContext assets;
@@ -417,7 +419,7 @@ World build_world(const SceneDesc& scene, unsigned load_threads) {
     assets.threads = load_threads;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
-        std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, world);
+        std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, loaded, world);
         world.object_bounds.push_back(mesh->bounds());
         if (obj.file_lights)
             for (const GltfLight& light : mesh->lights)

@@ -124,7 +124,9 @@ struct World {
 // Loads every mesh and texture the scene names. Errors name the scene file
 // location of the object that refers to the bad file. `load_threads` may
 // read one big mesh file (AssetContext::threads; 0: one per core), so that
-// `render --threads N` governs loading too.
-World build_world(const SceneDesc& scene, unsigned load_threads = 0);
+// `render --threads N` governs loading too. A mesh in `loaded` is taken
+// as it is instead of its file being read.
+World build_world(const SceneDesc& scene, unsigned load_threads = 0,
+                  const LoadedMeshes* loaded = nullptr);
 
 }  // namespace facet

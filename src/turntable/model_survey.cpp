@@ -101,9 +101,11 @@ double ModelSurvey::size() const {
 }
 
 ModelSurvey survey_model(const SurveyRequest& request) {
-    const Mesh mesh = load_mesh(request.path, request.assets);
+    auto read = std::make_shared<const Mesh>(load_mesh(request.path, request.assets));
+    const Mesh& mesh = *read;
     check_drawable(mesh, request.path);
     ModelSurvey survey;
+    survey.mesh = read;
     survey.path = request.path;
     survey.format = recognise_mesh_file(request.path).value_or(MeshFormat::obj);
     survey.triangles = mesh.triangle_count();

@@ -4,6 +4,7 @@
 // is up, and where the model stands over every pose the turntable shows.
 // A model with nothing to draw or no size to frame is refused here, with a
 // message, before any camera could be computed from it.
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -34,6 +35,9 @@ struct ModelSurvey {
     // every pose the turntable shows; before it is moved onto the ground.
     Bounds bounds;
     double size() const;  // the largest side of `bounds`
+    // The mesh as read, so that the render need not read the file again
+    // (model_turntable.hpp says when it may use it).
+    std::shared_ptr<const Mesh> mesh;
 };
 
 // The smallest and largest model facet frames, by its largest side: a

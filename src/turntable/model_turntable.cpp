@@ -46,6 +46,25 @@ SceneDesc read_scene(const std::string& text, const std::string& name, const std
     return load_scene_text(text, name, path, options);
 }
 
+// The surveyed mesh, offered to the world under each path of the scene
+// that names the model, when the survey read it as the scene would.
+LoadedMeshes surveyed_meshes(const TurntableRequest& request, const SceneDesc& scene,
+                             const ModelSurvey& survey) {
+    const AssetPathPolicy policy;
+    const bool same_settings =
+        scene.assets.allow_paths_outside == request.allow_asset_paths_outside &&
+        scene.assets.max_file_bytes == policy.max_file_bytes &&
+        scene.assets.texture_budget_bytes == kDefaultTextureBudget;
+    LoadedMeshes meshes;
+    if (!same_settings || !survey.mesh) return meshes;
+    for (const ObjectDesc& object : scene.objects) {
+        std::error_code error;
+        if (!object.mesh.empty() && fs::equivalent(object.mesh, request.model, error))
+            meshes[object.mesh] = survey.mesh;
+    }
+    return meshes;
+}
+
 }  // namespace
 
 Turntable load_turntable(const TurntableRequest& request) {
@@ -62,6 +81,7 @@ Turntable load_turntable(const TurntableRequest& request) {
     turntable.scene.built = BuiltScene{sha256_hex(text.data(), text.size()),
                                        sha256_hex(read_input_file(request.model, "mesh")),
                                        turntable_option_record(request.options, turntable.survey)};
+    turntable.meshes = surveyed_meshes(request, turntable.scene, turntable.survey);
     return turntable;
 }
 

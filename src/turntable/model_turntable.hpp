@@ -26,6 +26,10 @@ struct Turntable {
     ModelSurvey survey;
     // Every override applied, the options' first, as the manifest lists them.
     std::vector<Override> overrides;
+    // The surveyed model under its scene path, for build_world: empty when
+    // the scene's asset settings (-D assets.*) differ from the survey's, so
+    // that the file is read again under the user's.
+    LoadedMeshes meshes;
 };
 
 // `facet render MODEL`: the scene, named after the model and resolving its
