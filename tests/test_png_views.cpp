@@ -3,12 +3,13 @@
 // must be, byte for byte, what decoding that file gives back.
 #include <catch2/catch.hpp>
 
+#include <limits>
 #include <optional>
 
 #include "core/thread_pool.hpp"
+#include "job/pass_files.hpp"
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
-#include "job/pass_files.hpp"
 #include "render/world.hpp"
 #include "support.hpp"
 
@@ -97,4 +98,33 @@ TEST_CASE("position and motion have no PNG view samples", "[output][png]") {
     CHECK_FALSE(png_view_samples(Pass::position, out, images, {1, 2}));
     CHECK_FALSE(png_view_samples(Pass::motion, out, images, {1, 2}));
     CHECK(encode_png_view(Pass::motion, out, images, {}).empty());
+}
+
+TEST_CASE("the depth view maps every value as documented, eight at a time and one at a time",
+          "[output][png]") {
+    // docs/scene-format.md: near -> 65535, far -> 0, linear between,
+    // clamped; the background (+inf) 0. NaN and -inf are no depth a render
+    // gives, but must come out as something fixed: 0 and 0.
+    const float inf = std::numeric_limits<float>::infinity();
+    const float nan = std::numeric_limits<float>::quiet_NaN();
+    const glm::vec2 range(2.0f, 10.0f);
+    const std::vector<std::pair<float, uint16_t>> cases = {
+        {inf, 0},   {-inf, 0},     {nan, 0},       {2.0f, 65535}, {10.0f, 0},       {1.0f, 65535},
+        {50.0f, 0}, {6.0f, 32768}, {-0.0f, 65535}, {9.99999f, 0}, {2.00001f, 65535}};
+    // Eleven columns: eight in lanes, three one at a time; each row shifts
+    // the cases by one, so every case is met at every column.
+    const int width = 11, height = static_cast<int>(cases.size());
+    DepthImage depth(width, height);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x)
+            depth.at(x, y) = cases[static_cast<size_t>(x + y) % cases.size()].first;
+    const PngSamples samples = png_depth_samples(depth, range);
+    REQUIRE(samples.bit_depth == 16);
+    REQUIRE(samples.channels == 1);
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            const auto& [value, expected] = cases[static_cast<size_t>(x + y) % cases.size()];
+            INFO("depth " << value << " at column " << x);
+            CHECK(samples.sample(static_cast<size_t>(y) * width + x) == expected);
+        }
 }
