@@ -95,3 +95,35 @@ TEST_CASE("PNG writer: chunk CRCs and text", "[output][png]") {
     const std::string all(bytes.begin(), bytes.end());
     CHECK(all.find(std::string("tEXtSoftware") + '\0' + "facet") != std::string::npos);
 }
+
+TEST_CASE("a PNG whose header asks for more memory than there is is refused, naming it",
+          "[output][png]") {
+    // The signature, an IHDR of 1,000,000 x 1,000,000 RGBA pixels (libpng's
+    // own limits allow it), an empty IDAT and IEND: 4 TB of samples.
+    std::vector<uint8_t> file = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    auto chunk = [&](const char* type, const std::vector<uint8_t>& data) {
+        const uint32_t size = static_cast<uint32_t>(data.size());
+        for (int shift = 24; shift >= 0; shift -= 8) file.push_back(uint8_t(size >> shift));
+        std::vector<uint8_t> typed(type, type + 4);
+        typed.insert(typed.end(), data.begin(), data.end());
+        file.insert(file.end(), typed.begin(), typed.end());
+        const uint32_t crc = facet::crc32(0, typed.data(), typed.size());
+        for (int shift = 24; shift >= 0; shift -= 8) file.push_back(uint8_t(crc >> shift));
+    };
+    const uint8_t million[4] = {0x00, 0x0f, 0x42, 0x40};
+    std::vector<uint8_t> header(million, million + 4);
+    header.insert(header.end(), million, million + 4);
+    header.insert(header.end(), {8, 6, 0, 0, 0});  // 8 bits, RGBA, deflate, no filter, no interlace
+    chunk("IHDR", header);
+    chunk("IDAT", {});
+    chunk("IEND", {});
+    try {
+        facet::decode_png(file, "giant.png");
+        FAIL("a 1000000x1000000 PNG was read");
+    } catch (const facet::Error& e) {
+        CHECK(e.code() == facet::ExitCode::invalid_input);
+        CHECK_THAT(std::string(e.what()), Catch::Matchers::Contains("giant.png") &&
+                                              Catch::Matchers::Contains("1000000x1000000") &&
+                                              Catch::Matchers::Contains("available"));
+    }
+}

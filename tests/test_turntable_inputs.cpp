@@ -234,8 +234,8 @@ TEST_CASE("facet render MODEL reads the model once, unless -D asks for other ass
     const facet::Turntable turntable = facet::load_turntable(request);
     // The survey's mesh is offered under the path the scene's object names.
     REQUIRE(turntable.meshes.size() == 1);
-    const auto& [path, mesh] = *turntable.meshes.begin();
-    CHECK(mesh == turntable.survey.mesh);
+    const auto& [path, loaded] = *turntable.meshes.begin();
+    CHECK(loaded.mesh == turntable.survey.mesh);
     bool named = false;
     for (const facet::ObjectDesc& object : turntable.scene.objects) named |= object.mesh == path;
     CHECK(named);
@@ -244,6 +244,12 @@ TEST_CASE("facet render MODEL reads the model once, unless -D asks for other ass
     const facet::World read = facet::build_world(turntable.scene, 1);
     CHECK(taken.triangle_count() == read.triangle_count());
     CHECK(taken.positions == read.positions);
+    // The world charges its budget what the survey's textures took, as a
+    // reading of the file would: a charge past the budget is refused.
+    facet::LoadedMeshes over = turntable.meshes;
+    over.begin()->second.texture_charges.push_back({"huge.png", 65536, 65536, uint64_t(1) << 40});
+    CHECK_THROWS_WITH(facet::build_world(turntable.scene, 1, &over),
+                      Contains("huge.png") && Contains("texture budget"));
     // Another texture budget: the survey's reading is not the scene's, so
     // nothing is offered and the world reads the file under the user's.
     request.scene_options.overrides.push_back({"assets.texture_budget_mb", "64", "test"});

@@ -199,10 +199,15 @@ struct AssetContext {
 };
 
 // Meshes already read, by the path a scene's `mesh:` gives, each read
-// under the scene's own asset settings: `facet render MODEL` surveys the
-// model before its scene exists, and the world takes that mesh instead of
-// reading the file again.
-using LoadedMeshes = std::map<std::string, std::shared_ptr<const Mesh>>;
+// under the scene's own asset settings, with what its textures were
+// charged: `facet render MODEL` surveys the model before its scene exists,
+// and the world takes that mesh, and charges its budget the same, instead
+// of reading the file again.
+struct LoadedMesh {
+    std::shared_ptr<const Mesh> mesh;
+    std::vector<TextureBudget::Charge> texture_charges;
+};
+using LoadedMeshes = std::map<std::string, LoadedMesh>;
 
 // Loads a mesh file by the loader its bytes call for, or else its name
 // (assets/mesh_format.hpp): .obj (facet's own reader; .mtl through

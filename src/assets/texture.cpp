@@ -352,12 +352,7 @@ Texture load_texture(const std::string& path, TextureBudget* budget) {
 struct TextureBudget::State {
     std::mutex mutex;
     uint64_t used = 0;
-    struct Charged {
-        std::string name;
-        int width, height;
-        uint64_t bytes;
-    };
-    std::vector<Charged> charged;
+    std::vector<Charge> charged;
 };
 
 TextureBudget::TextureBudget(uint64_t limit_bytes)
@@ -373,12 +368,12 @@ uint64_t TextureBudget::used() const {
 void TextureBudget::charge(const std::string& name, int width, int height, uint64_t bytes) {
     std::lock_guard lock(state_->mutex);
     State& s = *state_;
-    auto describe = [](const State::Charged& c) {
+    auto describe = [](const Charge& c) {
         return c.name + " (" + std::to_string(c.width) + "x" + std::to_string(c.height) + ", " +
                describe_bytes(c.bytes) + ")";
     };
     if (bytes > limit_ || s.used > limit_ - bytes) {
-        std::vector<State::Charged> largest = s.charged;
+        std::vector<Charge> largest = s.charged;
         std::stable_sort(largest.begin(), largest.end(),
                          [](const auto& a, const auto& b) { return a.bytes > b.bytes; });
         std::string others;
@@ -393,6 +388,11 @@ void TextureBudget::charge(const std::string& name, int width, int height, uint6
     }
     s.used += bytes;
     s.charged.push_back({name, width, height, bytes});
+}
+
+std::vector<TextureBudget::Charge> TextureBudget::charges() const {
+    std::lock_guard lock(state_->mutex);
+    return state_->charged;
 }
 
 void TextureBudget::release(const std::string& name) {

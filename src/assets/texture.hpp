@@ -145,6 +145,13 @@ class TextureBudget {
     // while it ran.
     void release(const std::string& name);
     uint64_t used() const;
+    // What is charged now, in the order it was charged.
+    struct Charge {
+        std::string name;
+        int width = 0, height = 0;
+        uint64_t bytes = 0;
+    };
+    std::vector<Charge> charges() const;
     uint64_t limit() const { return limit_; }
 
   private:

@@ -57,7 +57,8 @@ TurntableOptions turntable_options(const TurntableArgs& args) {
 }
 
 TurntableRequest turntable_request(const RenderArgs& args, const SceneOptions& options) {
-    return {args.scene, turntable_options(args.turntable), options, args.allow_asset_paths_outside};
+    return {args.scene, turntable_options(args.turntable), options, args.allow_asset_paths_outside,
+            args.threads};
 }
 
 // Said on stderr: the model became a turntable, which way up and why.

@@ -5,6 +5,7 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/memory.hpp"
 #include "output/encoders.hpp"
 
 namespace facet {
@@ -40,6 +41,15 @@ void on_png_warning(png_structp, png_const_charp) {}
 struct PngRows {
     std::vector<uint8_t> bytes;
     std::vector<png_bytep> pointers;
+    uint64_t needed_bytes = 0;  // rows and 16-bit samples; over `max_bytes`, nothing is read
+    uint64_t max_bytes = 0;
+};
+
+// libpng's read structs, freed on every way out, an exception included.
+struct PngReadStructs {
+    png_structp png = nullptr;
+    png_infop info = nullptr;
+    ~PngReadStructs() { png_destroy_read_struct(&png, info ? &info : nullptr, nullptr); }
 };
 
 // Expands palettes, low-bit grey and tRNS to whole 8-bit channels and
@@ -55,6 +65,10 @@ bool decode_rows(png_structp png, png_infop info, DecodedPng& out, PngRows& rows
     out.channels = png_get_channels(png, info);
     out.bit_depth = png_get_bit_depth(png, info);
     const size_t row_bytes = png_get_rowbytes(png, info);
+    // A header may ask for a million pixels a side: refused before any
+    // buffer is made, rather than met by the allocator.
+    rows.needed_bytes = uint64_t{row_bytes} * static_cast<uint64_t>(out.height) * 3;
+    if (rows.needed_bytes > rows.max_bytes) return true;
     rows.bytes.resize(row_bytes * static_cast<size_t>(out.height));
     rows.pointers.resize(static_cast<size_t>(out.height));
     for (size_t y = 0; y < rows.pointers.size(); ++y)
@@ -68,26 +82,30 @@ bool decode_rows(png_structp png, png_infop info, DecodedPng& out, PngRows& rows
 
 DecodedPng decode_png(std::span<const uint8_t> bytes, const std::string& what) {
     PngSource source{bytes};
-    png_structp png =
+    PngReadStructs structs;
+    structs.png =
         png_create_read_struct(PNG_LIBPNG_VER_STRING, &source, on_png_error, on_png_warning);
-    png_infop info = png ? png_create_info_struct(png) : nullptr;
-    if (!info) {
-        png_destroy_read_struct(&png, nullptr, nullptr);
-        throw Error(ExitCode::io_failure, what + ": cannot read PNG: out of memory");
-    }
-    png_set_read_fn(png, &source, read_from_memory);
+    if (structs.png) structs.info = png_create_info_struct(structs.png);
+    if (!structs.info) throw Error(ExitCode::io_failure, what + ": cannot read PNG: out of memory");
+    png_set_read_fn(structs.png, &source, read_from_memory);
     DecodedPng out;
     PngRows rows;
-    const bool read = decode_rows(png, info, out, rows);
-    png_destroy_read_struct(&png, &info, nullptr);
-    if (!read) throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + source.message);
+    rows.max_bytes = memory_available();
+    if (!decode_rows(structs.png, structs.info, out, rows))
+        throw Error(ExitCode::invalid_input, what + ": cannot read PNG: " + source.message);
+    if (rows.needed_bytes > rows.max_bytes)
+        throw Error(ExitCode::invalid_input,
+                    what + ": cannot read PNG: " + std::to_string(out.width) + "x" +
+                        std::to_string(out.height) + " needs " + describe_bytes(rows.needed_bytes) +
+                        ", more than the " + describe_bytes(rows.max_bytes) + " available");
     const size_t count = static_cast<size_t>(out.width) * out.height * out.channels;
-    out.samples.resize(count);
-    if (out.bit_depth == 16)
+    if (out.bit_depth == 16) {
+        out.samples.resize(count);
         for (size_t i = 0; i < count; ++i)
             out.samples[i] = static_cast<uint16_t>(rows.bytes[2 * i] << 8 | rows.bytes[2 * i + 1]);
-    else
+    } else {
         out.samples.assign(rows.bytes.begin(), rows.bytes.end());
+    }
     return out;
 }
 

@@ -298,10 +298,23 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
     world.draws.push_back(d);
 }
 
-// The mesh object `o` shows: its file (loaded once per path, its warnings
+using MeshesByPath = std::map<std::string, std::shared_ptr<const Mesh>>;
+
+// The mesh file at `path`: the one in `loaded`, its textures charged to
+// the run's budget as reading them would have, or else the file read.
+std::shared_ptr<const Mesh> read_mesh(const std::string& path, const AssetContext& assets,
+                                      const LoadedMeshes* loaded) {
+    const auto found = loaded ? loaded->find(path) : LoadedMeshes::const_iterator{};
+    if (!loaded || found == loaded->end()) return std::make_shared<Mesh>(load_mesh(path, assets));
+    for (const TextureBudget::Charge& c : found->second.texture_charges)
+        assets.textures->charge(c.name, c.width, c.height, c.bytes);
+    return found->second.mesh;
+}
+
+// The mesh object `o` shows: its file (read once per path, its warnings
 // kept), its cloth's rest pose, or its primitive. Errors point at its key.
 std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
-                                        const AssetContext& assets, LoadedMeshes& meshes,
+                                        const AssetContext& assets, MeshesByPath& meshes,
                                         const LoadedMeshes* loaded, World& world) {
     const ObjectDesc& obj = scene.objects[o];
     const std::string key = "objects." + std::to_string(o);
@@ -309,10 +322,7 @@ std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
         if (!obj.mesh.empty()) {
             auto& slot = meshes[obj.mesh];
             if (!slot) {
-                const auto read = loaded ? loaded->find(obj.mesh) : LoadedMeshes::const_iterator{};
-                slot = loaded && read != loaded->end()
-                           ? read->second
-                           : std::make_shared<Mesh>(load_mesh(obj.mesh, assets));
+                slot = read_mesh(obj.mesh, assets, loaded);
                 world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
                                       slot->warnings.end());
             }
@@ -409,7 +419,7 @@ std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material
 World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMeshes* loaded) {
     World world;
     const WorldExtras extras = extras_of(scene);
-    LoadedMeshes meshes;
+    MeshesByPath meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
     AssetContext assets;

@@ -38,6 +38,7 @@ struct ModelSurvey {
     // The mesh as read, so that the render need not read the file again
     // (model_turntable.hpp says when it may use it).
     std::shared_ptr<const Mesh> mesh;
+    std::vector<TextureBudget::Charge> texture_charges;  // what its textures took
 };
 
 // The smallest and largest model facet frames, by its largest side: a

@@ -19,10 +19,15 @@ ModelSurvey survey_of(const TurntableRequest& request) {
     survey.path = request.model;
     survey.assets.paths.allow_outside = request.allow_asset_paths_outside;
     survey.assets.textures = &textures;
+    survey.assets.threads = request.threads;
     survey.up = request.options.up;
     survey.frames = kTurntableFrames;
     survey.fps = kTurntableFps;
-    return survey_model(survey);
+    ModelSurvey surveyed = survey_model(survey);
+    // What the model's textures took, for the world's budget to take too
+    // when it uses the surveyed mesh.
+    surveyed.texture_charges = textures.charges();
+    return surveyed;
 }
 
 // Where errors in the scene's own text point (none should: its values
@@ -57,11 +62,12 @@ LoadedMeshes surveyed_meshes(const TurntableRequest& request, const SceneDesc& s
         scene.assets.texture_budget_bytes == kDefaultTextureBudget;
     LoadedMeshes meshes;
     if (!same_settings || !survey.mesh) return meshes;
-    for (const ObjectDesc& object : scene.objects) {
-        std::error_code error;
-        if (!object.mesh.empty() && fs::equivalent(object.mesh, request.model, error))
-            meshes[object.mesh] = survey.mesh;
-    }
+    // The same path, not merely the same file: a link elsewhere would
+    // resolve the model's own references (mtllib, textures) from its folder.
+    const fs::path model = fs::absolute(request.model).lexically_normal();
+    for (const ObjectDesc& object : scene.objects)
+        if (!object.mesh.empty() && fs::absolute(object.mesh).lexically_normal() == model)
+            meshes[object.mesh] = {survey.mesh, survey.texture_charges};
     return meshes;
 }
 

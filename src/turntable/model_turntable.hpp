@@ -19,6 +19,9 @@ struct TurntableRequest {
     // the options' overrides, and the style folders.
     SceneOptions scene_options;
     bool allow_asset_paths_outside = false;
+    // Threads that may read the model (--threads; 0: one per core): its
+    // survey is the only time the file is parsed.
+    unsigned threads = 0;
 };
 
 struct Turntable {
