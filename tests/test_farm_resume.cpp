@@ -152,12 +152,14 @@ TEST_CASE("killed with SIGKILL mid-run, a rerun renders only the rest, bit for b
 TEST_CASE("two runs writing into one folder keep every entry, other settings are refused",
           "[farm][cli][concurrent]") {
     test::TempDir dir("farm-shared");
-    const std::string scene = test::write_farm_scene(dir, 24, "[320, 180]");
+    // Enough frames that both runs are still writing when the third starts:
+    // with 12 each (0.1 s of work) one full suite saw them finish first.
+    const std::string scene = test::write_farm_scene(dir, 240, "[320, 180]");
     const std::string folder = dir.file("out/spin");
     const std::string render =
         "render " + shell_quote(scene) + " -q -o " + shell_quote(dir.file("out")) + " --threads 1 ";
-    const int a = start_facet(render + "--frames 1-12", dir.file("a.log"));
-    const int b = start_facet(render + "--frames 13-24", dir.file("b.log"));
+    const int a = start_facet(render + "--frames 1-120", dir.file("a.log"));
+    const int b = start_facet(render + "--frames 121-240", dir.file("b.log"));
     // While they run, a run of other settings is turned away.
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (journal_lines(folder) < 2 && std::chrono::steady_clock::now() < give_up)
@@ -170,8 +172,8 @@ TEST_CASE("two runs writing into one folder keep every entry, other settings are
     CHECK(other.output.find("another facet run") != std::string::npos);
     INFO(test::read_file(dir.file("a.log")) + test::read_file(dir.file("b.log")));
     const auto manifest = test::read_json(folder + "/manifest.json");
-    CHECK(manifest["frames"].size() == 24);
-    CHECK(manifest["files"].size() == 96);
+    CHECK(manifest["frames"].size() == 240);
+    CHECK(manifest["files"].size() == 960);
     CHECK(test::hidden_leftovers(folder).empty());
     const auto check = run_facet("merge " + shell_quote(folder));
     CHECK(check.exit_code == 0);
