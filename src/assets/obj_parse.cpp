@@ -615,44 +615,29 @@ Warning line_warning(const std::string& path, const Occurrences& o, const std::s
     return w;
 }
 
-std::string times(size_t count) {
-    return count == 1 ? "" : " (and " + std::to_string(count - 1) + " more)";
-}
-
-// The chunks' notes as warnings, each naming its first place.
+// The chunks' notes as warnings, each naming its first place and how many
+// more there are.
 void add_warnings(const ChunkNotes& notes, const std::string& path, ObjGeometry& file) {
-    if (notes.short_faces.count)
-        file.warnings.push_back(
-            line_warning(path, notes.short_faces,
-                         "a face of fewer than three corners is not a surface, and is not drawn" +
-                             times(notes.short_faces.count)));
-    if (notes.missing_uvs.count)
-        file.warnings.push_back(line_warning(
-            path, notes.missing_uvs,
-            quoted(notes.missing_uvs.token) +
-                " names a texture coordinate the file does not have: the corner has none" +
-                times(notes.missing_uvs.count)));
-    if (notes.missing_normals.count)
-        file.warnings.push_back(line_warning(
-            path, notes.missing_normals,
-            quoted(notes.missing_normals.token) +
-                " names a normal the file does not have: its part's normals are computed" +
-                times(notes.missing_normals.count)));
-    if (notes.lines_and_points.count)
-        file.warnings.push_back(line_warning(
-            path, notes.lines_and_points,
-            "line ('l') and point ('p') elements are not drawn: facet draws faces only" +
-                times(notes.lines_and_points.count)));
-    if (notes.curves_and_surfaces.count)
-        file.warnings.push_back(line_warning(
-            path, notes.curves_and_surfaces,
-            "free-form curves and surfaces (curv, curv2, surf) are not drawn: facet reads "
-            "polygon faces only" +
-                times(notes.curves_and_surfaces.count)));
-    if (notes.empty_groups.count)
-        file.warnings.push_back(
-            line_warning(path, notes.empty_groups,
-                         "'g' without a group name" + times(notes.empty_groups.count)));
+    auto note = [&](const Occurrences& o, const std::string& message) {
+        if (o.count == 0) return;
+        const std::string more =
+            o.count == 1 ? "" : " (and " + std::to_string(o.count - 1) + " more)";
+        file.warnings.push_back(line_warning(path, o, message + more));
+    };
+    note(notes.short_faces,
+         "a face of fewer than three corners is not a surface, and is not drawn");
+    note(notes.missing_uvs, quoted(notes.missing_uvs.token) +
+                                " names a texture coordinate the file does not have: the "
+                                "corner has none");
+    note(notes.missing_normals, quoted(notes.missing_normals.token) +
+                                    " names a normal the file does not have: its part's "
+                                    "normals are computed");
+    note(notes.lines_and_points,
+         "line ('l') and point ('p') elements are not drawn: facet draws faces only");
+    note(notes.curves_and_surfaces,
+         "free-form curves and surfaces (curv, curv2, surf) are not drawn: facet reads "
+         "polygon faces only");
+    note(notes.empty_groups, "'g' without a group name");
 }
 
 // Each chunk's place from the first pass's counts; the file's arrays
