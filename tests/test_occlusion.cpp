@@ -14,16 +14,19 @@ namespace {
 
 // A white floor and a wall standing on it across z = -1 (its front face at
 // z = -0.9), unlit, seen from the front and above.
-facet::FrameImages render_corner(const std::string& occlusion, unsigned threads) {
+// `output` adds keys to the output block: passes, another background.
+facet::FrameImages render_corner(const std::string& occlusion, unsigned threads,
+                                 const std::string& output = "background: [0, 0, 0, 1]",
+                                 const std::string& floor_size = "8") {
     facet::test::TempDir dir("occlusion");
-    const std::string text = R"(output: { size: [240, 160], samples: 4, background: [0, 0, 0, 1] }
+    const std::string text = R"(output: { size: [240, 160], samples: 4, )" + output + R"( }
 camera: { position: [0, 2.2, 4], target: [0, 0.2, -0.5], fov: 40 }
 style: { shading: unlit, occlusion: )" +
                              occlusion +
                              R"( }
 objects:
   - name: floor
-    primitive: { type: plane, size: 8 }
+    primitive: { type: plane, size: )" + floor_size + R"( }
     material: { color: [0.8, 0.8, 0.8] }
   - name: wall
     primitive: { type: cube, size: 1 }
@@ -80,7 +83,9 @@ TEST_CASE("occlusion at half resolution matches full resolution", "[render][occl
                               glm::vec3(-1.0f, 0.0f, -0.8f), glm::vec3(0.3f, 0.0f, 1.2f),
                               glm::vec3(0.3f, 1.6f, -0.9f)}) {
         INFO("at " << p.x << ", " << p.y << ", " << p.z);
-        CHECK(value_at(half, p) == Approx(value_at(full, p)).margin(0.03));
+        // Half resolution takes a cell's value up to a pixel away: in the
+        // corner, where occlusion changes fastest, that is about 0.03.
+        CHECK(value_at(half, p) == Approx(value_at(full, p)).margin(0.035));
     }
     // Across the frame, the two differ little on average.
     const auto a = facet::to_float_image(full.color).pixels;
@@ -95,4 +100,54 @@ TEST_CASE("occlusion at half resolution matches full resolution", "[render][occl
 TEST_CASE("occlusion resolution other than half or full is refused", "[render][occlusion]") {
     CHECK_THROWS_WITH(render_corner("{ radius: 0.5, resolution: quarter }", 1),
                       Catch::Matchers::Contains("resolution") && Catch::Matchers::Contains("half"));
+}
+
+// Alone, occlusion runs on the resolved pixels (render/occlusion_stage.hpp);
+// beside the lines pass it runs on every sample. The two agree, and on the
+// pixels it darkens only the share of a pixel that shows a surface.
+TEST_CASE("occlusion on the pixels matches occlusion on the samples", "[render][occlusion]") {
+    const std::string occlusion = "{ radius: 0.5 }";
+    const facet::FrameImages on_pixels = render_corner(occlusion, 2);
+    const facet::FrameImages on_samples =
+        render_corner(occlusion, 2, "background: [0, 0, 0, 1], passes: [color, lines]");
+    for (const glm::vec3 p : {glm::vec3(0.3f, 0.0f, -0.85f), glm::vec3(0.3f, 0.0f, -0.6f),
+                              glm::vec3(-1.0f, 0.0f, -0.8f), glm::vec3(0.3f, 0.0f, 1.2f)}) {
+        INFO("at " << p.x << ", " << p.y << ", " << p.z);
+        CHECK(value_at(on_pixels, p) == Approx(value_at(on_samples, p)).margin(0.01));
+    }
+    const auto a = facet::to_float_image(on_pixels.color).pixels;
+    const auto b = facet::to_float_image(on_samples.color).pixels;
+    double sum = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].r - b[i].r);
+    CHECK(sum / static_cast<double>(a.size()) < 0.002);
+}
+
+TEST_CASE("occlusion on the pixels leaves a transparent background's share alone",
+          "[render][occlusion]") {
+    // A see-through background, and a floor 2 m wide under the 4 m wall:
+    // the corner's ends, and the floor's sides, meet the background in
+    // pixels that are part surface, part background.
+    const std::string output = "background: [0.2, 0.4, 0.6, 0], passes: [color, alpha]";
+    const facet::FrameImages plain = render_corner("false", 2, output, "2");
+    const facet::FrameImages occluded = render_corner("{ radius: 0.5 }", 2, output, "2");
+    const auto plain_color = facet::to_float_image(plain.color).pixels;
+    const auto color = facet::to_float_image(occluded.color).pixels;
+    const auto plain_alpha = facet::to_float_image(plain.alpha).pixels;
+    const auto alpha = facet::to_float_image(occluded.alpha).pixels;
+    size_t edge_pixels = 0;
+    for (size_t i = 0; i < color.size(); ++i) {
+        // Opaque surfaces hide as much of the background with occlusion as without.
+        REQUIRE(color[i].a == plain_color[i].a);
+        REQUIRE(alpha[i].a == plain_alpha[i].a);
+        if (plain_alpha[i].a > 0.0f && plain_alpha[i].a < 1.0f) ++edge_pixels;
+        // Nothing gets lighter; the background alone stays as it was.
+        CHECK(color[i].r <= plain_color[i].r);
+        if (plain_alpha[i].a == 0.0f) CHECK(color[i] == plain_color[i]);
+    }
+    CHECK(edge_pixels > 20);
+    // The corner darkens in both passes.
+    const glm::vec3 corner(0.3f, 0.0f, -0.85f);
+    CHECK(facet::test::pixel_at(occluded, occluded.alpha, corner).r <
+          0.9f * facet::test::pixel_at(plain, plain.alpha, corner).r);
+    CHECK(value_at(occluded, corner) < 0.9f * value_at(plain, corner));
 }

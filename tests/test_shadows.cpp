@@ -12,8 +12,11 @@
 #include "core/thread_pool.hpp"
 #include "render/camera.hpp"
 #include "render/frame_renderer.hpp"
+#include "render/pose_stage.hpp"
+#include "render/shadow_stage.hpp"
 #include "render/world.hpp"
 #include "scene_support.hpp"
+#include "shade/shadow_map.hpp"
 #include "support.hpp"
 
 using namespace facet;
@@ -350,4 +353,50 @@ objects:
     const Rendered three = render_yaml(yaml, 3);
     CHECK(one.color.pixels == two.color.pixels);
     CHECK(one.color.pixels == three.color.pixels);
+}
+
+// A map keeps the nearest caster of each block of texels, and a lookup
+// whose filter lies in blocks whose casters are all farther than the point
+// skips its texels (shade/shadow_map.hpp). Skipping must change nothing:
+// the same visibility, bit for bit, as reading every texel.
+TEST_CASE("the shadow map's blocks change no lookup", "[shadow]") {
+    for (const char* light :
+         {"{ type: directional, direction: [0.3, -1, 0.2], shadows: true, "
+          "shadow_softness: 2 }",
+          "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], "
+          "outer_angle: 45, intensity: 25, shadows: true }",
+          "{ type: point, position: [0, 5, 0], intensity: 25, shadows: true }"}) {
+        INFO(light);
+        test::TempDir dir("shadow-blocks");
+        const SceneDesc scene =
+            test::load(test::write_text(dir.file("scene.yaml"), floating_cube_scene(light, true)));
+        const World world = build_world(scene);
+        ThreadPool pool(2);
+        const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
+        PoseStage pose(scene, world);
+        ShadowStage stage(scene, world);
+        const std::span<const ShadowMap* const> maps = stage.render(state, pose.pose(state), pool);
+        REQUIRE(maps.size() == 1);
+        REQUIRE(maps[0] != nullptr);
+        const ShadowMap& blocked = *maps[0];
+        REQUIRE_FALSE(blocked.block_nearest.empty());
+        ShadowMap every_texel = blocked;
+        every_texel.block_nearest.clear();
+        // Points on the floor round the shadow and on the cube's faces,
+        // with the normals of both, and tilted ones.
+        size_t dark = 0, lit = 0, partly = 0;
+        for (float x = -3.0f; x <= 3.0f; x += 0.037f)
+            for (float z = -3.0f; z <= 3.0f; z += 0.041f)
+                for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0.3f, 1, -0.2f)})
+                    for (const glm::vec3 p : {glm::vec3(x, 0, z), glm::vec3(x, 2.5f, z) * 0.2f +
+                                                                      glm::vec3(0, 2.0f, 0)}) {
+                        const float a = shadow_visibility(blocked, p, n);
+                        const float b = shadow_visibility(every_texel, p, n);
+                        if (a != b) FAIL_CHECK("at " << p.x << ", " << p.y << ", " << p.z);
+                        (a == 0.0f ? dark : a == 1.0f ? lit : partly) += 1;
+                    }
+        CHECK(dark > 100);
+        CHECK(lit > 1000);
+        CHECK(partly > 100);
+    }
 }

@@ -64,8 +64,7 @@ glm::vec4 decode_bytes8(uint32_t t, const std::array<float, 256>& table) {
 
 glm::vec4 texel_at(const TextureLevel& l, size_t i, const std::array<float, 256>& table) {
     if (!l.bytes8.empty()) return decode_bytes8(l.bytes8[i], table);
-    const Rgba16F& h = l.half[i];
-    return {half_to_float(h.r), half_to_float(h.g), half_to_float(h.b), half_to_float(h.a)};
+    return to_float(l.half[i]);
 }
 
 // A whole texel index wrapped into [0, size). Repeat wraps with a mask
@@ -108,38 +107,50 @@ glm::vec2 texel_coordinates(const TextureLevel& l, const Sampler& s, glm::vec2 u
     return {x, y};
 }
 
-glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv,
-                  const std::array<float, 256>& table) {
+// The two filters, over a level's texels as `fetch(index)` gives them:
+// one instantiation per storage, so the per-texel test of which storage a
+// level has is made once per lookup.
+template <typename Fetch>
+glm::vec4 nearest(const TextureLevel& l, const Sampler& s, glm::vec2 uv, Fetch fetch) {
     const glm::vec2 t = texel_coordinates(l, s, uv);
-    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return fetch(0);
     // The texel whose square holds the point: floor(x + 0.5) of the centres.
     const int x = wrap_index(static_cast<int>(std::floor(t.x + 0.5f)), l.width, s.wrap_s);
     const int y = wrap_index(static_cast<int>(std::floor(t.y + 0.5f)), l.height, s.wrap_t);
-    return texel_at(l, static_cast<size_t>(y) * l.width + x, table);
+    return fetch(static_cast<size_t>(y) * l.width + x);
 }
 
-glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv,
-                   const std::array<float, 256>& table) {
+template <typename Fetch>
+glm::vec4 bilinear(const TextureLevel& l, const Sampler& s, glm::vec2 uv, Fetch fetch) {
     const glm::vec2 t = texel_coordinates(l, s, uv);
-    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return texel_at(l, 0, table);
+    if (!std::isfinite(t.x) || !std::isfinite(t.y)) return fetch(0);
     const float fx = std::floor(t.x), fy = std::floor(t.y);
     const float tx = t.x - fx, ty = t.y - fy;
     const int ix = static_cast<int>(fx), iy = static_cast<int>(fy);
     const int x0 = wrap_index(ix, l.width, s.wrap_s), x1 = wrap_index(ix + 1, l.width, s.wrap_s);
     const size_t row_a = static_cast<size_t>(wrap_index(iy, l.height, s.wrap_t)) * l.width;
     const size_t row_b = static_cast<size_t>(wrap_index(iy + 1, l.height, s.wrap_t)) * l.width;
-    const glm::vec4 a = texel_at(l, row_a + x0, table);
-    const glm::vec4 b = texel_at(l, row_a + x1, table);
-    const glm::vec4 c = texel_at(l, row_b + x0, table);
-    const glm::vec4 d = texel_at(l, row_b + x1, table);
+    const glm::vec4 a = fetch(row_a + x0);
+    const glm::vec4 b = fetch(row_a + x1);
+    const glm::vec4 c = fetch(row_b + x0);
+    const glm::vec4 d = fetch(row_b + x1);
     const glm::vec4 top = a + (b - a) * tx;
     const glm::vec4 bottom = c + (d - c) * tx;
     return top + (bottom - top) * ty;
 }
 
+template <typename Fetch>
+glm::vec4 filtered_with(const TextureLevel& l, const Sampler& s, Filter filter, glm::vec2 uv,
+                        Fetch fetch) {
+    return filter == Filter::nearest ? nearest(l, s, uv, fetch) : bilinear(l, s, uv, fetch);
+}
+
 glm::vec4 filtered(const TextureLevel& l, const Sampler& s, Filter filter, glm::vec2 uv,
                    const std::array<float, 256>& table) {
-    return filter == Filter::nearest ? nearest(l, s, uv, table) : bilinear(l, s, uv, table);
+    if (!l.bytes8.empty())
+        return filtered_with(l, s, filter, uv,
+                             [&](size_t i) { return decode_bytes8(l.bytes8[i], table); });
+    return filtered_with(l, s, filter, uv, [&](size_t i) { return to_float(l.half[i]); });
 }
 
 void store(TextureLevel& l, Texture::Format format, size_t i, const glm::vec4& c) {

@@ -11,6 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/integer_hash.hpp"
+#include "core/simd_math.hpp"
 
 namespace facet {
 namespace {
@@ -24,19 +25,26 @@ bool is_surface(float depth) {
 }
 
 // View-space position of the buffer sample (x, y) at linear depth `depth`,
-// for a perspective or an orthographic projection.
+// for a perspective or an orthographic projection: T is float, or eight
+// lanes of them (the same operations, so the same bits).
 // `centre` is where in its cell the buffer's value was taken (0.5: the
 // middle; a pixel-level buffer made from each pixel's first sample of k x k
 // has it at 0.5 / k).
+template <typename T>
+struct ViewPoint {
+    T x, y, z;
+};
+
 struct Unproject {
     float width, height;
     glm::mat4 projection;
     bool orthographic;
     float centre;
 
-    glm::vec3 operator()(float x, float y, float depth) const {
-        const float ndc_x = (x + centre) / width * 2.0f - 1.0f;
-        const float ndc_y = 1.0f - (y + centre) / height * 2.0f;
+    template <typename T>
+    ViewPoint<T> operator()(T x, T y, T depth) const {
+        const T ndc_x = (x + centre) / width * 2.0f - 1.0f;
+        const T ndc_y = 1.0f - (y + centre) / height * 2.0f;
         if (orthographic)
             return {(ndc_x - projection[3][0]) / projection[0][0],
                     (ndc_y - projection[3][1]) / projection[1][1], -depth};
@@ -50,21 +58,55 @@ struct Unproject {
     }
 };
 
-// The taps' directions on a spiral, before each sample's own turn: the
-// trigonometry once per frame, not once per tap.
-std::vector<glm::vec2> spiral_directions(int samples) {
-    std::vector<glm::vec2> directions;
-    for (int i = 0; i < samples; ++i) {
-        const float along = (static_cast<float>(i) + 0.5f) / static_cast<float>(samples);
-        const float angle = along * kSpiralTurns * 2.0f * std::numbers::pi_v<float>;
-        directions.push_back({std::cos(angle), std::sin(angle)});
+// The taps' directions on a spiral, before each sample's own turn, in
+// groups of eight lanes (lanes past `samples` are left out by the mask):
+// the trigonometry once per frame, not once per tap.
+struct Spiral {
+    std::vector<simd::vf> x, y, index;  // per group of eight taps
+    std::vector<simd::vi> used;         // -1 in the lanes of real taps
+};
+
+Spiral spiral_directions(int samples) {
+    Spiral spiral;
+    for (int first = 0; first < samples; first += simd::kLanes) {
+        simd::vf x{}, y{}, index{};
+        simd::vi used{};
+        for (int lane = 0; lane < simd::kLanes; ++lane) {
+            const int i = first + lane;
+            const float along = (static_cast<float>(i) + 0.5f) / static_cast<float>(samples);
+            const float angle = along * kSpiralTurns * 2.0f * std::numbers::pi_v<float>;
+            x[lane] = std::cos(angle);
+            y[lane] = std::sin(angle);
+            index[lane] = static_cast<float>(i);
+            used[lane] = i < samples ? -1 : 0;
+        }
+        spiral.x.push_back(x);
+        spiral.y.push_back(y);
+        spiral.index.push_back(index);
+        spiral.used.push_back(used);
     }
-    return directions;
+    return spiral;
+}
+
+// The buffer's depth at eight taps; 0 (not a surface) where a tap is off
+// the buffer.
+simd::vf gather_depth(const OutlineBuffers& b, simd::vi sx, simd::vi sy, simd::vi inside) {
+    simd::vf depth;
+    for (int i = 0; i < simd::kLanes; ++i)
+        depth[i] = inside[i] ? b.depth[b.index(sx[i], sy[i])] : 0.0f;
+    return depth;
+}
+
+// floor(v) as integers, for |v| < 2^31.
+simd::vi floor_to_int(simd::vf v) {
+    simd::vi whole = __builtin_convertvector(v, simd::vi);          // truncates towards zero
+    return whole + (__builtin_convertvector(whole, simd::vf) > v);  // -1 where it rounded up
 }
 
 float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const glm::mat3& to_view,
-                   const OcclusionStyle& style, const std::vector<glm::vec2>& spiral, int x,
-                   int y) {
+                   const OcclusionStyle& style, const Spiral& spiral, int x, int y) {
+    using simd::vf;
+    using simd::vi;
     const size_t at = b.index(x, y);
     const float depth = b.depth[at];
     if (!is_surface(depth)) return 1.0f;
@@ -72,7 +114,7 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
     const float length = glm::length(n);
     if (!(length > 0.0f)) return 1.0f;
     n /= length;
-    const glm::vec3 p = unproject(static_cast<float>(x), static_cast<float>(y), depth);
+    const ViewPoint<float> p = unproject(static_cast<float>(x), static_cast<float>(y), depth);
     const float radius_samples = style.radius * unproject.samples_per_unit(depth);
     if (radius_samples < 1.0f) return 1.0f;  // the whole disc within one sample
     // A turn of the spiral per sample, from its coordinates alone: fine
@@ -86,29 +128,39 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
         16777216.0f;
     const float turn_cos = std::cos(turn), turn_sin = std::sin(turn);
     const float r2 = style.radius * style.radius;
-    float sum = 0.0f;
-    int counted = 0;
-    for (int i = 0; i < style.samples; ++i) {
-        const float along = (static_cast<float>(i) + jitter) / static_cast<float>(style.samples);
-        const float reach = along * radius_samples;
-        const glm::vec2 u = spiral[static_cast<size_t>(i)];
-        const float dx = u.x * turn_cos - u.y * turn_sin, dy = u.x * turn_sin + u.y * turn_cos;
-        const int sx = x + static_cast<int>(std::floor(reach * dx + 0.5f));
-        const int sy = y + static_cast<int>(std::floor(reach * dy + 0.5f));
-        ++counted;
-        if (sx < 0 || sy < 0 || sx >= b.width || sy >= b.height) continue;
-        const float tap_depth = b.depth[b.index(sx, sy)];
-        if (!is_surface(tap_depth)) continue;
-        const glm::vec3 v =
-            unproject(static_cast<float>(sx), static_cast<float>(sy), tap_depth) - p;
-        const float vv = glm::dot(v, v);
-        if (!(vv > 0.0f) || vv > r2) continue;  // beyond the radius: not this point's
+    // Taps far off the buffer are off it whatever their exact place: the
+    // clamp keeps the conversion to integers defined.
+    const float far_off = 2.0f * static_cast<float>(std::max(b.width, b.height)) + 2.0f;
+    vf sum = simd::splat(0.0f);
+    for (size_t g = 0; g < spiral.x.size(); ++g) {
+        const vf along = (spiral.index[g] + jitter) / static_cast<float>(style.samples);
+        const vf reach = along * radius_samples;
+        const vf dx = spiral.x[g] * turn_cos - spiral.y[g] * turn_sin;
+        const vf dy = spiral.x[g] * turn_sin + spiral.y[g] * turn_cos;
+        const vf off = simd::splat(far_off);
+        const vi sx = x + floor_to_int(simd::vmin(simd::vmax(reach * dx + 0.5f, -off), off));
+        const vi sy = y + floor_to_int(simd::vmin(simd::vmax(reach * dy + 0.5f, -off), off));
+        const vi inside = spiral.used[g] & (sx >= 0) & (sy >= 0) & (sx < b.width) & (sy < b.height);
+        const vf tap_depth = gather_depth(b, sx, sy, inside);
+        const vi surface =
+            (tap_depth > 0.0f) & (tap_depth < std::numeric_limits<float>::infinity());
+        const ViewPoint<vf> t =
+            unproject(__builtin_convertvector(sx, vf), __builtin_convertvector(sy, vf), tap_depth);
+        const vf vx = t.x - p.x, vy = t.y - p.y, vz = t.z - p.z;
+        const vf vv = vx * vx + vy * vy + vz * vz;
+        // Beyond the radius: not this point's.
+        const vi near = surface & (vv > 0.0f) & (vv <= r2);
         // How far above the tangent plane the tap rises, as the cosine of
         // its direction with the normal, fading to nothing at the radius.
-        const float rise = glm::dot(v, n) / std::sqrt(vv) - kBias;
-        sum += std::max(0.0f, rise) * (1.0f - vv / r2);
+        const vf safe_vv = near ? vv : simd::splat(1.0f);
+        const vf rise = (vx * n.x + vy * n.y + vz * n.z) / simd::vsqrt(safe_vv) - kBias;
+        const vf weight = simd::vmax(rise, simd::splat(0.0f)) * (1.0f - safe_vv / r2);
+        sum += near ? weight : simd::splat(0.0f);
     }
-    const float a = 1.0f - 2.0f * style.strength * sum / static_cast<float>(std::max(counted, 1));
+    float total = 0.0f;
+    for (int i = 0; i < simd::kLanes; ++i)
+        total += sum[i];  // in lane order: the same bits anywhere
+    const float a = 1.0f - 2.0f * style.strength * total / static_cast<float>(style.samples);
     return std::clamp(a, 0.0f, 1.0f);
 }
 
@@ -212,7 +264,7 @@ void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, cons
     const Unproject unproject{static_cast<float>(w), static_cast<float>(h), projection,
                               projection[3][3] == 1.0f, 0.5f / static_cast<float>(k)};
     const glm::mat3 to_view(view);
-    const std::vector<glm::vec2> spiral = spiral_directions(style.samples);
+    const Spiral spiral = spiral_directions(std::max(style.samples, 1));
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
         const int y = static_cast<int>(row);
         for (int x = 0; x < w; ++x)

@@ -97,6 +97,10 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
         },
         alpha.test());
     if (stopped()) return;
+    if (targets_.shading == ShadeResolution::pixels && plan.occlusion)
+        occlusion_.apply_to_pixels(gbuffer_, surface_share_, inputs.camera, inputs.occlusion,
+                                   inputs.background, out.color,
+                                   targets_.alpha ? &out.alpha : nullptr, pool_);
     if (targets_.shading == ShadeResolution::samples) {
         apply_sample_stages(inputs, vertices, edge_mask);
         ColorImage* lines = targets_.lines ? &sample_lines_ : nullptr;
@@ -131,7 +135,12 @@ void FrameRenderer::fit_targets(const FrameInputs& inputs, FrameImages& out) {
     out.projection = inputs.camera.projection;
     if (targets_.alpha) fit(out.alpha, width, height);
     if (targets_.lines) fit(out.lines, width, height);
-    if (targets_.shading == ShadeResolution::pixels) return;
+    if (targets_.shading == ShadeResolution::pixels) {
+        if (!targets_.gbuffer) return;
+        if (gbuffer_.width != width || gbuffer_.height != height) gbuffer_.reset(width, height);
+        fit(surface_share_, width, height);
+        return;
+    }
     const int sample_width = rasterizer_.width(), sample_height = rasterizer_.height();
     fit(sample_color_, sample_width, sample_height);
     fit(sample_depth_, sample_width, sample_height);
@@ -146,16 +155,18 @@ ShadeTarget FrameRenderer::shade_target(FrameImages& out) {
                 &out.color,
                 nullptr,
                 out.depth,
-                nullptr,
+                targets_.gbuffer ? &gbuffer_ : nullptr,
                 targets_.alpha ? &out.alpha : nullptr,
-                nullptr};
+                nullptr,
+                targets_.gbuffer ? &surface_share_ : nullptr};
     return {ShadeResolution::samples,
             nullptr,
             &sample_color_,
             sample_depth_,
             targets_.gbuffer ? &gbuffer_ : nullptr,
             nullptr,
-            targets_.line_samples ? &sample_lines_ : nullptr};
+            targets_.line_samples ? &sample_lines_ : nullptr,
+            nullptr};
 }
 
 // The previous frame's clip positions, for the motion pass; else empty.
@@ -170,7 +181,8 @@ void FrameRenderer::apply_sample_stages(const FrameInputs& inputs,
                                         std::span<const uint8_t> edge_mask) {
     const StylePlan& plan = evaluator_.plan();
     if (plan.occlusion)
-        occlusion_.apply(gbuffer_, side_, inputs.camera, inputs.occlusion, sample_color_, pool_);
+        occlusion_.apply_to_samples(gbuffer_, side_, inputs.camera, inputs.occlusion, sample_color_,
+                                    pool_);
     if (plan.hidden_edges && !edge_mask.empty())
         hidden_edges_.draw(vertices.clip, inputs, plan, edge_mask, side_, sample_depth_,
                            sample_color_, sample_lines_);

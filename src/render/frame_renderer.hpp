@@ -76,7 +76,10 @@ class FrameRenderer {
     Rasterizer rasterizer_;
     FeatureEdgeStage feature_edges_;
     HiddenEdgeStage hidden_edges_;
-    OutlineBuffers gbuffer_;  // depth, normal and object per sample, for 7c and 9
+    // Depth, normal and object per sample (per pixel when occlusion is the
+    // only screen-space stage), for 7c and 9.
+    OutlineBuffers gbuffer_;
+    Image<float> surface_share_;  // with a G-buffer at the pixels (ShadeTarget)
     OcclusionStage occlusion_;
     OutlineStage outlines_;
     // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).

@@ -11,14 +11,15 @@ namespace facet {
 
 // Where shading writes. `pixels`: finished output pixels, anti-aliased ones
 // resolved by shading itself. `samples`: every sample at the rasterizer's
-// resolution, for screen-space stages that need them (outlines, ambient
-// occlusion, hidden edges, the lines pass); post/ resolves them after.
+// resolution, for screen-space stages that need them (outlines, hidden
+// edges, the lines pass; ambient occlusion runs beside them there, and on
+// the pixels otherwise); post/ resolves them after.
 enum class ShadeResolution { pixels, samples };
 
 struct FrameTargets {
     ShadeResolution shading = ShadeResolution::pixels;
-    // Depth, normal and object per sample: what outlines and ambient
-    // occlusion read.
+    // Depth, normal and object at the shading's resolution: what outlines
+    // and ambient occlusion read.
     bool gbuffer = false;
     // Each sample's wireframe stroke alone: the lines pass, and hidden
     // edges, which stay under the visible strokes.

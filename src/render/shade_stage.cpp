@@ -40,18 +40,30 @@ class StyleLookup {
     uint32_t last_id_ = kNoTriangle, last_style_ = 0;
 };
 
-// Linear view depth of sample (x, y) of the triangle behind `id`: the same
-// operations as reconstruct_surfaces, so the same bits as its w.
-float sample_depth(const Rasterizer& raster, uint32_t id, int x, int y) {
+// Linear view depth at (x, y), in the rasterizer's sample units, on the
+// plane of the triangle behind `id`.
+float depth_on_triangle(const Rasterizer& raster, uint32_t id, float x, float y) {
     const ShadeSetup& s = raster.shade_setup(id);
-    const float fx = (static_cast<float>(x) + 0.5f) - s.x0;
-    const float fy = (static_cast<float>(y) + 0.5f) - s.y0;
+    const float fx = x - s.x0, fy = y - s.y0;
     return 1.0f / (s.inv_w[0] + s.inv_w[1] * fx + s.inv_w[2] * fy);
 }
 
-// The nearest of a pixel's samples (largest reversed-Z) and its linear depth.
-float nearest_sample_depth(const TileVisibility& tile, const Rasterizer& raster, int side, int px,
-                           int py) {
+// Linear view depth of sample (x, y) of the triangle behind `id`: the same
+// operations as reconstruct_surfaces, so the same bits as its w.
+float sample_depth(const Rasterizer& raster, uint32_t id, int x, int y) {
+    return depth_on_triangle(raster, id, static_cast<float>(x) + 0.5f,
+                             static_cast<float>(y) + 0.5f);
+}
+
+// The nearest of a pixel's samples (largest reversed-Z): the triangle it
+// shows and its linear depth.
+struct NearestSample {
+    uint32_t id = kNoTriangle;
+    float depth = kInfinity;
+};
+
+NearestSample nearest_sample(const TileVisibility& tile, const Rasterizer& raster, int side, int px,
+                             int py) {
     int nearest = -1;
     float nearest_z = 0;
     for (int sy = py * side; sy < (py + 1) * side; ++sy)
@@ -62,9 +74,10 @@ float nearest_sample_depth(const TileVisibility& tile, const Rasterizer& raster,
                 nearest_z = tile.depth[at];
             }
         }
-    if (nearest < 0) return kInfinity;
-    return sample_depth(raster, tile.id[nearest], tile.x0 + nearest % kTileSize,
-                        tile.y0 + nearest / kTileSize);
+    if (nearest < 0) return {};
+    const uint32_t id = tile.id[nearest];
+    return {id,
+            sample_depth(raster, id, tile.x0 + nearest % kTileSize, tile.y0 + nearest / kTileSize)};
 }
 
 void write_gbuffer(OutlineBuffers& g, int x, int y, float depth, const glm::vec3& normal,
@@ -84,6 +97,11 @@ struct RowChunk {
     vf color[4];          // RGBA of the pixels written here
     vf coverage;          // how much of the background each hides (ShadeBatch::coverage)
     vf depth;
+    // For a G-buffer at the pixels (ambient occlusion without outlines):
+    // the surface at each pixel's centre.
+    vf centre_depth;
+    vf normal[3];
+    uint32_t object[kLanes];
 };
 
 // Shades the chunk's pixels in `mine` (lanes of one style); the points are
@@ -91,11 +109,13 @@ struct RowChunk {
 [[gnu::always_inline]] inline void shade_chunk_style(const ShadeInputs& in,
                                                      const Rasterizer& raster,
                                                      const TileVisibility& tile, uint32_t style,
-                                                     unsigned mine, RowChunk& chunk) {
+                                                     unsigned mine, bool want_normal,
+                                                     RowChunk& chunk) {
     const int side = in.samples_per_side;
     const float k = static_cast<float>(side);
     ShadeBatch b;
     b.count = chunk.count;
+    b.want_normal = want_normal;
     const int first = __builtin_ctz(mine);
     if (mine == 0xffu)
         std::memcpy(b.id, chunk.id, sizeof b.id);
@@ -113,6 +133,11 @@ struct RowChunk {
     chunk.color[3] = mask ? b.coverage + (1.0f - b.coverage) * background_alpha : chunk.color[3];
     chunk.coverage = mask ? b.coverage : chunk.coverage;
     chunk.depth = mask ? (side == 1 ? b.sample.w : b.pixel_depth) : chunk.depth;
+    if (!want_normal) return;
+    chunk.centre_depth = mask ? b.sample.w : chunk.centre_depth;
+    for (int a = 0; a < 3; ++a) chunk.normal[a] = mask ? b.normal[a] : chunk.normal[a];
+    for (int i = 0; i < kLanes; ++i)
+        if ((mine >> i) & 1) chunk.object[i] = b.object[i];
 }
 
 // The colour a surface shows over nothing, from its colour over the
@@ -135,12 +160,27 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
     }
 }
 
+// The G-buffer's copy of a chunk, and each pixel's share of samples that
+// show a surface (1 or 0 here). Mixed pixels come later.
+void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& chunk,
+                         unsigned shown) {
+    for (int i = 0; i < chunk.count; ++i) {
+        if (chunk.id[i] == kMixedPixel) continue;
+        const bool surface = (shown >> i) & 1;
+        const glm::vec3 normal(chunk.normal[0][i], chunk.normal[1][i], chunk.normal[2][i]);
+        write_gbuffer(*out.gbuffer, x + i, y, chunk.centre_depth[i],
+                      surface ? normal : glm::vec3(0), surface ? chunk.object[i] : kNoObject);
+        out.surface_share->at(x + i, y) = surface ? 1.0f : 0.0f;
+    }
+}
+
 [[gnu::always_inline]] inline void write_chunk(const TileVisibility& tile, const ShadeTarget& out,
                                                const glm::vec4& background, int side,
                                                const RowChunk& chunk, bool any_mixed,
                                                unsigned shown) {
     const int x = tile.x0 / side + chunk.px0, y = tile.y0 / side + chunk.py;
     if (out.pixels_over_nothing) write_chunk_over_nothing(out, background, x, y, chunk, shown);
+    if (out.gbuffer) write_chunk_gbuffer(out, x, y, chunk, shown);
     Rgba16F* colors = &out.pixels->at(x, y);
     float* depths = &out.depth.at(x, y);
     if (chunk.count == kLanes && !any_mixed) {
@@ -206,6 +246,7 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
     const int pixels_x = tile.width / side, pixels_y = tile.height / side;
     const glm::vec4 bg = in.frame.background;
     const bool one_style = in.frame.styles.size() == 1;
+    const bool want_normal = out.gbuffer != nullptr;
     StyleLookup style_of_id(in, raster);
     RowChunk chunk;
     for (chunk.py = 0; chunk.py < pixels_y; ++chunk.py)
@@ -214,6 +255,11 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
             for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
             chunk.coverage = simd::splat(0.0f);
             chunk.depth = simd::splat(kInfinity);
+            if (want_normal) {
+                chunk.centre_depth = simd::splat(kInfinity);
+                for (vf& n : chunk.normal) n = simd::splat(0.0f);
+                std::fill(chunk.object, chunk.object + kLanes, kNoObject);
+            }
             bool any_mixed = false;
             const unsigned shown_at_start = chunk_ids(tile, side, chunk, any_mixed);
             unsigned shown = shown_at_start;
@@ -225,13 +271,14 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
                 for (int i = 0; i < kLanes; i += 2)
                     if (next[i] < kMixedPixel) __builtin_prefetch(&raster.shade_setup(next[i]));
             }
-            if (one_style && shown) shade_chunk_style(in, raster, tile, 0, shown, chunk);
+            if (one_style && shown)
+                shade_chunk_style(in, raster, tile, 0, shown, want_normal, chunk);
             while (!one_style && shown) {  // one style at a time
                 const uint32_t style = style_of_id(chunk.id[__builtin_ctz(shown)]);
                 unsigned mine = 0;
                 for (int i = 0; i < kLanes; ++i)
                     if ((shown >> i) & 1 && style_of_id(chunk.id[i]) == style) mine |= 1u << i;
-                shade_chunk_style(in, raster, tile, style, mine, chunk);
+                shade_chunk_style(in, raster, tile, style, mine, want_normal, chunk);
                 shown &= ~mine;
             }
             write_chunk(tile, out, bg, side, chunk, any_mixed, shown_at_start);
@@ -284,7 +331,9 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
 }
 
 // Mixed pixels, resolved here: each the coverage-weighted sum of its
-// fragments and the background, with the nearest sample's depth.
+// fragments and the background, with the nearest sample's depth (and in
+// the G-buffer, the nearest sample's normal and object, and the share of
+// the samples that show a surface).
 void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                         const ShadeTarget& out, const TileFragments& f) {
     if (f.count == 0) return;
@@ -294,6 +343,8 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     const size_t pixel_count = static_cast<size_t>(f.pixels_x * f.pixels_y);
     std::vector<glm::vec4> sums(pixel_count, glm::vec4(0));
     std::vector<glm::vec4> nothing_sums(out.pixels_over_nothing ? pixel_count : 0, glm::vec4(0));
+    std::vector<glm::vec3> normals(out.gbuffer ? static_cast<size_t>(f.count) : 0);
+    std::vector<uint32_t> objects(normals.size());
     shade_fragments(f, raster, in, false, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
@@ -303,18 +354,36 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
             sums[f.pixel[at]] += glm::vec4(color, coverage + (1.0f - coverage) * bg.a) * weight;
             if (out.pixels_over_nothing)
                 nothing_sums[f.pixel[at]] += over_nothing(color, coverage, bg) * weight;
+            if (out.gbuffer) {
+                normals[at] = glm::vec3(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+                objects[at] = b.object[i];
+            }
         }
     });
     for (int at = 0; at < f.count; ++at) {
         if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
         const int px = f.pixel_x[at], py = f.pixel_y[at];
-        const glm::vec4 color =
-            sums[f.pixel[at]] + bg * (static_cast<float>(f.empty[f.pixel[at]]) * per_sample);
+        const float empty_share = static_cast<float>(f.empty[f.pixel[at]]) * per_sample;
+        const glm::vec4 color = sums[f.pixel[at]] + bg * empty_share;
         const int x = tile.x0 / side + px, y = tile.y0 / side + py;
         out.pixels->at(x, y) = to_half(color);
         if (out.pixels_over_nothing)
             out.pixels_over_nothing->at(x, y) = to_half(nothing_sums[f.pixel[at]]);
-        out.depth.at(x, y) = nearest_sample_depth(tile, raster, side, px, py);
+        const NearestSample nearest = nearest_sample(tile, raster, side, px, py);
+        out.depth.at(x, y) = nearest.depth;
+        if (!out.gbuffer) continue;
+        int shown = at;  // the pixel's fragment of the nearest sample's triangle
+        while (shown + 1 < f.count && f.id[shown] != nearest.id) ++shown;
+        // Its plane at the pixel's centre, where simple pixels are taken too.
+        const float half_pixel = 0.5f * static_cast<float>(side);
+        const float centre_depth = depth_on_triangle(
+            raster, nearest.id, static_cast<float>(tile.x0 + px * side) + half_pixel,
+            static_cast<float>(tile.y0 + py * side) + half_pixel);
+        // A plane seen edge-on can put its centre behind the eye: then the sample.
+        const bool centre_on_plane = centre_depth > 0.0f && centre_depth < kInfinity;
+        write_gbuffer(*out.gbuffer, x, y, centre_on_plane ? centre_depth : nearest.depth,
+                      normals[shown], objects[shown]);
+        out.surface_share->at(x, y) = 1.0f - empty_share;
     }
 }
 

@@ -40,20 +40,26 @@ struct ShadeInputs {
 
 // Where a tile's shading goes, as the frame's targets say
 // (render/frame_targets.hpp). At `pixels`: `pixels`, and `depth` of the
-// output's size. At `samples`: `samples`, `depth` of the rasterizer's size,
-// and the G-buffer and line samples when later stages read them.
+// output's size, and the G-buffer and surface share when ambient occlusion
+// reads them. At `samples`: `samples`, `depth` of the rasterizer's size, and
+// the G-buffer and line samples when later stages read them.
 struct ShadeTarget {
     ShadeResolution resolution;
     HalfColorImage* pixels;   // linear RGBA, half floats, premultiplied
     ColorImage* samples;      // rgb the sample's colour, a its coverage (post/resolve.hpp)
     DepthImage& depth;        // linear view depth, +inf for background
-    OutlineBuffers* gbuffer;  // per sample: depth, normal, object id; null when not needed
+    // Per sample or pixel (as `resolution`): depth, normal, object id; null
+    // when not needed. A pixel's are its nearest sample's.
+    OutlineBuffers* gbuffer;
     // At `pixels`, for the alpha pass: the same pixels over nothing (no
     // background), premultiplied; null when not asked for.
     HalfColorImage* pixels_over_nothing;
     // At `samples`: each sample's wireframe stroke alone, premultiplied;
     // null when not needed.
     ColorImage* line_samples;
+    // At `pixels` with a G-buffer: the share of each pixel's samples that
+    // show a surface, so that occlusion leaves the background's share alone.
+    Image<float>* surface_share;
 };
 
 // Shades one tile; `raster` resolves its triangle ids. Called for different

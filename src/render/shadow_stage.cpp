@@ -25,6 +25,21 @@ constexpr double kRadiusStepsPerOctave = 8;
 // Near plane of perspective maps at least this fraction of the far one.
 constexpr float kMinNearOverFar = 1e-4f;
 
+// The nearest depth in each block of a drawn tile (ShadowMap::block_nearest).
+void nearest_in_blocks(const float* texels, int size, const TileVisibility& tile, int blocks,
+                       float* nearest) {
+    for (int by = tile.y0; by < tile.y0 + tile.height; by += kShadowBlock)
+        for (int bx = tile.x0; bx < tile.x0 + tile.width; bx += kShadowBlock) {
+            float least = std::numeric_limits<float>::infinity();
+            const int y_end = std::min(by + kShadowBlock, tile.y0 + tile.height);
+            const int x_end = std::min(bx + kShadowBlock, tile.x0 + tile.width);
+            for (int y = by; y < y_end; ++y)
+                for (int x = bx; x < x_end; ++x)
+                    least = std::min(least, texels[static_cast<size_t>(y) * size + x]);
+            nearest[(by / kShadowBlock) * blocks + bx / kShadowBlock] = least;
+        }
+}
+
 }  // namespace
 
 ShadowStage::ShadowStage(const SceneDesc& scene, const World& world) : world_(world) {
@@ -117,6 +132,9 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
     const int size = map.size;
     float* texels = map.depth.data() + static_cast<size_t>(face) * size * size;
     const float infinity = std::numeric_limits<float>::infinity();
+    float* blocks = map.block_nearest.data() + static_cast<size_t>(face) * map.blocks * map.blocks;
+    // Tiles start on whole blocks, so each block is one tile's own.
+    static_assert(kTileSize % kShadowBlock == 0);
     lm.raster.draw_tiles(pool, [&](const TileVisibility& tile) {
         for (int ty = 0; ty < tile.height; ++ty) {
             float* row = texels + static_cast<size_t>(tile.y0 + ty) * size + tile.x0;
@@ -127,6 +145,7 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
                               : shadow_depth_from_raster(map, tile.depth[at]);
             }
         }
+        nearest_in_blocks(texels, size, tile, map.blocks, blocks);
     });
 }
 

@@ -57,6 +57,8 @@ void finish(ShadowMap& m, int size, int faces) {
     m.size = size;
     m.faces = faces;
     m.depth.resize(static_cast<size_t>(faces) * size * size);
+    m.blocks = (size + kShadowBlock - 1) / kShadowBlock;
+    m.block_nearest.resize(static_cast<size_t>(faces) * m.blocks * m.blocks);
     const glm::mat4 projection = face_projection(m);
     for (int f = 0; f < faces; ++f) m.clip[f] = projection * m.view[f];
 }
@@ -210,6 +212,7 @@ struct ReceiverPlane {
 struct FilterBox {
     float half;  // half the box's side, in texels
     int first_u, first_v;
+    int last_u;  // the last column with a weight (chunks may run past it)
     int chunks, rows;
     vf weight[kChunks], step[kChunks];
     float row_weight[kChunks * simd::kLanes];
@@ -246,6 +249,7 @@ struct FilterBox {
     box.half = half;
     box.first_u = first_u;
     box.first_v = first_v;
+    box.last_u = static_cast<int>(std::ceil(hi_u)) - 1;
     box.chunks = chunks;
     box.rows = rows;
 }
@@ -272,6 +276,28 @@ struct FilterBox {
             edge[b * stride + k] = row[std::clamp(first_u + k, 0, last)];
     }
     return edge;
+}
+
+// Whether every texel under the box surely has its caster farther than
+// the point, from the blocks' nearest casters alone: then the filter would
+// find nothing blocked, and its texels need not be read. The depth the
+// filter compares a texel with is the receiver plane's there, which over
+// the box differs from the point's by at most (|gu| + |gv|) (half + 1); a
+// margin covers the rounding of that sum.
+[[gnu::always_inline]] inline bool surely_lit(const ShadowMap& m, int face, const FilterBox& box,
+                                              const ShadowReceiver& r, const ReceiverPlane& plane) {
+    if (m.block_nearest.empty() || box.first_u < 0 || box.first_v < 0 || box.last_u >= m.size ||
+        box.first_v + box.rows > m.size)
+        return false;
+    const float reach = (std::abs(plane.gu) + std::abs(plane.gv)) * (box.half + 1.0f);
+    const float farthest = r.depth - plane.bias + reach;
+    const float margin = 1e-4f * (std::abs(r.depth) + std::abs(plane.bias) + reach);
+    const float* blocks = m.block_nearest.data() + static_cast<size_t>(face) * m.blocks * m.blocks;
+    const int last_v = box.first_v + box.rows - 1;
+    for (int by = box.first_v / kShadowBlock; by <= last_v / kShadowBlock; ++by)
+        for (int bx = box.first_u / kShadowBlock; bx <= box.last_u / kShadowBlock; ++bx)
+            if (!(blocks[by * m.blocks + bx] > farthest + margin)) return false;
+    return true;
 }
 
 // Per lane, the weight of the texels whose caster is nearer than the point.
@@ -307,6 +333,7 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     const ReceiverPlane plane = receiver_plane(m, receiver);
     FilterBox box;
     filter_box(m, receiver, plane.gu, box);
+    if (surely_lit(m, receiver.face, box, receiver, plane)) return 1.0f;  // as the filter would
     float edge[kMaxRows * kChunks * simd::kLanes];
     ptrdiff_t stride;
     const float* block = box_texels(m, receiver.face, box, edge, stride);

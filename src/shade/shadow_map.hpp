@@ -24,6 +24,10 @@
 
 namespace facet {
 
+// The side, in texels, of the blocks whose nearest caster a map keeps
+// beside its texels (ShadowMap::block_nearest).
+inline constexpr int kShadowBlock = 8;
+
 enum class ShadowProjection {
     orthographic,  // directional lights: parallel rays
     perspective,   // spot lights: one frustum round the cone
@@ -38,6 +42,13 @@ struct ShadowMap {
     // Each is the distance along the face's viewing axis to the nearest
     // caster at the texel's centre; +infinity where nothing casts.
     std::vector<float> depth;
+    // Per face, the smallest depth in each kShadowBlock x kShadowBlock
+    // block of texels, `blocks` x `blocks` of them row by row (the last
+    // ones cut at the map's edge). A lookup whose filter lies wholly in
+    // blocks whose nearest caster is farther than the point can be is lit
+    // without reading the texels. Empty: every lookup reads its texels.
+    std::vector<float> block_nearest;
+    int blocks = 0;
     glm::mat4 view[6];               // world -> face view space (right-handed, looking down -z)
     glm::mat4 clip[6];               // world -> the raster core's clip space (reversed-Z)
     glm::vec3 light_position{0.0f};  // perspective and cube maps: the eye
