@@ -355,48 +355,99 @@ objects:
     CHECK(one.color.pixels == three.color.pixels);
 }
 
+namespace {
+
+const char* const kEachShadowLight[] = {
+    "{ type: directional, direction: [0.3, -1, 0.2], shadows: true, shadow_softness: 2 }",
+    "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], outer_angle: 45, intensity: 25, "
+    "shadows: true }",
+    "{ type: point, position: [0, 5, 0], intensity: 25, shadows: true }"};
+
+// The shadow map the stage draws for the floating cube's scene, lit by `light`.
+ShadowMap floating_cube_shadow_map(const std::string& light) {
+    test::TempDir dir("shadow-map");
+    const SceneDesc scene =
+        test::load(test::write_text(dir.file("scene.yaml"), floating_cube_scene(light, true)));
+    const World world = build_world(scene);
+    ThreadPool pool(2);
+    const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
+    PoseStage pose(scene, world);
+    ShadowStage stage(scene, world);
+    const std::span<const ShadowMap* const> maps = stage.render(state, pose.pose(state), pool);
+    REQUIRE(maps.size() == 1);
+    REQUIRE(maps[0] != nullptr);
+    return *maps[0];
+}
+
+// Points on the floor round the shadow and on the cube's top, with the
+// normals of both, tilted ones and none, handed to `look(position, normal)`.
+template <typename Look>
+void each_receiver(Look look) {
+    for (float x = -3.0f; x <= 3.0f; x += 0.037f)
+        for (float z = -3.0f; z <= 3.0f; z += 0.041f)
+            for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0.3f, 1, -0.2f), glm::vec3(0)})
+                for (const glm::vec3 p : {glm::vec3(x, 0, z), glm::vec3(0.2f * x, 2.5f, 0.2f * z)})
+                    look(p, n);
+}
+
+}  // namespace
+
 // A map keeps the nearest caster of each block of texels, and a lookup
 // whose filter lies in blocks whose casters are all farther than the point
 // skips its texels (shade/shadow_map.hpp). Skipping must change nothing:
 // the same visibility, bit for bit, as reading every texel.
 TEST_CASE("the shadow map's blocks change no lookup", "[shadow]") {
-    for (const char* light :
-         {"{ type: directional, direction: [0.3, -1, 0.2], shadows: true, "
-          "shadow_softness: 2 }",
-          "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], "
-          "outer_angle: 45, intensity: 25, shadows: true }",
-          "{ type: point, position: [0, 5, 0], intensity: 25, shadows: true }"}) {
+    for (const char* light : kEachShadowLight) {
         INFO(light);
-        test::TempDir dir("shadow-blocks");
-        const SceneDesc scene =
-            test::load(test::write_text(dir.file("scene.yaml"), floating_cube_scene(light, true)));
-        const World world = build_world(scene);
-        ThreadPool pool(2);
-        const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
-        PoseStage pose(scene, world);
-        ShadowStage stage(scene, world);
-        const std::span<const ShadowMap* const> maps = stage.render(state, pose.pose(state), pool);
-        REQUIRE(maps.size() == 1);
-        REQUIRE(maps[0] != nullptr);
-        const ShadowMap& blocked = *maps[0];
+        const ShadowMap blocked = floating_cube_shadow_map(light);
         REQUIRE_FALSE(blocked.block_nearest.empty());
         ShadowMap every_texel = blocked;
         every_texel.block_nearest.clear();
-        // Points on the floor round the shadow and on the cube's faces,
-        // with the normals of both, and tilted ones.
         size_t dark = 0, lit = 0, partly = 0;
-        for (float x = -3.0f; x <= 3.0f; x += 0.037f)
-            for (float z = -3.0f; z <= 3.0f; z += 0.041f)
-                for (const glm::vec3 n : {glm::vec3(0, 1, 0), glm::vec3(0.3f, 1, -0.2f)})
-                    for (const glm::vec3 p : {glm::vec3(x, 0, z), glm::vec3(x, 2.5f, z) * 0.2f +
-                                                                      glm::vec3(0, 2.0f, 0)}) {
-                        const float a = shadow_visibility(blocked, p, n);
-                        const float b = shadow_visibility(every_texel, p, n);
-                        if (a != b) FAIL_CHECK("at " << p.x << ", " << p.y << ", " << p.z);
-                        (a == 0.0f ? dark : a == 1.0f ? lit : partly) += 1;
-                    }
+        each_receiver([&](const glm::vec3& p, const glm::vec3& n) {
+            const float a = shadow_visibility(blocked, p, n);
+            const float b = shadow_visibility(every_texel, p, n);
+            if (a != b) FAIL_CHECK("at " << p.x << ", " << p.y << ", " << p.z);
+            (a == 0.0f ? dark : a == 1.0f ? lit : partly) += 1;
+        });
         CHECK(dark > 100);
         CHECK(lit > 1000);
         CHECK(partly > 100);
+    }
+}
+
+// Lighting looks shadows up eight points at a time; each lane must get
+// what the one-point lookup gives (the stylised models use that one).
+TEST_CASE("eight shadow lookups at once give each point's own bits", "[shadow]") {
+    for (const char* light : kEachShadowLight) {
+        INFO(light);
+        const ShadowMap map = floating_cube_shadow_map(light);
+        ShadowPoints points{};
+        float expected[simd::kLanes];
+        int filled = 0;
+        size_t compared = 0, shadowed = 0;
+        const auto check_batch = [&](unsigned lanes) {
+            const simd::vf got = shadow_visibility(map, points, lanes);
+            for (int i = 0; i < simd::kLanes; ++i) {
+                const float want = (lanes >> i) & 1 ? expected[i] : 1.0f;
+                if (got[i] != want)
+                    FAIL_CHECK("lane " << i << " at " << points.px[i] << ", " << points.py[i]
+                                       << ", " << points.pz[i] << ": " << got[i] << " not "
+                                       << want);
+                ++compared;
+                if (want < 1.0f) ++shadowed;
+            }
+        };
+        each_receiver([&](const glm::vec3& p, const glm::vec3& n) {
+            points.px[filled] = p.x, points.py[filled] = p.y, points.pz[filled] = p.z;
+            points.nx[filled] = n.x, points.ny[filled] = n.y, points.nz[filled] = n.z;
+            expected[filled] = shadow_visibility(map, p, n);
+            if (++filled < simd::kLanes) return;
+            check_batch(0xffu);
+            check_batch(0x5au);  // some lanes left out get 1
+            filled = 0;
+        });
+        CHECK(compared > 10000);
+        CHECK(shadowed > 500);
     }
 }

@@ -56,16 +56,13 @@ struct IncomingLight {
 }
 
 // Darkens the light's radiance by its shadow map at the lanes set in
-// `where` that receive shadows. The lookups go one lane at a time, and only
-// there: a shadow map read is the costly part.
+// `where` that receive shadows, and only there: a shadow map read is the
+// costly part.
 [[gnu::always_inline]] inline void apply_shadow(const ShadowMap& shadow, const SurfaceBatch& p,
                                                 simd::vf nx, simd::vf ny, simd::vf nz,
                                                 simd::vi where, IncomingLight& in) {
-    simd::vf visible = simd::splat(1.0f);
-    for (int i = 0; i < simd::kLanes; ++i)
-        if (where[i] && p.receives_shadow[i] > 0.0f)
-            visible[i] =
-                shadow_visibility(shadow, {p.px[i], p.py[i], p.pz[i]}, {nx[i], ny[i], nz[i]});
+    const unsigned lanes = simd::movemask(where & (p.receives_shadow > 0.0f));
+    const simd::vf visible = shadow_visibility(shadow, {p.px, p.py, p.pz, nx, ny, nz}, lanes);
     in.rr *= visible;
     in.rg *= visible;
     in.rb *= visible;

@@ -322,14 +322,9 @@ struct FilterBox {
     return blocked;
 }
 
-}  // namespace
-
-// Built for AVX2 and for baseline x86-64, like the lighting batch; both do
-// the same IEEE operations in the same order.
-float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
-    if (m.size == 0) return 1.0f;
-    ShadowReceiver receiver;
-    if (!locate_receiver(m, position, normal, receiver)) return 1.0f;
+// The filtered visibility at a located receiver.
+[[gnu::always_inline]] inline float receiver_visibility(const ShadowMap& m,
+                                                        const ShadowReceiver& receiver) {
     const ReceiverPlane plane = receiver_plane(m, receiver);
     FilterBox box;
     filter_box(m, receiver, plane.gu, box);
@@ -342,6 +337,97 @@ float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm
     for (int k = 0; k < simd::kLanes; ++k) sum += blocked[k];
     // Exactly 1 where nothing blocks the light, so lit surfaces are untouched.
     return std::clamp(1.0f - sum / (4.0f * box.half * box.half), 0.0f, 1.0f);
+}
+
+// locate_receiver for eight points of one face (an orthographic or
+// perspective map), with the same operations in the same order, so each
+// lane gets the bits the one-point version gives. Returns the lanes whose
+// point the map covers.
+struct ReceiverLanes {
+    vf nx, ny, nz, depth, texel, xs, ys, u, v;
+};
+
+[[gnu::always_inline]] inline vi locate_receivers(const ShadowMap& m, const ShadowPoints& q,
+                                                  ReceiverLanes& r) {
+    const bool ortho = m.projection == ShadowProjection::orthographic;
+    const glm::mat4& view = m.view[0];
+    const vf zero = simd::splat(0.0f);
+    // glm's order: (c0 x + c1 y) + (c2 z + c3 w), and for mat3 (c0 x + c1 y) + c2 z.
+    vf px = (view[0][0] * q.px + view[1][0] * q.py) + (view[2][0] * q.pz + view[3][0] * 1.0f);
+    vf py = (view[0][1] * q.px + view[1][1] * q.py) + (view[2][1] * q.pz + view[3][1] * 1.0f);
+    vf pz = (view[0][2] * q.px + view[1][2] * q.py) + (view[2][2] * q.pz + view[3][2] * 1.0f);
+    const vf normal_length = simd::vsqrt(q.nx * q.nx + q.ny * q.ny + q.nz * q.nz);
+    const vi has_normal = normal_length > zero;
+    const vf inv_length = 1.0f / (has_normal ? normal_length : simd::splat(1.0f));
+    const vf ux = q.nx * inv_length, uy = q.ny * inv_length, uz = q.nz * inv_length;
+    vf nx = (view[0][0] * ux + view[1][0] * uy) + view[2][0] * uz;
+    vf ny = (view[0][1] * ux + view[1][1] * uy) + view[2][1] * uz;
+    vf nz = (view[0][2] * ux + view[1][2] * uy) + view[2][2] * uz;
+    nx = has_normal ? nx : zero;
+    ny = has_normal ? ny : zero;
+    nz = has_normal ? nz : zero;
+    const float half_near = 0.5f * m.near;
+    vi inside = ortho ? simd::splat_i(-1) : -pz > half_near;
+
+    const float units_per_texel = 2.0f / (static_cast<float>(m.size) * m.scale);
+    const vf texel_at_point = ortho ? simd::splat(units_per_texel) : -pz * units_per_texel;
+    vf cos_light;
+    if (ortho) {
+        cos_light = (nx * 0.0f + ny * 0.0f) + nz * 1.0f;
+    } else {
+        const vf tx = -px, ty = -py, tz = -pz;
+        const vf dot = (tx * tx + ty * ty) + tz * tz;
+        const vf inv = 1.0f / simd::vsqrt(inside ? dot : simd::splat(1.0f));
+        cos_light = (nx * (tx * inv) + ny * (ty * inv)) + nz * (tz * inv);
+    }
+    const vf sin_light = simd::vsqrt(simd::vmax(zero, 1.0f - cos_light * cos_light));
+    const vf offset = kNormalOffsetTexels * m.bias * texel_at_point * sin_light;
+    px += nx * offset;
+    py += ny * offset;
+    pz += nz * offset;
+    const vf depth = -pz;
+    if (!ortho) inside &= depth > half_near;
+    const vf texel = ortho ? simd::splat(units_per_texel) : depth * units_per_texel;
+    const vf inv_depth = ortho ? simd::splat(1.0f) : 1.0f / (inside ? depth : simd::splat(1.0f));
+    const vf xs = px * inv_depth, ys = py * inv_depth;
+    const float size = static_cast<float>(m.size);
+    const vf u = (xs * m.scale + 1.0f) * 0.5f * size;
+    const vf v = (1.0f - ys * m.scale) * 0.5f * size;
+    inside &= (u >= zero) & (v >= zero) & (u <= size) & (v <= size);
+    r = {nx, ny, nz, depth, texel, xs, ys, u, v};
+    return inside;
+}
+
+}  // namespace
+
+// Built for AVX2 and for baseline x86-64, like the lighting batch; both do
+// the same IEEE operations in the same order.
+float shadow_visibility(const ShadowMap& m, const glm::vec3& position, const glm::vec3& normal) {
+    if (m.size == 0) return 1.0f;
+    ShadowReceiver receiver;
+    if (!locate_receiver(m, position, normal, receiver)) return 1.0f;
+    return receiver_visibility(m, receiver);
+}
+
+vf shadow_visibility(const ShadowMap& m, const ShadowPoints& q, unsigned lanes) {
+    vf visible = simd::splat(1.0f);
+    if (m.size == 0 || lanes == 0) return visible;
+    if (m.projection == ShadowProjection::cube) {  // a face per lane
+        for (int i = 0; i < simd::kLanes; ++i)
+            if ((lanes >> i) & 1)
+                visible[i] =
+                    shadow_visibility(m, {q.px[i], q.py[i], q.pz[i]}, {q.nx[i], q.ny[i], q.nz[i]});
+        return visible;
+    }
+    ReceiverLanes r;
+    lanes &= simd::movemask(locate_receivers(m, q, r));
+    const bool ortho = m.projection == ShadowProjection::orthographic;
+    for (int i = 0; i < simd::kLanes; ++i)
+        if ((lanes >> i) & 1)
+            visible[i] =
+                receiver_visibility(m, {ortho, 0, glm::vec3(r.nx[i], r.ny[i], r.nz[i]), r.depth[i],
+                                        r.texel[i], r.xs[i], r.ys[i], r.u[i], r.v[i]});
+    return visible;
 }
 
 }  // namespace facet

@@ -20,6 +20,7 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/simd_math.hpp"
 #include "shade/lighting.hpp"
 
 namespace facet {
@@ -64,6 +65,15 @@ struct ShadowMap {
 // `normal` is the surface normal on the side the light is on (any length;
 // a zero one turns the normal offset and receiver plane off).
 float shadow_visibility(const ShadowMap& map, const glm::vec3& position, const glm::vec3& normal);
+
+// The same for eight points at once, in the lanes set in `lanes` (the
+// others get 1): the bits the one-point version gives each. The placing in
+// the map runs over the lanes; the filter, one lane at a time.
+struct ShadowPoints {
+    simd::vf px, py, pz;  // positions
+    simd::vf nx, ny, nz;  // normals, as for shadow_visibility
+};
+simd::vf shadow_visibility(const ShadowMap& map, const ShadowPoints& points, unsigned lanes);
 
 // The same for a shading light: 1 when it has no shadow map. For shading
 // models that light one point at a time (the stylised styles); the
