@@ -2,9 +2,12 @@
 // trilinear sampling blends levels by the level of detail.
 #include <catch2/catch.hpp>
 
+#include <cmath>
+#include <random>
 #include <vector>
 
 #include "assets/texture.hpp"
+#include "shade/texture_lod.hpp"
 
 using namespace facet;
 
@@ -56,4 +59,50 @@ TEST_CASE("trilinear sampling picks and blends levels by lod", "[texture][mipmap
     CHECK(t.sample(centre_of_texel_0, 20.0f).r == Approx(0.5f).margin(0.004));
     // Half way between level 0 (black here) and level 1 (grey).
     CHECK(t.sample(centre_of_texel_0, 0.5f).r == Approx(0.25f).margin(0.002));
+}
+
+// Shading finds eight lanes' texture coordinates and levels at once
+// (shade/texture_lod.hpp, UvTransform's lane form); each lane must get the
+// bits the one-point forms give, so that a pixel looks the same in any lane.
+TEST_CASE("texture lookups over eight lanes give each lane's own bits", "[texture][lod]") {
+    std::mt19937 random(36);
+    std::uniform_real_distribution<float> uv(-40.0f, 40.0f), weight(0.0f, 1.0f), step(-1.0f, 1.0f),
+        step_size(-8.0f, -1.0f);  // steps of 1e-8 to 0.1 per pixel
+    const facet::UvTransform tiling =
+        facet::UvTransform::from_trs({0.25, -3.5}, 0.7, {6.6667, 0.125});
+    size_t magnified = 0, minified = 0;
+    for (int round = 0; round < 2000; ++round) {
+        facet::UvLanes c;
+        facet::FootprintLanes s;
+        const float size = std::pow(10.0f, step_size(random));
+        for (int i = 0; i < facet::simd::kLanes; ++i) {
+            for (int k = 0; k < 3; ++k) c.u[k][i] = uv(random), c.v[k][i] = uv(random);
+            s.b1[i] = weight(random), s.b2[i] = weight(random) * (1.0f - s.b1[i]);
+            s.ddx1[i] = size * step(random), s.ddx2[i] = size * step(random);
+            s.ddy1[i] = size * step(random), s.ddy2[i] = size * step(random);
+        }
+        facet::UvLanes tiled = c;
+        for (int k = 0; k < 3; ++k) tiling.apply(tiled.u[k], tiled.v[k]);
+        const glm::vec2 texels(256.0f, 64.0f);
+        const facet::TextureLookupLanes lanes = facet::texture_lookups(tiled, s, texels);
+        for (int i = 0; i < facet::simd::kLanes; ++i) {
+            glm::vec2 corner[3];
+            for (int k = 0; k < 3; ++k) {
+                corner[k] = tiling.apply(glm::vec2(c.u[k][i], c.v[k][i]));
+                REQUIRE(corner[k] == glm::vec2(tiled.u[k][i], tiled.v[k][i]));
+            }
+            facet::SurfaceSample one{};
+            one.bary = {1.0f - s.b1[i] - s.b2[i], s.b1[i], s.b2[i]};
+            one.ddx = {0.0f, s.ddx1[i], s.ddx2[i]};
+            one.ddy = {0.0f, s.ddy1[i], s.ddy2[i]};
+            const facet::TextureLookup want =
+                facet::texture_lookup(corner[0], corner[1], corner[2], one, texels);
+            REQUIRE(lanes.u[i] == want.uv.x);
+            REQUIRE(lanes.v[i] == want.uv.y);
+            REQUIRE(lanes.lod[i] == want.lod);
+            (want.lod == 0.0f ? magnified : minified) += 1;
+        }
+    }
+    CHECK(magnified > 100);
+    CHECK(minified > 100);
 }

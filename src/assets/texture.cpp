@@ -306,6 +306,13 @@ glm::vec2 UvTransform::apply(glm::vec2 uv) const {
             static_cast<float>(offset.y + linear[0].y * uv.x + linear[1].y * uv.y)};
 }
 
+void UvTransform::apply(simd::vf& u, simd::vf& v) const {
+    typedef double vd __attribute__((vector_size(64)));  // eight doubles, as apply() computes
+    const vd x = __builtin_convertvector(u, vd), y = __builtin_convertvector(v, vd);
+    u = __builtin_convertvector((offset.x + linear[0].x * x) + linear[1].x * y, simd::vf);
+    v = __builtin_convertvector((offset.y + linear[0].y * x) + linear[1].y * y, simd::vf);
+}
+
 uint64_t texture_bytes(int width, int height, int bits) {
     const uint64_t texel = bits == 8 ? sizeof(uint32_t) : sizeof(Rgba16F);
     uint64_t n = 0;

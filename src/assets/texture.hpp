@@ -16,6 +16,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/half.hpp"
+#include "core/simd_math.hpp"
 
 namespace facet {
 
@@ -62,6 +63,8 @@ struct UvTransform {
     UvTransform scaled(glm::dvec2 scale) const;
     bool identity() const { return offset == glm::dvec2(0) && linear == glm::dmat2(1.0); }
     glm::vec2 apply(glm::vec2 uv) const;
+    // apply() on eight lanes in place: the same bits in each.
+    void apply(simd::vf& u, simd::vf& v) const;
 };
 
 struct Texture {

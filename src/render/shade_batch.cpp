@@ -298,59 +298,108 @@ SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
     return s;
 }
 
-// One texture of a lane's material, looked up with the lane's pixel
-// footprint.
-glm::vec4 sample_slot(const ShadeInputs& in, const ShadeBatch& b, int lane,
-                      const TextureSlot& slot) {
-    const SurfaceSample s = pixel_sample(b, lane, in.samples_per_side);
-    const std::array<glm::vec2, 3> c = in.world.corner_uvs(s.triangle, slot);
-    const TextureLookup t =
-        texture_lookup(c[0], c[1], c[2], s, glm::vec2(slot.texture->width, slot.texture->height));
-    return slot.texture->sample(t.uv, t.lod);
+// The corners' texture coordinates of each lane's triangle, in `slot`'s
+// set and tiling: World::corner_uvs over lanes. Lanes outside `lanes`
+// repeat the first of them.
+UvLanes corner_uv_lanes(const World& world, const ShadeBatch& b, const TextureSlot& slot,
+                        unsigned lanes) {
+    const std::vector<glm::vec2>& set =
+        slot.uv_set == 1 && !world.uvs1.empty() ? world.uvs1 : world.uvs;
+    const int first = __builtin_ctz(lanes);
+    UvLanes c;
+    for (int i = 0; i < simd::kLanes; ++i) {
+        const int lane = (lanes >> i) & 1 ? i : first;
+        const uint32_t* corner =
+            &world.indices[3 * static_cast<size_t>(b.setup[lane]->source_triangle)];
+        for (int k = 0; k < 3; ++k) {
+            c.u[k][i] = set[corner[k]].x;
+            c.v[k][i] = set[corner[k]].y;
+        }
+    }
+    if (!slot.transform.identity())
+        for (int k = 0; k < 3; ++k) slot.transform.apply(c.u[k], c.v[k]);
+    return c;
 }
 
-// Textures, lane by lane: trilinear lookups do not vectorise.
-void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        if (!m.base_color_map) continue;
-        const glm::vec4 texel = sample_slot(in, b, i, m.base_color_map);
-        for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
+// Looks up each lane's texture `slot_of(lane)` (null: none) with the
+// lane's pixel footprint (shading happens once per pixel of k x k samples),
+// the lanes that share a slot together; `use(lane, texel)` takes each.
+// The coordinates are found over the lanes; the filtered lookups, one lane
+// at a time.
+template <typename SlotOf, typename Use>
+void sample_slots(const ShadeInputs& in, const ShadeBatch& b, SlotOf slot_of, Use use) {
+    unsigned todo = 0;
+    for (int i = 0; i < b.count; ++i)
+        if (slot_of(i)) todo |= 1u << i;
+    if (todo == 0) return;
+    const float k = static_cast<float>(in.samples_per_side);
+    const SurfaceSamples& s = b.sample;
+    const FootprintLanes footprint{s.bary[1],    s.bary[2],    s.ddx[1] * k,
+                                   s.ddx[2] * k, s.ddy[1] * k, s.ddy[2] * k};
+    while (todo) {
+        const TextureSlot* slot = slot_of(__builtin_ctz(todo));
+        unsigned mine = 0;
+        for (int i = 0; i < b.count; ++i)
+            if ((todo >> i) & 1 && slot_of(i) == slot) mine |= 1u << i;
+        const Texture& texture = *slot->texture;
+        const TextureLookupLanes t =
+            texture_lookups(corner_uv_lanes(in.world, b, *slot, mine), footprint,
+                            glm::vec2(texture.width, texture.height));
+        for (int i = 0; i < b.count; ++i)
+            if ((mine >> i) & 1) use(i, texture.sample(glm::vec2(t.u[i], t.v[i]), t.lod[i]));
+        todo &= ~mine;
     }
 }
 
-// The `pbr` model's maps, lane by lane (glTF 2.0 §3.9): metallic-roughness
-// (B metal, G roughness), occlusion (R, blended by its strength),
-// KHR_materials_specular (A weight, RGB colour) and clearcoat (R strength,
-// G roughness), each multiplying its factor.
+// A material texture slot of each lane, for sample_slots.
+template <typename Slot>
+auto slot_of(const ShadeBatch& b, Slot slot) {
+    return [&b, slot](int lane) -> const TextureSlot* {
+        const TextureSlot& t = b.material[lane]->*slot;
+        return t ? &t : nullptr;
+    };
+}
+
+void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
+    sample_slots(in, b, slot_of(b, &Material::base_color_map), [&](int i, const glm::vec4& texel) {
+        for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
+    });
+}
+
+// The `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness (B metal, G
+// roughness), occlusion (R, blended by its strength), KHR_materials_specular
+// (A weight, RGB colour) and clearcoat (R strength, G roughness), each
+// multiplying its factor.
 void apply_physical_maps(const ShadeInputs& in, ShadeBatch& b) {
     PbrLanes& p = b.lanes.pbr;
+    sample_slots(in, b, slot_of(b, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
+        p.roughness[i] *= t.g;
+        p.metallic[i] *= t.b;
+    });
+    sample_slots(in, b, slot_of(b, &Material::occlusion_map), [&](int i, const glm::vec4& t) {
+        p.occlusion[i] = 1.0f + b.material[i]->occlusion_strength * (t.r - 1.0f);
+    });
+    float weight[simd::kLanes], tint[3][simd::kLanes];
+    std::fill(weight, weight + simd::kLanes, 1.0f);
+    std::fill(&tint[0][0], &tint[0][0] + 3 * simd::kLanes, 1.0f);
+    sample_slots(in, b, slot_of(b, &Material::specular_weight_map),
+                 [&](int i, const glm::vec4& t) { weight[i] = t.a; });
+    sample_slots(in, b, slot_of(b, &Material::specular_color_map), [&](int i, const glm::vec4& t) {
+        for (int a = 0; a < 3; ++a) tint[a][i] = t[a];
+    });
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
-        if (m.metal_rough_map) {
-            const glm::vec4 t = sample_slot(in, b, i, m.metal_rough_map);
-            p.roughness[i] *= t.g;
-            p.metallic[i] *= t.b;
-        }
-        if (m.occlusion_map)
-            p.occlusion[i] =
-                1.0f + m.occlusion_strength * (sample_slot(in, b, i, m.occlusion_map).r - 1.0f);
-        if (m.specular_weight_map || m.specular_color_map) {
-            const float weight =
-                m.specular_weight_map ? sample_slot(in, b, i, m.specular_weight_map).a : 1.0f;
-            const glm::vec3 tint = m.specular_color_map
-                                       ? glm::vec3(sample_slot(in, b, i, m.specular_color_map))
-                                       : glm::vec3(1.0f);
-            const float f0 = pbr::f0_from_ior(m.ior);
-            for (int a = 0; a < 3; ++a)
-                p.f0[a][i] =
-                    std::min(f0 * m.specular_color[a] * tint[a], 1.0f) * m.specular_weight * weight;
-            p.f90[i] = m.specular_weight * weight;
-        }
-        if (m.clearcoat_map) p.clearcoat[i] *= sample_slot(in, b, i, m.clearcoat_map).r;
-        if (m.clearcoat_roughness_map)
-            p.clearcoat_roughness[i] *= sample_slot(in, b, i, m.clearcoat_roughness_map).g;
+        if (!m.specular_weight_map && !m.specular_color_map) continue;
+        const float f0 = pbr::f0_from_ior(m.ior);
+        for (int a = 0; a < 3; ++a)
+            p.f0[a][i] = std::min(f0 * m.specular_color[a] * tint[a][i], 1.0f) * m.specular_weight *
+                         weight[i];
+        p.f90[i] = m.specular_weight * weight[i];
     }
+    sample_slots(in, b, slot_of(b, &Material::clearcoat_map),
+                 [&](int i, const glm::vec4& t) { p.clearcoat[i] *= t.r; });
+    sample_slots(in, b, slot_of(b, &Material::clearcoat_roughness_map),
+                 [&](int i, const glm::vec4& t) { p.clearcoat_roughness[i] *= t.g; });
 }
 
 // Normal maps turn the shading normal, lane by lane, in the tangent frame
@@ -463,14 +512,20 @@ void apply_fades(const ShadeInputs& in, ShadeBatch& b) {
 // normal and depth views stay measurements.
 void apply_emission(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
     if (!needs_of(style, false).light_terms && style.model != ShadingModel::gouraud) return;
+    glm::vec3 emitted[simd::kLanes];
+    for (int i = 0; i < b.count; ++i) emitted[i] = b.material[i]->emissive;
+    sample_slots(
+        in, b,
+        [&](int i) -> const TextureSlot* {
+            const TextureSlot& t = b.material[i]->emissive_map;
+            return t && emitted[i] != glm::vec3(0) ? &t : nullptr;
+        },
+        [&](int i, const glm::vec4& t) { emitted[i] *= glm::vec3(t); });
     for (int i = 0; i < b.count; ++i) {
         const Material& m = *b.material[i];
-        glm::vec3 emitted = m.emissive;
-        if (m.emissive_map && emitted != glm::vec3(0))
-            emitted *= glm::vec3(sample_slot(in, b, i, m.emissive_map));
         for (int a = 0; a < 3; ++a) {
             const float base = m.unlit ? b.lanes.albedo[a][i] : b.color[a][i];
-            b.color[a][i] = base + emitted[a];
+            b.color[a][i] = base + emitted[i][a];
         }
     }
 }
