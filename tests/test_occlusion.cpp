@@ -26,7 +26,8 @@ style: { shading: unlit, occlusion: )" +
                              R"( }
 objects:
   - name: floor
-    primitive: { type: plane, size: )" + floor_size + R"( }
+    primitive: { type: plane, size: )" +
+                             floor_size + R"( }
     material: { color: [0.8, 0.8, 0.8] }
   - name: wall
     primitive: { type: cube, size: 1 }
@@ -40,6 +41,15 @@ objects:
 // The red value of the pixel that shows world point p.
 float value_at(const facet::FrameImages& images, glm::vec3 p) {
     return facet::test::pixel_at(images, images.color, p).r;
+}
+
+// The mean absolute difference of two renders' red channels.
+double mean_red_difference(const facet::FrameImages& one, const facet::FrameImages& other) {
+    const auto a = facet::to_float_image(one.color).pixels;
+    const auto b = facet::to_float_image(other.color).pixels;
+    double sum = 0.0;
+    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].r - b[i].r);
+    return sum / static_cast<double>(a.size());
 }
 
 }  // namespace
@@ -88,11 +98,7 @@ TEST_CASE("occlusion at half resolution matches full resolution", "[render][occl
         CHECK(value_at(half, p) == Approx(value_at(full, p)).margin(0.035));
     }
     // Across the frame, the two differ little on average.
-    const auto a = facet::to_float_image(full.color).pixels;
-    const auto b = facet::to_float_image(half.color).pixels;
-    double sum = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].r - b[i].r);
-    CHECK(sum / static_cast<double>(a.size()) < 0.004);
+    CHECK(mean_red_difference(full, half) < 0.004);
     const facet::FrameImages three = render_corner("{ radius: 0.5, resolution: half }", 3);
     CHECK(facet::to_float_image(three.color).pixels == facet::to_float_image(half.color).pixels);
 }
@@ -115,11 +121,7 @@ TEST_CASE("occlusion on the pixels matches occlusion on the samples", "[render][
         INFO("at " << p.x << ", " << p.y << ", " << p.z);
         CHECK(value_at(on_pixels, p) == Approx(value_at(on_samples, p)).margin(0.01));
     }
-    const auto a = facet::to_float_image(on_pixels.color).pixels;
-    const auto b = facet::to_float_image(on_samples.color).pixels;
-    double sum = 0.0;
-    for (size_t i = 0; i < a.size(); ++i) sum += std::abs(a[i].r - b[i].r);
-    CHECK(sum / static_cast<double>(a.size()) < 0.002);
+    CHECK(mean_red_difference(on_pixels, on_samples) < 0.002);
 }
 
 TEST_CASE("occlusion on the pixels leaves a transparent background's share alone",
