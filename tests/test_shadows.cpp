@@ -359,8 +359,7 @@ namespace {
 
 const char* const kEachShadowLight[] = {
     "{ type: directional, direction: [0.3, -1, 0.2], shadows: true, shadow_softness: 2 }",
-    "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], outer_angle: 45, intensity: 25, "
-    "shadows: true }",
+    "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], outer_angle: 45, shadows: true }",
     "{ type: point, position: [0, 5, 0], intensity: 25, shadows: true }"};
 
 // The shadow map the stage draws for the floating cube's scene, lit by `light`.
