@@ -325,6 +325,11 @@ TEST_CASE("validate checks a scene and writes nothing", "[cli]") {
         0);
     CHECK(run_facet("validate " + shell_quoted(scene) + " -D camera.fov=0").exit_code == 2);
     CHECK(run_facet("validate " + shell_quoted(scene) + " --frames 2-1").exit_code == 2);
+    // The threads a render would use, checked as render checks them.
+    CHECK(run_facet("validate " + shell_quoted(scene) + " --threads 1").exit_code == 0);
+    const auto threads = run_facet("validate " + shell_quoted(scene) + " --threads 300");
+    CHECK(threads.exit_code == 2);
+    CHECK_THAT(threads.output, Contains("--threads"));
 
     auto fail = run_facet("validate " + shell_quoted(bad));
     CHECK(fail.exit_code == 2);

@@ -301,11 +301,11 @@ int validate_command(const RenderArgs& args) {
         // validating a scene must not depend on what some earlier run left in out/.
         options.overwrite = !args.output_given;
         check_outputs(scene, options);
-        World world = build_world(scene, 0, &model_mesh);
+        World world = build_world(scene, args.threads, &model_mesh);
         warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
         if (!args.json && !args.quiet && args.strict) print_warnings(scene, world);
         refuse_warnings(args.strict, scene.warnings, world.warnings);
-        check_render_memory(scene, world, available_cores());
+        check_render_memory(scene, world, args.threads == 0 ? available_cores() : args.threads);
         if (args.json) {
             ValidateFacts facts{scene.path,
                                 scene.style.name,
@@ -470,6 +470,9 @@ CLI::App* add_validate_command(CLI::App& app, RenderArgs& args) {
                       "Output folder a render would use (checks its manifest's settings)");
     cmd->get_option("scene")->description("Scene file (YAML), or a model (a mesh file)");
     add_turntable_options(cmd, args.turntable);
+    // The threads a render would use: they read the meshes here, and the
+    // memory check counts the frames a render keeps in flight with them.
+    add_threads_option(cmd, args.threads);
     return cmd;
 }
 

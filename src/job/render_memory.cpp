@@ -1,6 +1,7 @@
 #include "job/render_memory.hpp"
 
 #include "render/frame_inputs.hpp"
+#include "render/frame_targets.hpp"
 
 namespace facet {
 namespace {
@@ -11,7 +12,20 @@ constexpr uint64_t kPerTriangle = 160;  // set-up, shading planes, bin entries, 
 constexpr uint64_t kPerVertex = 96;     // model, clip, world position and normal, screen, lighting
 constexpr uint64_t kPerOutputPixel = 8 + 4;         // half-float RGBA colour, float depth
 constexpr uint64_t kPerSample = 16 + 4;             // float colour and depth per sample
+constexpr uint64_t kPerLineSample = 16;             // a sample's stroke, float RGBA
 constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
+constexpr uint64_t kPerSurfaceShare = 4;            // a pixel's share of surface samples
+
+// The frame's screen-space buffers, as the frame's targets have them
+// (render/frame_targets.hpp): every sample's colour, depth and strokes
+// when a stage needs the samples, and the G-buffer at the shading's
+// resolution (with each pixel's surface share at the pixels).
+uint64_t screen_space_bytes(const FrameTargets& targets, uint64_t pixels, uint64_t samples) {
+    if (targets.shading == ShadeResolution::pixels)
+        return targets.gbuffer ? pixels * (kPerGbufferSample + kPerSurfaceShare) : 0;
+    return samples * (kPerSample + (targets.line_samples ? kPerLineSample : 0) +
+                      (targets.gbuffer ? kPerGbufferSample : 0));
+}
 
 }  // namespace
 
@@ -23,12 +37,11 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     // The frame being rendered, two queued, and one or two being encoded
     // (job/render_job.cpp).
     const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
-    const StylePlan plan = plan_styles(scene);
+    const FrameTargets targets = plan_frame_targets(plan_styles(scene), out.passes);
     MemoryParts parts;
     parts.push_back({"output images", pixels * kPerOutputPixel * frames_in_flight});
-    if (plan.outlines || plan.hidden_edges)
-        parts.push_back({"sample buffers",
-                         samples * kPerSample + (plan.outlines ? samples * kPerGbufferSample : 0)});
+    if (const uint64_t screen_space = screen_space_bytes(targets, pixels, samples))
+        parts.push_back({"screen-space buffers", screen_space});
     parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
     parts.push_back({"vertices", static_cast<uint64_t>(world.positions.size()) * kPerVertex});
     uint64_t shadows = 0;

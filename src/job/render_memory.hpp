@@ -10,7 +10,7 @@
 namespace facet {
 
 // What rendering adds to the loaded world: frame buffers (output images in
-// flight, sample buffers, G-buffer), per-triangle and per-vertex working
+// flight, screen-space buffers: samples and G-buffer), per-triangle and per-vertex working
 // records, shadow maps.
 MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned threads);
 
