@@ -1,7 +1,8 @@
 // What rendering will hold, estimated before the first frame
 // (job/render_memory.hpp): the screen-space buffers follow the frame's
 // targets, so a style that keeps every sample is charged for them, and
-// occlusion alone for a G-buffer of pixels only.
+// occlusion alone for a G-buffer of pixels only; and every pass asked for
+// is counted in each frame in flight.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -14,10 +15,10 @@
 namespace {
 
 // The bytes of the part named `name` of a small scene's estimate, 0 when
-// there is none; `style` and `passes` are the scene's.
-uint64_t part_bytes(const std::string& style, const std::string& passes, const std::string& name) {
+// there is none; `style` is the scene's, `output` keys added to its output.
+uint64_t part_bytes(const std::string& style, const std::string& output, const std::string& name) {
     facet::test::TempDir dir("render-memory");
-    const std::string text = "output: { size: [200, 100], samples: 4, passes: " + passes +
+    const std::string text = "output: { size: [200, 100], samples: 4, " + output +
                              " }\nstyle: " + style + "\nobjects:\n  - primitive: cube\n";
     const facet::SceneDesc scene =
         facet::test::load(facet::test::write_text(dir.file("scene.yaml"), text));
@@ -34,19 +35,25 @@ TEST_CASE("the memory estimate counts the screen-space buffers the frame will ha
     const uint64_t pixels = 200 * 100, samples = pixels * 4;
     const std::string part = "screen-space buffers";
     // Shading per pixel, nothing after it: none.
-    CHECK(part_bytes("blinn-phong", "[color]", part) == 0);
+    CHECK(part_bytes("blinn-phong", "passes: [color]", part) == 0);
     // Occlusion alone: a G-buffer of pixels (depth, normal, object) and each
     // pixel's surface share.
-    CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "[color]", part) ==
+    CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "passes: [color]", part) ==
           pixels * (20 + 4));
     // Outlines: every sample's colour and depth, and a G-buffer of samples.
-    CHECK(part_bytes("{ extends: blinn-phong, outlines: true }", "[color]", part) ==
+    CHECK(part_bytes("{ extends: blinn-phong, outlines: true }", "passes: [color]", part) ==
           samples * (20 + 20));
     // The lines pass: the samples and their strokes; with occlusion beside
     // it, the G-buffer of samples too.
-    CHECK(part_bytes("blinn-phong", "[color, lines]", part) == samples * (20 + 16));
-    CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "[color, lines]", part) ==
+    CHECK(part_bytes("blinn-phong", "passes: [color, lines]", part) == samples * (20 + 16));
+    CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "passes: [color, lines]", part) ==
           samples * (20 + 16 + 20));
-    // The output images in flight are there whatever the style.
-    CHECK(part_bytes("blinn-phong", "[color]", "output images") == pixels * 12 * 5);
+    // The output images in flight: colour and depth whatever is asked (half
+    // RGBA, float), and each pass asked for besides (float normal and
+    // position, two 32-bit ids, float uv, half RGBA alpha).
+    CHECK(part_bytes("blinn-phong", "passes: [color]", "output images") == pixels * 12 * 5);
+    CHECK(part_bytes("blinn-phong",
+                     "passes: [color, depth, normal, object_id, material_id, uv, position, "
+                     "alpha], formats: [png, exr]",
+                     "output images") == pixels * (12 + 12 + 4 + 4 + 8 + 12 + 8) * 5);
 }

@@ -1,5 +1,7 @@
 #include "job/render_memory.hpp"
 
+#include <utility>
+
 #include "render/frame_inputs.hpp"
 #include "render/frame_targets.hpp"
 
@@ -15,6 +17,18 @@ constexpr uint64_t kPerSample = 16 + 4;             // float colour and depth pe
 constexpr uint64_t kPerLineSample = 16;             // a sample's stroke, float RGBA
 constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
 constexpr uint64_t kPerSurfaceShare = 4;            // a pixel's share of surface samples
+
+// An output pixel of each frame in flight (job/render_job.cpp's
+// FrameImages): colour and depth always, and every other pass asked for.
+uint64_t output_pixel_bytes(PassSet passes) {
+    uint64_t bytes = kPerOutputPixel;
+    const std::pair<Pass, uint64_t> extra[] = {
+        {Pass::alpha, 8},       {Pass::lines, 8}, {Pass::normal, 12},   {Pass::object_id, 4},
+        {Pass::material_id, 4}, {Pass::uv, 8},    {Pass::position, 12}, {Pass::motion, 8}};
+    for (const auto& [pass, pass_bytes] : extra)
+        if (passes.has(pass)) bytes += pass_bytes;
+    return bytes;
+}
 
 // The frame's screen-space buffers, as the frame's targets have them
 // (render/frame_targets.hpp): every sample's colour, depth and strokes
@@ -39,7 +53,7 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
     const FrameTargets targets = plan_frame_targets(plan_styles(scene), out.passes);
     MemoryParts parts;
-    parts.push_back({"output images", pixels * kPerOutputPixel * frames_in_flight});
+    parts.push_back({"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight});
     if (const uint64_t screen_space = screen_space_bytes(targets, pixels, samples))
         parts.push_back({"screen-space buffers", screen_space});
     parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
