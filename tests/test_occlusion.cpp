@@ -112,10 +112,11 @@ TEST_CASE("occlusion resolution other than half or full is refused", "[render][o
 // beside the lines pass it runs on every sample. The two agree, and on the
 // pixels it darkens only the share of a pixel that shows a surface.
 TEST_CASE("occlusion on the pixels matches occlusion on the samples", "[render][occlusion]") {
-    const std::string occlusion = "{ radius: 0.5 }";
-    const facet::FrameImages on_pixels = render_corner(occlusion, 2);
+    // A coloured background: the share of an edge pixel it shows stays as it is.
+    const std::string occlusion = "{ radius: 0.5 }", background = "background: [0.2, 0.4, 0.6, 1]";
+    const facet::FrameImages on_pixels = render_corner(occlusion, 2, background);
     const facet::FrameImages on_samples =
-        render_corner(occlusion, 2, "background: [0, 0, 0, 1], passes: [color, lines]");
+        render_corner(occlusion, 2, background + ", passes: [color, lines]");
     for (const glm::vec3 p : {glm::vec3(0.3f, 0.0f, -0.85f), glm::vec3(0.3f, 0.0f, -0.6f),
                               glm::vec3(-1.0f, 0.0f, -0.8f), glm::vec3(0.3f, 0.0f, 1.2f)}) {
         INFO("at " << p.x << ", " << p.y << ", " << p.z);
@@ -152,4 +153,25 @@ TEST_CASE("occlusion on the pixels leaves a transparent background's share alone
     CHECK(facet::test::pixel_at(occluded, occluded.alpha, corner).r <
           0.9f * facet::test::pixel_at(plain, plain.alpha, corner).r);
     CHECK(value_at(occluded, corner) < 0.9f * value_at(plain, corner));
+}
+
+TEST_CASE("occlusion on an image narrower than its cells leaves it open", "[render][occlusion]") {
+    for (const char* size : {"[1, 9]", "[9, 1]", "[1, 1]"}) {
+        INFO("size " << size);
+        facet::test::TempDir dir("occlusion-tiny");
+        const auto scene = [&](const std::string& occlusion) {
+            return std::string("output: { size: ") + size +
+                   R"(, samples: 4 }
+camera: { position: [0, 2.2, 4], target: [0, 0, 0], fov: 40 }
+style: { shading: unlit, occlusion: )" +
+                   occlusion + R"( }
+objects:
+  - { primitive: { type: plane, size: 8 }, material: { color: [0.8, 0.8, 0.8] } }
+)";
+        };
+        const facet::FrameImages plain = facet::test::render_yaml(dir.path(), scene("false"));
+        const facet::FrameImages occluded = facet::test::render_yaml(dir.path(), scene("true"));
+        CHECK(facet::to_float_image(occluded.color).pixels ==
+              facet::to_float_image(plain.color).pixels);
+    }
 }

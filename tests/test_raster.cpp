@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <mutex>
 #include <random>
 
 #include <glm/geometric.hpp>
@@ -278,11 +279,49 @@ TEST_CASE("triangles with infinite or NaN coordinates are dropped", "[raster][cl
     const int W = 32, H = 32;
     const float inf = std::numeric_limits<float>::infinity();
     const float nan = std::numeric_limits<float>::quiet_NaN();
-    for (glm::vec4 bad : {glm::vec4(inf, 0, 0.5f, 1), glm::vec4(0, nan, 0.5f, 1), glm::vec4(0, 0, 0.5f, inf)}) {
+    for (glm::vec4 bad :
+         {glm::vec4(inf, 0, 0.5f, 1), glm::vec4(0, nan, 0.5f, 1), glm::vec4(0, 0, 0.5f, inf)}) {
         std::vector<glm::vec4> clip = {ndc(4, 28, W, H), ndc(28, 28, W, H), bad};
         auto covered = coverage_of(clip, {0, 1, 2}, W, H, pool);
         int n = 0;
         for (int c : covered) n += c;
         CHECK(n == 0);
+    }
+}
+
+// The frame's rasterizer uses tiles of whole pixels of k x k samples: 63
+// samples a side at 9 samples a pixel, 60 at 25. Tiles are binned and
+// drawn on that grid, so a triangle covering the screen covers every
+// sample once, whatever the tile size.
+TEST_CASE("tiles smaller than the largest cover every sample once", "[raster][fill]") {
+    ThreadPool pool(2);
+    for (const int tile_size : {64, 63, 60, 17}) {
+        INFO("tile size " << tile_size);
+        const int width = 301, height = 197;
+        Rasterizer r(width, height, tile_size);
+        // Two triangles past the screen's corners: every sample is inside one.
+        const std::vector<glm::vec4> clip = {{-1.5f, -1.5f, 0.5f, 1},
+                                             {1.5f, -1.5f, 0.5f, 1},
+                                             {1.5f, 1.5f, 0.5f, 1},
+                                             {-1.5f, 1.5f, 0.5f, 1}};
+        const std::vector<uint32_t> triangles = {0, 1, 2, 0, 2, 3};
+        const uint8_t cull[2] = {0, 0};
+        r.set_geometry({clip.data(), clip.size(), triangles.data(), 2, cull}, pool);
+        std::vector<int> seen(static_cast<size_t>(width) * height, 0);
+        std::mutex mutex;
+        r.draw_tiles(pool, [&](const TileVisibility& t) {
+            CHECK(t.x0 % tile_size == 0);
+            CHECK(t.y0 % tile_size == 0);
+            CHECK(t.width <= tile_size);
+            CHECK(t.height <= tile_size);
+            std::lock_guard lock(mutex);
+            for (int y = 0; y < t.height; ++y)
+                for (int x = 0; x < t.width; ++x)
+                    seen[(t.y0 + y) * width + t.x0 + x] +=
+                        t.id[y * kTileSize + x] != kNoTriangle ? 1 : 100;
+        });
+        size_t once = 0;
+        for (int s : seen) once += s == 1 ? 1 : 0;
+        CHECK(once == seen.size());
     }
 }

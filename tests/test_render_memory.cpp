@@ -48,6 +48,13 @@ TEST_CASE("the memory estimate counts the screen-space buffers the frame will ha
     CHECK(part_bytes("blinn-phong", "passes: [color, lines]", part) == samples * (20 + 16));
     CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "passes: [color, lines]", part) ==
           samples * (20 + 16 + 20));
+    // Occlusion's own buffers: a value per G-buffer element, and its cells
+    // (per 2 x 2 pixels by default).
+    CHECK(part_bytes("blinn-phong", "passes: [color]", "ambient occlusion") == 0);
+    CHECK(part_bytes("{ extends: blinn-phong, occlusion: true }", "passes: [color]",
+                     "ambient occlusion") == pixels * 4 + pixels / 4 * 28);
+    CHECK(part_bytes("{ extends: blinn-phong, occlusion: { resolution: full } }",
+                     "passes: [color, lines]", "ambient occlusion") == samples * 4 + pixels * 28);
     // The output images in flight: colour and depth whatever is asked (half
     // RGBA, float), and each pass asked for besides (float normal and
     // position, two 32-bit ids, float uv, half RGBA alpha).

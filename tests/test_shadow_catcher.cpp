@@ -17,31 +17,28 @@ namespace {
 // A cube (its centre at `cube_y`, 0.5 above the floor by default) over a
 // shadow-catching floor, lit straight down, so its shadow is the square
 // under it; seen from the front and above. `extra_light` adds a line to
-// the lights.
+// the lights; `passes` are the output's.
 facet::FrameImages render_catcher(const std::string& background, const std::string& style,
                                   unsigned threads = 2, const std::string& extra_light = "",
-                                  float cube_y = 1.0f) {
+                                  float cube_y = 1.0f,
+                                  const std::string& passes = "[color, alpha]") {
     facet::test::TempDir dir("shadow-catcher");
-    const std::string text =
-        "output: { size: [200, 150], samples: 4, passes: [color, alpha], "
-        "background: " +
-        background + R"( }
+    const std::string text = "output: { size: [200, 150], samples: 4, passes: " + passes +
+                             ", background: " + background + R"( }
 camera: { position: [0, 4, 5], target: [0, 0, 0], fov: 40 }
-style: )" +
-        style + R"(
+style: )" + style + R"(
 lights:
   - { type: directional, direction: [0, -1, 0], intensity: 1, shadows: true }
 )" + extra_light +
-        R"(
+                             R"(
 objects:
   - name: floor
     primitive: { type: plane, size: 8 }
     material: { color: [0.8, 0.8, 0.8], shadow_catcher: true }
   - name: cube
     primitive: { type: cube, size: 1 }
-    translate: [0, )" +
-        std::to_string(cube_y) +
-        R"(, 0]
+    translate: [0, )" + std::to_string(cube_y) +
+                             R"(, 0]
     material: { color: [0.9, 0.5, 0.2] }
 )";
     return facet::test::render_yaml(dir.path(), text, 1, threads);
@@ -95,4 +92,28 @@ TEST_CASE("shadow catcher: occlusion darkens it too, and threads do not matter",
     INFO("alpha beside the base " << beside.a);
     CHECK(beside.a > 0.05f);
     CHECK(pixel_at(one, one.alpha, kOpenFloor).a == 0.0f);
+}
+
+// Occlusion alone runs on the resolved pixels, beside the lines pass on
+// every sample (render/occlusion_stage.hpp): on a catcher, whose surface
+// hides only part of the background, the two agree.
+TEST_CASE("shadow catcher: occlusion on the pixels matches occlusion on the samples",
+          "[render][shadow_catcher]") {
+    const std::string style = "{ shading: phong, occlusion: { radius: 1.0 } }";
+    for (const char* background : {"transparent", "[0.2, 0.4, 0.6]"}) {
+        INFO("background " << background);
+        const facet::FrameImages on_pixels = render_catcher(background, style, 2, "", 0.5f);
+        const facet::FrameImages on_samples =
+            render_catcher(background, style, 2, "", 0.5f, "[color, alpha, lines]");
+        for (const glm::vec3 p :
+             {glm::vec3(0.0f, 0.0f, 0.62f), glm::vec3(0.62f, 0.0f, 0.0f), kOpenFloor}) {
+            INFO("at " << p.x << ", " << p.y << ", " << p.z);
+            const glm::vec4 a = pixel_at(on_pixels, on_pixels.alpha, p);
+            const glm::vec4 b = pixel_at(on_samples, on_samples.alpha, p);
+            CHECK(a.a == Approx(b.a).margin(0.02));
+            const glm::vec4 c = pixel_at(on_pixels, on_pixels.color, p);
+            const glm::vec4 d = pixel_at(on_samples, on_samples.color, p);
+            for (int k = 0; k < 4; ++k) CHECK(c[k] == Approx(d[k]).margin(0.02));
+        }
+    }
 }

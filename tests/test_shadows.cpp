@@ -4,6 +4,7 @@
 // shadowed floor pixel is 0.2 where a lit one is 0.2 + 0.8 n·l.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -362,11 +363,17 @@ const char* const kEachShadowLight[] = {
     "{ type: spot, position: [0, 5, 0], direction: [0, -1, 0], outer_angle: 45, shadows: true }",
     "{ type: point, position: [0, 5, 0], intensity: 25, shadows: true }"};
 
-// The shadow map the stage draws for the floating cube's scene, lit by `light`.
-ShadowMap floating_cube_shadow_map(const std::string& light) {
+// The shadow map the stage draws for the floating cube's scene, lit by
+// `light`; with `floor_casts` false the floor only receives (as the demo's).
+ShadowMap floating_cube_shadow_map(const std::string& light, bool floor_casts = true) {
     test::TempDir dir("shadow-map");
-    const SceneDesc scene =
-        test::load(test::write_text(dir.file("scene.yaml"), floating_cube_scene(light, true)));
+    std::string yaml = floating_cube_scene(light, true);
+    if (!floor_casts) {
+        const std::string floor = "name: floor,";
+        REQUIRE(yaml.find(floor) != std::string::npos);
+        yaml.replace(yaml.find(floor), floor.size(), floor + " cast_shadows: false,");
+    }
+    const SceneDesc scene = test::load(test::write_text(dir.file("scene.yaml"), yaml));
     const World world = build_world(scene);
     ThreadPool pool(2);
     const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
@@ -376,6 +383,14 @@ ShadowMap floating_cube_shadow_map(const std::string& light) {
     REQUIRE(maps.size() == 1);
     REQUIRE(maps[0] != nullptr);
     return *maps[0];
+}
+
+// Each light with the floor casting shadows and not.
+std::vector<std::pair<std::string, bool>> each_light_and_floor() {
+    std::vector<std::pair<std::string, bool>> cases;
+    for (const char* light : kEachShadowLight)
+        for (const bool floor_casts : {true, false}) cases.emplace_back(light, floor_casts);
+    return cases;
 }
 
 // Points on the floor round the shadow and on the cube's top, with the
@@ -396,9 +411,9 @@ void each_receiver(Look look) {
 // skips its texels (shade/shadow_map.hpp). Skipping must change nothing:
 // the same visibility, bit for bit, as reading every texel.
 TEST_CASE("the shadow map's blocks change no lookup", "[shadow]") {
-    for (const char* light : kEachShadowLight) {
-        INFO(light);
-        const ShadowMap blocked = floating_cube_shadow_map(light);
+    for (const auto& [light, floor_casts] : each_light_and_floor()) {
+        INFO(light << (floor_casts ? ", the floor casting" : ", the floor not casting"));
+        const ShadowMap blocked = floating_cube_shadow_map(light, floor_casts);
         REQUIRE_FALSE(blocked.block_nearest.empty());
         ShadowMap every_texel = blocked;
         every_texel.block_nearest.clear();
@@ -412,6 +427,22 @@ TEST_CASE("the shadow map's blocks change no lookup", "[shadow]") {
         CHECK(dark > 100);
         CHECK(lit > 1000);
         CHECK(partly > 100);
+        // And the blocks are used where nothing near the point casts: with
+        // every texel made a caster at the light, a lookup that reads its
+        // texels finds itself in shadow, so only the skipped ones stay lit.
+        // Most lit points of a floor that casts nothing are skipped (one that
+        // casts is in its own blocks, so it reads its texels).
+        if (floor_casts) continue;
+        ShadowMap poisoned = blocked;
+        std::fill(poisoned.depth.begin(), poisoned.depth.end(), 0.0f);
+        size_t skipped = 0, lit_points = 0;
+        each_receiver([&](const glm::vec3& p, const glm::vec3& n) {
+            if (p.y != 0.0f || shadow_visibility(blocked, p, n) != 1.0f) return;
+            ++lit_points;
+            if (shadow_visibility(poisoned, p, n) == 1.0f) ++skipped;
+        });
+        INFO(skipped << " of " << lit_points << " lit floor points skipped their texels");
+        CHECK(skipped * 2 > lit_points);
     }
 }
 

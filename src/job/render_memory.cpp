@@ -17,6 +17,8 @@ constexpr uint64_t kPerSample = 16 + 4;             // float colour and depth pe
 constexpr uint64_t kPerLineSample = 16;             // a sample's stroke, float RGBA
 constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
 constexpr uint64_t kPerSurfaceShare = 4;            // a pixel's share of surface samples
+constexpr uint64_t kPerOcclusionFactor = 4;         // occlusion's value per G-buffer element
+constexpr uint64_t kPerOcclusionCell = 20 + 4 + 4;  // a cell's depth, normal, object; raw, blurred
 
 // An output pixel of each frame in flight (job/render_job.cpp's
 // FrameImages): colour and depth always, and every other pass asked for.
@@ -56,6 +58,14 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     parts.push_back({"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight});
     if (const uint64_t screen_space = screen_space_bytes(targets, pixels, samples))
         parts.push_back({"screen-space buffers", screen_space});
+    if (scene.style.occlusion.enabled) {
+        // Its value for each G-buffer element, and its cells: one per pixel,
+        // or per 2 x 2 pixels (post/ambient_occlusion.hpp).
+        const uint64_t elements = targets.shading == ShadeResolution::pixels ? pixels : samples;
+        const uint64_t cells = scene.style.occlusion.half_resolution ? pixels / 4 : pixels;
+        parts.push_back(
+            {"ambient occlusion", elements * kPerOcclusionFactor + cells * kPerOcclusionCell});
+    }
     parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
     parts.push_back({"vertices", static_cast<uint64_t>(world.positions.size()) * kPerVertex});
     uint64_t shadows = 0;

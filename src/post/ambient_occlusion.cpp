@@ -246,6 +246,11 @@ void ambient_occlusion(const OutlineBuffers& samples, int samples_per_side, cons
     // silhouettes sharp and anti-aliased.
     const int k = std::max(samples_per_side, 1) * std::max(style.pixels_per_value, 1);
     const int w = samples.width / k, h = samples.height / k;
+    if (w == 0 || h == 0) {  // an image narrower than one cell: nothing to find it from
+        factor.assign(static_cast<size_t>(samples.width) * static_cast<size_t>(samples.height),
+                      1.0f);
+        return;
+    }
     OutlineBuffers& pixels = scratch.pixels;
     if (pixels.width != w || pixels.height != h) pixels.reset(w, h);
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {

@@ -94,10 +94,10 @@ void Rasterizer::draw_tile(int tile, const std::function<void(const TileVisibili
     std::array<uint32_t, kTileSize * kTileSize> ids;
     depth.fill(0.0f);
     ids.fill(kNoTriangle);
-    const int x0 = (tile % tiles_x_) * kTileSize;
-    const int y0 = (tile / tiles_x_) * kTileSize;
-    const int x1 = std::min(x0 + kTileSize, width_) - 1;
-    const int y1 = std::min(y0 + kTileSize, height_) - 1;
+    const int x0 = (tile % tiles_x_) * tile_size_;
+    const int y0 = (tile / tiles_x_) * tile_size_;
+    const int x1 = std::min(x0 + tile_size_, width_) - 1;
+    const int y1 = std::min(y0 + tile_size_, height_) - 1;
     for (size_t c = 0; c < chunk_count_; ++c) {
         const ChunkBins& bins = chunks_[c];
         for (uint32_t k = bins.tile_start[tile]; k < bins.tile_start[tile + 1]; ++k) {

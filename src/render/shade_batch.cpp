@@ -303,8 +303,7 @@ SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
 // repeat the first of them.
 UvLanes corner_uv_lanes(const World& world, const ShadeBatch& b, const TextureSlot& slot,
                         unsigned lanes) {
-    const std::vector<glm::vec2>& set =
-        slot.uv_set == 1 && !world.uvs1.empty() ? world.uvs1 : world.uvs;
+    const std::vector<glm::vec2>& set = world.uv_set(slot);
     const int first = __builtin_ctz(lanes);
     UvLanes c;
     for (int i = 0; i < simd::kLanes; ++i) {

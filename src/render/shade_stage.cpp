@@ -292,10 +292,11 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
 // --- Fragments: pixels whose samples show several things ---
 
 // Fragments in batches of eight of one style, each batch's colours handed
-// to `write(batch, fragment indices)`.
+// to `write(batch, fragment indices)`, with the normal when `out` has a
+// G-buffer and the wireframe when it has line samples.
 template <typename Write>
 void shade_fragments(const TileFragments& f, const Rasterizer& raster, const ShadeInputs& in,
-                     bool want_wire, Write write) {
+                     const ShadeTarget& out, Write write) {
     StyleLookup style_of_id(in, raster);
     std::vector<uint32_t> style_of(static_cast<size_t>(f.count));
     std::vector<int> order(static_cast<size_t>(f.count));
@@ -304,8 +305,8 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return style_of[a] < style_of[b]; });
     ShadeBatch b;
-    b.want_normal = in.plan.outlines || in.plan.occlusion;  // the G-buffer keeps the normal
-    b.want_wire = want_wire;
+    b.want_normal = out.gbuffer != nullptr;
+    b.want_wire = out.line_samples != nullptr;
     int fragment[kLanes];
     for (int first = 0; first < f.count;) {
         const uint32_t style = style_of[order[first]];
@@ -345,7 +346,7 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     std::vector<glm::vec4> nothing_sums(out.pixels_over_nothing ? pixel_count : 0, glm::vec4(0));
     std::vector<glm::vec3> normals(out.gbuffer ? static_cast<size_t>(f.count) : 0);
     std::vector<uint32_t> objects(normals.size());
-    shade_fragments(f, raster, in, false, [&](const ShadeBatch& b, const int* fragment) {
+    shade_fragments(f, raster, in, out, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
             const float weight = static_cast<float>(f.samples[at]) * per_sample;
@@ -393,27 +394,25 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
                         const ShadeTarget& out, TileFragments& f) {
     build_tile_fragments(tile, in.samples_per_side, false, f);
     const int side = f.side;
-    shade_fragments(
-        f, raster, in, out.line_samples != nullptr, [&](const ShadeBatch& b, const int* fragment) {
-            for (int i = 0; i < b.count; ++i) {
-                const int at = fragment[i];
-                // rgb over the background, a the share of it hidden (post/resolve.hpp).
-                const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], b.coverage[i]);
-                const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
-                const glm::vec4 stroke(b.wire_color * b.wire[i], b.wire[i]);
-                for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
-                    for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
-                        if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
-                        const int x = tile.x0 + sx, y = tile.y0 + sy;
-                        const float depth = sample_depth(raster, f.id[at], x, y);
-                        out.samples->at(x, y) = color;
-                        out.depth.at(x, y) = depth;
-                        if (out.line_samples) out.line_samples->at(x, y) = stroke;
-                        if (out.gbuffer)
-                            write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
-                    }
-            }
-        });
+    shade_fragments(f, raster, in, out, [&](const ShadeBatch& b, const int* fragment) {
+        for (int i = 0; i < b.count; ++i) {
+            const int at = fragment[i];
+            // rgb over the background, a the share of it hidden (post/resolve.hpp).
+            const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], b.coverage[i]);
+            const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+            const glm::vec4 stroke(b.wire_color * b.wire[i], b.wire[i]);
+            for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
+                for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
+                    if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
+                    const int x = tile.x0 + sx, y = tile.y0 + sy;
+                    const float depth = sample_depth(raster, f.id[at], x, y);
+                    out.samples->at(x, y) = color;
+                    out.depth.at(x, y) = depth;
+                    if (out.line_samples) out.line_samples->at(x, y) = stroke;
+                    if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
+                }
+        }
+    });
     for (int ty = 0; ty < tile.height; ++ty)
         for (int tx = 0; tx < tile.width; ++tx) {
             if (tile.id[ty * kTileSize + tx] != kNoTriangle) continue;

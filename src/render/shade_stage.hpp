@@ -49,7 +49,8 @@ struct ShadeTarget {
     ColorImage* samples;      // rgb the sample's colour, a its coverage (post/resolve.hpp)
     DepthImage& depth;        // linear view depth, +inf for background
     // Per sample or pixel (as `resolution`): depth, normal, object id; null
-    // when not needed. A pixel's are its nearest sample's.
+    // when not needed. A pixel's are those of its nearest sample's
+    // triangle, the depth on that triangle's plane at the pixel's centre.
     OutlineBuffers* gbuffer;
     // At `pixels`, for the alpha pass: the same pixels over nothing (no
     // background), premultiplied; null when not asked for.

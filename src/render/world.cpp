@@ -469,8 +469,12 @@ World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMes
     return world;
 }
 
+const std::vector<glm::vec2>& World::uv_set(const TextureSlot& slot) const {
+    return slot.uv_set == 1 && !uvs1.empty() ? uvs1 : uvs;
+}
+
 std::array<glm::vec2, 3> World::corner_uvs(uint32_t triangle, const TextureSlot& slot) const {
-    const std::vector<glm::vec2>& set = slot.uv_set == 1 && !uvs1.empty() ? uvs1 : uvs;
+    const std::vector<glm::vec2>& set = uv_set(slot);
     const uint32_t* c = &indices[3 * static_cast<size_t>(triangle)];
     return {slot.map(set[c[0]]), slot.map(set[c[1]]), slot.map(set[c[2]])};
 }

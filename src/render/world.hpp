@@ -119,6 +119,8 @@ struct World {
     // mapped by its transform (which is affine, so mapping the corners
     // maps every point between them).
     std::array<glm::vec2, 3> corner_uvs(uint32_t triangle, const TextureSlot& slot) const;
+    // The texture coordinates a slot reads: its set, set 0 when the world has no set 1.
+    const std::vector<glm::vec2>& uv_set(const TextureSlot& slot) const;
 };
 
 // Loads every mesh and texture the scene names. Errors name the scene file

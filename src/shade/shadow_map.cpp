@@ -380,7 +380,8 @@ struct ReceiverLanes {
         const vf inv = 1.0f / simd::vsqrt(inside ? dot : simd::splat(1.0f));
         cos_light = (nx * (tx * inv) + ny * (ty * inv)) + nz * (tz * inv);
     }
-    const vf sin_light = simd::vsqrt(simd::vmax(zero, 1.0f - cos_light * cos_light));
+    // std::max(0, x)'s choice for NaN and -0 too.
+    const vf sin_light = simd::vsqrt(simd::vmax(1.0f - cos_light * cos_light, zero));
     const vf offset = kNormalOffsetTexels * m.bias * texel_at_point * sin_light;
     px += nx * offset;
     py += ny * offset;
