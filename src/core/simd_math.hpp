@@ -157,12 +157,17 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     return __builtin_convertvector(exponent, vf) + series * 1.44269504f;  // 1/ln 2
 }
 
+// floor(x) as integers, for |x| < 2^31.
+[[gnu::always_inline]] inline vi floor_to_int(vf x) {
+    const vi whole = __builtin_convertvector(x, vi);          // truncates towards zero
+    return whole + (__builtin_convertvector(whole, vf) > x);  // -1 where it rounded up
+}
+
 // 2^y for y in [-126, 0]; smaller y gives about 1e-38.
 [[gnu::always_inline]] inline vf vexp2(vf y) {
     y = vmax(y, splat(-126.0f));
-    vi whole = __builtin_convertvector(y, vi);          // truncates towards zero
-    whole += (__builtin_convertvector(whole, vf) > y);  // -1 where truncation rounded up: floor
-    vf f = y - __builtin_convertvector(whole, vf);      // in [0, 1)
+    const vi whole = floor_to_int(y);
+    vf f = y - __builtin_convertvector(whole, vf);  // in [0, 1)
     // e^(f ln 2) by Taylor series to degree 8: error below 1e-7 on [0, 1).
     vf z = f * 0.69314718f;
     vf p = 1.0f +

@@ -24,6 +24,9 @@ constexpr float kBias = 0.05f;  // β: what rises less than ~3° over the plane 
 bool is_surface(float depth) {
     return depth > 0.0f && depth < std::numeric_limits<float>::infinity();
 }
+simd::vi is_surface(simd::vf depth) {
+    return (depth > 0.0f) & (depth < std::numeric_limits<float>::infinity());
+}
 
 // View-space position of the buffer sample (x, y) at linear depth `depth`,
 // for a perspective or an orthographic projection: T is float, or eight
@@ -98,12 +101,6 @@ simd::vf gather_depth(const OutlineBuffers& b, simd::vi sx, simd::vi sy, simd::v
     return depth;
 }
 
-// floor(v) as integers, for |v| < 2^31.
-simd::vi floor_to_int(simd::vf v) {
-    simd::vi whole = __builtin_convertvector(v, simd::vi);          // truncates towards zero
-    return whole + (__builtin_convertvector(whole, simd::vf) > v);  // -1 where it rounded up
-}
-
 float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const glm::mat3& to_view,
                    const OcclusionStyle& style, const Spiral& spiral, int x, int y) {
     using simd::vf;
@@ -139,12 +136,11 @@ float occlusion_at(const OutlineBuffers& b, const Unproject& unproject, const gl
         const vf dx = spiral.x[g] * turn_cos - spiral.y[g] * turn_sin;
         const vf dy = spiral.x[g] * turn_sin + spiral.y[g] * turn_cos;
         const vf off = simd::splat(far_off);
-        const vi sx = x + floor_to_int(simd::vmin(simd::vmax(reach * dx + 0.5f, -off), off));
-        const vi sy = y + floor_to_int(simd::vmin(simd::vmax(reach * dy + 0.5f, -off), off));
+        const vi sx = x + simd::floor_to_int(simd::vmin(simd::vmax(reach * dx + 0.5f, -off), off));
+        const vi sy = y + simd::floor_to_int(simd::vmin(simd::vmax(reach * dy + 0.5f, -off), off));
         const vi inside = spiral.used[g] & (sx >= 0) & (sy >= 0) & (sx < b.width) & (sy < b.height);
         const vf tap_depth = gather_depth(b, sx, sy, inside);
-        const vi surface =
-            (tap_depth > 0.0f) & (tap_depth < std::numeric_limits<float>::infinity());
+        const vi surface = is_surface(tap_depth);
         const ViewPoint<vf> t =
             unproject(__builtin_convertvector(sx, vf), __builtin_convertvector(sy, vf), tap_depth);
         const vf vx = t.x - p.x, vy = t.y - p.y, vz = t.z - p.z;
@@ -192,7 +188,7 @@ void blurred_cells8(const OutlineBuffers& cells, int reach, const std::vector<fl
     using simd::vi;
     vf depth, sum = simd::splat(0.0f), weight = simd::splat(0.0f);
     std::memcpy(&depth, &cells.depth[cells.index(x, y)], sizeof depth);
-    const vi surface = (depth > 0.0f) & (depth < std::numeric_limits<float>::infinity());
+    const vi surface = is_surface(depth);
     const vf near = 0.02f * depth;
     for (int r = -reach; r <= reach; ++r) {
         const size_t other = cells.index(x + r * step_x, y + r * step_y);
