@@ -55,6 +55,9 @@ struct Options {
     std::string png_dir;       // internal, with gl_child
     bool specialised = true;   // internal, with gl_child: which shaders
     bool codecs = false;       // time each file encoder on each scene's first frame instead
+    // facet's render with every batch on the general shading path
+    // (render/shade_stage.hpp, ShadingPaths): what the plain path saves.
+    facet::ShadingPaths paths = facet::ShadingPaths::specialised;
 };
 
 // The suite, in the order of docs/performance.md.
@@ -81,7 +84,8 @@ std::vector<int> parse_int_list(const std::string& text, const char* option) {
 
 void usage(std::ostream& os) {
     os << "usage: facet_bench [--frames N] [--threads 1,2] [--llvmpipe-threads 2] [--no-llvmpipe]\n"
-          "                   [--no-general-peer] [--render-only] [--plot FILE.png] "
+          "                   [--no-general-peer] [--general-shading] [--render-only]\n"
+          "                   [--plot FILE.png] "
           "[scene.yaml ...]\n"
           "       facet_bench --make-meshes DIR [--seed N]\n"
           "Renders each scene with facet (render only, then the whole job writing PNGs) and with\n"
@@ -92,6 +96,8 @@ void usage(std::ostream& os) {
           "  --render-only     skip the whole jobs (files written): a quicker check\n"
           "  --codecs          instead, each file encoder's MB/s and ratio on each scene's first\n"
           "                    frame (one thread, median of 5)\n"
+          "  --general-shading facet's render with every batch on the general shading path\n"
+          "                    (no plain batches): what the specialised path saves\n"
           "  --no-general-peer llvmpipe with the shaders written for each scene only, not also\n"
           "                    with its general (uniform light loop) shaders\n"
           "  --make-meshes DIR the blobs (5k, 328k, 1.31M triangles) and the texture the suite\n"
@@ -123,6 +129,8 @@ Options parse_options(int argc, char** argv) {
             if (peer != "specialised" && peer != "general")
                 throw std::invalid_argument("--peer: specialised or general, not " + peer);
             o.specialised = peer == "specialised";
+        } else if (a == "--general-shading") {
+            o.paths = facet::ShadingPaths::general_only;
         } else if (a == "--render-only") {
             o.jobs = false;
         } else if (a == "--plot") {
@@ -170,9 +178,9 @@ std::vector<int> pick_frames(const facet::SceneDesc& scene, int count) {
 // Render only: FrameRenderer::render into reused buffers, as `facet render`
 // does, after one untimed frame.
 FacetRun bench_render(const facet::SceneDesc& scene, const facet::World& world,
-                      const std::vector<int>& frames, int threads) {
+                      const std::vector<int>& frames, int threads, facet::ShadingPaths paths) {
     facet::ThreadPool pool(static_cast<unsigned>(threads));
-    facet::FrameRenderer renderer(scene, world, pool);
+    facet::FrameRenderer renderer(scene, world, pool, paths);
     facet::FrameImages images;
     renderer.render(frames.front(), 0, images);
     std::vector<double> wall, cpu;
@@ -306,7 +314,7 @@ SceneResult bench_scene(const std::string& path, const Options& o) {
               << frames.size() << " frames (world built in " << ms_since(t0, Clock::now())
               << " ms)\n";
     for (int threads : o.threads) {
-        sr.render.push_back(bench_render(scene, world, frames, threads));
+        sr.render.push_back(bench_render(scene, world, frames, threads, o.paths));
         std::cerr << "  facet render  " << threads << "T: " << describe(sr.render.back()) << "\n";
     }
     const int job_threads = *std::max_element(o.threads.begin(), o.threads.end());

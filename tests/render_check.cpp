@@ -19,21 +19,21 @@
 namespace facet::test {
 namespace fs = std::filesystem;
 
-FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads) {
+FrameImages render_images(const SceneDesc& scene, int frame, unsigned threads, ShadingPaths paths) {
     const World world = build_world(scene);
     ThreadPool pool(threads);
-    FrameRenderer renderer(scene, world, pool);
+    FrameRenderer renderer(scene, world, pool, paths);
     FrameImages images;
     renderer.render(frame, 0, images);
     return images;
 }
 
 FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame,
-                        unsigned threads) {
+                        unsigned threads, ShadingPaths paths) {
     SceneOptions options;
     options.style_dirs = {facet::test::styles_dir()};
     const std::string path = write_text((fs::path(folder) / "scene.yaml").string(), yaml);
-    return render_images(load_scene(path, options), frame, threads);
+    return render_images(load_scene(path, options), frame, threads, paths);
 }
 
 namespace {

@@ -36,13 +36,14 @@ void check_render(const RenderCase& c);
 ColorImage render_color(const SceneDesc& scene, int frame = 1, unsigned threads = 1);
 
 // Every image of one frame of a loaded scene.
-FrameImages render_images(const SceneDesc& scene, int frame = 1, unsigned threads = 2);
+FrameImages render_images(const SceneDesc& scene, int frame = 1, unsigned threads = 2,
+                          ShadingPaths paths = ShadingPaths::specialised);
 
 // The same for a scene given as YAML text: written to `folder`/scene.yaml
 // (so relative asset paths resolve there) and loaded with the shipped
 // styles.
 FrameImages render_yaml(const std::string& folder, const std::string& yaml, int frame = 1,
-                        unsigned threads = 2);
+                        unsigned threads = 2, ShadingPaths paths = ShadingPaths::specialised);
 
 // The pixel of `image` (one of `images`' passes) that shows world point p.
 glm::vec4 pixel_at(const FrameImages& images, const HalfColorImage& image, glm::vec3 p);

@@ -2,7 +2,8 @@
 // (job/render_memory.hpp): the screen-space buffers follow the frame's
 // targets, so a style that keeps every sample is charged for them, and
 // occlusion alone for a G-buffer of pixels only; and every pass asked for
-// is counted in each frame in flight.
+// is counted in each frame in flight, with what the encoders and the
+// motion pass hold.
 #include <catch2/catch.hpp>
 
 #include <string>
@@ -16,14 +17,15 @@ namespace {
 
 // The bytes of the part named `name` of a small scene's estimate, 0 when
 // there is none; `style` is the scene's, `output` keys added to its output.
-uint64_t part_bytes(const std::string& style, const std::string& output, const std::string& name) {
+uint64_t part_bytes(const std::string& style, const std::string& output, const std::string& name,
+                    unsigned threads = 2) {
     facet::test::TempDir dir("render-memory");
     const std::string text = "output: { size: [200, 100], samples: 4, " + output +
                              " }\nstyle: " + style + "\nobjects:\n  - primitive: cube\n";
     const facet::SceneDesc scene =
         facet::test::load(facet::test::write_text(dir.file("scene.yaml"), text));
     const facet::World world = facet::build_world(scene);
-    for (const auto& [part, bytes] : facet::render_memory(scene, world, 2))
+    for (const auto& [part, bytes] : facet::render_memory(scene, world, threads))
         if (part == name) return bytes;
     return 0;
 }
@@ -63,4 +65,28 @@ TEST_CASE("the memory estimate counts the screen-space buffers the frame will ha
                      "passes: [color, depth, normal, object_id, material_id, uv, position, "
                      "alpha], formats: [png, exr]",
                      "output images") == pixels * (12 + 12 + 4 + 4 + 8 + 12 + 8) * 5);
+}
+
+TEST_CASE("the memory estimate counts the encoders' buffers and the motion pass's vertices",
+          "[render][memory]") {
+    const uint64_t pixels = 200 * 100;
+    const std::string encoding = "encoding";
+    // Each encoder (two at once with more than one thread) holds its largest
+    // file's samples and bytes: half RGBA colour.
+    CHECK(part_bytes("blinn-phong", "passes: [color]", encoding) == 2 * 2 * pixels * 8);
+    CHECK(part_bytes("blinn-phong", "passes: [color]", encoding, 1) == 2 * pixels * 8);
+    // The largest of separate files: float position.
+    CHECK(part_bytes("blinn-phong", "passes: [color, depth, position], formats: [exr]", encoding) ==
+          2 * 2 * pixels * 12);
+    // A multi-layer EXR holds every pass at once.
+    CHECK(part_bytes("blinn-phong",
+                     "passes: [color, depth, normal], formats: [exr], exr: multilayer",
+                     encoding) == 2 * 2 * pixels * (8 + 4 + 12));
+    // The motion pass transforms the frame before as well: a second set of
+    // vertex records.
+    const uint64_t vertices = part_bytes("blinn-phong", "passes: [color]", "vertices");
+    CHECK(vertices > 0);
+    CHECK(part_bytes("blinn-phong", "passes: [color]", "previous frame's vertices") == 0);
+    CHECK(part_bytes("blinn-phong", "passes: [color, motion], formats: [exr]",
+                     "previous frame's vertices") == vertices);
 }

@@ -1,5 +1,6 @@
 #include "job/render_memory.hpp"
 
+#include <algorithm>
 #include <utility>
 
 #include "render/frame_inputs.hpp"
@@ -10,26 +11,41 @@ namespace {
 
 // Bytes per item of the working records, rounded up from the structures
 // they stand for (raster/setup_bins.hpp, render/vertex_stage.hpp).
-constexpr uint64_t kPerTriangle = 160;  // set-up, shading planes, bin entries, source indices
-constexpr uint64_t kPerVertex = 96;     // model, clip, world position and normal, screen, lighting
-constexpr uint64_t kPerOutputPixel = 8 + 4;         // half-float RGBA colour, float depth
-constexpr uint64_t kPerSample = 16 + 4;             // float colour and depth per sample
-constexpr uint64_t kPerLineSample = 16;             // a sample's stroke, float RGBA
+constexpr uint64_t kPerTriangle = 160;   // set-up, shading planes, bin entries, source indices
+constexpr uint64_t kPerVertex = 96;      // model, clip, world position and normal, screen, lighting
+constexpr uint64_t kPerSample = 16 + 4;  // float colour and depth per sample
+constexpr uint64_t kPerLineSample = 16;  // a sample's stroke, float RGBA
 constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
 constexpr uint64_t kPerSurfaceShare = 4;            // a pixel's share of surface samples
 constexpr uint64_t kPerOcclusionFactor = 4;         // occlusion's value per G-buffer element
 constexpr uint64_t kPerOcclusionCell = 20 + 4 + 4;  // a cell's depth, normal, object; raw, blurred
 
+// Bytes per pixel of each pass as a frame's images keep it
+// (render/frame_renderer.hpp's FrameImages): half RGBA colour, alpha and
+// lines, float depth, normal, uv, position and motion, 32-bit ids.
+constexpr std::pair<Pass, uint64_t> kPassPixelBytes[] = {
+    {Pass::color, 8},     {Pass::depth, 4},     {Pass::alpha, 8},       {Pass::lines, 8},
+    {Pass::normal, 12},   {Pass::object_id, 4}, {Pass::material_id, 4}, {Pass::uv, 8},
+    {Pass::position, 12}, {Pass::motion, 8}};
+
 // An output pixel of each frame in flight (job/render_job.cpp's
 // FrameImages): colour and depth always, and every other pass asked for.
 uint64_t output_pixel_bytes(PassSet passes) {
-    uint64_t bytes = kPerOutputPixel;
-    const std::pair<Pass, uint64_t> extra[] = {
-        {Pass::alpha, 8},       {Pass::lines, 8}, {Pass::normal, 12},   {Pass::object_id, 4},
-        {Pass::material_id, 4}, {Pass::uv, 8},    {Pass::position, 12}, {Pass::motion, 8}};
-    for (const auto& [pass, pass_bytes] : extra)
-        if (passes.has(pass)) bytes += pass_bytes;
+    uint64_t bytes = 0;
+    for (const auto& [pass, pass_bytes] : kPassPixelBytes)
+        if (pass == Pass::color || pass == Pass::depth || passes.has(pass)) bytes += pass_bytes;
     return bytes;
+}
+
+// What one encoder holds while it writes a frame's largest file
+// (job/pass_files.cpp): the file's samples as it lays them out, and the
+// file's bytes, which for a stored EXR or samples that do not compress are
+// as many. A multi-layer EXR holds every pass written.
+uint64_t encoder_pixel_bytes(const OutputDesc& out) {
+    uint64_t largest = 0, all = 0;
+    for (const auto& [pass, pass_bytes] : kPassPixelBytes)
+        if (out.writes(pass)) largest = std::max(largest, pass_bytes), all += pass_bytes;
+    return 2 * (out.write_exr && out.exr_multilayer ? all : largest);
 }
 
 // The frame's screen-space buffers, as the frame's targets have them
@@ -56,6 +72,9 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     const FrameTargets targets = plan_frame_targets(plan_styles(scene), out.passes);
     MemoryParts parts;
     parts.push_back({"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight});
+    // One encoder, or two at once (job/render_job.cpp).
+    const uint64_t encoders = threads == 1 ? 1 : 2;
+    parts.push_back({"encoding", pixels * encoder_pixel_bytes(out) * encoders});
     if (const uint64_t screen_space = screen_space_bytes(targets, pixels, samples))
         parts.push_back({"screen-space buffers", screen_space});
     if (scene.style.occlusion.enabled) {
@@ -67,7 +86,11 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
             {"ambient occlusion", elements * kPerOcclusionFactor + cells * kPerOcclusionCell});
     }
     parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
-    parts.push_back({"vertices", static_cast<uint64_t>(world.positions.size()) * kPerVertex});
+    const uint64_t vertex_bytes = static_cast<uint64_t>(world.positions.size()) * kPerVertex;
+    parts.push_back({"vertices", vertex_bytes});
+    // The motion pass poses and transforms the frame before each frame
+    // afresh, with vertex records of its own (render/previous_frame_stage.hpp).
+    if (out.passes.has(Pass::motion)) parts.push_back({"previous frame's vertices", vertex_bytes});
     uint64_t shadows = 0;
     for (const LightDesc& light : scene.lights) {
         if (!light.shadows) continue;

@@ -39,10 +39,12 @@ struct FrameRenderer::FrameLights {
     std::vector<ShadeLight> casting_shadows;  // with their maps, for Gouraud's per-pixel shadows
 };
 
-FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool)
+FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool,
+                             ShadingPaths paths)
     : scene_(scene),
       world_(world),
       pool_(pool),
+      paths_(paths),
       side_(scene.output.samples_per_side()),
       evaluator_(scene, world, side_),
       targets_(plan_frame_targets(evaluator_.plan(), scene.output.passes)),
@@ -72,8 +74,9 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     rasterizer_.set_geometry(raster_input(world_, vertices, posed, coverage_tested_), pool_);
     fit_targets(inputs, out);
     const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);
-    const ShadeInputs shade_in{world_, inputs,   plan, vertices, lights.all, lights.casting_shadows,
-                               side_,  edge_mask};
+    const ShadeInputs shade_in{world_,   inputs,     plan,
+                               vertices, lights.all, lights.casting_shadows,
+                               side_,    edge_mask,  paths_};
     const ShadeTarget shade_out = shade_target(out);
     const SurfacePassInputs surface_in{world_,
                                        inputs,

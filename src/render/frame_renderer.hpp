@@ -44,7 +44,8 @@ struct FrameImages {
 
 class FrameRenderer {
   public:
-    FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool);
+    FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool,
+                  ShadingPaths paths = ShadingPaths::specialised);
 
     // Renders into `out`, reusing its buffers when they have the right size
     // (fresh pages cost more to fault in and clear than the shading itself).
@@ -67,6 +68,7 @@ class FrameRenderer {
     const SceneDesc& scene_;
     const World& world_;
     ThreadPool& pool_;
+    ShadingPaths paths_;
     int side_;  // samples per pixel side: output.samples = side_ * side_
     FrameEvaluator evaluator_;
     FrameTargets targets_;  // which buffers exist, decided once

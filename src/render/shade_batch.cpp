@@ -13,6 +13,8 @@
 #include "shade/environment_map.hpp"
 #include "shade/layers.hpp"
 #include "shade/lighting_batch.hpp"
+#include "shade/model_phong.hpp"
+#include "shade/model_unlit.hpp"
 #include "shade/style_math.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
@@ -105,6 +107,34 @@ struct CornerLanes {
     vf back{};  // every group sets it; zero for the compiler's sake
 };
 
+// One group's triangle's corner positions and normals (each when asked)
+// and which side the viewer sees, into `c`'s lanes.
+template <bool Single>
+[[gnu::always_inline]] inline void put_corners(const ShadeInputs& in, const ShadeSetup& setup,
+                                               vi mask, bool first, bool positions, bool normals,
+                                               CornerLanes& c) {
+    const TransformedVertices& v = in.vertices;
+    const uint32_t* corners = &in.world.indices[3 * static_cast<size_t>(setup.source_triangle)];
+    for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) {
+            if (positions) put<Single>(c.p[k][a], mask, v.world_position[corners[k]][a], first);
+            if (normals) put<Single>(c.n[k][a], mask, v.world_normal[corners[k]][a], first);
+        }
+    put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
+}
+
+// Axis `a` of a corner attribute at the lanes' barycentrics.
+[[gnu::always_inline]] inline vf interpolate_corners(const vf (&bary)[3], const vf (&corner)[3][3],
+                                                     int a) {
+    return bary[0] * corner[0][a] + bary[1] * corner[1][a] + bary[2] * corner[2][a];
+}
+
+// A normal of the triangle's front turned to the side the viewer sees.
+[[gnu::always_inline]] inline void turn_to_viewer(const CornerLanes& c, vf (&normal)[3]) {
+    const vi facing_away = c.back > simd::splat(0.0f);
+    for (int a = 0; a < 3; ++a) normal[a] = facing_away ? -normal[a] : normal[a];
+}
+
 template <bool Single>
 [[gnu::always_inline]] inline void gather_groups(const ShadeInputs& in, const StyleState& style,
                                                  const Needs& needs, const LaneGroup* groups,
@@ -117,14 +147,12 @@ template <bool Single>
         const bool first = g == 0;
         const vi mask = groups[g].mask;
         const ShadeSetup& setup = *b.setup[groups[g].lane];
+        put_corners<Single>(in, setup, mask, first, needs.position || flat, needs.normal && !flat,
+                            c);
         const uint32_t* corners = &world.indices[3 * static_cast<size_t>(setup.source_triangle)];
-        for (int k = 0; k < 3; ++k)
-            for (int a = 0; a < 3; ++a) {
-                if (needs.position || flat)
-                    put<Single>(c.p[k][a], mask, v.world_position[corners[k]][a], first);
-                if (needs.normal && !flat)
-                    put<Single>(c.n[k][a], mask, v.world_normal[corners[k]][a], first);
-                if (needs.vertex_light) {
+        if (needs.vertex_light)
+            for (int k = 0; k < 3; ++k)
+                for (int a = 0; a < 3; ++a) {
                     put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
                     put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
                     if (!v.direct.empty()) {
@@ -133,8 +161,6 @@ template <bool Single>
                         put<Single>(c.direct_specular[k][a], mask, d.specular[a], first);
                     }
                 }
-            }
-        put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
         const Draw& draw = world.draws[world.triangle_draw[setup.source_triangle]];
         const Material& m = in.frame.materials[draw.material];
         if (needs.light_terms) {
@@ -240,9 +266,8 @@ void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolat
         gather_groups<true>(in, style, needs, groups, group_count, b, c);
     else
         gather_groups<false>(in, style, needs, groups, group_count, b, c);
-    const vf* bary = b.sample.bary;
     auto interpolate = [&](const vf(&corner)[3][3], int a) {
-        return bary[0] * corner[0][a] + bary[1] * corner[1][a] + bary[2] * corner[2][a];
+        return interpolate_corners(b.sample.bary, corner, a);
     };
     SurfaceBatch& s = b.lanes.surface;
     if (style.model == ShadingModel::flat) {  // the face normal: (p1 - p0) x (p2 - p0)
@@ -255,8 +280,7 @@ void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolat
         for (int a = 0; a < 3; ++a) b.normal[a] = interpolate(c.n, a);
     }
     if (needs.normal) {
-        const vi facing_away = c.back > simd::splat(0.0f);
-        for (int a = 0; a < 3; ++a) b.normal[a] = facing_away ? -b.normal[a] : b.normal[a];
+        turn_to_viewer(c, b.normal);
         s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
         if (style.model == ShadingModel::pbr)
             for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a] = b.normal[a];
@@ -590,7 +614,96 @@ void finish_layers(const ShadeInputs& in, const StyleState& style, const Shading
     }
 }
 
+// --- Plain batches: the common case compiled apart ---
+//
+// Most batches of most scenes show triangles of one mesh whose material
+// only its constants colour, under a Phong, Blinn-Phong or unlit style
+// without layers. Asking each lane which of the general path's features
+// apply (textures, vertex colours, emission, shadow catchers, fades,
+// several materials) costs 10-20% of such a frame; a GL programmer
+// compiles them out of the shader (docs/performance.md). shade_plain does
+// the same operations as the general path in the same order and calls the
+// same model (shade_phong, shade_unlit), so it writes the same bits
+// (tests/test_shade_plain.cpp).
+
+// takes_plain_path, inlined where each batch asks.
+[[gnu::always_inline]] inline bool plain_draw(const StyleState& style, const Draw& draw,
+                                              const Material& m) {
+    const ShadingModel model = style.model;
+    const bool lit = model == ShadingModel::phong || model == ShadingModel::blinn_phong;
+    if ((!lit && model != ShadingModel::unlit) || has_layers(style)) return false;
+    if (!style.base_color && (m.base_color_map || draw.has_colors)) return false;
+    if (m.shadow_catcher || m.fade_end > m.fade_start) return false;
+    // The unlit model adds no emission (apply_emission).
+    return model == ShadingModel::unlit || !(m.unlit || m.emissive != glm::vec3(0));
+}
+
+// The batch shaded if it is plain (all its triangles of one draw, which
+// takes_plain_path); false, and nothing written, otherwise.
+bool shade_plain(const ShadeInputs& in, const StyleState& style, const LaneGroup* groups,
+                 int group_count, const SetupLanes& planes, ShadeBatch& b) {
+    if (b.want_wire) return false;
+    const World& world = in.world;
+    const uint32_t draw_index = world.triangle_draw[b.setup[0]->source_triangle];
+    for (int g = 1; g < group_count; ++g)
+        if (world.triangle_draw[b.setup[groups[g].lane]->source_triangle] != draw_index)
+            return false;
+    const Draw& draw = world.draws[draw_index];
+    const Material& m = in.frame.materials[draw.material];
+    if (!plain_draw(style, draw, m)) return false;
+
+    const bool lit = style.model != ShadingModel::unlit;
+    const SurfaceSamples sample = reconstruct_surfaces(planes, b.x, b.y);
+    b.sample.w = sample.w;
+    if (b.pixel_side > 0) b.pixel_depth = nearest_depth(planes, b.x, b.y, b.pixel_side);
+    CornerLanes c;
+    const bool normals = lit || b.want_normal;
+    if (group_count == 1)
+        put_corners<true>(in, *b.setup[0], groups[0].mask, true, lit, normals, c);
+    else
+        for (int g = 0; g < group_count; ++g)
+            put_corners<false>(in, *b.setup[groups[g].lane], groups[g].mask, g == 0, lit, normals,
+                               c);
+    if (normals) {
+        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate_corners(sample.bary, c.n, a);
+        turn_to_viewer(c, b.normal);
+    }
+    if (b.want_normal) std::fill(b.object, b.object + kLanes, draw.object);
+    const glm::vec3 albedo = style.base_color ? *style.base_color : m.color;
+    SurfaceLanes& lanes = b.lanes;
+    lanes.count = b.count;
+    for (int a = 0; a < 3; ++a) lanes.albedo[a] = simd::splat(albedo[a]);
+    b.coverage = simd::splat(1.0f);
+    ShadedLanes shaded;
+    if (!lit) {
+        shade_unlit(lanes, shaded);
+        for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
+        return true;
+    }
+    SurfaceBatch& s = lanes.surface;
+    s.px = interpolate_corners(sample.bary, c.p, 0);
+    s.py = interpolate_corners(sample.bary, c.p, 1);
+    s.pz = interpolate_corners(sample.bary, c.p, 2);
+    s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
+    s.ambient = simd::splat(m.ambient);
+    s.diffuse = simd::splat(m.diffuse);
+    s.specular = simd::splat(m.specular);
+    s.shininess = simd::splat(m.shininess);
+    s.receives_shadow = simd::splat(world.receives_shadows[draw.object]);
+    if (b.count < kLanes) pad_batch(s, b.count);
+    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
+                                 &in.frame.environment};
+    shade_phong(lanes, context,
+                style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn, shaded);
+    for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
+    return true;
+}
+
 }  // namespace
+
+bool takes_plain_path(const StyleState& style, const Draw& draw, const Material& m) {
+    return plain_draw(style, draw, m);
+}
 
 void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style_index,
                  ShadeBatch& b) {
@@ -604,6 +717,9 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     SetupLanes setup = splat_setup(*b.setup[0]);
     for (int g = 1; g < group_count; ++g)
         select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
+    if (in.paths == ShadingPaths::specialised &&
+        shade_plain(in, style, groups, group_count, setup, b))
+        return;
     b.sample = reconstruct_surfaces(setup, b.x, b.y);
     if (b.pixel_side > 0) b.pixel_depth = nearest_depth(setup, b.x, b.y, b.pixel_side);
     b.lanes.count = b.count;

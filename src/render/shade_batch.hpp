@@ -50,6 +50,14 @@ struct ShadeBatch {
     SurfaceLanes lanes;
 };
 
+// Whether a batch whose lanes show triangles of `draw` (one mesh part of
+// one object), of material `m`, takes the plain path under `style`
+// (ShadingPaths::specialised): a Phong, Blinn-Phong or unlit style without
+// layers, and a material that only its constants colour (no base colour
+// texture or vertex colours unless the style sets the colour, no emission,
+// shadow catcher or fade).
+bool takes_plain_path(const StyleState& style, const Draw& draw, const Material& m);
+
 // Shades the batch with in.frame.styles[style]; writes the fields marked
 // "set by shade_batch".
 void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style, ShadeBatch& b);

@@ -23,6 +23,12 @@
 
 namespace facet {
 
+// `specialised`: plain batches (one triangle, a material of constants,
+// Phong, Blinn-Phong or unlit) take a path of their own, which writes the
+// same bits as the general one (render/shade_batch.cpp); `general_only`:
+// every batch takes the general path, for tests and the bench to compare.
+enum class ShadingPaths { specialised, general_only };
+
 struct ShadeInputs {
     const World& world;
     const FrameInputs& frame;
@@ -36,6 +42,7 @@ struct ShadeInputs {
     // Per triangle, this frame's wireframe edges (render/feature_edge_stage.hpp);
     // empty without wireframes.
     std::span<const uint8_t> edge_mask;
+    ShadingPaths paths = ShadingPaths::specialised;
 };
 
 // Where a tile's shading goes, as the frame's targets say
@@ -45,9 +52,9 @@ struct ShadeInputs {
 // the G-buffer and line samples when later stages read them.
 struct ShadeTarget {
     ShadeResolution resolution;
-    HalfColorImage* pixels;   // linear RGBA, half floats, premultiplied
-    ColorImage* samples;      // rgb the sample's colour, a its coverage (post/resolve.hpp)
-    DepthImage& depth;        // linear view depth, +inf for background
+    HalfColorImage* pixels;  // linear RGBA, half floats, premultiplied
+    ColorImage* samples;     // rgb the sample's colour, a its coverage (post/resolve.hpp)
+    DepthImage& depth;       // linear view depth, +inf for background
     // Per sample or pixel (as `resolution`): depth, normal, object id; null
     // when not needed. A pixel's are those of its nearest sample's
     // triangle, the depth on that triangle's plane at the pixel's centre.
