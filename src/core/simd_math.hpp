@@ -151,9 +151,16 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     vi big = m > splat(1.41421356f);  // -1 where true
     m = big ? m * 0.5f : m;
     exponent -= big;
+    // ln m = 2 atanh t, t = (m - 1) / (m + 1): 2 (t + t^3/3 + ... + t^9/9).
+    // The polynomial in u = t^2 by Estrin's scheme (Knuth, TAOCP vol. 2,
+    // 4.6.4): pairs of terms at once, so the dependent chain is three
+    // multiply-adds deep instead of Horner's five. Lighting waits on it.
     vf t = (m - 1.0f) / (m + 1.0f);
-    vf t2 = t * t;
-    vf series = t * (2.0f + t2 * (2.0f / 3 + t2 * (2.0f / 5 + t2 * (2.0f / 7 + t2 * (2.0f / 9)))));
+    vf u = t * t;
+    vf u2 = u * u;
+    vf low = 2.0f + u * (2.0f / 3);
+    vf high = 2.0f / 5 + u * (2.0f / 7) + u2 * (2.0f / 9);
+    vf series = t * (low + u2 * high);
     return __builtin_convertvector(exponent, vf) + series * 1.44269504f;  // 1/ln 2
 }
 
@@ -169,14 +176,18 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     const vi whole = floor_to_int(y);
     vf f = y - __builtin_convertvector(whole, vf);  // in [0, 1)
     // e^(f ln 2) by Taylor series to degree 8: error below 1e-7 on [0, 1).
+    // Evaluated by Estrin's scheme (as vlog2): terms in pairs, the pairs
+    // joined by z^2, z^4 and z^8, four multiply-adds deep instead of eight.
     vf z = f * 0.69314718f;
-    vf p = 1.0f +
-           z * (1.0f +
-                z * (0.5f +
-                     z * (1.0f / 6 +
-                          z * (1.0f / 24 +
-                               z * (1.0f / 120 +
-                                    z * (1.0f / 720 + z * (1.0f / 5040 + z * (1.0f / 40320))))))));
+    vf z2 = z * z;
+    vf z4 = z2 * z2;
+    vf terms01 = 1.0f + z;
+    vf terms23 = 0.5f + z * (1.0f / 6);
+    vf terms45 = 1.0f / 24 + z * (1.0f / 120);
+    vf terms67 = 1.0f / 720 + z * (1.0f / 5040);
+    vf terms03 = terms01 + z2 * terms23;
+    vf terms47 = terms45 + z2 * terms67;
+    vf p = terms03 + z4 * (terms47 + z4 * (1.0f / 40320));
     vi scale_bits = (whole + 127) << 23;
     return p * (vf)scale_bits;
 }
