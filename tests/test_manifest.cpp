@@ -263,6 +263,45 @@ TEST_CASE("write_file_atomically writes and replaces whole files", "[atomic_file
     CHECK_FALSE(has_temp_files(dir.path()));
 }
 
+TEST_CASE("an atomic file set shows its files only once published, all together", "[atomic_file]") {
+    TempDir dir("atomic-set");
+    const std::string a = dir.file("a.bin"), b = dir.file("b.bin");
+    const std::vector<uint8_t> bytes_a = {1, 2, 3}, bytes_b = {0, 255};
+    SECTION("nothing under the names before publish, every file after") {
+        facet::AtomicFileSet files;
+        files.write(a, bytes_a);
+        files.write(b, bytes_b);
+        CHECK_FALSE(fs::exists(a));
+        CHECK_FALSE(fs::exists(b));
+        files.publish();
+        CHECK(read_file(a) == "\x01\x02\x03");
+        CHECK(read_file(b) == std::string("\x00\xff", 2));
+        CHECK(files.published() == std::vector<std::string>{a, b});
+        CHECK(entries(dir.path()) == std::vector<std::string>{"a.bin", "b.bin"});
+    }
+    SECTION("a set given up before publish leaves nothing, and an old file as it was") {
+        write_text(a, "old");
+        {
+            facet::AtomicFileSet files;
+            files.write(a, bytes_a);
+            files.write(b, bytes_b);
+        }
+        CHECK(read_file(a) == "old");
+        CHECK(entries(dir.path()) == std::vector<std::string>{"a.bin"});
+    }
+    SECTION("a name that cannot be replaced fails naming it; what was published is listed") {
+        const std::string folder = dir.file("taken");
+        facet::make_directories(folder);
+        write_text(folder + "/inside", "x");  // a folder that is not empty: rename refuses it
+        facet::AtomicFileSet files;
+        files.write(a, bytes_a);
+        files.write(folder, bytes_b);
+        require_error([&] { files.publish(); }, facet::ExitCode::io_failure, folder);
+        CHECK(files.published() == std::vector<std::string>{a});
+        CHECK_FALSE(has_temp_files(dir.path()));
+    }
+}
+
 TEST_CASE("make_directories creates nested folders and accepts existing ones", "[atomic_file]") {
     TempDir dir("atomic");
     std::string nested = dir.file("a/b/c");

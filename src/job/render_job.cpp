@@ -232,15 +232,16 @@ class Encoder {
         const auto start = Clock::now();
         const OutputDesc& out = scene_.output;
         Manifest written;
-        std::vector<std::filesystem::path> on_disk;  // this image's files written so far
+        // The image's files, published together once all are written: one
+        // wait for the disk per image (output/atomic_file.hpp).
+        AtomicFileSet files;
         auto write = [&](const std::string& pass, const std::string& format,
                          const std::vector<uint8_t>& bytes) {
             const std::string name =
                 expand(layout_.names, {scene_.name, job.camera, pass, job.frame, format});
             const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
             prepare_folder(file.parent_path().string());
-            write_file_atomically(file.string(), bytes);
-            on_disk.push_back(file);
+            files.write(file.string(), bytes);
             written.files.push_back({job.frame, job.camera, pass, format,
                                      path_relative_to_manifest(name, layout_.manifest_dir),
                                      sha256_hex(bytes), scene_.style.name});
@@ -254,11 +255,13 @@ class Encoder {
                                [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
                                    write(file.pass, file.format, bytes);
                                });
+            files.publish();
         } catch (...) {
             // No file of an unfinished image stays (a full disk, say): a
             // rerun with --skip-existing renders the whole image again.
+            // Those not yet published go with `files`.
             std::error_code ignored;
-            for (const std::filesystem::path& file : on_disk)
+            for (const std::string& file : files.published())
                 std::filesystem::remove(file, ignored);
             throw;
         }

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <limits>
 #include <optional>
+#include <set>
 
 #include "core/error.hpp"
 #include "core/number_text.hpp"
@@ -23,15 +24,22 @@ constexpr const char* kTempMark = ".facet-tmp.";
 // live process's file (render farm nodes share output folders).
 std::string temp_name(const std::string& path) {
     const std::filesystem::path p(path);
-    return (p.parent_path() / ("." + p.filename().string() + kTempMark + host_name() + "." +
-                               std::to_string(::getpid())))
-        .string();
+    std::string name = ".";  // appended piece by piece: GCC 12 misreads "." + string (-Wrestrict)
+    name += p.filename().string();
+    name += kTempMark;
+    name += host_name();
+    name += ".";
+    name += std::to_string(::getpid());
+    return (p.parent_path() / name).string();
 }
 
-// Makes the rename itself durable: the folder's entry is on disk too.
-void sync_folder(const std::string& path) {
-    std::string folder = std::filesystem::path(path).parent_path().string();
-    if (folder.empty()) folder = ".";
+std::string folder_of(const std::string& path) {
+    const std::string folder = std::filesystem::path(path).parent_path().string();
+    return folder.empty() ? std::string(".") : folder;
+}
+
+// Makes renames into the folder durable: its entries are on disk too.
+void sync_folder(const std::string& folder) {
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
     if (fd < 0) return;  // nothing to sync on (some file systems refuse): the file is written
     ::fsync(fd);
@@ -50,30 +58,71 @@ std::string host_name() {
 }
 
 void write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes) {
+    AtomicFileSet file;
+    file.write(path, bytes);
+    file.publish();
+}
+
+AtomicFileSet::~AtomicFileSet() {
+    for (const Pending& p : pending_) {
+        if (p.fd >= 0) ::close(p.fd);
+        ::unlink(p.temp.c_str());
+    }
+}
+
+void AtomicFileSet::write(const std::string& path, const std::vector<uint8_t>& bytes) {
     const std::string temp = temp_name(path);
-    int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) fail_io(path, std::string("cannot create file: ") + std::strerror(errno));
-    auto fail = [&](const std::string& what) {
-        const int err = errno;
-        if (fd >= 0) ::close(fd);
-        ::unlink(temp.c_str());
-        fail_io(path, what + ": " + std::strerror(err));
-    };
     size_t written = 0;
     while (written < bytes.size()) {
         ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
         if (n < 0 && errno == EINTR) continue;
-        if (n <= 0) fail("write failed");
+        if (n <= 0) {
+            const int err = n < 0 ? errno : EIO;
+            ::close(fd);
+            ::unlink(temp.c_str());
+            fail_io(path, std::string("write failed: ") + std::strerror(err));
+        }
         written += static_cast<size_t>(n);
     }
-    // The bytes reach the disk before the name does: after a power loss the
+    // Start the bytes for the disk now, so that publish() mostly waits for
+    // the journal, not for the data. Only a hint: publish() syncs.
+    ::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+    pending_.push_back({path, temp, fd});
+}
+
+void AtomicFileSet::publish() {
+    // The bytes reach the disk before the names do: after a power loss a
     // path holds the old file or the whole new one, never an empty one.
-    if (::fsync(fd) != 0) fail("write failed");
-    const int closed = ::close(fd);
-    fd = -1;
-    if (closed != 0) fail("write failed");
-    if (::rename(temp.c_str(), path.c_str()) != 0) fail("cannot replace file");
-    sync_folder(path);
+    for (size_t i = 0; i < pending_.size(); ++i) {
+        Pending& p = pending_[i];
+        const bool synced = ::fsync(p.fd) == 0;
+        const int sync_error = errno;
+        const bool closed = ::close(p.fd) == 0;
+        const int close_error = errno;
+        p.fd = -1;
+        if (synced && closed) continue;
+        // None of the set is published: the synced ones go too.
+        const std::string path = p.path;
+        for (size_t j = 0; j <= i; ++j) ::unlink(pending_[j].temp.c_str());
+        pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+        fail_io(path,
+                std::string("write failed: ") + std::strerror(synced ? close_error : sync_error));
+    }
+    std::set<std::string> folders;
+    while (!pending_.empty()) {
+        const Pending p = pending_.front();
+        pending_.erase(pending_.begin());
+        if (::rename(p.temp.c_str(), p.path.c_str()) != 0) {
+            const int err = errno;
+            ::unlink(p.temp.c_str());
+            fail_io(p.path, std::string("cannot replace file: ") + std::strerror(err));
+        }
+        published_.push_back(p.path);
+        folders.insert(folder_of(p.path));
+    }
+    for (const std::string& folder : folders) sync_folder(folder);
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {
