@@ -1,6 +1,6 @@
-// The plain shading path (render/shade_batch.cpp): batches of one triangle
-// whose material only its constants colour, under Phong, Blinn-Phong or
-// unlit, take a path of their own. It must write the same bits as the
+// The plain shading path (render/shade_batch.cpp): batches whose
+// triangles belong to one mesh part with a material of constants, under a
+// Phong, Blinn-Phong or unlit style without layers, take a path of their own. It must write the same bits as the
 // general path, and be taken exactly when the general path's extra
 // features do not apply.
 #include <catch2/catch.hpp>
@@ -9,8 +9,14 @@
 #include <memory>
 #include <string>
 
+#include "core/image.hpp"
+#include "core/thread_pool.hpp"
+#include "output/atomic_file.hpp"
+#include "output/encoders.hpp"
 #include "render/shade_batch.hpp"
+#include "render/world.hpp"
 #include "render_check.hpp"
+#include "scene_support.hpp"
 #include "support.hpp"
 
 using facet::ShadingPaths;
@@ -32,7 +38,8 @@ std::string scene_text(const std::string& style, const std::string& output,
            "lights:\n"
            "  - { type: directional, direction: [-0.5, -1, -0.3], intensity: 0.8, shadows: true }\n"
            "  - { type: point, position: [2, 2, 2], intensity: 6, range: 8 }\n"
-           "  - { type: spot, position: [-2, 3, 1], direction: [2, -3, -1], intensity: 8, outer_angle: "
+           "  - { type: spot, position: [-2, 3, 1], direction: [2, -3, -1], intensity: 8, "
+           "outer_angle: "
            "30 }\n"
            "objects:\n"
            "  - name: floor\n"
@@ -62,9 +69,20 @@ bool same_bytes(const Image& a, const Image& b) {
                0;
 }
 
+// A 4 x 4 checker texture, checker.png, in `folder`.
+void write_checker(const std::string& folder) {
+    facet::ColorImage image(4, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 4; ++x)
+            image.at(x, y) =
+                (x + y) % 2 ? glm::vec4(0.9f, 0.8f, 0.2f, 1) : glm::vec4(0.1f, 0.2f, 0.7f, 1);
+    facet::write_file_atomically(folder + "/checker.png", facet::encode_png_color(image, 1));
+}
+
 // Renders the scene both ways and requires every pass to be byte-identical.
 void require_same_bits(const std::string& yaml) {
     facet::test::TempDir dir("shade-plain");
+    write_checker(dir.path());
     const facet::FrameImages plain =
         facet::test::render_yaml(dir.path(), yaml, 1, 2, ShadingPaths::specialised);
     const facet::FrameImages general =
@@ -77,36 +95,41 @@ void require_same_bits(const std::string& yaml) {
 }  // namespace
 
 TEST_CASE("plain batches write the same bits as the general path", "[render][shade_plain]") {
-    const std::string one = "";
-    const std::string four = ", samples: 4";
-    const std::string alpha = ", samples: 4, passes: [color, depth, alpha]";
-    SECTION("phong, one sample a pixel") {
-        require_same_bits(scene_text("phong", one));
-    }
-    SECTION("phong, four samples") {
-        require_same_bits(scene_text("phong", four));
-    }
-    SECTION("blinn-phong with the alpha pass") {
-        require_same_bits(scene_text("blinn-phong", alpha));
-    }
-    SECTION("unlit") {
-        require_same_bits(scene_text("unlit", four));
-    }
-    SECTION("a style's base colour") {
-        require_same_bits(scene_text("clay", four));
-    }
-    SECTION("occlusion: the G-buffer's normals and objects") {
-        require_same_bits(scene_text("{ extends: blinn-phong, occlusion: { radius: 0.4 } }", four));
-        require_same_bits(scene_text("{ extends: unlit, occlusion: { radius: 0.4 } }", one));
-    }
-    SECTION("plain and general materials side by side") {
-        const std::string glowing =
-            "  - name: lamp\n"
-            "    primitive: { type: sphere, radius: 0.3 }\n"
-            "    translate: [0, 0.3, 1.2]\n"
-            "    material: { color: [0.9, 0.9, 0.2], emissive: [0.4, 0.3, 0] }\n";
-        require_same_bits(scene_text("phong", four, glowing));
-    }
+    const std::string one = "", four = ", samples: 4";
+    const std::string glowing =
+        "  - name: lamp\n"
+        "    primitive: { type: sphere, radius: 0.3 }\n"
+        "    translate: [0, 0.3, 1.2]\n"
+        "    material: { color: [0.9, 0.9, 0.2], emissive: [0.4, 0.3, 0] }\n";
+    const std::string textured =
+        "  - name: crate\n"
+        "    primitive: { type: cube, size: 0.5 }\n"
+        "    translate: [-1.6, 0.25, 0.8]\n"
+        "    material: { texture: checker.png }\n";
+    struct Case {
+        const char* name;
+        std::string style, output, extra_object;
+    };
+    const Case cases[] = {
+        {"phong, one sample a pixel", "phong", one, ""},
+        {"phong, four samples", "phong", four, ""},
+        {"blinn-phong with the alpha pass", "blinn-phong", four + ", passes: [color, depth, alpha]",
+         ""},
+        {"unlit", "unlit", four, ""},
+        {"a style's base colour", "clay", four, ""},
+        {"occlusion's G-buffer, lit", "{ extends: blinn-phong, occlusion: { radius: 0.4 } }", four,
+         ""},
+        {"occlusion's G-buffer, unlit", "{ extends: unlit, occlusion: { radius: 0.4 } }", one, ""},
+        {"outlines: shading at the samples", "{ extends: phong, outlines: true }", four, ""},
+        {"the lines pass: the general path throughout", "phong",
+         four + ", passes: [color, lines], formats: [exr]", ""},
+        {"plain and general materials side by side", "phong", four, glowing + textured},
+        {"unlit ignores emission: plain throughout", "unlit", four, glowing},
+        {"a style's colour over a texture: plain", "clay", four, textured},
+    };
+    for (const Case& c : cases) DYNAMIC_SECTION(c.name) {
+            require_same_bits(scene_text(c.style, c.output, c.extra_object));
+        }
 }
 
 TEST_CASE("the plain path is taken only where the general path's features do not apply",
@@ -170,4 +193,42 @@ TEST_CASE("the plain path is taken only where the general path's features do not
         fading.fade_end = 3;
         CHECK_FALSE(facet::takes_plain_path(phong, draw, fading));
     }
+}
+
+TEST_CASE("the plain path shades the batches it can take, and only with the specialised paths",
+          "[render][shade_plain]") {
+    facet::test::TempDir dir("shade-plain-counts");
+    write_checker(dir.path());
+    auto counts = [&](const std::string& style, const std::string& extra, ShadingPaths paths) {
+        const std::string path =
+            facet::test::write_text(dir.file("scene.yaml"), scene_text(style, "", extra));
+        const facet::SceneDesc scene = facet::test::load(path);
+        const facet::World world = facet::build_world(scene);
+        facet::ThreadPool pool(2);
+        facet::FrameRenderer renderer(scene, world, pool, paths);
+        facet::FrameImages images;
+        renderer.render(1, 0, images);
+        return renderer.shading_counts();
+    };
+    // Every object plain: each batch but those with several meshes' pixels.
+    const facet::ShadeCounts phong = counts("phong", "", ShadingPaths::specialised);
+    CHECK(phong.batches > 1000);
+    CHECK(phong.plain > phong.batches * 9 / 10);
+    CHECK(phong.plain < phong.batches);
+    CHECK(counts("unlit", "", ShadingPaths::specialised).plain > phong.batches * 9 / 10);
+    // The same frame on the general path alone, and a model the plain path
+    // does not take.
+    const facet::ShadeCounts general = counts("phong", "", ShadingPaths::general_only);
+    CHECK(general.batches == phong.batches);
+    CHECK(general.plain == 0);
+    CHECK(counts("gooch", "", ShadingPaths::specialised).plain == 0);
+    // A textured object's batches go the general way.
+    const std::string textured =
+        "  - name: crate\n"
+        "    primitive: { type: cube, size: 1.5 }\n"
+        "    translate: [0, 0.75, 1.2]\n"
+        "    material: { texture: checker.png }\n";
+    const facet::ShadeCounts mixed = counts("phong", textured, ShadingPaths::specialised);
+    CHECK(mixed.plain < phong.plain);
+    CHECK(mixed.plain > 0);
 }

@@ -153,8 +153,9 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     exponent -= big;
     // ln m = 2 atanh t, t = (m - 1) / (m + 1): 2 (t + t^3/3 + ... + t^9/9).
     // The polynomial in u = t^2 by Estrin's scheme (Knuth, TAOCP vol. 2,
-    // 4.6.4): pairs of terms at once, so the dependent chain is three
-    // multiply-adds deep instead of Horner's five. Lighting waits on it.
+    // 4.6.4): pairs of terms at once, so the chain of dependent multiplies
+    // and adds is three pairs deep instead of Horner's five. Lighting
+    // waits on it.
     vf t = (m - 1.0f) / (m + 1.0f);
     vf u = t * t;
     vf u2 = u * u;
@@ -177,7 +178,8 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     vf f = y - __builtin_convertvector(whole, vf);  // in [0, 1)
     // e^(f ln 2) by Taylor series to degree 8: error below 1e-7 on [0, 1).
     // Evaluated by Estrin's scheme (as vlog2): terms in pairs, the pairs
-    // joined by z^2, z^4 and z^8, four multiply-adds deep instead of eight.
+    // joined by z^2 and z^4, five multiply-and-add steps deep instead of
+    // Horner's eight.
     vf z = f * 0.69314718f;
     vf z2 = z * z;
     vf z4 = z2 * z2;

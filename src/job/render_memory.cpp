@@ -37,15 +37,34 @@ uint64_t output_pixel_bytes(PassSet passes) {
     return bytes;
 }
 
+// An EXR file in memory per byte of its samples: facet's writer (zip,
+// zips, none) sizes it once, at most as large as the samples; OpenEXR's
+// methods (rle, piz, dwaa) can grow it past them.
+uint64_t exr_file_factor(ExrCompression method) {
+    const bool ours = method == ExrCompression::zip || method == ExrCompression::zips ||
+                      method == ExrCompression::none;
+    return ours ? 1 : 2;
+}
+
 // What one encoder holds while it writes a frame's largest file
-// (job/pass_files.cpp): the file's samples as it lays them out, and the
-// file's bytes, which for a stored EXR or samples that do not compress are
-// as many. A multi-layer EXR holds every pass written.
+// (job/pass_files.cpp); the samples themselves are read where the frame
+// keeps them. An EXR: the file (a multi-layer one holds every pass
+// written). A PNG: its view's samples (8-bit RGB or RGBA, 16-bit grey for
+// depth), the filtered rows, the compressed bytes and the file, four times
+// the view.
 uint64_t encoder_pixel_bytes(const OutputDesc& out) {
     uint64_t largest = 0, all = 0;
-    for (const auto& [pass, pass_bytes] : kPassPixelBytes)
-        if (out.writes(pass)) largest = std::max(largest, pass_bytes), all += pass_bytes;
-    return 2 * (out.write_exr && out.exr_multilayer ? all : largest);
+    for (const auto& [pass, pass_bytes] : kPassPixelBytes) {
+        if (!out.writes(pass)) continue;
+        all += pass_bytes;
+        if (out.write_exr && !out.exr_multilayer)
+            largest = std::max(largest, pass_bytes * exr_file_factor(out.exr_compression.of(pass)));
+        if (out.write_png && pass != Pass::position && pass != Pass::motion)
+            largest = std::max<uint64_t>(largest, 4 * (pass == Pass::depth ? 2 : 4));
+    }
+    if (out.write_exr && out.exr_multilayer)
+        largest = std::max(largest, all * exr_file_factor(out.exr_compression.all));
+    return largest;
 }
 
 // The frame's screen-space buffers, as the frame's targets have them

@@ -4,6 +4,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -38,12 +39,15 @@ std::string folder_of(const std::string& path) {
     return folder.empty() ? std::string(".") : folder;
 }
 
-// Makes renames into the folder durable: its entries are on disk too.
+// Makes renames into the folder durable: its entries are on disk too. A
+// folder that cannot be opened or synced (some file systems refuse) is
+// left as it is; a failing disk is an I/O failure.
 void sync_folder(const std::string& folder) {
     const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;  // nothing to sync on (some file systems refuse): the file is written
-    ::fsync(fd);
+    if (fd < 0) return;
+    const bool failed = ::fsync(fd) != 0 && errno == EIO;
     ::close(fd);
+    if (failed) fail_io(folder, "cannot sync folder: " + std::string(std::strerror(EIO)));
 }
 
 }  // namespace
@@ -64,13 +68,26 @@ void write_file_atomically(const std::string& path, const std::vector<uint8_t>& 
 }
 
 AtomicFileSet::~AtomicFileSet() {
+    discard();
+}
+
+void AtomicFileSet::discard() {
     for (const Pending& p : pending_) {
         if (p.fd >= 0) ::close(p.fd);
         ::unlink(p.temp.c_str());
     }
+    pending_.clear();
 }
 
 void AtomicFileSet::write(const std::string& path, const std::vector<uint8_t>& bytes) {
+    // A path written again replaces its earlier bytes: same temporary.
+    const auto again = std::find_if(pending_.begin(), pending_.end(),
+                                    [&](const Pending& p) { return p.path == path; });
+    if (again != pending_.end()) {
+        ::close(again->fd);
+        pending_.erase(again);
+    }
+    pending_.reserve(pending_.size() + 1);  // no allocation failure once the file is open
     const std::string temp = temp_name(path);
     const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) fail_io(path, std::string("cannot create file: ") + std::strerror(errno));
@@ -86,43 +103,49 @@ void AtomicFileSet::write(const std::string& path, const std::vector<uint8_t>& b
         }
         written += static_cast<size_t>(n);
     }
+#ifdef __linux__
     // Start the bytes for the disk now, so that publish() mostly waits for
-    // the journal, not for the data. Only a hint: publish() syncs.
+    // the file system's journal, not for the data. Only a hint: publish() syncs.
     ::sync_file_range(fd, 0, 0, SYNC_FILE_RANGE_WRITE);
+#endif
     pending_.push_back({path, temp, fd});
 }
 
 void AtomicFileSet::publish() {
     // The bytes reach the disk before the names do: after a power loss a
     // path holds the old file or the whole new one, never an empty one.
-    for (size_t i = 0; i < pending_.size(); ++i) {
-        Pending& p = pending_[i];
+    for (Pending& p : pending_) {
         const bool synced = ::fsync(p.fd) == 0;
         const int sync_error = errno;
         const bool closed = ::close(p.fd) == 0;
         const int close_error = errno;
         p.fd = -1;
         if (synced && closed) continue;
-        // None of the set is published: the synced ones go too.
+        // None of the set is published, and it cannot be published later:
+        // a failed sync may have dropped the bytes it did not write.
         const std::string path = p.path;
-        for (size_t j = 0; j <= i; ++j) ::unlink(pending_[j].temp.c_str());
-        pending_.erase(pending_.begin(), pending_.begin() + static_cast<std::ptrdiff_t>(i) + 1);
+        discard();
         fail_io(path,
                 std::string("write failed: ") + std::strerror(synced ? close_error : sync_error));
     }
     std::set<std::string> folders;
+    auto sync_folders = [&] {
+        for (const std::string& folder : folders) sync_folder(folder);
+    };
     while (!pending_.empty()) {
         const Pending p = pending_.front();
         pending_.erase(pending_.begin());
         if (::rename(p.temp.c_str(), p.path.c_str()) != 0) {
             const int err = errno;
             ::unlink(p.temp.c_str());
+            discard();
+            sync_folders();  // what was published stays, durably
             fail_io(p.path, std::string("cannot replace file: ") + std::strerror(err));
         }
         published_.push_back(p.path);
         folders.insert(folder_of(p.path));
     }
-    for (const std::string& folder : folders) sync_folder(folder);
+    sync_folders();
 }
 
 void write_file_atomically(const std::string& path, const std::string& text) {

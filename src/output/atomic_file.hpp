@@ -18,12 +18,13 @@ void write_file_atomically(const std::string& path, const std::vector<uint8_t>& 
 void write_file_atomically(const std::string& path, const std::string& text);
 
 // Files written atomically together, as write_file_atomically writes one,
-// with the waits for the disk taken once for the set: each file's bytes go
-// to its temporary at write() and start for the disk, and publish() syncs
-// them all, renames each over its path and syncs each folder once. A
-// frame's files cost one journal commit instead of two each
-// (docs/performance.md). Temporaries not published are removed when the
-// set goes.
+// with the waits for the disk taken together: each file's bytes go to its
+// temporary at write() and start for the disk, and publish() syncs them
+// all, then renames each over its path and syncs each folder once (one
+// folder sync per image of a render instead of one per file, and the
+// files' syncs after their writeback has begun: docs/performance.md).
+// Each pending file holds an open descriptor until publish(). Temporaries
+// not published are removed when the set goes.
 class AtomicFileSet {
   public:
     AtomicFileSet() = default;
@@ -31,15 +32,19 @@ class AtomicFileSet {
     AtomicFileSet& operator=(const AtomicFileSet&) = delete;
     ~AtomicFileSet();
 
-    // Throws facet::Error (io_failure) naming the path.
+    // Throws facet::Error (io_failure) naming the path. A path written
+    // again replaces its earlier bytes.
     void write(const std::string& path, const std::vector<uint8_t>& bytes);
     // After it returns, every file written is on disk under its path.
-    // Throws facet::Error (io_failure) naming the path; the files published
-    // before the failure stay, and published() lists them.
+    // Throws facet::Error (io_failure) naming the path, and the set is then
+    // empty: a failed sync publishes nothing; a failed rename leaves the
+    // files renamed before it (durably), which published() lists.
     void publish();
     const std::vector<std::string>& published() const { return published_; }
 
   private:
+    void discard();  // closes and removes every temporary not yet published
+
     struct Pending {
         std::string path, temp;
         int fd;

@@ -23,7 +23,9 @@ namespace {
 // chunk offset table.
 class MemoryStream : public Imf::OStream {
   public:
-    MemoryStream() : Imf::OStream("memory") {}
+    // `expected`: the bytes reserved up front, so that growing the file
+    // does not hold two copies of it (job/render_memory.cpp counts one).
+    explicit MemoryStream(size_t expected) : Imf::OStream("memory") { bytes_.reserve(expected); }
     void write(const char c[], int n) override {
         const size_t end = position_ + static_cast<size_t>(n);
         if (end > bytes_.size()) bytes_.resize(end);
@@ -88,7 +90,11 @@ std::vector<uint8_t> encode_exr_with_library(int width, int height,
                                             reinterpret_cast<char*>(const_cast<uint8_t*>(c.base)),
                                             c.x_stride, c.row_stride));
         }
-        MemoryStream stream;
+        size_t raw_bytes = 0;  // the samples as they are: most methods make them smaller
+        for (const ExrChannel& c : channels)
+            raw_bytes += static_cast<size_t>(width) * static_cast<size_t>(height) *
+                         (c.type == ExrSample::half ? 2u : 4u);
+        MemoryStream stream(raw_bytes + 65536);  // and the header and offset table
         {
             Imf::OutputFile file(stream, header, 1);
             file.setFrameBuffer(frame);

@@ -90,11 +90,15 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
                                        plan.object_normal_mapped};
     if (targets_.surface_passes) fit_surface_passes(surface_in, out.surface);
     const AlphaCoverage alpha(world_, inputs.materials);
+    batches_ = 0;
+    plain_batches_ = 0;
     rasterizer_.draw_tiles(
         pool_,
         [&](const TileVisibility& tile) {
             if (stopped()) return;  // shading is most of a frame's time
-            shade_tile(tile, rasterizer_, shade_in, shade_out);
+            const ShadeCounts counts = shade_tile(tile, rasterizer_, shade_in, shade_out);
+            batches_ += counts.batches;
+            plain_batches_ += counts.plain;
             if (targets_.surface_passes)
                 write_surface_passes(tile, rasterizer_, surface_in, out.surface);
         },

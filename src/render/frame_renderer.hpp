@@ -3,6 +3,7 @@
 // pipeline"): each stage has a header of its own and hands the next a plain
 // record. The renderer owns the stages, which keep their buffers from frame
 // to frame.
+#include <atomic>
 #include <functional>
 #include <optional>
 #include <vector>
@@ -56,6 +57,10 @@ class FrameRenderer {
     void render(int frame, size_t camera_index, FrameImages& out,
                 const std::function<bool()>& stop = {});
 
+    // The shading batches of the last frame rendered, and how many took
+    // the plain path: for tests and the bench.
+    ShadeCounts shading_counts() const { return {batches_.load(), plain_batches_.load()}; }
+
   private:
     struct FrameLights;
     FrameLights light(const FrameInputs& inputs, const PosedVertices& posed);
@@ -69,6 +74,7 @@ class FrameRenderer {
     const World& world_;
     ThreadPool& pool_;
     ShadingPaths paths_;
+    std::atomic<uint64_t> batches_{0}, plain_batches_{0};  // shading_counts()
     int side_;  // samples per pixel side: output.samples = side_ * side_
     FrameEvaluator evaluator_;
     FrameTargets targets_;  // which buffers exist, decided once

@@ -668,7 +668,7 @@ bool shade_plain(const ShadeInputs& in, const StyleState& style, const LaneGroup
         for (int a = 0; a < 3; ++a) b.normal[a] = interpolate_corners(sample.bary, c.n, a);
         turn_to_viewer(c, b.normal);
     }
-    if (b.want_normal) std::fill(b.object, b.object + kLanes, draw.object);
+    std::fill(b.object, b.object + kLanes, draw.object);
     const glm::vec3 albedo = style.base_color ? *style.base_color : m.color;
     SurfaceLanes& lanes = b.lanes;
     lanes.count = b.count;
@@ -705,7 +705,7 @@ bool takes_plain_path(const StyleState& style, const Draw& draw, const Material&
     return plain_draw(style, draw, m);
 }
 
-void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style_index,
+bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style_index,
                  ShadeBatch& b) {
     const StyleState& style = in.frame.styles[style_index];
     LaneGroup groups[kLanes];
@@ -719,7 +719,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
         select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
     if (in.paths == ShadingPaths::specialised &&
         shade_plain(in, style, groups, group_count, setup, b))
-        return;
+        return true;
     b.sample = reconstruct_surfaces(setup, b.x, b.y);
     if (b.pixel_side > 0) b.pixel_depth = nearest_depth(setup, b.x, b.y, b.pixel_side);
     b.lanes.count = b.count;
@@ -744,6 +744,7 @@ void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     b.coverage = simd::splat(1.0f);
     if (b.any_shadow_catcher) apply_shadow_catchers(in, style, b);
     if (b.any_fade) apply_fades(in, b);
+    return false;
 }
 
 }  // namespace facet

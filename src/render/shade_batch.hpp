@@ -30,9 +30,9 @@ struct ShadeBatch {
     // Set by shade_batch.
     const ShadeSetup* setup[simd::kLanes];
     uint32_t object[simd::kLanes];
-    SurfaceSamples sample;
-    simd::vf normal[3];  // on the viewer's side, any length, as the G-buffer keeps it
-    simd::vf color[3];   // linear RGB over the background, the result
+    SurfaceSamples sample;  // callers read its w, each lane's depth (the plain path sets no more)
+    simd::vf normal[3];     // on the viewer's side, any length, as the G-buffer keeps it
+    simd::vf color[3];      // linear RGB over the background, the result
     // How much of the background the lane hides: 1, but for shadow
     // catchers the shadow's strength (their colour is then the background
     // darkened by it). The alpha pass shows color - background * (1 - coverage).
@@ -59,7 +59,7 @@ struct ShadeBatch {
 bool takes_plain_path(const StyleState& style, const Draw& draw, const Material& m);
 
 // Shades the batch with in.frame.styles[style]; writes the fields marked
-// "set by shade_batch".
-void shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style, ShadeBatch& b);
+// "set by shade_batch". True when the plain path shaded it.
+bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style, ShadeBatch& b);
 
 }  // namespace facet

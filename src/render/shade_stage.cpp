@@ -110,7 +110,7 @@ struct RowChunk {
                                                      const Rasterizer& raster,
                                                      const TileVisibility& tile, uint32_t style,
                                                      unsigned mine, bool want_normal,
-                                                     RowChunk& chunk) {
+                                                     RowChunk& chunk, ShadeCounts& counts) {
     const int side = in.samples_per_side;
     const float k = static_cast<float>(side);
     ShadeBatch b;
@@ -125,7 +125,7 @@ struct RowChunk {
     b.x = (lane + static_cast<float>(chunk.px0)) * k + (static_cast<float>(tile.x0) + 0.5f * k);
     b.y = simd::splat(static_cast<float>(tile.y0 + chunk.py * side) + 0.5f * k);
     b.pixel_side = side > 1 ? side : 0;
-    shade_batch(in, raster, style, b);
+    counts.add(shade_batch(in, raster, style, b));
     const vi lane_bit = {1, 2, 4, 8, 16, 32, 64, 128};
     const vi mask = (simd::splat_i(static_cast<int32_t>(mine)) & lane_bit) != simd::splat_i(0);
     for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
@@ -240,8 +240,8 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
 [[gnu::always_inline]] inline void shade_simple_pixels(const TileVisibility& tile,
                                                        const Rasterizer& raster,
                                                        const ShadeInputs& in,
-                                                       const ShadeTarget& out,
-                                                       TileFragments& mixed) {
+                                                       const ShadeTarget& out, TileFragments& mixed,
+                                                       ShadeCounts& counts) {
     const int side = in.samples_per_side;
     const int pixels_x = tile.width / side, pixels_y = tile.height / side;
     const glm::vec4 bg = in.frame.background;
@@ -272,13 +272,13 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
                     if (next[i] < kMixedPixel) __builtin_prefetch(&raster.shade_setup(next[i]));
             }
             if (one_style && shown)
-                shade_chunk_style(in, raster, tile, 0, shown, want_normal, chunk);
+                shade_chunk_style(in, raster, tile, 0, shown, want_normal, chunk, counts);
             while (!one_style && shown) {  // one style at a time
                 const uint32_t style = style_of_id(chunk.id[__builtin_ctz(shown)]);
                 unsigned mine = 0;
                 for (int i = 0; i < kLanes; ++i)
                     if ((shown >> i) & 1 && style_of_id(chunk.id[i]) == style) mine |= 1u << i;
-                shade_chunk_style(in, raster, tile, style, mine, want_normal, chunk);
+                shade_chunk_style(in, raster, tile, style, mine, want_normal, chunk, counts);
                 shown &= ~mine;
             }
             write_chunk(tile, out, bg, side, chunk, any_mixed, shown_at_start);
@@ -296,7 +296,7 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
 // G-buffer and the wireframe when it has line samples.
 template <typename Write>
 void shade_fragments(const TileFragments& f, const Rasterizer& raster, const ShadeInputs& in,
-                     const ShadeTarget& out, Write write) {
+                     const ShadeTarget& out, ShadeCounts& counts, Write write) {
     StyleLookup style_of_id(in, raster);
     std::vector<uint32_t> style_of(static_cast<size_t>(f.count));
     std::vector<int> order(static_cast<size_t>(f.count));
@@ -325,7 +325,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
         }
         std::memcpy(&b.x, xs, sizeof b.x);
         std::memcpy(&b.y, ys, sizeof b.y);
-        shade_batch(in, raster, style, b);
+        counts.add(shade_batch(in, raster, style, b));
         write(b, fragment);
         first += b.count;
     }
@@ -336,7 +336,7 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
 // the G-buffer, the nearest sample's normal and object, and the share of
 // the samples that show a surface).
 void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                        const ShadeTarget& out, const TileFragments& f) {
+                        const ShadeTarget& out, const TileFragments& f, ShadeCounts& counts) {
     if (f.count == 0) return;
     const int side = f.side;
     const float per_sample = 1.0f / static_cast<float>(side * side);
@@ -346,7 +346,7 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     std::vector<glm::vec4> nothing_sums(out.pixels_over_nothing ? pixel_count : 0, glm::vec4(0));
     std::vector<glm::vec3> normals(out.gbuffer ? static_cast<size_t>(f.count) : 0);
     std::vector<uint32_t> objects(normals.size());
-    shade_fragments(f, raster, in, out, [&](const ShadeBatch& b, const int* fragment) {
+    shade_fragments(f, raster, in, out, counts, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
             const float weight = static_cast<float>(f.samples[at]) * per_sample;
@@ -391,10 +391,10 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
 // Every sample, for passes at the sample resolution: each covered sample
 // gets its fragment's colour, depth, normal and object; the rest background.
 void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                        const ShadeTarget& out, TileFragments& f) {
+                        const ShadeTarget& out, TileFragments& f, ShadeCounts& counts) {
     build_tile_fragments(tile, in.samples_per_side, false, f);
     const int side = f.side;
-    shade_fragments(f, raster, in, out, [&](const ShadeBatch& b, const int* fragment) {
+    shade_fragments(f, raster, in, out, counts, [&](const ShadeBatch& b, const int* fragment) {
         for (int i = 0; i < b.count; ++i) {
             const int at = fragment[i];
             // rgb over the background, a the share of it hidden (post/resolve.hpp).
@@ -427,17 +427,20 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
 
 }  // namespace
 
-void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                const ShadeTarget& out) {
+ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                       const ShadeTarget& out) {
+    ShadeCounts counts;
     if (out.resolution == ShadeResolution::samples) {
         TileFragments fragments;
-        return shade_every_sample(tile, raster, in, out, fragments);
+        shade_every_sample(tile, raster, in, out, fragments, counts);
+        return counts;
     }
     TileFragments mixed;
     begin_tile_fragments(tile, in.samples_per_side, mixed);
-    shade_simple_pixels(tile, raster, in, out, mixed);
-    shade_mixed_pixels(tile, raster, in, out, mixed);
+    shade_simple_pixels(tile, raster, in, out, mixed, counts);
+    shade_mixed_pixels(tile, raster, in, out, mixed, counts);
     simd::streaming_stores_done();
+    return counts;
 }
 
 }  // namespace facet

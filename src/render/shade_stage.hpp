@@ -23,10 +23,11 @@
 
 namespace facet {
 
-// `specialised`: plain batches (one triangle, a material of constants,
-// Phong, Blinn-Phong or unlit) take a path of their own, which writes the
-// same bits as the general one (render/shade_batch.cpp); `general_only`:
-// every batch takes the general path, for tests and the bench to compare.
+// `specialised`: plain batches (triangles of one mesh part with a
+// material of constants, under a Phong, Blinn-Phong or unlit style without
+// layers) take a path of their own, which writes the same bits as the
+// general one (render/shade_batch.cpp); `general_only`: every batch takes
+// the general path, for tests and the bench to compare.
 enum class ShadingPaths { specialised, general_only };
 
 struct ShadeInputs {
@@ -70,9 +71,20 @@ struct ShadeTarget {
     Image<float>* surface_share;
 };
 
+// How many batches of eight points shading ran, and how many of them took
+// the plain path (render/shade_batch.cpp).
+struct ShadeCounts {
+    uint64_t batches = 0, plain = 0;
+    void add(bool was_plain) { ++batches, plain += was_plain ? 1 : 0; }
+    ShadeCounts& operator+=(const ShadeCounts& other) {
+        batches += other.batches, plain += other.plain;
+        return *this;
+    }
+};
+
 // Shades one tile; `raster` resolves its triangle ids. Called for different
 // tiles on several threads at once: writes only the tile's own pixels.
-void shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                const ShadeTarget& out);
+ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                       const ShadeTarget& out);
 
 }  // namespace facet
