@@ -13,7 +13,7 @@ void add_channels(std::vector<ExrChannel>& out, const Image<Pixel>& image,
                   const std::string& prefix, std::initializer_list<const char*> names,
                   ExrSample type) {
     const uint8_t* base = reinterpret_cast<const uint8_t*>(image.pixels.data());
-    const size_t bytes = type == ExrSample::half ? 2 : 4;
+    const size_t bytes = exr_sample_bytes(type);
     const size_t row = sizeof(Pixel) * static_cast<size_t>(image.width);
     size_t offset = 0;
     for (const char* name : names) {

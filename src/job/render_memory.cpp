@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "output/exr_compression.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/frame_targets.hpp"
 
@@ -41,9 +42,7 @@ uint64_t output_pixel_bytes(PassSet passes) {
 // zips, none) sizes it once, at most as large as the samples; OpenEXR's
 // methods (rle, piz, dwaa) can grow it past them.
 uint64_t exr_file_factor(ExrCompression method) {
-    const bool ours = method == ExrCompression::zip || method == ExrCompression::zips ||
-                      method == ExrCompression::none;
-    return ours ? 1 : 2;
+    return written_by_facet(method) ? 1 : 2;
 }
 
 // What one encoder holds while it writes a frame's largest file

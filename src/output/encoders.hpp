@@ -4,6 +4,7 @@
 // compression; and readers. The only users of libdeflate (deflate),
 // libpng (reading) and OpenEXR.
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -74,6 +75,10 @@ std::vector<uint8_t> encode_png_color(const ColorImage& image, int compression);
 // OpenEXR scanline files, compressed as output/exr_compression.hpp says.
 enum class ExrSample { half, float32, uint32 };
 
+constexpr size_t exr_sample_bytes(ExrSample type) {
+    return type == ExrSample::half ? 2 : 4;
+}
+
 // One channel: its samples at base + y * row_stride + x * x_stride.
 struct ExrChannel {
     std::string name;
@@ -86,6 +91,11 @@ struct ExrChannel {
 struct ExrAttribute {
     std::string name, value;
 };
+
+// The channels' samples uncompressed, in bytes: what a file of them holds
+// at most, but for its header and offset table (methods that cannot shrink
+// the samples store them as they are).
+size_t exr_raw_bytes(int width, int height, const std::vector<ExrChannel>& channels);
 
 // The same pixels give the same bytes with every compression, whatever
 // the thread count.

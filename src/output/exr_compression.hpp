@@ -18,4 +18,9 @@ constexpr std::string_view exr_compression_name(ExrCompression c) {
     return kExrCompressionNames[static_cast<size_t>(c)];
 }
 
+// Whether output/exr_writer.cpp writes the method itself (else OpenEXR does).
+constexpr bool written_by_facet(ExrCompression c) {
+    return c == ExrCompression::zip || c == ExrCompression::zips || c == ExrCompression::none;
+}
+
 }  // namespace facet

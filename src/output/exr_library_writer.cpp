@@ -90,11 +90,9 @@ std::vector<uint8_t> encode_exr_with_library(int width, int height,
                                             reinterpret_cast<char*>(const_cast<uint8_t*>(c.base)),
                                             c.x_stride, c.row_stride));
         }
-        size_t raw_bytes = 0;  // the samples as they are: most methods make them smaller
-        for (const ExrChannel& c : channels)
-            raw_bytes += static_cast<size_t>(width) * static_cast<size_t>(height) *
-                         (c.type == ExrSample::half ? 2u : 4u);
-        MemoryStream stream(raw_bytes + 65536);  // and the header and offset table
+        // Room for the samples as they are (most methods make them smaller),
+        // the header and the offset table.
+        MemoryStream stream(exr_raw_bytes(width, height, channels) + 65536);
         {
             Imf::OutputFile file(stream, header, 1);
             file.setFrameBuffer(frame);

@@ -54,10 +54,6 @@ void check(exr_result_t result, const char* what) {
                                                    "): " + exr_get_default_error_message(result));
 }
 
-size_t sample_bytes(ExrSample type) {
-    return type == ExrSample::half ? 2 : 4;
-}
-
 exr_pixel_type_t pixel_type(ExrSample type) {
     switch (type) {
         case ExrSample::half:
@@ -87,12 +83,12 @@ void pack_chunk(const std::vector<ExrChannel>& channels, int width, int y0, int 
                 std::vector<uint8_t>& raw) {
     size_t row_bytes = 0;
     for (const ExrChannel& c : channels)
-        row_bytes += sample_bytes(c.type) * static_cast<size_t>(width);
+        row_bytes += exr_sample_bytes(c.type) * static_cast<size_t>(width);
     raw.resize(row_bytes * static_cast<size_t>(y1 - y0));
     uint8_t* out = raw.data();
     for (int y = y0; y < y1; ++y)
         for (const ExrChannel& c : channels) {
-            const size_t bytes = sample_bytes(c.type);
+            const size_t bytes = exr_sample_bytes(c.type);
             const uint8_t* row = c.base + static_cast<size_t>(y) * c.row_stride;
             if (c.x_stride == bytes) {
                 std::memcpy(out, row, bytes * static_cast<size_t>(width));
@@ -140,20 +136,26 @@ void zip_chunk(const std::vector<uint8_t>& raw, std::vector<uint8_t>& split,
 
 }  // namespace
 
+size_t exr_raw_bytes(int width, int height, const std::vector<ExrChannel>& channels) {
+    size_t bytes = 0;
+    for (const ExrChannel& c : channels)
+        bytes +=
+            exr_sample_bytes(c.type) * static_cast<size_t>(width) * static_cast<size_t>(height);
+    return bytes;
+}
+
 std::vector<uint8_t> encode_exr(int width, int height, std::vector<ExrChannel> channels,
                                 const std::vector<ExrAttribute>& attributes,
                                 ExrCompression compression) {
     std::sort(channels.begin(), channels.end(),
               [](const ExrChannel& a, const ExrChannel& b) { return a.name < b.name; });
-    if (compression != ExrCompression::zip && compression != ExrCompression::zips &&
-        compression != ExrCompression::none)
+    if (!written_by_facet(compression))
         return encode_exr_with_library(width, height, channels, attributes, compression);
     // Room for the whole file at once: a chunk is never stored larger than
     // its raw bytes, and growing a 16 MB buffer step by step cost more than
     // the writing (copies, and the kernel clearing each fresh page).
-    size_t raw_bytes = 0, header_bytes = 4096;
-    for (const ExrChannel& c : channels)
-        raw_bytes += sample_bytes(c.type) * static_cast<size_t>(width) * height;
+    const size_t raw_bytes = exr_raw_bytes(width, height, channels);
+    size_t header_bytes = 4096;
     for (const ExrAttribute& a : attributes) header_bytes += a.name.size() + a.value.size() + 32;
     const size_t chunk_count = static_cast<size_t>(height) / scanlines_per_chunk(compression) + 1;
     std::vector<uint8_t> file;

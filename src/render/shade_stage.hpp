@@ -76,10 +76,6 @@ struct ShadeTarget {
 struct ShadeCounts {
     uint64_t batches = 0, plain = 0;
     void add(bool was_plain) { ++batches, plain += was_plain ? 1 : 0; }
-    ShadeCounts& operator+=(const ShadeCounts& other) {
-        batches += other.batches, plain += other.plain;
-        return *this;
-    }
 };
 
 // Shades one tile; `raster` resolves its triangle ids. Called for different
