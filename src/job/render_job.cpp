@@ -232,8 +232,8 @@ class Encoder {
         const auto start = Clock::now();
         const OutputDesc& out = scene_.output;
         Manifest written;
-        // The image's files, published together once all are written: one
-        // wait for the disk per image (output/atomic_file.hpp).
+        // The image's files, published together once all are written: their
+        // syncs taken together and one folder sync (output/atomic_file.hpp).
         AtomicFileSet files;
         auto write = [&](const std::string& pass, const std::string& format,
                          const std::vector<uint8_t>& bytes) {
