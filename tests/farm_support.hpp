@@ -1,7 +1,10 @@
 #pragma once
 // Helpers for the render farm tests: a small animated scene, and reading
 // what a run's manifest lists.
+#include <sys/stat.h>
+
 #include <map>
+#include <sstream>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -53,5 +56,45 @@ inline std::vector<std::string> hidden_leftovers(const std::string& folder) {
     }
     return names;
 }
+
+// A folder with the farm scene, and stubs on PATH: `sbatch` records its
+// arguments, one per line, and answers a job id; `facet` records its own.
+struct FarmFolder {
+    TempDir dir{"farm-injection"};
+    std::string scene = write_farm_scene(dir, 4, "[32, 18]");
+
+    FarmFolder() {
+        std::filesystem::create_directories(dir.file("bin"));
+        for (const char* stub : {"sbatch", "scontrol", "facet-stub"}) {
+            const std::string path = dir.file(std::string("bin/") + stub);
+            write_text(path, std::string("#!/bin/bash\nprintf '%s\\n' \"$@\" >> ") +
+                                 shell_quote(dir.file(std::string(stub) + ".args")) +
+                                 "\necho 4242\n");
+            ::chmod(path.c_str(), 0755);
+        }
+    }
+    // `facet farm slurm` in the folder, with `options` (already quoted).
+    RunResult farm(const std::string& options) const {
+        return run_in(dir.path(), " farm slurm spin.yaml --chunks 2 --script job.sh " + options);
+    }
+    // `facet ARGS` (already quoted) run in `folder`.
+    RunResult run_in(const std::string& folder, const std::string& args) const {
+        return run_command("cd " + shell_quote(folder) + " && " + shell_quote(facet_executable()) +
+                           " " + args + " 2>&1");
+    }
+    // The script run as a user runs it, or as a task with FACET_FARM_STEP.
+    RunResult run_script(const std::string& env = "", const std::string& script = "job.sh") const {
+        return run_command("cd " + shell_quote(dir.path()) +
+                           " && PATH=" + shell_quote(dir.file("bin")) + ":\"$PATH\" " + env +
+                           " bash " + shell_quote(script) + " 2>&1");
+    }
+    std::vector<std::string> recorded(const std::string& stub) const {
+        std::vector<std::string> lines;
+        std::istringstream in(read_file(dir.file(stub + ".args")));
+        for (std::string line; std::getline(in, line);) lines.push_back(line);
+        return lines;
+    }
+    bool pwned() const { return std::filesystem::exists(dir.file("PWNED")); }
+};
 
 }  // namespace facet::test

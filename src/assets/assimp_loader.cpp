@@ -184,6 +184,19 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
     return part;
 }
 
+// Every vertex position of every mesh in the file is a finite number.
+void require_finite_positions(const aiScene& scene, const std::string& path) {
+    for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
+        const aiMesh& mesh = *scene.mMeshes[m];
+        for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
+            const aiVector3D& p = mesh.mVertices[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                bad(path, "mesh '" + std::string(mesh.mName.C_Str()) + "': vertex " +
+                              std::to_string(v) + "'s position is not finite");
+        }
+    }
+}
+
 }  // namespace
 
 Mesh load_assimp(const std::string& path, const AssetContext& context) {
@@ -200,10 +213,16 @@ Mesh load_assimp(const std::string& path, const AssetContext& context) {
     // triangles; degenerate triangles go.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    const aiScene* scene =
-        importer.ReadFile(path, aiProcess_Triangulate | aiProcess_SortByPType |
-                                    aiProcess_FindDegenerates | aiProcess_JoinIdenticalVertices);
+    // Read as the file has it, checked, then processed: joining vertices
+    // would merge a NaN position into another vertex without a word.
+    const aiScene* scene = importer.ReadFile(path, 0);
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
+        bad(path, std::string("cannot read: ") + importer.GetErrorString());
+    require_finite_positions(*scene, path);
+    scene =
+        importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType |
+                                     aiProcess_FindDegenerates | aiProcess_JoinIdenticalVertices);
+    if (!scene || !scene->mRootNode)
         bad(path, std::string("cannot read: ") + importer.GetErrorString());
     Mesh mesh;
     mesh.source = path;

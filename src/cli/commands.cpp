@@ -94,22 +94,32 @@ void add_strict_flag(CLI::App* cmd, bool& strict) {
                   "effect) as an error: exit 2 before rendering");
 }
 
-void refuse_warnings(bool strict, const Warnings& scene_warnings, const Warnings& world_warnings) {
-    const size_t count = scene_warnings.size() + world_warnings.size();
-    if (!strict || count == 0) return;
-    const Warning& first = scene_warnings.empty() ? world_warnings.front() : scene_warnings.front();
+void refuse_warnings(bool strict, const Warnings& warnings) {
+    if (!strict || warnings.empty()) return;
     throw Error(ExitCode::invalid_input,
-                "--strict: " + count_of(count, "warning is", "warnings are") +
-                    " an error; the first: " + first.describe());
+                "--strict: " + count_of(warnings.size(), "warning is", "warnings are") +
+                    " an error; the first: " + warnings.front().describe());
+}
+
+World check_render_inputs(const RenderCheck& check) {
+    Warnings warnings = check.scene.warnings;
+    warnings.insert(warnings.end(), check.extra.begin(), check.extra.end());
+    // What was found so far is reported even when a later check fails.
+    if (check.collected) *check.collected = warnings;
+    check_outputs(check.scene, check.options);  // before the slow part: loading meshes
+    World world = build_world(check.scene, check.options.threads, check.model_mesh);
+    warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
+    if (check.collected) *check.collected = warnings;
+    if (check.print)
+        for (const Warning& w : warnings)
+            std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
+    refuse_warnings(check.args.strict, warnings);
+    const unsigned threads = check.options.threads == 0 ? available_cores() : check.options.threads;
+    check_render_memory(check.scene, world, threads);
+    return world;
 }
 
 namespace {
-
-void print_warnings(const SceneDesc& scene, const World& world) {
-    for (const Warnings* list : {&scene.warnings, &world.warnings})
-        for (const Warning& w : *list)
-            std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
-}
 
 int dry_run(const RenderArgs& args, const SceneDesc& scene, const RenderOptions& options) {
     const std::vector<std::string> files = planned_files(scene, options);
@@ -166,13 +176,18 @@ RenderOptions render_options(const RenderArgs& args, const SceneOptions& scene_o
     return options;
 }
 
-// Refuses a --video or --video-only the render cannot serve.
-void check_video_arguments(const RenderArgs& args, const SceneDesc& scene, bool compare) {
+// Refuses a --video or --video-only the render cannot serve; warns of a
+// movie of unevenly spaced frames.
+void check_video_arguments(const RenderArgs& args, const SceneDesc& scene, bool compare,
+                           const std::vector<int>& frames, Warnings& warnings) {
     if (!args.video.empty()) {
         check_movie_name(args.video);
         if (!scene.output.writes(Pass::color))
             fail_input(command_line("--video " + args.video), "",
                        "a movie needs the colour pass (--passes color)");
+        const std::string uneven = uneven_frames_warning(frames);
+        if (!uneven.empty())
+            warnings.push_back({command_line("--video " + args.video), "", uneven});
     }
     if (args.video_only && (args.video.empty() || compare))
         fail_input(command_line("--video-only"), "",
@@ -190,7 +205,7 @@ std::string hidden_frames_folder(const RenderArgs& args) {
 // --video: the movie of this run's colour frames.
 void make_movie(const RenderArgs& args, const SceneDesc& scene, const RenderOptions& options,
                 const RenderResult& result, const std::vector<int>& frames) {
-    VideoArgs video{result.output_dir, args.video, "", 0, args.quiet, {}};
+    VideoArgs video{result.output_dir, args.video, "", 0, args.quiet, {}, true};
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
     video.camera = scene.cameras[cameras.front()].name;
     video.frames = frames.empty() ? scene.output.frames : frames;  // this run's, not older ones
@@ -218,10 +233,12 @@ int render_command(const RenderArgs& args) {
     SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
+    Warnings own_warnings;  // this command's, beside the scene's and the world's
     // A farm task: its part of the job's frames.
     std::vector<int> part_frames;
-    const std::optional<RunPart> part = choose_part(
-        args.chunk, frames.empty() ? scene.output.frames : frames, part_frames, args.quiet);
+    const std::optional<RunPart> part =
+        choose_part(args.chunk, frames.empty() ? scene.output.frames : frames, part_frames,
+                    args.quiet, own_warnings);
     if (part) {
         if (compare || !args.video.empty())
             fail_input(command_line(compare ? "--reference" : "--video"), "",
@@ -237,17 +254,16 @@ int render_command(const RenderArgs& args) {
     // Thresholds are checked before the long part, as the scene is.
     const CompareThresholds thresholds = reference_thresholds(args, compare);
     RenderOptions options = render_options(args, scene_opts, frames, part);
-    check_video_arguments(args, scene, compare);
+    check_video_arguments(args, scene, compare, frames.empty() ? scene.output.frames : frames,
+                          own_warnings);
     // --video-only: the frames go to a hidden folder beside the movie,
     // removed when the movie is written (or the run fails).
     const TemporaryFolder frames_folder(hidden_frames_folder(args));
     if (args.video_only) options.out_dir = frames_folder.path;
     if (args.dry_run) return dry_run(args, scene, options);
-    check_outputs(scene, options);  // before the slow part: loading meshes
-    World world = build_world(scene, options.threads, &model_mesh);
+    World world = check_render_inputs(
+        {args, scene, options, &model_mesh, std::move(own_warnings), !args.quiet});
     model_mesh.clear();  // the world holds what it uses
-    if (!args.quiet) print_warnings(scene, world);
-    refuse_warnings(args.strict, scene.warnings, world.warnings);
     ProgressReporter progress(stderr, args.quiet);
     options.on_plan = [&](size_t to_render, size_t skipped) {
         if (skipped > 0 && !args.quiet)
@@ -291,7 +307,6 @@ int validate_command(const RenderArgs& args) {
         SceneOptions scene_opts = scene_options(args);
         LoadedMeshes model_mesh;
         SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
-        warnings = scene.warnings;
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
         options.cameras = camera_names(args.cameras);
@@ -300,12 +315,9 @@ int validate_command(const RenderArgs& args) {
         // The output folder's manifest is checked only when -o names one:
         // validating a scene must not depend on what some earlier run left in out/.
         options.overwrite = !args.output_given;
-        check_outputs(scene, options);
-        World world = build_world(scene, args.threads, &model_mesh);
-        warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
-        if (!args.json && !args.quiet && args.strict) print_warnings(scene, world);
-        refuse_warnings(args.strict, scene.warnings, world.warnings);
-        check_render_memory(scene, world, args.threads == 0 ? available_cores() : args.threads);
+        options.threads = args.threads;
+        const World world = check_render_inputs(
+            {args, scene, options, &model_mesh, {}, !args.json && !args.quiet, &warnings});
         if (args.json) {
             ValidateFacts facts{scene.path,
                                 scene.style.name,
@@ -318,7 +330,6 @@ int validate_command(const RenderArgs& args) {
                                 options.frames.empty() ? scene.output.frames : options.frames};
             std::printf("%s", validate_json(facts, warnings).c_str());
         } else if (!args.quiet) {
-            print_warnings(scene, world);
             print_validation(scene, world, options);
         }
     } catch (const Error& e) {

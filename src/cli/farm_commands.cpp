@@ -8,8 +8,10 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cli/model_commands.hpp"
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/plain_text.hpp"
 #include "core/version.hpp"
 #include "farm/chunks.hpp"
 #include "farm/merge.hpp"
@@ -54,7 +56,7 @@ void add_chunk_options(CLI::App* cmd, ChunkArgs& args) {
 }
 
 std::optional<RunPart> choose_part(const ChunkArgs& args, const std::vector<int>& job_frames,
-                                   std::vector<int>& run_frames, bool quiet) {
+                                   std::vector<int>& run_frames, bool quiet, Warnings& warnings) {
     const int ways = (args.chunk.empty() ? 0 : 1) + (args.from_env ? 1 : 0) +
                      (args.chunk_frames.empty() ? 0 : 1);
     if (ways > 1)
@@ -65,11 +67,12 @@ std::optional<RunPart> choose_part(const ChunkArgs& args, const std::vector<int>
                    "--chunks goes with --chunk-from-env (with --chunk, write I/N)");
     run_frames = job_frames;
     if (ways == 0) {
-        if (const char* task = std::getenv("SLURM_ARRAY_TASK_ID"); task && !quiet)
-            std::fprintf(stderr,
-                         "facet: warning: this is Slurm array task %s, but no --chunk or "
-                         "--chunk-from-env was given: every task renders every frame\n",
-                         task);
+        if (const char* task = std::getenv("SLURM_ARRAY_TASK_ID"))
+            warnings.push_back({{"", 0, 0, "environment SLURM_ARRAY_TASK_ID"},
+                                "",
+                                "this is Slurm array task " + text_for_message(task) +
+                                    ", but no --chunk or --chunk-from-env was given: every "
+                                    "task renders every frame"});
         return std::nullopt;
     }
     RunPart part;
@@ -223,8 +226,9 @@ CLI::App* add_farm_command(CLI::App& app, FarmArgs& slurm, FarmArgs& openjd) {
 
 int farm_command(const FarmArgs& args, bool openjd) {
     const RenderArgs& r = args.render;
-    const SceneOptions scene_opts = scene_options(r);
-    const SceneDesc scene = load_scene(r.scene, scene_opts);
+    SceneOptions scene_opts = scene_options(r);
+    LoadedMeshes model_mesh;
+    const SceneDesc scene = load_scene_or_model(r, scene_opts, &model_mesh);
     std::vector<int> frames = resolve_frames(r.frames, scene.output);
     if (frames.empty()) frames = scene.output.frames;
     RenderOptions options;
@@ -232,7 +236,12 @@ int farm_command(const FarmArgs& args, bool openjd) {
     options.cameras = camera_names(r.cameras);
     options.out_dir = r.out;
     options.overwrite = r.overwrite;
+    options.threads = r.threads;
     options.provenance.overrides = scene_opts.overrides;
+    // Every task runs `facet render` with these words: what render would
+    // refuse (a mesh it cannot read, a warning under --strict, too little
+    // memory) is refused here, before anything is submitted.
+    check_render_inputs({r, scene, options, &model_mesh, {}, !r.quiet});
     // The folder every task writes its partial manifest to, and the names
     // checked, as render would check them.
     const std::vector<std::string> planned = planned_files(scene, options);

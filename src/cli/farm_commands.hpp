@@ -22,8 +22,9 @@ void add_chunk_options(CLI::App* command, ChunkArgs& args);
 // was given. `job_frames` are the job's (after --frames); `run_frames`
 // receives the part's, which may be empty (more chunks than frames).
 // Prints which chunk and why to stderr unless quiet: farm logs show it.
+// A Slurm array task given no chunk option gets a warning in `warnings`.
 std::optional<RunPart> choose_part(const ChunkArgs& args, const std::vector<int>& job_frames,
-                                   std::vector<int>& run_frames, bool quiet);
+                                   std::vector<int>& run_frames, bool quiet, Warnings& warnings);
 
 struct MergeArgs {
     std::string folder;

@@ -6,6 +6,8 @@
 
 #include "cli/compare_command.hpp"
 #include "cli/options.hpp"
+#include "job/render_job.hpp"
+#include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace CLI {
@@ -80,6 +82,24 @@ void add_strict_flag(CLI::App* command, bool& strict);
 
 // With --strict, the warnings (already printed) become an error naming how
 // many there are and the first (invalid_input, exit 2).
-void refuse_warnings(bool strict, const Warnings& scene_warnings, const Warnings& world_warnings);
+void refuse_warnings(bool strict, const Warnings& warnings);
+
+// What render checks before its first frame, in render's order: the
+// outputs (names, the folder's manifest), the world (every mesh and
+// texture loaded), the warnings and the memory. render, validate and farm
+// all call it, so that they refuse the same inputs. The warnings are the
+// scene's, the world's and `extra` (the command's own: a farm task with no
+// chunk, a movie of unevenly spaced frames); they are appended to
+// `collected` when given, printed when `print`, and an error with --strict.
+struct RenderCheck {
+    const RenderArgs& args;
+    const SceneDesc& scene;
+    const RenderOptions& options;
+    LoadedMeshes* model_mesh = nullptr;  // a model's turntable: the mesh its survey read
+    Warnings extra;
+    bool print = true;
+    Warnings* collected = nullptr;
+};
+World check_render_inputs(const RenderCheck& check);
 
 }  // namespace facet

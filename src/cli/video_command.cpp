@@ -106,6 +106,13 @@ const char* codec_name(VideoFormat f) {
 
 }  // namespace
 
+std::string uneven_frames_warning(const std::vector<int>& frames) {
+    for (size_t i = 2; i < frames.size(); ++i)
+        if (frames[i] - frames[i - 1] != frames[1] - frames[0])
+            return "the frames are not evenly spaced; the movie plays them at equal intervals";
+    return "";
+}
+
 void check_movie_name(const std::string& movie) {
     if (!video_format_for(movie))
         fail_input(command_line(movie), "", "a movie is named .mp4, .webm or .gif");
@@ -131,19 +138,14 @@ int video_command(const VideoArgs& args) {
                     args.output_dir + ": no colour frames to make a movie of");
     // Frames every k-th frame of the animation play at fps / k, so the
     // movie keeps the animation's speed; uneven gaps cannot, and are said.
-    int step = 0;
-    bool even = true;
-    for (size_t i = 1; i < files.size(); ++i) {
-        const int gap = files[i].frame - files[i - 1].frame;
-        if (step == 0) step = gap;
-        even = even && gap == step;
-    }
+    std::vector<int> frames;
+    for (const ManifestFile& f : files) frames.push_back(f.frame);
+    const std::string uneven = uneven_frames_warning(frames);
+    const int step = frames.size() > 1 ? frames[1] - frames[0] : 0;
     double fps = args.fps > 0 ? args.fps : m.fps;
-    if (args.fps <= 0 && even && step > 1) fps /= step;
-    if (!even && !args.quiet)
-        std::fprintf(stderr,
-                     "facet: warning: the frames are not evenly spaced; the movie plays them at "
-                     "equal intervals\n");
+    if (args.fps <= 0 && uneven.empty() && step > 1) fps /= step;
+    if (!uneven.empty() && !args.quiet && !args.spacing_reported)
+        std::fprintf(stderr, "facet: warning: %s\n", uneven.c_str());
     std::unique_ptr<VideoEncoder> encoder;
     int width = 0, height = 0;
     for (const ManifestFile& f : files) {

@@ -13,7 +13,13 @@ struct VideoArgs {
     double fps = 0;          // 0: the scene's
     bool quiet = false;
     std::vector<int> frames;  // only these frames (render --video); empty: all the run has
+    bool spacing_reported =
+        false;  // render --video said so before rendering (uneven_frames_warning)
 };
+
+// The warning for a movie of frames that are not evenly spaced (it plays
+// them at equal intervals), or "" when they are.
+std::string uneven_frames_warning(const std::vector<int>& frames);
 
 // Checks the movie's name (its format) before any work: exit code 2.
 void check_movie_name(const std::string& movie);

@@ -5,39 +5,17 @@
 #include <string_view>
 
 #include "core/error.hpp"
+#include "core/plain_text.hpp"
 #include "farm/shell_word.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
 namespace {
 
-// `text` with control characters as escapes (\n, \xNN), for messages.
-std::string printable(const std::string& text) {
-    std::string out;
-    for (unsigned char c : text) {
-        if (c == '\n') {
-            out += "\\n";
-        } else if (c < 0x20 || c == 0x7f) {
-            char escape[8];
-            std::snprintf(escape, sizeof escape, "\\x%02x", c);
-            out += escape;
-        } else {
-            out += static_cast<char>(c);
-        }
-    }
-    return out;
-}
-
 [[noreturn]] void refuse(const std::string& option, const std::string& value,
                          const std::string& why) {
     throw Error(ExitCode::invalid_input,
-                "facet farm: " + option + " '" + printable(value) + "': " + why);
-}
-
-bool has_control_character(const std::string& text) {
-    for (unsigned char c : text)
-        if (c < 0x20 || c == 0x7f) return true;
-    return false;
+                "facet farm: " + option + " '" + text_for_message(value) + "': " + why);
 }
 
 // The option a render word belongs to ("the scene" for the first).
@@ -47,19 +25,37 @@ std::string option_of(const std::vector<std::string>& words, size_t i) {
     return words[i - 1];
 }
 
-// Every word the job carries: no control characters.
+void refuse_line_break(const std::string& what, const std::string& value) {
+    if (const auto problem = line_breaking_character(value))
+        refuse(what, value,
+               "holds " + *problem +
+                   ", which would end a line of the job file for bash, Slurm or a YAML reader");
+}
+
+// Every text the job file carries, whatever it came from (the command
+// line, the scene's names through the merge folder, the environment): none
+// may end a line for any reader of the file (core/plain_text.hpp).
 void check_words(const FarmJob& job) {
-    for (size_t i = 0; i < job.render_args.size(); ++i)
-        if (has_control_character(job.render_args[i]))
-            refuse(option_of(job.render_args, i), job.render_args[i],
-                   "holds a control character (a newline, tab or escape), which no job file can "
-                   "carry safely");
+    // The folders first: absolute paths in the words hold them too.
     for (const auto& [what, value] :
          {std::pair<const char*, const std::string&>{"the working folder", job.working_dir},
-          {"the facet program's path", job.facet},
-          {"the job name", job.name}})
-        if (has_control_character(value))
-            refuse(what, value, "holds a control character, which no job file can carry safely");
+          {"the facet program's path", job.facet}})
+        refuse_line_break(what, value);
+    for (size_t i = 0; i < job.render_args.size(); ++i)
+        refuse_line_break(option_of(job.render_args, i), job.render_args[i]);
+    for (const auto& [what, value] :
+         {std::pair<const char*, const std::string&>{"the job name", job.name},
+          {"the merge folder (from the scene's output.path and names)", job.merge_folder},
+          {"the frames", job.frames},
+          {"the version", job.version}})
+        refuse_line_break(what, value);
+}
+
+// A value in a comment line: a shell word, with anything that could end
+// the line written as an escape, so that the comment stays one line even
+// if a value was never checked.
+std::string comment_word(const std::string& text) {
+    return shell_word(text_for_message(text, text.size()));
 }
 
 // Slurm's job and partition names written in #SBATCH lines, which sbatch
@@ -187,12 +183,12 @@ std::string slurm_script(const FarmJob& job, const SlurmSettings& s) {
     const std::string last = std::to_string(s.chunks - 1);
     std::string t;
     t += "#!/bin/bash\n";
-    t += "# " + shell_word(job.name) + ": frames " + shell_word(job.frames) + " (" +
+    t += "# " + comment_word(job.name) + ": frames " + comment_word(job.frames) + " (" +
          std::to_string(job.frame_count) + ") in " + std::to_string(s.chunks) +
          " chunks on Slurm, then `facet merge` of\n";
-    t +=
-        "# their partial manifests into " + shell_word(job.merge_folder + "/manifest.json") + ".\n";
-    t += "# Written by `facet farm slurm` (facet " + shell_word(job.version) +
+    t += "# their partial manifests into " + comment_word(job.merge_folder + "/manifest.json") +
+         ".\n";
+    t += "# Written by `facet farm slurm` (facet " + comment_word(job.version) +
          "); docs/farm.md explains it.\n";
     t += "#\n";
     t += "#   bash job.sh                submit the render array and the merge job\n";
@@ -241,10 +237,10 @@ std::string openjd_template(const FarmJob& job, const OpenJobSettings& s) {
                              "{{Task.Param.Frame}}", "--skip-existing"})
         render.push_back(word);
     std::string t;
-    t += "# " + shell_word(job.name) + ": frames " + shell_word(job.frames) + " in chunks of " +
+    t += "# " + comment_word(job.name) + ": frames " + comment_word(job.frames) + " in chunks of " +
          std::to_string(s.chunk_size) + " frames, then `facet merge` of their\n";
-    t += "# partial manifests into " + shell_word(job.merge_folder + "/manifest.json") + ".\n";
-    t += "# Written by `facet farm openjd` (facet " + shell_word(job.version) +
+    t += "# partial manifests into " + comment_word(job.merge_folder + "/manifest.json") + ".\n";
+    t += "# Written by `facet farm openjd` (facet " + comment_word(job.version) +
          "); docs/farm.md explains it.\n";
     t += "specificationVersion: 'jobtemplate-2023-09'\n";
     t += "extensions:\n  - TASK_CHUNKING\n";

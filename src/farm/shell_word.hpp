@@ -5,7 +5,10 @@
 
 namespace facet {
 
-// `text` in single quotes, each ' written as '\'' : one word, nothing expanded.
+// `text` in single quotes, each ' written as '\'' : one word, nothing
+// expanded. Text that holds a line break or another control character
+// (core/plain_text.hpp) is written as bash's $'...' with escapes instead,
+// so that the word never spans lines.
 std::string shell_quoted(const std::string& text);
 
 // `text` as one word: unchanged when it is plainly safe, else shell_quoted.

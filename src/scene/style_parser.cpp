@@ -261,7 +261,7 @@ void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& con
         style.description.clear();  // a description speaks for its own file only
     }
     if (f.has("name")) style.name = f["name"].text();
-    if (f.has("description")) style.description = f["description"].text();
+    if (f.has("description")) style.description = f["description"].free_text();
     if (f.has("shading")) style.shading = parse_shading(f["shading"]);
     if (f.has("depth_range")) style.depth_range = f["depth_range"].distance_range();
     if (f.has("base_color")) {

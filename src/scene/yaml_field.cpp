@@ -12,11 +12,18 @@
 #include "core/color.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
+#include "core/plain_text.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
 namespace {
+
+// Two lowercase hexadecimal digits.
+std::string hex_byte(unsigned value) {
+    const char* digits = "0123456789abcdef";
+    return {digits[(value >> 4) & 15], digits[value & 15]};
+}
 
 std::string join_path(const std::string& parent, const std::string& key) {
     return parent.empty() ? key : parent + "." + key;
@@ -97,7 +104,7 @@ void Field::fail(const std::string& message) const {
 
 std::string Field::scalar_for_message() const {
     if (!node_ || node_.IsNull()) return "nothing";
-    if (node_.IsScalar()) return "'" + node_.Scalar() + "'";
+    if (node_.IsScalar()) return "'" + text_for_message(node_.Scalar()) + "'";
     if (node_.IsSequence()) return "a list";
     return "a mapping";
 }
@@ -169,7 +176,7 @@ Field Field::operator[](size_t index) const {
     return Field(doc_, node_[index], join_path(path_, std::to_string(index)));
 }
 
-std::string Field::text() const {
+std::string Field::free_text() const {
     if (!node_.IsScalar()) {
         // "-D output.path={scene}/x" reaches YAML as a flow mapping; say how
         // to write text that starts with a brace.
@@ -184,6 +191,16 @@ std::string Field::text() const {
         fail("must be a text value, got " + scalar_for_message());
     }
     return node_.Scalar();
+}
+
+std::string Field::text() const {
+    std::string value = free_text();
+    // Names and paths reach file names, manifests and job files, where a
+    // line break would end a line (a command, a comment, a YAML key).
+    if (const auto problem = line_breaking_character(value))
+        fail("holds " + *problem + ", which no name or path may hold, got '" +
+             text_for_message(value) + "'");
+    return value;
 }
 
 double Field::number(double min, double max) const {
@@ -324,7 +341,27 @@ long list_item_index(const YAML::Node& list, const std::string& part, const Sour
 std::string yaml_quoted(const std::string& text) {
     YAML::Emitter out;
     out << YAML::DoubleQuoted << text;
-    return out.c_str();
+    // yaml-cpp escapes C0 controls but writes U+0085, U+2028 and U+2029
+    // (and the other C1 controls) as they are, and YAML 1.1 readers such
+    // as PyYAML take the first three as line breaks: escaped here, inside
+    // the double quotes, where "\uXXXX" is read back as the character.
+    const std::string emitted = out.c_str();
+    std::string safe;
+    for (size_t i = 0; i < emitted.size(); ++i) {
+        const auto byte = [&](size_t k) { return static_cast<unsigned char>(emitted[k]); };
+        if (byte(i) == 0xc2 && i + 1 < emitted.size() && byte(i + 1) >= 0x80 &&
+            byte(i + 1) <= 0x9f) {
+            safe += "\\u00" + hex_byte(byte(i + 1));
+            ++i;
+        } else if (byte(i) == 0xe2 && i + 2 < emitted.size() && byte(i + 1) == 0x80 &&
+                   (byte(i + 2) == 0xa8 || byte(i + 2) == 0xa9)) {
+            safe += "\\u20" + hex_byte(byte(i + 2));
+            i += 2;
+        } else {
+            safe += emitted[i];
+        }
+    }
+    return safe;
 }
 
 Override parse_define(const std::string& text) {

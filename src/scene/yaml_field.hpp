@@ -58,7 +58,12 @@ class Field {
     Field operator[](size_t index) const;
 
     // Conversions; each fails with the key and the allowed range.
+    // A name, path or word: one line, no control characters
+    // (core/plain_text.hpp), as every text that can reach a file name, a
+    // manifest or a job file must be.
     std::string text() const;
+    // Text for people only (a preset's description): any characters.
+    std::string free_text() const;
     double number(double min, double max) const;
     int integer(int min, int max) const;
     bool boolean() const;

@@ -1,0 +1,29 @@
+#pragma once
+// Text that stays on one line wherever facet writes it (job files,
+// manifests, messages), and values quoted in messages. One rule for every
+// reader: bash and Slurm end a line at '\n'; YAML 1.1 readers such as
+// PyYAML and libyaml (what openjd-model loads templates with) also at
+// '\r', U+0085, U+2028 and U+2029 (YAML 1.1, section 5.4), and refuse the
+// other C0 and C1 control characters and text that is not UTF-8.
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <string_view>
+
+namespace facet {
+
+// The first character of `text` that some reader of a text file takes as
+// the end of a line or refuses: a C0 control (tab and newline included),
+// DEL, a C1 control (U+0080-U+009F, U+0085 among them), U+2028, U+2029,
+// or a byte that does not start valid UTF-8. Its name ("a newline", "U+2028
+// (a line separator)", "a control character (\x1b)", "bytes that are not
+// UTF-8"), or nothing when the text is plain.
+std::optional<std::string> line_breaking_character(std::string_view text);
+
+// `text` for a message: what line_breaking_character finds written as an
+// escape (\n, \t, \xNN, \u2028), everything else as it is, and cut after
+// `max_chars` bytes with "... (N bytes)" so that a 5 MB value does not make
+// a 5 MB message.
+std::string text_for_message(std::string_view text, size_t max_chars = 80);
+
+}  // namespace facet
