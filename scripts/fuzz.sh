@@ -5,9 +5,10 @@
 #   scripts/fuzz.sh                    each harness for 60 s
 #   scripts/fuzz.sh --seconds 600 obj  one harness, longer
 #
-# Harnesses: scene (scene and style loader), obj, gltf, texture, manifest
-# (the manifest and run-journal reader), override (-D values applied to a
-# scene). Seeds: the
+# Harnesses: scene (scene and style loader), obj, gltf, texture,
+# environment (.hdr and .exr environment maps), ply, assimp (STL, FBX,
+# Collada, 3DS), manifest (the manifest and run-journal reader), override
+# (-D values applied to a scene). Seeds: the
 # checked-in corpus tests/fuzz/corpus/TARGET, the regression inputs, and
 # scenes/, styles/ and assimp's test models. New finds go to
 # build-sanitize/corpus/TARGET and stay there: the checked-in corpus is the
@@ -23,11 +24,11 @@ targets=()
 while [ $# -gt 0 ]; do
     case "$1" in
         --seconds) seconds="${2:?--seconds needs a number}"; shift 2 ;;
-        scene|obj|gltf|texture|manifest|override) targets+=("$1"); shift ;;
-        *) echo "fuzz.sh: unknown argument '$1' (harnesses: scene obj gltf texture manifest override)" >&2; exit 2 ;;
+        scene|obj|gltf|texture|environment|ply|assimp|manifest|override) targets+=("$1"); shift ;;
+        *) echo "fuzz.sh: unknown argument '$1' (harnesses: scene obj gltf texture environment ply assimp manifest override)" >&2; exit 2 ;;
     esac
 done
-[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture manifest override)
+[ ${#targets[@]} -gt 0 ] || targets=(scene obj gltf texture environment ply assimp manifest override)
 case "$seconds" in ''|*[!0-9]*) echo "fuzz.sh: --seconds needs a whole number" >&2; exit 2 ;; esac
 
 # The sanitizer build (scripts/setup.sh --sanitize) has the harnesses.
@@ -41,6 +42,9 @@ seeds_for() {
         obj) echo "$models/OBJ" ;;
         gltf) echo "$models/glTF2 $models/glTF $root/tests/assets" ;;
         texture) echo "$models/OBJ $models/glTF2/BoxTextured-glTF" ;;
+        ply) echo "$models/PLY" ;;
+        environment) ;;
+        assimp) echo "$build/assimp-seeds" ;;
         manifest|override) ;;
     esac
 }
@@ -52,6 +56,23 @@ seeds_for() {
 # use soon after the free, and freed pages go back to the system.
 export ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=16:thread_local_quarantine_size_kb=256:allocator_release_to_os_interval_ms=500
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# The assimp harness reads a byte that names the file, then the file:
+# assimp's own STL, FBX, Collada and 3DS test models (up to 256 KB) are its
+# seeds, each after its format's byte (tests/fuzz/fuzz_targets.cpp).
+if [[ " ${targets[*]} " == *" assimp "* ]]; then
+    mkdir -p "$build/assimp-seeds"
+    byte=0
+    for format in STL FBX Collada 3DS; do
+        if [ -d "$models/$format" ]; then
+            find "$models/$format" -type f -size -256k -print0 |
+                while IFS= read -r -d '' model; do
+                    { printf "\\$(printf '%03o' "$byte")"; cat "$model"; } \
+                        >"$build/assimp-seeds/$format-$(basename "$model")"
+                done
+        fi
+        byte=$((byte + 1))
+    done
+fi
 status=0
 for t in "${targets[@]}"; do
     found="$build/corpus/$t"

@@ -8,6 +8,7 @@
 
 #include "core/color.hpp"
 #include "core/display_transform.hpp"
+#include "core/half.hpp"
 #include "job/render_job.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
@@ -272,4 +273,65 @@ TEST_CASE("agx is Blender 4's AgX: grey to its pivot, bright colours to white", 
     CHECK(std::min({blinding.r, blinding.g, blinding.b}) > 0.999f);
     CHECK(std::string(tonemap_name(Tonemap::agx)) == "agx");
     CHECK(tonemap_from_name("agx") == Tonemap::agx);
+}
+
+TEST_CASE(
+    "every tone curve is monotonic from 0 to +infinity: a brighter input never gives a darker "
+    "pixel, and infinity is the curve's white",
+    "[display]") {
+    const float inf = std::numeric_limits<float>::infinity();
+    // Greys, and colours of several hues and saturations, each scaled from
+    // 1e-6 to 3e38 in steps of a quarter stop, then infinity.
+    const std::vector<glm::vec3> colours = {{1, 1, 1},        {1, 0, 0},       {0, 1, 0},
+                                            {0, 0, 1},        {1, 0.5f, 0.1f}, {0.2f, 0.9f, 0.6f},
+                                            {0.05f, 0.1f, 1}, {1, 1, 0},       {0.7f, 0.7f, 0.65f}};
+    std::vector<float> scales;
+    for (float s = 1e-6f; s < 3e38f; s *= 1.189207f) scales.push_back(s);
+    scales.push_back(inf);
+    for (Tonemap curve :
+         {Tonemap::none, Tonemap::aces, Tonemap::filmic, Tonemap::neutral, Tonemap::agx})
+        for (float exposure : {0.0f, 10.0f}) {
+            const DisplayTransform t{exposure, curve};
+            for (const glm::vec3& colour : colours) {
+                INFO(tonemap_name(curve) << " exposure " << exposure << " colour " << colour.r
+                                         << "," << colour.g << "," << colour.b);
+                float previous = -1.0f;
+                for (float s : scales) {
+                    // An infinite channel times 0 is NaN, not a colour: the
+                    // zero channels of an infinite colour stay zero.
+                    const glm::vec3 c =
+                        s == inf ? glm::vec3(colour.r > 0 ? inf : 0, colour.g > 0 ? inf : 0,
+                                             colour.b > 0 ? inf : 0)
+                                 : colour * s;
+                    const glm::vec4 shown = display_color({c, 1}, t);
+                    INFO("scale " << s << " -> " << shown.r << "," << shown.g << "," << shown.b);
+                    REQUIRE_FALSE(std::isnan(shown.r + shown.g + shown.b));
+                    // What the 8-bit file shows, by luminance: never darker.
+                    const float luminance = 0.2126f * display_byte(shown.r) +
+                                            0.7152f * display_byte(shown.g) +
+                                            0.0722f * display_byte(shown.b);
+                    REQUIRE(luminance >= previous);
+                    previous = luminance;
+                }
+                // Infinity is as bright as the curve goes.
+                CHECK(previous >= 0.2126f * 255 * (colour.r > 0) + 0.7152f * 255 * (colour.g > 0) +
+                                      0.0722f * 255 * (colour.b > 0) - 1.0f);
+            }
+        }
+}
+
+TEST_CASE("a colour past the half-float range is shown as white, not black", "[display]") {
+    // The frame's colour is stored as half floats, saturated at 65504.
+    for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral, Tonemap::agx}) {
+        INFO(tonemap_name(curve));
+        HalfColorImage image(2, 1);
+        image.at(0, 0) = to_half(glm::vec4(7e4f, 7e4f, 7e4f, 1));
+        image.at(1, 0) = to_half(glm::vec4(std::numeric_limits<float>::infinity(), 1.6e9f, 1, 1));
+        const HalfColorImage shown = apply_display_transform(image, {0, curve});
+        for (int x = 0; x < 2; ++x) {
+            const glm::vec4 c = to_float(shown.at(x, 0));
+            CHECK(display_byte(c.r) == 255);
+            CHECK(display_byte(c.g) >= 250);
+        }
+    }
 }

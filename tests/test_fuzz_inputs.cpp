@@ -37,14 +37,15 @@ size_t replay(const std::string& kind, const std::string& target) {
 }  // namespace
 
 TEST_CASE("fuzz regression inputs load or are refused cleanly", "[fuzz]") {
-    for (const char* target : {"scene", "obj", "gltf", "texture", "manifest"}) {
+    for (const char* target : {"scene", "obj", "gltf", "texture", "environment", "manifest"}) {
         INFO(target);
         CHECK(replay("regressions", target) > 0);
     }
 }
 
 TEST_CASE("the checked-in fuzz corpora load or are refused cleanly", "[fuzz]") {
-    for (const char* target : {"scene", "obj", "gltf", "texture", "manifest", "override"}) {
+    for (const char* target : {"scene", "obj", "gltf", "texture", "environment", "ply", "assimp",
+                               "manifest", "override"}) {
         INFO(target);
         CHECK(replay("corpus", target) > 0);
     }

@@ -12,7 +12,7 @@
 
 using namespace facet;
 
-TEST_CASE("half: every half converts to float and back unchanged", "[half]") {
+TEST_CASE("half: every finite half converts to float and back unchanged", "[half]") {
     for (uint32_t h = 0; h < 0x10000; ++h) {
         const float f = half_to_float(static_cast<uint16_t>(h));
         if (std::isnan(f)) {
@@ -21,6 +21,10 @@ TEST_CASE("half: every half converts to float and back unchanged", "[half]") {
             continue;
         }
         INFO("half " << h);
+        if (std::isinf(f)) {  // stored saturated: the largest finite half
+            REQUIRE(float_to_half(f) == (f > 0 ? 0x7bff : 0xfbff));
+            continue;
+        }
         REQUIRE(float_to_half(f) == h);
     }
     CHECK(half_to_float(0x3c00) == 1.0f);
@@ -46,12 +50,25 @@ TEST_CASE("half: floats round to the nearest half, ties to even", "[half]") {
         REQUIRE(error <= std::abs(down - f));
         if (error == std::abs(up - f) || error == std::abs(down - f)) REQUIRE((h & 1) == 0);
     }
-    CHECK(float_to_half(65520.0f) == 0x7c00);  // halfway past the largest: infinity
     CHECK(float_to_half(65519.0f) == 0x7bff);
-    CHECK(float_to_half(std::numeric_limits<float>::infinity()) == 0x7c00);
+    CHECK(float_to_half_portable(simd::splat(65520.0f))[0] == 0x7c00);  // IEEE: infinity
     CHECK(float_to_half(-2.0f) == 0xc000);
     CHECK(float_to_half(std::ldexp(1.0f, -25)) == 0);       // a tie below the smallest: even
     CHECK(float_to_half(std::ldexp(1.5f, -25)) == 0x0001);  // more than half: up
+}
+
+TEST_CASE("half: facet stores values past the half range as the largest finite half", "[half]") {
+    // IEEE rounds 65520 and above to infinity, which tone curves cannot map
+    // to white; facet saturates (docs/passes.md).
+    const float inf = std::numeric_limits<float>::infinity();
+    for (float f : {65520.0f, 1e5f, 1.6e9f, 3e38f, inf}) {
+        INFO(f);
+        CHECK(float_to_half(f) == 0x7bff);
+        CHECK(float_to_half(-f) == 0xfbff);
+    }
+    CHECK(std::isnan(half_to_float(float_to_half(std::nanf("")))));
+    CHECK(to_float(to_half(glm::vec4(inf, 7e4f, 1.0f, 1.0f))) ==
+          glm::vec4(65504.0f, 65504.0f, 1.0f, 1.0f));
 }
 
 TEST_CASE("half: the build's conversion and the portable one agree bit for bit", "[half]") {
@@ -64,7 +81,8 @@ TEST_CASE("half: the build's conversion and the portable one agree bit for bit",
         for (int k = 0; k < simd::kLanes; ++k) bits[k] = static_cast<int32_t>(any(rng));
         simd::vf values;
         std::memcpy(&values, &bits, sizeof values);
-        const simd::vi a = float_to_half(values), b = float_to_half_portable(values);
+        const simd::vi a = float_to_half(values),
+                       b = float_to_half_portable(saturate_to_half_range(values));
         for (int k = 0; k < simd::kLanes; ++k) REQUIRE(a[k] == b[k]);
     }
 }

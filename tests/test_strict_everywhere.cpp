@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "farm_support.hpp"
+#include "turntable_support.hpp"
 
 using namespace facet;
 using namespace facet::test;
@@ -24,18 +25,7 @@ objects: [ { primitive: { type: cube } } ]
 
 // A binary STL file with a vertex position that is NaN: render refuses it.
 std::string scene_with_nan_mesh(const TempDir& dir) {
-    std::vector<uint8_t> stl(80, 0);
-    const auto put = [&](const void* data, size_t size) {
-        const auto* bytes = static_cast<const uint8_t*>(data);
-        stl.insert(stl.end(), bytes, bytes + size);
-    };
-    const uint32_t count = 1;
-    put(&count, 4);
-    const float triangle[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, std::nanf(""), 1, 0};
-    put(triangle, sizeof triangle);
-    const uint16_t attributes = 0;
-    put(&attributes, 2);
-    write_bytes(dir.file("nan.stl"), stl);
+    write_binary_stl(dir.file("nan.stl"), {{0, 0, 0}, {1, 0, 0}, {std::nanf(""), 1, 0}});
     return write_text(dir.file("nan.yaml"), R"(
 output: { size: [32, 18], frames: "1-4" }
 camera: { position: [0, 0, 5] }

@@ -259,7 +259,15 @@ glm::vec3 agx_formation(glm::vec3 c) {
 
 }  // namespace agx
 
+// The largest value a curve is given: every curve has reached its white
+// long before (ACES by 13, the filmic curves by 0.18 * 2^15), and below it
+// their arithmetic stays finite (ACES's square up to 1.8e19; the inset's
+// sums and differences of three channels). Infinity and larger values are
+// taken as this, so that they map to white instead of to NaN.
+constexpr float kLargestToned = 1e18f;
+
 glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
+    for (int i = 0; i < 3; ++i) c[i] = c[i] > kLargestToned ? kLargestToned : c[i];  // NaN stays
     switch (tonemap) {
         case Tonemap::none:
             return c;

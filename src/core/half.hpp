@@ -50,7 +50,21 @@ using HalfColorImage = Image<Rgba16F>;  // linear RGBA, half floats
     return out | sign;
 }
 
+// Floats as facet stores them in halves: beyond the largest finite half,
+// 65504, infinity included, they are 65504 (and below -65504, -65504);
+// NaN stays NaN. A colour past the range would otherwise be infinity,
+// which no tone curve can map to its white, and an EXR reader shows as a
+// hole (docs/passes.md).
+[[gnu::always_inline]] inline simd::vf saturate_to_half_range(simd::vf value) {
+    const simd::vf largest = simd::splat(65504.0f);
+    value = value > largest ? largest : value;  // a NaN compares false and stays
+    return value < -largest ? -largest : value;
+}
+
+// Eight floats to halves as facet stores them: saturated to the half range
+// (saturate_to_half_range), then rounded to nearest even.
 [[gnu::always_inline]] inline simd::vh float_to_half_bits(simd::vf value) {
+    value = saturate_to_half_range(value);
 #if FACET_SIMD_F16C
     return simd::half_bits_f16c(value);
 #else

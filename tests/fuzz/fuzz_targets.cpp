@@ -13,6 +13,7 @@
 #include "output/manifest.hpp"
 #include "output/manifest_journal.hpp"
 #include "scene/scene_desc.hpp"
+#include "shade/environment_map.hpp"
 
 namespace facet::fuzz {
 namespace {
@@ -81,6 +82,33 @@ void fuzz_texture(const uint8_t* data, size_t size) {
     expect_loaded_or_error([&] { load_texture(path, &budget); });
 }
 
+void fuzz_environment(const uint8_t* data, size_t size) {
+    // Told by content, never by name: a Radiance .hdr or an OpenEXR file.
+    const std::string path = write_input("environment.img", data, size);
+    Warnings warnings;
+    expect_loaded_or_error([&] { pbr::read_environment_image(path, warnings); });
+}
+
+void fuzz_ply(const uint8_t* data, size_t size) {
+    const std::string path = write_input("input.ply", data, size);
+    TextureBudget budget(kFuzzTextureBudget);
+    AssetContext context;
+    context.textures = &budget;
+    expect_loaded_or_error([&] { load_mesh(path, context); });
+}
+
+void fuzz_assimp(const uint8_t* data, size_t size) {
+    // The first byte names the file (its bytes decide the reader first,
+    // then the name); the rest is the file.
+    if (size == 0) return;
+    static const char* const names[] = {"input.stl", "input.fbx", "input.dae", "input.3ds"};
+    const std::string path = write_input(names[data[0] % 4], data + 1, size - 1);
+    TextureBudget budget(kFuzzTextureBudget);
+    AssetContext context;
+    context.textures = &budget;
+    expect_loaded_or_error([&] { load_mesh(path, context); });
+}
+
 void fuzz_manifest(const uint8_t* data, size_t size) {
     const std::string path = write_input("manifest.json", data, size);
     expect_loaded_or_error([&] {
@@ -121,6 +149,12 @@ bool run_target(const std::string& target, const uint8_t* data, size_t size) {
         fuzz_gltf(data, size);
     else if (target == "texture")
         fuzz_texture(data, size);
+    else if (target == "environment")
+        fuzz_environment(data, size);
+    else if (target == "ply")
+        fuzz_ply(data, size);
+    else if (target == "assimp")
+        fuzz_assimp(data, size);
     else if (target == "manifest")
         fuzz_manifest(data, size);
     else if (target == "override")

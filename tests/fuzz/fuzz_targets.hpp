@@ -12,7 +12,10 @@
 namespace facet::fuzz {
 
 // The harnesses by name: "scene" (scene and style loader), "obj", "gltf",
-// "texture", "manifest" (manifest and run journal reader: render, compare,
+// "texture", "environment" (a .hdr or .exr environment map, told by its
+// bytes), "ply", "assimp" (STL, FBX, Collada and 3DS through assimp: the
+// input's first byte chooses the file's name), "manifest" (manifest and run
+// journal reader: render, compare,
 // merge and video read manifests with it), "override" (the -D parser,
 // applied to a small scene). Returns false for an unknown name.
 bool run_target(const std::string& target, const uint8_t* data, size_t size);
@@ -21,6 +24,9 @@ void fuzz_scene(const uint8_t* data, size_t size);
 void fuzz_obj(const uint8_t* data, size_t size);
 void fuzz_gltf(const uint8_t* data, size_t size);
 void fuzz_texture(const uint8_t* data, size_t size);
+void fuzz_environment(const uint8_t* data, size_t size);
+void fuzz_ply(const uint8_t* data, size_t size);
+void fuzz_assimp(const uint8_t* data, size_t size);
 void fuzz_manifest(const uint8_t* data, size_t size);
 void fuzz_override(const uint8_t* data, size_t size);
 

@@ -119,3 +119,65 @@ out('override', 'colour-and-keys',
     'objects.0.material.color=#ff8800\ncamera.fov={keys: {1: 20, 4: 60}}\noutput.frames=2-3\n')
 out('override', 'replaced-list-item',
     'lights.0={type: point, position: [1, 2, 3], intensity: 4}\nobjects.0.translate=[0, 1, 0]\n')
+
+
+# Environment maps: Radiance .hdr, flat and run-length encoded scanlines,
+# and a small scanline OpenEXR file (half RGB, no compression).
+def rgbe(value):
+    import math
+    if value <= 0:
+        return bytes(4)
+    mantissa, exponent = math.frexp(value)
+    m = int(mantissa * 256)
+    return bytes([m, m, m, exponent + 128])
+
+
+flat = b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 4\n' + b''.join(
+    rgbe(0.5 * (i + 1)) for i in range(8))
+out('environment', 'flat-4x2.hdr', flat)
+row = b'\x02\x02\x00\x10' + b''.join(bytes([0x80 + 16, v]) for v in (128, 128, 128, 129))
+out('environment', 'rle-16x8.hdr', b'#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 8 +X 16\n' + row * 8)
+
+
+def exr(width, height):
+    def attribute(name, kind, value):
+        return name.encode() + b'\0' + kind.encode() + b'\0' + struct.pack('<i', len(value)) + value
+    channels = b''.join(c + b'\0' + struct.pack('<iB3xii', 1, 0, 1, 1) for c in (b'B', b'G', b'R'))
+    box = struct.pack('<4i', 0, 0, width - 1, height - 1)
+    header = (b'v/1\x01' + struct.pack('<I', 2) +
+              attribute('channels', 'chlist', channels + b'\0') +
+              attribute('compression', 'compression', b'\0') +
+              attribute('dataWindow', 'box2i', box) + attribute('displayWindow', 'box2i', box) +
+              attribute('lineOrder', 'lineOrder', b'\0') +
+              attribute('pixelAspectRatio', 'float', struct.pack('<f', 1)) +
+              attribute('screenWindowCenter', 'v2f', struct.pack('<2f', 0, 0)) +
+              attribute('screenWindowWidth', 'float', struct.pack('<f', 1)) + b'\0')
+    lines = []
+    for y in range(height):
+        pixels = b''.join(struct.pack('<%de' % width, *[0.25 * (x + y + c) for x in range(width)])
+                          for c in range(3))
+        lines.append(struct.pack('<ii', y, len(pixels)) + pixels)
+    offsets, at = [], len(header) + 8 * height
+    for line in lines:
+        offsets.append(at)
+        at += len(line)
+    return header + struct.pack('<%dQ' % height, *offsets) + b''.join(lines)
+
+
+out('environment', 'half-rgb-4x2.exr', exr(4, 2))
+
+
+# PLY: a square as ASCII and as binary; the assimp harness: a byte that
+# names the file (0 .stl, 1 .fbx, 2 .dae, 3 .3ds), then the file.
+ply_head = ('ply\nformat %s 1.0\nelement vertex 4\nproperty float x\nproperty float y\n'
+            'property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n')
+corners = [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0)]
+out('ply', 'square-ascii.ply', ply_head % 'ascii' + ''.join('%d %d %d\n' % c for c in corners) +
+    '4 0 1 2 3\n')
+out('ply', 'square-binary.ply', (ply_head % 'binary_little_endian').encode() +
+    b''.join(struct.pack('<3f', *c) for c in corners) + struct.pack('<B4i', 4, 0, 1, 2, 3))
+triangle = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)
+out('assimp', 'stl-binary-triangle', b'\0' + b'facet fuzz seed'.ljust(80, b' ') +
+    struct.pack('<I', 1) + triangle)
+out('assimp', 'stl-ascii-triangle', b'\0solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\n'
+    b'vertex 1 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n')
