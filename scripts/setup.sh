@@ -6,6 +6,7 @@
 #
 #   scripts/setup.sh            build dependencies, then build
 #   scripts/setup.sh --tests    also the test data (assimp-testmodels),
+#                               strace (counts the files a run opens),
 #                               scikit-image (checks facet's SSIM),
 #                               chromium (opens compare's HTML report headless),
 #                               dpkg-dev and file (the CPack package test),
@@ -42,7 +43,7 @@ packages=(g++ cmake make pkg-config ccache
           libsdl2-dev libimgui-dev libgl-dev libgl1-mesa-dri libwebp-dev libavif-dev)
 for arg in "$@"; do
     case "$arg" in
-        --tests) tests=1; packages+=(time assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
+        --tests) tests=1; packages+=(time strace assimp-testmodels python3-skimage python3-yaml chromium dpkg-dev file slurm-wlm gltfpack openimageio-tools
                             xvfb xdotool x11-apps) ;;
         --bench) packages+=(libosmesa6-dev); bench=1 ;;
         --sanitize) packages+=(clang libclang-rt-dev llvm); sanitize=1 ;;

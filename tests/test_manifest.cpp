@@ -2,6 +2,12 @@
 // atomic file writer everything in output/ goes through.
 #include <catch2/catch.hpp>
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <set>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -300,6 +306,88 @@ TEST_CASE("an atomic file set shows its files only once published, all together"
         CHECK(files.published() == std::vector<std::string>{a});
         CHECK_FALSE(has_temp_files(dir.path()));
     }
+}
+
+namespace {
+
+// System calls that fail where a test says (the set's seam, FileCalls):
+// the Nth open, the Nth sync of a file, or the sync of a folder.
+struct Faults {
+    int fail_open = -1, fail_file_sync = -1;
+    bool fail_folder_sync = false;
+    int opens = 0, file_syncs = 0;
+    std::set<int> folders;  // open descriptors of folders
+};
+Faults g_faults;  // the test's own: a plain function pointer captures nothing
+
+int faulty_open(const char* path, int flags, mode_t mode) {
+    if (g_faults.opens++ == g_faults.fail_open) {
+        errno = ENOSPC;
+        return -1;
+    }
+    const int fd = ::open(path, flags, mode);
+    if (fd >= 0 && (flags & O_DIRECTORY)) g_faults.folders.insert(fd);
+    return fd;
+}
+int faulty_fsync(int fd) {
+    if (g_faults.folders.count(fd) ? g_faults.fail_folder_sync
+                                   : g_faults.file_syncs++ == g_faults.fail_file_sync) {
+        errno = EIO;
+        return -1;
+    }
+    return ::fsync(fd);
+}
+int faulty_close(int fd) {
+    g_faults.folders.erase(fd);
+    return ::close(fd);
+}
+const facet::FileCalls kFaultyCalls{faulty_open,  ::write,  faulty_fsync,
+                                    faulty_close, ::rename, ::unlink};
+
+}  // namespace
+
+TEST_CASE("an atomic file set publishes all of its files or none when a system call fails",
+          "[atomic_file]") {
+    TempDir dir("atomic-faults");
+    const std::string a = dir.file("a.bin"), b = dir.file("b.bin");
+    write_text(a, "old");
+    g_faults = {};
+    SECTION("a failed sync of the second file: nothing is published, the old file stays") {
+        g_faults.fail_file_sync = 1;
+        facet::AtomicFileSet files(kFaultyCalls);
+        files.write(a, {1});
+        files.write(b, {2});
+        require_error([&] { files.publish(); }, facet::ExitCode::io_failure, b);
+        CHECK(files.published().empty());
+        CHECK(read_file(a) == "old");
+        CHECK_FALSE(fs::exists(b));
+    }
+    SECTION("a path written twice: the second bytes win, and one temporary is used") {
+        facet::AtomicFileSet files(kFaultyCalls);
+        files.write(a, {1, 1});
+        files.write(a, {2});
+        files.publish();
+        CHECK(read_file(a) == "\x02");
+        CHECK(files.published() == std::vector<std::string>{a});
+    }
+    SECTION("a path written twice whose second open fails leaves no temporary behind") {
+        g_faults.fail_open = 1;
+        facet::AtomicFileSet files(kFaultyCalls);
+        files.write(a, {1});
+        require_error([&] { files.write(a, {2}); }, facet::ExitCode::io_failure, a);
+        CHECK_FALSE(has_temp_files(dir.path()));
+        CHECK(read_file(a) == "old");
+    }
+    SECTION("EIO on the folder's sync is an I/O failure naming the folder, after the renames") {
+        g_faults.fail_folder_sync = true;
+        facet::AtomicFileSet files(kFaultyCalls);
+        files.write(a, {1});
+        files.write(b, {2});
+        require_error([&] { files.publish(); }, facet::ExitCode::io_failure, dir.path());
+        CHECK(read_file(a) == "\x01");
+        CHECK(read_file(b) == "\x02");
+    }
+    CHECK_FALSE(has_temp_files(dir.path()));
 }
 
 TEST_CASE("make_directories creates nested folders and accepts existing ones", "[atomic_file]") {

@@ -49,19 +49,32 @@ std::string lower(std::string text) {
 // assimp opens files through this: only the mesh file itself, so that a
 // hostile file cannot make it read another (textures go through the asset
 // path policy below, as for OBJ).
-class OneFileSystem : public Assimp::DefaultIOSystem {
+// The file system assimp sees: none. It reads the bytes facet read
+// (ReadFileFromMemory); a file that names others (textures are resolved by
+// facet, below) opens nothing through it.
+class NoFileSystem : public Assimp::DefaultIOSystem {
   public:
-    explicit OneFileSystem(std::string path) : path_(std::move(path)) {}
-    bool Exists(const char* file) const override { return path_ == file; }
-    Assimp::IOStream* Open(const char* file, const char* mode) override {
-        if (path_ != file || std::string(mode).find_first_of("wa+") != std::string::npos)
-            return nullptr;
-        return Assimp::DefaultIOSystem::Open(file, mode);
-    }
-
-  private:
-    std::string path_;
+    bool Exists(const char*) const override { return false; }
+    Assimp::IOStream* Open(const char*, const char*) override { return nullptr; }
 };
+
+// The extension assimp chooses its reader by, for the format the bytes show.
+const char* assimp_hint(MeshFormat format) {
+    switch (format) {
+        case MeshFormat::stl:
+            return "stl";
+        case MeshFormat::ply:
+            return "ply";
+        case MeshFormat::fbx:
+            return "fbx";
+        case MeshFormat::collada:
+            return "dae";
+        case MeshFormat::max3ds:
+            return "3ds";
+        default:
+            return "";
+    }
+}
 
 glm::mat4 to_glm(const aiMatrix4x4& m) {
     // assimp's matrices are row-major; glm's columns are assimp's rows.
@@ -91,10 +104,10 @@ std::string texture_file(const std::string& path, const std::string& where, std:
     }
 }
 
-std::vector<Material> read_materials(const aiScene& scene, const std::string& path,
+std::vector<Material> read_materials(const aiScene& scene, const MeshFile& file,
                                      const AssetContext& context, Warnings& warnings) {
-    const std::string extension = lower(std::filesystem::path(path).extension().string());
-    const bool without_materials = extension == ".ply" || extension == ".stl";
+    const std::string& path = file.path;
+    const bool without_materials = file.format == MeshFormat::ply || file.format == MeshFormat::stl;
     std::vector<Material> materials;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
@@ -200,22 +213,29 @@ void require_finite_positions(const aiScene& scene, const std::string& path) {
 }  // namespace
 
 Mesh load_assimp(const std::string& path, const AssetContext& context) {
-    require_input_file(path, "mesh");
-    // The file's size is checked against the policy before assimp reads it,
-    // and a PLY file's structure (assets/ply_check.hpp).
-    const std::vector<uint8_t> bytes = read_input_file(path, "mesh", context.paths.max_file_bytes);
-    if (mesh_format_of_bytes(bytes, bytes.size()) == MeshFormat::ply ||
-        lower(std::filesystem::path(path).extension().string()) == ".ply")
-        check_ply(bytes, path);
+    MeshFile file{path, read_input_file(path, "mesh", context.paths.max_file_bytes)};
+    const auto format = mesh_format_of_bytes(file.bytes, file.bytes.size());
+    file.format = format ? *format : mesh_format_of_name(path).value_or(MeshFormat::stl);
+    return load_assimp(file, context);
+}
+
+Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
+    const std::string& path = file.path;
+    // A PLY file's structure is checked before assimp reads it
+    // (assets/ply_check.hpp).
+    if (file.format == MeshFormat::ply) check_ply(file.bytes, path);
     Assimp::Importer importer;
-    importer.SetIOHandler(new OneFileSystem(path));  // the importer owns it
+    // assimp reads the bytes facet read, and may open no other file.
+    importer.SetIOHandler(new NoFileSystem);  // the importer owns it
     // Points and lines are split off and left out; polygons become
     // triangles; degenerate triangles go.
     importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
                                 aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     // Read as the file has it, checked, then processed: joining vertices
-    // would merge a NaN position into another vertex without a word.
-    const aiScene* scene = importer.ReadFile(path, 0);
+    // would merge a NaN position into another vertex without a word. The
+    // reader is the one the bytes call for, whatever the file's name.
+    const aiScene* scene = importer.ReadFileFromMemory(file.bytes.data(), file.bytes.size(), 0,
+                                                       assimp_hint(file.format));
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         bad(path, std::string("cannot read: ") + importer.GetErrorString());
     require_finite_positions(*scene, path);
@@ -227,7 +247,7 @@ Mesh load_assimp(const std::string& path, const AssetContext& context) {
     Mesh mesh;
     mesh.source = path;
     mesh.loader = "assimp";
-    mesh.materials = read_materials(*scene, path, context, mesh.warnings);
+    mesh.materials = read_materials(*scene, file, context, mesh.warnings);
     const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
     Material fallback;
     fallback.name = "default";

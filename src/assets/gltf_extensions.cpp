@@ -62,26 +62,17 @@ uint32_t little_endian(const char* bytes) {
 }
 
 // The JSON text of a .gltf, or of a .glb's first chunk; "" when there is none.
-std::string json_text(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::array<char, 20> head{};
-    if (!in.read(head.data(), head.size())) return "";
-    if (std::memcmp(head.data(), "glTF", 4) != 0) {
-        // A .gltf is JSON from its first byte.
-        in.clear();
-        in.seekg(0);
-        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-        return text;
-    }
+std::string json_text(std::span<const uint8_t> bytes, const std::string& path) {
+    const char* data = reinterpret_cast<const char*>(bytes.data());
+    if (bytes.size() < 20 || std::memcmp(data, "glTF", 4) != 0)
+        return std::string(data, bytes.size());  // a .gltf is JSON from its first byte
     // GLB: 12-byte header (magic, version, length), then a chunk: length,
     // type "JSON", data.
-    if (little_endian(head.data() + 4) == 1)
+    if (little_endian(data + 4) == 1)
         bad(path, "is a glTF 1.0 binary (version 1 in its header); facet reads glTF 2.0 files");
-    const uint32_t length = little_endian(head.data() + 12);
-    if (std::memcmp(head.data() + 16, "JSON", 4) != 0 || length > (uint32_t(1) << 30)) return "";
-    std::string text(length, '\0');
-    if (!in.read(text.data(), length)) return "";
-    return text;
+    const uint32_t length = little_endian(data + 12);
+    if (std::memcmp(data + 16, "JSON", 4) != 0 || length > bytes.size() - 20) return "";
+    return std::string(data + 20, length);
 }
 
 std::vector<std::string> names(const nlohmann::json& doc, const char* key) {
@@ -145,8 +136,8 @@ bool ExtensionLists::lists(const std::string& extension) const {
            std::find(used.begin(), used.end(), extension) != used.end();
 }
 
-ExtensionLists read_extension_lists(const std::string& path) {
-    const nlohmann::json doc = nlohmann::json::parse(json_text(path), nullptr, false);
+ExtensionLists read_extension_lists(std::span<const uint8_t> bytes, const std::string& path) {
+    const nlohmann::json doc = nlohmann::json::parse(json_text(bytes, path), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return {};
     check_field_types(doc, path);
     return {names(doc, "extensionsRequired"), names(doc, "extensionsUsed")};

@@ -4,6 +4,7 @@
 // Only assets/ includes this header, because it brings in tinygltf.
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,7 @@ struct ExtensionLists {
 // them first lets the error name the extension. Empty lists when the JSON
 // cannot be read: tinygltf then reports why. The same read checks the types
 // of the fields facet draws from (check_field_types, gltf_field_types.hpp).
-ExtensionLists read_extension_lists(const std::string& path);
+ExtensionLists read_extension_lists(std::span<const uint8_t> bytes, const std::string& path);
 
 struct ExtensionCheck {
     std::vector<std::string> ignored;  // listed, but not read by facet

@@ -127,39 +127,39 @@ std::string trimmed(std::string s) {
     return s;
 }
 
-// tinygltf's parse, of the file as it is or (for compressed geometry) with
-// its JSON rewritten first: meshopt's fallback buffers hold no data,
-// Draco's accessors have no views.
-bool parse_model(const std::string& path, const gltf_detail::ExtensionLists& lists,
+// tinygltf's parse of the file's bytes, as they are or (for compressed
+// geometry) with its JSON rewritten first: meshopt's fallback buffers hold
+// no data, Draco's accessors have no views.
+bool parse_model(const MeshFile& file, const gltf_detail::ExtensionLists& lists,
                  tinygltf::TinyGLTF& loader, tinygltf::Model& model, std::string& err,
                  std::string& warn, int& placeholder_view) {
-    // By the file's magic number, as load_mesh chose the loader, so a .glb
-    // saved under another name is read as what it is.
-    const bool binary = recognise_mesh_file(path) == MeshFormat::glb;
+    // By the file's magic number, so a .glb saved under another name is
+    // read as what it is.
+    const bool binary = file.bytes.size() >= 4 && std::memcmp(file.bytes.data(), "glTF", 4) == 0;
     const bool meshopt = lists.lists("EXT_meshopt_compression");
     const bool draco = lists.lists("KHR_draco_mesh_compression");
-    if (!meshopt && !draco)
-        return binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                      : loader.LoadASCIIFromFile(&model, &err, &warn, path);
-    const std::vector<uint8_t> file = gltf_detail::with_json_rewritten(
-        read_input_file(path, "glTF"), [&](const std::string& json) {
+    std::vector<uint8_t> rewritten;
+    if (meshopt || draco)
+        rewritten = gltf_detail::with_json_rewritten(file.bytes, [&](const std::string& json) {
             std::string out = meshopt ? gltf_detail::without_fallback_buffers(json) : json;
             return draco ? gltf_detail::with_placeholder_views(out, placeholder_view) : out;
         });
-    const size_t slash = path.find_last_of("/\\");
-    const std::string folder = slash == std::string::npos ? "" : path.substr(0, slash);
-    return binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, file.data(),
-                                                static_cast<unsigned>(file.size()), folder)
+    const std::vector<uint8_t>& bytes = meshopt || draco ? rewritten : file.bytes;
+    const size_t slash = file.path.find_last_of("/\\");
+    const std::string folder = slash == std::string::npos ? "" : file.path.substr(0, slash);
+    return binary ? loader.LoadBinaryFromMemory(&model, &err, &warn, bytes.data(),
+                                                static_cast<unsigned>(bytes.size()), folder)
                   : loader.LoadASCIIFromString(&model, &err, &warn,
-                                               reinterpret_cast<const char*>(file.data()),
-                                               static_cast<unsigned>(file.size()), folder);
+                                               reinterpret_cast<const char*>(bytes.data()),
+                                               static_cast<unsigned>(bytes.size()), folder);
 }
 
-ReadModel read_model(const std::string& path, const AssetContext& context) {
+ReadModel read_model(const MeshFile& file, const AssetContext& context) {
+    const std::string& path = file.path;
     ReadModel read;
     // Before tinygltf parses buffers that a compression extension may have
     // left without data, so the error names the extension.
-    read.lists = gltf_detail::read_extension_lists(path);
+    read.lists = gltf_detail::read_extension_lists(file.bytes, path);
     read.extensions = gltf_detail::check_extensions(read.lists, path, !context.inspect_only);
     tinygltf::TinyGLTF loader;
     LoadContext load{path, "", &context, std::nullopt, {}};
@@ -174,7 +174,7 @@ ReadModel read_model(const std::string& path, const AssetContext& context) {
     bool ok = false;
     int placeholder_view = -1;
     try {
-        ok = parse_model(path, read.lists, loader, read.model, err, warn, placeholder_view);
+        ok = parse_model(file, read.lists, loader, read.model, err, warn, placeholder_view);
     } catch (const std::exception& e) {
         err = e.what();
     }
@@ -535,11 +535,23 @@ void bake_rest_pose(Mesh& mesh, MeshRig& rig) {
     }
 }
 
+// The file's bytes, for a loader called by path.
+MeshFile read_gltf_file(const std::string& path, const AssetContext& context) {
+    MeshFile file{path, read_input_file(path, "glTF", context.paths.max_file_bytes)};
+    const bool binary = file.bytes.size() >= 4 && std::memcmp(file.bytes.data(), "glTF", 4) == 0;
+    file.format = binary ? MeshFormat::glb : MeshFormat::gltf;
+    return file;
+}
+
 }  // namespace
 
 Mesh load_gltf(const std::string& path, const AssetContext& context) {
-    require_input_file(path, "glTF");
-    ReadModel read = read_model(path, context);
+    return load_gltf(read_gltf_file(path, context), context);
+}
+
+Mesh load_gltf(const MeshFile& file, const AssetContext& context) {
+    const std::string& path = file.path;
+    ReadModel read = read_model(file, context);
     const tinygltf::Model& model = read.model;
     Mesh mesh;
     mesh.source = path;
@@ -583,8 +595,7 @@ Mesh load_gltf(const std::string& path, const AssetContext& context) {
 }
 
 GltfCameras load_gltf_cameras(const std::string& path, const AssetContext& context) {
-    require_input_file(path, "glTF");
-    ReadModel read = read_model(path, context);
+    ReadModel read = read_model(read_gltf_file(path, context), context);
     GltfCameras out;
     out.warnings = read.extensions.warnings;
     auto rig = std::make_shared<MeshRig>();

@@ -12,6 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "assets/mesh_format.hpp"
 #include "assets/mesh_rig.hpp"
 #include "assets/texture.hpp"
 #include "core/diagnostics.hpp"
@@ -209,12 +210,32 @@ struct LoadedMesh {
 };
 using LoadedMeshes = std::map<std::string, LoadedMesh>;
 
-// Loads a mesh file by the loader its bytes call for, or else its name
-// (assets/mesh_format.hpp): .obj (facet's own reader; .mtl through
-// tinyobjloader), .gltf or .glb (through tinygltf), or .stl, .ply, .fbx,
-// .dae or .3ds (through libassimp). Throws facet::Error (invalid_input)
-// with the file name and what is wrong.
+// A mesh file read once: every loader parses these bytes from memory, so
+// that what is drawn and what a manifest hashes (a model's turntable) are
+// the same bytes, and its format is told once.
+struct MeshFile {
+    std::string path;
+    std::vector<uint8_t> bytes;
+    MeshFormat format = MeshFormat::obj;  // by its bytes, else by its name
+};
+
+// Reads the file once (within the context's size limit) and tells its
+// format by its bytes, else its name (assets/mesh_format.hpp). Throws
+// facet::Error (invalid_input) naming the file when it cannot be read or
+// neither tells a format facet reads.
+MeshFile read_mesh_file(const std::string& path, const AssetContext& context = {});
+
+// Loads a mesh file by the loader its format calls for: .obj (facet's own
+// reader; .mtl through tinyobjloader), .gltf or .glb (through tinygltf), or
+// .stl, .ply, .fbx, .dae or .3ds (through libassimp, told the format its
+// bytes show, whatever the file's name). Throws facet::Error
+// (invalid_input) with the file name and what is wrong.
+Mesh load_mesh(const MeshFile& file, const AssetContext& context = {});
 Mesh load_mesh(const std::string& path, const AssetContext& context = {});
+// One loader, of a file read already or of a path (read first).
+Mesh load_obj(const MeshFile& file, const AssetContext& context = {});
+Mesh load_gltf(const MeshFile& file, const AssetContext& context = {});
+Mesh load_assimp(const MeshFile& file, const AssetContext& context = {});
 Mesh load_obj(const std::string& path, const AssetContext& context = {});
 Mesh load_gltf(const std::string& path, const AssetContext& context = {});
 Mesh load_assimp(const std::string& path, const AssetContext& context = {});

@@ -337,29 +337,40 @@ void validate_part(const MeshPart& part, const std::string& source) {
 
 namespace {
 
-// The loader the file's bytes call for, or else its name's.
-Mesh load_by_format(const std::string& path, const AssetContext& context) {
-    const std::optional<MeshFormat> format = recognise_mesh_file(path);
-    if (!format) {
-        require_input_file(path, "mesh");
-        std::string ext = std::filesystem::path(path).extension().string();
+// The loader the file's format calls for.
+Mesh load_by_format(const MeshFile& file, const AssetContext& context) {
+    if (file.format == MeshFormat::obj) return load_obj(file, context);
+    if (file.format == MeshFormat::gltf || file.format == MeshFormat::glb)
+        return load_gltf(file, context);
+    return load_assimp(file, context);
+}
+
+}  // namespace
+
+MeshFile read_mesh_file(const std::string& path, const AssetContext& context) {
+    MeshFile file{path, read_input_file(path, "mesh", context.paths.max_file_bytes)};
+    const std::optional<MeshFormat> format = mesh_format_of_bytes(file.bytes, file.bytes.size());
+    const std::optional<MeshFormat> named = mesh_format_of_name(path);
+    if (!format && !named) {
+        const std::string ext = std::filesystem::path(path).extension().string();
         throw Error(ExitCode::invalid_input,
                     path + ": not a mesh format facet reads (" +
                         (ext.empty() ? std::string("no extension") : "'" + ext + "'") +
                         ", and its content is none of " + mesh_formats_read() + ")");
     }
-    if (*format == MeshFormat::obj) return load_obj(path, context);
-    if (*format == MeshFormat::gltf || *format == MeshFormat::glb) return load_gltf(path, context);
-    return load_assimp(path, context);
+    file.format = format ? *format : *named;
+    return file;
 }
 
-}  // namespace
-
-Mesh load_mesh(const std::string& path, const AssetContext& context) {
-    Mesh mesh = load_by_format(path, context);
+Mesh load_mesh(const MeshFile& file, const AssetContext& context) {
+    Mesh mesh = load_by_format(file, context);
     // Once the file's materials are known, whichever format gave them.
     add_normal_map_tangents(mesh, mesh.materials, mesh.warnings);
     return mesh;
+}
+
+Mesh load_mesh(const std::string& path, const AssetContext& context) {
+    return load_mesh(read_mesh_file(path, context), context);
 }
 
 }  // namespace facet

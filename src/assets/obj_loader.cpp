@@ -75,29 +75,26 @@ void start_threads(size_t bytes, const AssetContext& context, std::optional<Thre
     if (bytes >= kParallelBytes && context.threads != 1) threads.emplace(context.threads);
 }
 
-// The file's geometry. UTF-8 text is parsed from the file a chunk at a
-// time, never copied whole. Some exporters write UTF-16 with a byte order
-// mark (assimp's box_UTF16BE.obj), which would otherwise read as an empty
-// model: that is converted whole first.
-ObjGeometry parse_file(const std::string& path, const AssetContext& context,
+// The file's geometry. Some exporters write UTF-16 with a byte order mark
+// (assimp's box_UTF16BE.obj), which would otherwise read as an empty
+// model: that is converted first.
+ObjGeometry parse_file(const MeshFile& file, const AssetContext& context,
                        std::optional<ThreadPool>& threads) {
-    const InputFileReader file(path, "OBJ");
-    unsigned char mark[3] = {0, 0, 0};
-    const size_t size = static_cast<size_t>(file.size());
-    file.read_at(0, reinterpret_cast<char*>(mark), std::min<size_t>(size, 3));
-    const bool be = size >= 2 && mark[0] == 0xFE && mark[1] == 0xFF;
-    const bool le = size >= 2 && mark[0] == 0xFF && mark[1] == 0xFE;
+    const std::vector<uint8_t>& bytes = file.bytes;
+    const size_t size = bytes.size();
+    const bool be = size >= 2 && bytes[0] == 0xFE && bytes[1] == 0xFF;
+    const bool le = size >= 2 && bytes[0] == 0xFF && bytes[1] == 0xFE;
     if (be || le) {
-        std::vector<uint8_t> bytes(size);
-        file.read_at(0, reinterpret_cast<char*>(bytes.data()), size);
         const std::string text = utf16_to_utf8(bytes, be);
         start_threads(text.size(), context, threads);
-        return parse_obj_geometry(text, path, threads ? &*threads : nullptr);
+        return parse_obj_geometry(text, file.path, threads ? &*threads : nullptr);
     }
-    const bool utf8_mark = size >= 3 && mark[0] == 0xEF && mark[1] == 0xBB && mark[2] == 0xBF;
+    const bool utf8_mark = size >= 3 && bytes[0] == 0xEF && bytes[1] == 0xBB && bytes[2] == 0xBF;
     const size_t offset = utf8_mark ? 3 : 0;
     start_threads(size - offset, context, threads);
-    return parse_obj_geometry(file, offset, threads ? &*threads : nullptr);
+    const std::string_view text(reinterpret_cast<const char*>(bytes.data()) + offset,
+                                size - offset);
+    return parse_obj_geometry(text, file.path, threads ? &*threads : nullptr);
 }
 
 // Where the material changes: from the face `first_face` on, faces have
@@ -282,8 +279,15 @@ MeshPart build_part(const ObjGeometry& geometry, uint32_t material,
 }  // namespace
 
 Mesh load_obj(const std::string& path, const AssetContext& context) {
+    return load_obj(
+        MeshFile{path, read_input_file(path, "OBJ", context.paths.max_file_bytes), MeshFormat::obj},
+        context);
+}
+
+Mesh load_obj(const MeshFile& file, const AssetContext& context) {
+    const std::string& path = file.path;
     std::optional<ThreadPool> threads;
-    ObjGeometry geometry = parse_file(path, context, threads);
+    ObjGeometry geometry = parse_file(file, context, threads);
     ThreadPool* const pool = threads ? &*threads : nullptr;
     Mesh mesh;
     mesh.source = path;

@@ -86,70 +86,14 @@ std::string clean_lines(std::string_view text) {
     return out;
 }
 
-// Room for text read from a file, not zeroed first: it is read over at
-// once, and zeroing a megabyte per chunk and pass cost a tenth of the read.
-class ChunkBuffer {
-  public:
-    char* room(size_t size) {
-        if (size > capacity_) {
-            data_ = std::make_unique_for_overwrite<char[]>(size);
-            capacity_ = size;
-        }
-        return data_.get();
-    }
-
-  private:
-    std::unique_ptr<char[]> data_;
-    size_t capacity_ = 0;
-};
-
-// The text to parse: in memory, or a file from `offset` on, read a chunk
-// at a time into small buffers that are reused, so that a big file is
-// never copied whole (InputFileReader).
-class TextSource {
-  public:
-    explicit TextSource(std::string_view text) : text_(text), size_(text.size()) {}
-    TextSource(const InputFileReader& file, size_t offset)
-        : file_(&file), offset_(offset), size_(static_cast<size_t>(file.size()) - offset) {}
-
-    size_t size() const { return size_; }
-
-    // The text [begin, end), read into `buffer` from a file.
-    std::string_view view(size_t begin, size_t end, ChunkBuffer& buffer) const {
-        if (!file_) return text_.substr(begin, end - begin);
-        char* bytes = buffer.room(end - begin);
-        file_->read_at(offset_ + begin, bytes, end - begin);
-        return std::string_view(bytes, end - begin);
-    }
-
-    // Where the first LF at or after `from` is; npos when there is none.
-    size_t find_lf(size_t from) const {
-        if (!file_) return text_.find('\n', from);
-        constexpr size_t kWindow = 4096;
-        ChunkBuffer buffer;
-        for (size_t begin = from; begin < size_; begin += kWindow) {
-            const std::string_view window = view(begin, std::min(size_, begin + kWindow), buffer);
-            const size_t lf = window.find('\n');
-            if (lf != std::string_view::npos) return begin + lf;
-        }
-        return std::string_view::npos;
-    }
-
-  private:
-    std::string_view text_;
-    const InputFileReader* file_ = nullptr;
-    size_t offset_ = 0;
-    size_t size_ = 0;
-};
-
 // [begin, end) of each chunk: about kChunkBytes each, cut after a LF.
-std::vector<std::pair<size_t, size_t>> cut_chunks(const TextSource& text) {
+std::vector<std::pair<size_t, size_t>> cut_chunks(std::string_view text) {
     std::vector<std::pair<size_t, size_t>> chunks;
     size_t begin = 0;
     while (begin < text.size()) {
         size_t end = std::min(text.size(), begin + kChunkBytes);
         if (end < text.size()) {
-            const size_t lf = text.find_lf(end - 1);
+            const size_t lf = text.find('\n', end - 1);
             end = lf == std::string_view::npos ? text.size() : lf + 1;
         }
         chunks.emplace_back(begin, end);
@@ -689,31 +633,24 @@ void join_chunks(std::vector<ChunkParser>& parsers, const std::string& path, Obj
 
 // Parses the text; text with lone CRs or NULs is cleaned first
 // (clean_lines), which the first pass finds.
-ObjGeometry parse_text(const TextSource& text, const std::string& path, ThreadPool* pool) {
+ObjGeometry parse_text(std::string_view text, const std::string& path, ThreadPool* pool) {
     const std::vector<std::pair<size_t, size_t>> chunks = cut_chunks(text);
-    auto chunk_text = [&](size_t i, ChunkBuffer& buffer) {
-        return text.view(chunks[i].first, chunks[i].second, buffer);
+    auto chunk_text = [&](size_t i) {
+        return text.substr(chunks[i].first, chunks[i].second - chunks[i].first);
     };
     std::vector<ChunkCounts> counts(chunks.size());
-    run_each(pool, chunks.size(), [&](size_t i) {
-        ChunkBuffer buffer;
-        counts[i] = count_chunk(chunk_text(i, buffer));
-    });
+    run_each(pool, chunks.size(), [&](size_t i) { counts[i] = count_chunk(chunk_text(i)); });
     for (const ChunkCounts& c : counts) {
         if (!c.needs_cleanup) continue;
-        ChunkBuffer buffer;
-        const std::string cleaned = clean_lines(text.view(0, text.size(), buffer));
-        return parse_text(TextSource(cleaned), path, pool);
+        const std::string cleaned = clean_lines(text);
+        return parse_text(cleaned, path, pool);
     }
     ObjGeometry file;
     const std::vector<ChunkPlace> places = place_chunks(counts, path, file);
     std::vector<ChunkParser> parsers;
     parsers.reserve(chunks.size());
     for (size_t i = 0; i < chunks.size(); ++i) parsers.emplace_back(path, places[i], file);
-    run_each(pool, chunks.size(), [&](size_t i) {
-        ChunkBuffer buffer;
-        parsers[i].parse(chunk_text(i, buffer));
-    });
+    run_each(pool, chunks.size(), [&](size_t i) { parsers[i].parse(chunk_text(i)); });
     join_chunks(parsers, path, file);
     return file;
 }
@@ -727,11 +664,7 @@ size_t ObjGeometry::face_count() const {
 }
 
 ObjGeometry parse_obj_geometry(std::string_view text, const std::string& path, ThreadPool* pool) {
-    return parse_text(TextSource(text), path, pool);
-}
-
-ObjGeometry parse_obj_geometry(const InputFileReader& file, size_t offset, ThreadPool* pool) {
-    return parse_text(TextSource(file, offset), file.path(), pool);
+    return parse_text(text, path, pool);
 }
 
 }  // namespace facet

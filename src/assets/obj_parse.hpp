@@ -20,7 +20,6 @@
 
 namespace facet {
 
-class InputFileReader;
 class ThreadPool;
 
 // One corner of a face: zero-based indices into the file's positions,
@@ -73,12 +72,6 @@ struct ObjGeometry {
 // or CR) from the file `path` (named in messages). With a pool, the chunks
 // are parsed on its threads; the result is the same without one.
 ObjGeometry parse_obj_geometry(std::string_view text, const std::string& path,
-                               ThreadPool* pool = nullptr);
-
-// The same for the text of `file` from byte `offset` on (after a byte
-// order mark), read a chunk at a time and never copied whole. Throws
-// facet::Error (io_failure) when the file changes while it is read.
-ObjGeometry parse_obj_geometry(const InputFileReader& file, size_t offset,
                                ThreadPool* pool = nullptr);
 
 }  // namespace facet

@@ -154,6 +154,9 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
         request.report_dir =
             args.report_dir.empty() ? default_report_dir(args.candidate) : args.report_dir;
     request.on_file = [&](const FileResult& r) {
+        // A file that cannot be read is an error, which -q still prints.
+        if (args.quiet && r.status == FileStatus::unreadable)
+            std::fprintf(stderr, "facet: error: %s: %s\n", r.key.label().c_str(), r.reason.c_str());
         if (args.quiet || r.outcome == Outcome::pass) return;
         std::printf("%-5s %s: %s\n", line_tag(r), r.key.label().c_str(), r.reason.c_str());
     };

@@ -45,11 +45,21 @@ std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& fol
         return f.pass == "color" && f.camera == camera && f.format == "png";
     });
     std::vector<ManifestFile> files;
+    std::set<int> frames;  // that have a colour file of the camera in either format
     for (const ManifestFile& f : m.files)
-        if (f.pass == "color" && f.camera == camera && f.format == (has_png ? "png" : "exr")) {
-            manifest_file_path(folder, f.path);  // throws when it leaves the folder
-            files.push_back(f);
+        if (f.pass == "color" && f.camera == camera) {
+            frames.insert(f.frame);
+            if (f.format == (has_png ? "png" : "exr")) files.push_back(f);
         }
+    // Every frame in the movie, none skipped: a frame with only the other
+    // format is a manifest no run writes.
+    for (int frame : frames)
+        if (std::none_of(files.begin(), files.end(),
+                         [&](const ManifestFile& f) { return f.frame == frame; }))
+            throw Error(ExitCode::invalid_input,
+                        folder + "/manifest.json: frame " + std::to_string(frame) + " of camera '" +
+                            camera + "' has no colour " + (has_png ? "PNG" : "EXR") +
+                            ", which its other frames have: the movie would skip it");
     std::sort(files.begin(), files.end(),
               [](const ManifestFile& a, const ManifestFile& b) { return a.frame < b.frame; });
     return files;

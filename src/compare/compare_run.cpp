@@ -223,6 +223,14 @@ class SequenceRun {
     void judge(const FilePair& pair, const Decoded& d, FileResult& r) {
         const std::vector<uint8_t> mask =
             masks_.build(pair.key.camera, pair.kind, d.ref.width, d.ref.height);
+        // Masks that leave out every pixel compare nothing: that is no pass.
+        if (!mask.empty() &&
+            std::all_of(mask.begin(), mask.end(), [](uint8_t m) { return m == 0; })) {
+            fail(r, FileStatus::compared,
+                 "the masks leave out every pixel of the image, so nothing was compared; "
+                 "narrow them");
+            return;
+        }
         JudgeInputs in;
         in.kind = pair.kind;
         in.tolerance = tolerance_for(request_.thresholds, pair.key.camera, pair.kind);

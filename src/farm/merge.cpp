@@ -92,15 +92,13 @@ std::vector<NamedManifest> read_parts(const std::string& folder, MergeReport& re
     std::vector<NamedManifest> parts;
     for (const std::string& name : names) {
         report.parts.push_back(name);
-        try {
-            Manifest m = read_manifest((fs::path(folder) / name).string());
-            if (!m.job || !m.part)
-                report.problems.push_back(name + ": a partial manifest without its job and part");
-            else
-                parts.push_back({name, std::move(m)});
-        } catch (const Error& e) {
-            report.problems.push_back(e.what());
-        }
+        // A manifest that is not facet's, or not valid, is an error (exit 2),
+        // as in every reader, not a missing piece of the job.
+        Manifest m = read_manifest((fs::path(folder) / name).string());
+        if (!m.job || !m.part)
+            report.problems.push_back(name + ": a partial manifest without its job and part");
+        else
+            parts.push_back({name, std::move(m)});
     }
     return parts;
 }

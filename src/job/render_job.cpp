@@ -79,11 +79,7 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
         m.scene_sha256 = scene.built->text_sha256;
         m.model = ManifestModel{m.scene, scene.built->model_sha256, scene.built->options};
     } else {
-        try {
-            m.scene_sha256 = sha256_hex(read_input_file(scene.path, "scene"));
-        } catch (const Error&) {
-            // The scene was read moments ago; a scene that vanished has no hash.
-        }
+        m.scene_sha256 = scene.sha256;  // of the bytes that were read, not read again
     }
     m.style = scene.style.name;
     m.width = scene.output.width;

@@ -39,18 +39,27 @@ std::string folder_of(const std::string& path) {
     return folder.empty() ? std::string(".") : folder;
 }
 
-// Makes renames into the folder durable: its entries are on disk too. A
-// folder that cannot be opened or synced (some file systems refuse) is
-// left as it is; a failing disk is an I/O failure.
-void sync_folder(const std::string& folder) {
-    const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
-    if (fd < 0) return;
-    const bool failed = ::fsync(fd) != 0 && errno == EIO;
-    ::close(fd);
-    if (failed) fail_io(folder, "cannot sync folder: " + std::string(std::strerror(EIO)));
+int open_file(const char* path, int flags, mode_t mode) {
+    return ::open(path, flags, mode);
 }
 
 }  // namespace
+
+const FileCalls& system_file_calls() {
+    static const FileCalls calls{open_file, ::write, ::fsync, ::close, ::rename, ::unlink};
+    return calls;
+}
+
+// Makes renames into the folder durable: its entries are on disk too. A
+// folder that cannot be opened or synced (some file systems refuse) is
+// left as it is; a failing disk is an I/O failure.
+void AtomicFileSet::sync_folder(const std::string& folder) const {
+    const int fd = calls_.open(folder.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC, 0);
+    if (fd < 0) return;
+    const bool failed = calls_.fsync(fd) != 0 && errno == EIO;
+    calls_.close(fd);
+    if (failed) fail_io(folder, "cannot sync folder: " + std::string(std::strerror(EIO)));
+}
 
 std::string host_name() {
     char name[256] = {};
@@ -73,32 +82,34 @@ AtomicFileSet::~AtomicFileSet() {
 
 void AtomicFileSet::discard() {
     for (const Pending& p : pending_) {
-        if (p.fd >= 0) ::close(p.fd);
-        ::unlink(p.temp.c_str());
+        if (p.fd >= 0) calls_.close(p.fd);
+        calls_.unlink(p.temp.c_str());
     }
     pending_.clear();
 }
 
 void AtomicFileSet::write(const std::string& path, const std::vector<uint8_t>& bytes) {
-    // A path written again replaces its earlier bytes: same temporary.
+    // A path written again replaces its earlier bytes: its temporary goes
+    // first, so that a failure below leaves nothing of it behind.
     const auto again = std::find_if(pending_.begin(), pending_.end(),
                                     [&](const Pending& p) { return p.path == path; });
     if (again != pending_.end()) {
-        ::close(again->fd);
+        calls_.close(again->fd);
+        calls_.unlink(again->temp.c_str());
         pending_.erase(again);
     }
     pending_.reserve(pending_.size() + 1);  // no allocation failure once the file is open
     const std::string temp = temp_name(path);
-    const int fd = ::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
+    const int fd = calls_.open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644);
     if (fd < 0) fail_io(path, std::string("cannot create file: ") + std::strerror(errno));
     size_t written = 0;
     while (written < bytes.size()) {
-        ssize_t n = ::write(fd, bytes.data() + written, bytes.size() - written);
+        ssize_t n = calls_.write(fd, bytes.data() + written, bytes.size() - written);
         if (n < 0 && errno == EINTR) continue;
         if (n <= 0) {
             const int err = n < 0 ? errno : EIO;
-            ::close(fd);
-            ::unlink(temp.c_str());
+            calls_.close(fd);
+            calls_.unlink(temp.c_str());
             fail_io(path, std::string("write failed: ") + std::strerror(err));
         }
         written += static_cast<size_t>(n);
@@ -115,9 +126,9 @@ void AtomicFileSet::publish() {
     // The bytes reach the disk before the names do: after a power loss a
     // path holds the old file or the whole new one, never an empty one.
     for (Pending& p : pending_) {
-        const bool synced = ::fsync(p.fd) == 0;
+        const bool synced = calls_.fsync(p.fd) == 0;
         const int sync_error = errno;
-        const bool closed = ::close(p.fd) == 0;
+        const bool closed = calls_.close(p.fd) == 0;
         const int close_error = errno;
         p.fd = -1;
         if (synced && closed) continue;
@@ -135,9 +146,9 @@ void AtomicFileSet::publish() {
     while (!pending_.empty()) {
         const Pending p = pending_.front();
         pending_.erase(pending_.begin());
-        if (::rename(p.temp.c_str(), p.path.c_str()) != 0) {
+        if (calls_.rename(p.temp.c_str(), p.path.c_str()) != 0) {
             const int err = errno;
-            ::unlink(p.temp.c_str());
+            calls_.unlink(p.temp.c_str());
             discard();
             sync_folders();  // what was published stays, durably
             fail_io(p.path, std::string("cannot replace file: ") + std::strerror(err));

@@ -1,4 +1,6 @@
 #pragma once
+#include <sys/types.h>
+
 #include <cstddef>
 #include <cstdint>
 #include <string>
@@ -25,9 +27,23 @@ void write_file_atomically(const std::string& path, const std::string& text);
 // files' syncs after their writeback has begun: docs/performance.md).
 // Each pending file holds an open descriptor until publish(). Temporaries
 // not published are removed when the set goes.
+// The system calls a set makes, in one record so that a test can make any
+// of them fail (a full disk, EIO on a sync, a rename refused) and check
+// that the set publishes all of its files or none. system_file_calls()
+// are the real ones.
+struct FileCalls {
+    int (*open)(const char* path, int flags, mode_t mode);
+    ssize_t (*write)(int fd, const void* bytes, size_t count);
+    int (*fsync)(int fd);
+    int (*close)(int fd);
+    int (*rename)(const char* from, const char* to);
+    int (*unlink)(const char* path);
+};
+const FileCalls& system_file_calls();
+
 class AtomicFileSet {
   public:
-    AtomicFileSet() = default;
+    explicit AtomicFileSet(const FileCalls& calls = system_file_calls()) : calls_(calls) {}
     AtomicFileSet(const AtomicFileSet&) = delete;
     AtomicFileSet& operator=(const AtomicFileSet&) = delete;
     ~AtomicFileSet();
@@ -44,11 +60,13 @@ class AtomicFileSet {
 
   private:
     void discard();  // closes and removes every temporary not yet published
+    void sync_folder(const std::string& folder) const;
 
     struct Pending {
         std::string path, temp;
         int fd;
     };
+    const FileCalls& calls_;
     std::vector<Pending> pending_;
     std::vector<std::string> published_;
 };

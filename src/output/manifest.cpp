@@ -15,8 +15,10 @@
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
 #include "core/input_file.hpp"
+#include "core/plain_text.hpp"
 #include "core/sha256.hpp"
 #include "output/atomic_file.hpp"
+#include "output/passes.hpp"
 
 namespace facet {
 namespace {
@@ -51,6 +53,45 @@ template <typename Int>
 Int whole_or(const nlohmann::json& object, const char* key, Int fallback) {
     const auto it = object.find(key);
     return it == object.end() ? fallback : whole<Int>(*it, key);
+}
+
+// A manifest's values are checked as they are read, for every reader
+// (render's resume, compare, merge, video): a value no facet writes is an
+// error naming it, exit 2.
+[[noreturn]] void invalid(const std::string& what) {
+    throw nlohmann::json::other_error::create(501, what, nullptr);
+}
+
+// The checks of one listed file: what facet writes, and a path that stays
+// in the manifest's folder.
+void check_listed_file(const ManifestFile& f) {
+    if (f.pass != "multilayer" && !pass_from_name(f.pass))
+        invalid("pass '" + text_for_message(f.pass) + "' is not one facet writes");
+    if (f.format != "png" && f.format != "exr")
+        invalid("format '" + text_for_message(f.format) + "' is not png or exr");
+    const std::filesystem::path path = std::filesystem::path(f.path).lexically_normal();
+    if (path.empty() || path.is_absolute() || *path.begin() == ".." ||
+        line_breaking_character(f.path))
+        invalid("path '" + text_for_message(f.path) + "' leaves the manifest's folder");
+}
+
+// The whole manifest: a size facet can render, a frame rate, and no file
+// or image listed twice.
+void check_manifest(const Manifest& m) {
+    if (m.width < 1 || m.height < 1 || m.width > 16384 || m.height > 16384)
+        invalid("size [" + std::to_string(m.width) + ", " + std::to_string(m.height) +
+                "] is not 1 to 16384 pixels a side");
+    if (!(m.fps > 0 && m.fps <= 1000))
+        invalid("fps " + std::to_string(m.fps) + " is not above 0 and at most 1000");
+    std::set<std::string> paths;
+    std::set<std::tuple<int, std::string, std::string, std::string>> images;
+    for (const ManifestFile& f : m.files) {
+        if (!paths.insert(std::filesystem::path(f.path).lexically_normal().string()).second)
+            invalid("file '" + text_for_message(f.path) + "' is listed twice");
+        if (!images.insert({f.frame, f.camera, f.pass, f.format}).second)
+            invalid("frame " + std::to_string(f.frame) + " of camera '" +
+                    text_for_message(f.camera) + "' has two " + f.pass + " " + f.format + " files");
+    }
 }
 
 void read_timings(const nlohmann::json& t, Manifest& m) {
@@ -194,6 +235,12 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
             m.facet_commit = j["facet"].value("commit", "");
             m.facet_build = j["facet"].value("build", "");
         }
+        entry = "manifest_version";
+        if (const int version = whole_or(j, "manifest_version", 1);
+            version < 1 || version > kManifestVersion)
+            invalid("version " + std::to_string(version) + " is not one this facet reads (1 to " +
+                    std::to_string(kManifestVersion) + "): written by a newer facet?");
+        entry = "";
         m.scene = j.at("scene").get<std::string>();
         m.style = j.at("style").get<std::string>();
         m.width = whole<int>(j.at("size").at(0), "size");
@@ -224,6 +271,7 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
                                f.at("pass").get<std::string>(), f.at("format").get<std::string>(),
                                f.at("path").get<std::string>(), f.at("sha256").get<std::string>(),
                                f.value("style", m.style)});
+            check_listed_file(m.files.back());
         }
         entry = "ids";
         for (const char* pass : {"object_id", "material_id"})
@@ -237,6 +285,8 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         read_job(j, m);
         entry = "timings";
         if (j.contains("timings")) read_timings(j["timings"], m);
+        entry = "";
+        check_manifest(m);
         return m;
     } catch (const nlohmann::json::exception& e) {
         throw Error(ExitCode::invalid_input,
@@ -248,7 +298,7 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
 std::string manifest_file_path(const std::string& folder, const std::string& relative) {
     const std::filesystem::path path = std::filesystem::path(relative).lexically_normal();
     if (path.empty() || path.is_absolute() || *path.begin() == "..")
-        throw Error(ExitCode::io_failure,
+        throw Error(ExitCode::invalid_input,
                     (std::filesystem::path(folder) / "manifest.json").string() + ": file path '" +
                         relative + "' leaves the manifest's folder");
     return (std::filesystem::path(folder) / path).string();

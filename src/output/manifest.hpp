@@ -118,6 +118,13 @@ std::string manifest_settings_difference(const Manifest& existing, const Manifes
 // to overwrite).
 void write_manifest(const std::string& path, Manifest manifest, bool merge = true);
 
+// Reads and checks a manifest: every reader (render resuming a run,
+// compare, merge, video) goes through it, so all refuse the same manifests
+// with exit 2 naming the value: one that is not facet's (not JSON, or
+// without its keys), a version newer than this facet reads, a size outside
+// 1 to 16384, an fps outside (0, 1000], a pass or format facet does not
+// write, a path that leaves the folder, and a file or an image listed
+// twice.
 Manifest read_manifest(const std::string& path);
 
 // The manifest as JSON text, frames and files sorted: indented (the file),
@@ -128,7 +135,8 @@ Manifest parse_manifest(const std::string& text, const std::string& where);
 
 // The file a manifest in `folder` lists as `relative`. A manifest may have
 // been edited by hand: a path that leaves the folder (absolute, or through
-// "..") throws Error(io_failure), so no reader touches files elsewhere.
+// "..") throws Error(invalid_input), so no reader touches files elsewhere.
+// (read_manifest refuses such a manifest already.)
 std::string manifest_file_path(const std::string& folder, const std::string& relative);
 
 // Whether the file a manifest in `folder` lists is on disk with the SHA-256

@@ -17,8 +17,9 @@ struct FolderManifest {
     Manifest manifest;
 };
 
-// manifest.json and the partial manifests in the folder that can be read;
-// an unreadable one is no claim (it is replaced when written).
+// manifest.json and the partial manifests in the folder. One that is not
+// facet's, or that facet cannot read, is someone's file that a render
+// would replace: an error (exit 2), whatever --overwrite says.
 std::vector<FolderManifest> folder_manifests(const std::string& folder) {
     std::vector<FolderManifest> found;
     std::error_code ec;
@@ -27,7 +28,11 @@ std::vector<FolderManifest> folder_manifests(const std::string& folder) {
         if (name != "manifest.json" && !is_partial_manifest_name(name)) continue;
         try {
             found.push_back({name, read_manifest(entry.path().string())});
-        } catch (const Error&) {
+        } catch (const Error& e) {
+            throw Error(ExitCode::invalid_input,
+                        std::string(e.what()) +
+                            "; facet does not replace a file it cannot read as its own "
+                            "manifest: move it away, or give another -o");
         }
     }
     std::sort(found.begin(), found.end(),

@@ -307,6 +307,7 @@ struct BuiltScene {
 
 struct SceneDesc {
     std::string path;       // the scene file as given (a built scene: the model's)
+    std::string sha256;     // of the text that was read: the manifest's scene_sha256
     std::string name;       // its stem, used in output paths
     std::string directory;  // where relative paths resolve
     OutputDesc output;

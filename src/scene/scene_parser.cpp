@@ -574,14 +574,11 @@ ObjectDesc parse_object(const Field& f, size_t index, const std::string& base_di
     if (int(f.has("mesh")) + int(f.has("primitive")) + int(f.has("cloth")) != 1)
         f.fail("an object needs exactly one of 'mesh' (a file), 'primitive' or 'cloth'");
     if (f.has("mesh")) {
+        // The file is read once, by the world: its format (by its bytes,
+        // else its name) and its content are checked there, and an error
+        // names this key (render/world.cpp).
         obj.mesh = existing_file(f["mesh"], base_dir);
         obj.mesh_at = f["mesh"].where();
-        // Known by its bytes or by its name (assets/mesh_format.hpp).
-        if (!recognise_mesh_file(obj.mesh)) {
-            const std::string ext = fs::path(obj.mesh).extension().string();
-            f["mesh"].fail("unsupported mesh format '" + ext + "': its content is none of " +
-                           mesh_formats_read() + " either");
-        }
     } else if (f.has("primitive")) {
         obj.primitive = parse_primitive(f["primitive"]);
     } else {
@@ -679,6 +676,7 @@ SceneDesc scene_from_document(const std::shared_ptr<YamlDocument>& doc, const st
     check_scene_root(root, path);
 
     SceneDesc scene;
+    scene.sha256 = doc->sha256;
     scene.path = path;
     scene.name = fs::path(path).stem().string();
     scene.directory = fs::path(path).parent_path().string();
@@ -759,7 +757,9 @@ SceneDesc scene_from_document(const std::shared_ptr<YamlDocument>& doc, const st
 
 SceneInputKind scene_input_kind(const std::string& path) {
     if (has_yaml_name(path)) return SceneInputKind::scene;
-    if (!input_file_problem(path).empty())
+    // A mesh's name says so without a read; the bytes of a file without
+    // one are looked at (the loader reads the file once, later).
+    if (mesh_format_of_name(path) || !input_file_problem(path).empty())
         return mesh_format_of_name(path) ? SceneInputKind::mesh : SceneInputKind::scene;
     if (recognise_mesh_file(path)) return SceneInputKind::mesh;
     // A YAML scene is text: a NUL byte at its start says it is not one.

@@ -5,6 +5,7 @@
 #include <functional>
 #include <numeric>
 
+#include "core/number_text.hpp"
 #include "scene/yaml_field.hpp"
 
 namespace facet {
@@ -36,13 +37,12 @@ TrackExtrapolation parse_extrapolation(const Field& f) {
 
 double parse_key_time(const Field& key, bool seconds) {
     const std::string text = key.text();
-    char* end = nullptr;
-    double t = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(t) ||
-        std::abs(t) > kMaxKeyTime)
+    // Read as every number facet is given (core/number_text.hpp).
+    const std::optional<double> t = read_finite_number(text);
+    if (!t || std::abs(*t) > kMaxKeyTime)
         key.fail(std::string("a key must be ") +
                  (seconds ? "a time in seconds" : "a frame number") + ", got '" + text + "'");
-    return t;
+    return *t;
 }
 
 std::shared_ptr<const Track> parse_track(const Field& f, int components, const ValueReader& read,

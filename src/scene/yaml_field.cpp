@@ -12,7 +12,9 @@
 #include "core/color.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 #include "core/plain_text.hpp"
+#include "core/sha256.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -34,11 +36,11 @@ bool parse_hex_color(const std::string& text, glm::vec4& out) {
     if (text[0] != '#') return false;
     float channels[4] = {0, 0, 0, 1};
     for (size_t i = 1, c = 0; i < text.size(); i += 2, ++c) {
-        char* end = nullptr;
-        std::string byte = text.substr(i, 2);
-        long value = std::strtol(byte.c_str(), &end, 16);
-        if (end != byte.c_str() + 2) return false;
-        channels[c] = static_cast<float>(value) / 255.0f;
+        const std::string byte = text.substr(i, 2);
+        if (!std::isxdigit(static_cast<unsigned char>(byte[0])) ||
+            !std::isxdigit(static_cast<unsigned char>(byte[1])))
+            return false;
+        channels[c] = static_cast<float>(std::stoi(byte, nullptr, 16)) / 255.0f;
     }
     // Colour pickers give sRGB; shading is linear (docs/scene-format.md). Alpha is linear.
     out = {srgb_to_linear(channels[0]), srgb_to_linear(channels[1]), srgb_to_linear(channels[2]),
@@ -49,6 +51,7 @@ bool parse_hex_color(const std::string& text, glm::vec4& out) {
 std::shared_ptr<YamlDocument> parse(const std::string& text, const std::string& name) {
     auto doc = std::make_shared<YamlDocument>();
     doc->file = name;
+    doc->sha256 = sha256_hex(text.data(), text.size());
     try {
         doc->root = YAML::Load(text);
     } catch (const YAML::DeepRecursion& e) {
@@ -206,10 +209,12 @@ std::string Field::text() const {
 double Field::number(double min, double max) const {
     if (!node_.IsScalar()) fail("must be a number, got " + scalar_for_message());
     const std::string& s = node_.Scalar();
-    char* end = nullptr;
-    double value = std::strtod(s.c_str(), &end);
-    if (s.empty() || end != s.c_str() + s.size() || !std::isfinite(value))
-        fail("must be a number, got '" + s + "'");
+    // Read as the command line reads numbers (core/number_text.hpp): the
+    // whole text, decimal, finite; no hexadecimal, no '+', no spaces.
+    const std::optional<double> read = read_finite_number(s);
+    if (!read)
+        fail("must be a number (decimal, as 2.5 or 1e-3), got '" + text_for_message(s) + "'");
+    const double value = *read;
     if (value < min || value > max) {
         std::ostringstream range;
         range << "must be between " << min << " and " << max << ", got " << s;
@@ -312,10 +317,10 @@ namespace {
 // value of the items' `name` key ("knot"), so paths survive reordering.
 long list_item_index(const YAML::Node& list, const std::string& part, const SourceLocation& origin,
                      const std::string& parent, const std::string& walked) {
-    char* end = nullptr;
-    const long index = std::strtol(part.c_str(), &end, 10);
-    const bool numeric = !part.empty() && end == part.c_str() + part.size();
-    if (numeric && index >= 0 && static_cast<size_t>(index) < list.size()) return index;
+    const std::optional<long long> index = read_whole_number(part);
+    const bool numeric = index.has_value();
+    if (numeric && *index >= 0 && static_cast<unsigned long long>(*index) < list.size())
+        return static_cast<long>(*index);
     std::vector<std::string> names;
     for (size_t i = 0; i < list.size(); ++i) {
         const YAML::Node item = list[i];

@@ -21,6 +21,7 @@ namespace facet {
 
 struct YamlDocument {
     std::string file;
+    std::string sha256;  // of exactly the text that was parsed
     YAML::Node root;
     // Key paths whose values came from the command line, with how the user wrote them.
     std::map<std::string, std::string> overridden;

@@ -8,6 +8,7 @@
 
 #include "assets/gltf_pose.hpp"
 #include "core/error.hpp"
+#include "core/sha256.hpp"
 
 namespace facet {
 namespace {
@@ -101,13 +102,17 @@ double ModelSurvey::size() const {
 }
 
 ModelSurvey survey_model(const SurveyRequest& request) {
-    auto read = std::make_shared<const Mesh>(load_mesh(request.path, request.assets));
+    // Read once: the bytes drawn are the bytes hashed, and the format is
+    // told once.
+    const MeshFile file = read_mesh_file(request.path, request.assets);
+    auto read = std::make_shared<const Mesh>(load_mesh(file, request.assets));
     const Mesh& mesh = *read;
     check_drawable(mesh, request.path);
     ModelSurvey survey;
     survey.mesh = read;
     survey.path = request.path;
-    survey.format = recognise_mesh_file(request.path).value_or(MeshFormat::obj);
+    survey.format = file.format;
+    survey.sha256 = sha256_hex(file.bytes);
     survey.triangles = mesh.triangle_count();
     survey.animations = animation_count(mesh);
     for (int a = 0; a < survey.animations; ++a)

@@ -27,6 +27,7 @@ struct SurveyRequest {
 struct ModelSurvey {
     std::string path;
     MeshFormat format = MeshFormat::obj;
+    std::string sha256;  // of exactly the bytes that were read and drawn
     size_t triangles = 0;
     int animations = 0;            // the file's (glTF), all of which play
     double animation_seconds = 0;  // the longest of them

@@ -84,9 +84,9 @@ Turntable load_turntable(const TurntableRequest& request) {
     turntable.overrides = all_overrides(request, folder);
     turntable.scene = read_scene(text, text_name(request.model), request.model,
                                  request.scene_options, turntable.overrides);
-    turntable.scene.built = BuiltScene{sha256_hex(text.data(), text.size()),
-                                       sha256_hex(read_input_file(request.model, "mesh")),
-                                       turntable_option_record(request.options, turntable.survey)};
+    turntable.scene.built =
+        BuiltScene{sha256_hex(text.data(), text.size()), turntable.survey.sha256,
+                   turntable_option_record(request.options, turntable.survey)};
     turntable.meshes = surveyed_meshes(request, turntable.scene, turntable.survey);
     return turntable;
 }
