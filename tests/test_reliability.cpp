@@ -182,6 +182,8 @@ TEST_CASE("the texture budget bounds peak memory, the decoder's buffers included
     CHECK(over.exit_code == 2);
     CHECK_THAT(over.output,
                Contains("over.png (while decoding)") && Contains("over the texture budget"));
+    // The texture being decoded is not one "already loaded".
+    CHECK_THAT(over.output, !Contains("already loaded: over.png"));
 }
 
 TEST_CASE("a full disk leaves the finished images listed and no file of an unfinished one",

@@ -29,6 +29,7 @@
 #include "core/error.hpp"
 #include "core/input_file.hpp"
 #include "core/memory.hpp"
+#include "core/plain_text.hpp"
 
 namespace facet {
 namespace {
@@ -237,13 +238,13 @@ Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
     const aiScene* scene = importer.ReadFileFromMemory(file.bytes.data(), file.bytes.size(), 0,
                                                        assimp_hint(file.format));
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        bad(path, std::string("cannot read: ") + importer.GetErrorString());
+        bad(path, "cannot read: " + with_long_words_cut(importer.GetErrorString()));
     require_finite_positions(*scene, path);
     scene =
         importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType |
                                      aiProcess_FindDegenerates | aiProcess_JoinIdenticalVertices);
     if (!scene || !scene->mRootNode)
-        bad(path, std::string("cannot read: ") + importer.GetErrorString());
+        bad(path, "cannot read: " + with_long_words_cut(importer.GetErrorString()));
     Mesh mesh;
     mesh.source = path;
     mesh.loader = "assimp";

@@ -38,6 +38,7 @@
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "core/memory.hpp"
+#include "core/plain_text.hpp"
 #include "core/thread_pool.hpp"
 
 namespace facet {
@@ -180,8 +181,8 @@ ReadModel read_model(const MeshFile& file, const AssetContext& context) {
     }
     if (!ok && load.first_refusal) throw *load.first_refusal;
     if (!ok)
-        bad(path,
-            "cannot read glTF: " + (err.empty() ? std::string("unknown error") : trimmed(err)));
+        bad(path, "cannot read glTF: " + (err.empty() ? std::string("unknown error")
+                                                      : with_long_words_cut(trimmed(err))));
     // An image tinygltf could not read is reported with its material.
     std::string kept;
     std::istringstream lines(warn);
@@ -189,7 +190,7 @@ ReadModel read_model(const MeshFile& file, const AssetContext& context) {
         if (line.rfind("Failed to load external 'uri' for image", 0) != 0 &&
             line.rfind("File read error", 0) != 0)
             kept += line + "\n";
-    read.warnings = trimmed(kept);
+    read.warnings = with_long_words_cut(trimmed(kept));
     read.unread = std::move(load.unread);
     if (read.lists.lists("EXT_meshopt_compression"))
         gltf_detail::decode_meshopt_views(read.model, path);

@@ -90,7 +90,7 @@ class BudgetCharge {
 // The charge for what the decoder holds while it runs.
 [[nodiscard]] BudgetCharge while_decoding(const std::string& name, Size size, uint64_t bytes,
                                           TextureBudget* budget) {
-    return BudgetCharge(budget, name + " (while decoding)", size, bytes);
+    return BudgetCharge(budget, name + std::string(kWhileDecoding), size, bytes);
 }
 
 uint64_t pixels_of(Size size) {

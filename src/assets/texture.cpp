@@ -391,14 +391,26 @@ void TextureBudget::charge(const std::string& name, int width, int height, uint6
                describe_bytes(c.bytes) + ")";
     };
     if (bytes > limit_ || s.used > limit_ - bytes) {
-        std::vector<Charge> largest = s.charged;
+        // A texture is charged in parts (its texels as NAME, then what its
+        // decoder holds as "NAME (while decoding)"): its earlier parts count
+        // as its own, not as textures already loaded.
+        const std::string texture = name.ends_with(kWhileDecoding)
+                                        ? name.substr(0, name.size() - kWhileDecoding.size())
+                                        : name;
+        uint64_t own = bytes;
+        std::vector<Charge> largest;
+        for (const Charge& c : s.charged)
+            if (c.name == name || c.name == texture)
+                own += c.bytes;
+            else
+                largest.push_back(c);
         std::stable_sort(largest.begin(), largest.end(),
                          [](const auto& a, const auto& b) { return a.bytes > b.bytes; });
         std::string others;
         for (size_t i = 0; i < largest.size() && i < 5; ++i)
             others += (i ? ", " : "") + describe(largest[i]);
         throw Error(ExitCode::invalid_input,
-                    describe({name, width, height, bytes}) + " would bring the textures to " +
+                    describe({name, width, height, own}) + " would bring the textures to " +
                         describe_bytes(s.used + bytes) + ", over the texture budget of " +
                         describe_bytes(limit_) +
                         (others.empty() ? std::string() : "; already loaded: " + others) +

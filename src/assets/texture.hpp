@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/ext/matrix_double2x2.hpp>
@@ -46,6 +47,10 @@ struct TextureLevel {
     std::vector<uint32_t> bytes8;
     std::vector<Rgba16F> half;  // linear RGBA
 };
+
+// What a decoder holds while it runs is charged as the texture's name with
+// this after it, and given back when it is done.
+inline constexpr std::string_view kWhileDecoding = " (while decoding)";
 
 class TextureBudget;
 

@@ -36,6 +36,25 @@ CLI::Option* add_number_text(CLI::App* cmd, const std::string& name, std::string
         ->group(kGroup);
 }
 
+// A text option kept as typed, refused at once when empty: an empty value
+// is no choice, and taking it as "not given" would hide a script's
+// missing variable behind the default.
+CLI::Option* add_text(CLI::App* cmd, const std::string& name, std::string& text,
+                      const std::string& type, const std::string& description) {
+    return cmd
+        ->add_option_function<std::string>(
+            name,
+            [=, &text](const std::string& value) {
+                if (value.empty())
+                    fail_input(command_line(name + " ''"), "",
+                               "expected " + type + ", got an empty value");
+                text = value;
+            },
+            description)
+        ->type_name(type)
+        ->group(kGroup);
+}
+
 TurntableOptions turntable_options(const TurntableArgs& args) {
     TurntableOptions options;
     options.turns = args.turns;
@@ -85,27 +104,19 @@ void add_turntable_options(CLI::App* cmd, TurntableArgs& args) {
     add_number_text(cmd, "--elevation", args.elevation, kMaxElevation, "DEG",
                     "Degrees the camera looks down from (default 20); "
                     "-D camera.orbit.elevation=DEG");
-    cmd->add_option("--background", args.background,
-                    "transparent, gradient (the studio blurred, the default) or a colour "
-                    "('#rrggbb', [r,g,b]); -D output.background=... "
-                    "-D environment.background=false")
-        ->type_name("transparent|gradient|COLOR")
-        ->group(kGroup);
-    cmd->add_option("--ground", args.ground,
-                    "shadow (only the shadow and occlusion show, the default), floor (a grey "
-                    "floor) or none")
-        ->type_name("shadow|floor|none")
-        ->group(kGroup);
-    cmd->add_option("--environment", args.environment,
-                    "Light it with this .hdr or .exr (default: the built-in studio); "
-                    "-D environment.file=FILE")
-        ->type_name("FILE")
-        ->group(kGroup);
-    cmd->add_option("--up", args.up,
-                    "The model's up axis, y or z (default: glTF, OBJ and the others y; STL and "
-                    "PLY z when they stand on a flat base at their lowest z)")
-        ->type_name("y|z")
-        ->group(kGroup);
+    add_text(cmd, "--background", args.background, "transparent|gradient|COLOR",
+             "transparent, gradient (the studio blurred, the default) or a colour "
+             "('#rrggbb', [r,g,b]); -D output.background=... "
+             "-D environment.background=false");
+    add_text(cmd, "--ground", args.ground, "shadow|floor|none",
+             "shadow (only the shadow and occlusion show, the default), floor (a grey "
+             "floor) or none");
+    add_text(cmd, "--environment", args.environment, "FILE",
+             "Light it with this .hdr or .exr (default: the built-in studio); "
+             "-D environment.file=FILE");
+    add_text(cmd, "--up", args.up, "y|z",
+             "The model's up axis, y or z (default: glTF, OBJ and the others y; STL and "
+             "PLY z when they stand on a flat base at their lowest z)");
 }
 
 SceneDesc load_scene_or_model(const RenderArgs& args, SceneOptions& options, LoadedMeshes* loaded) {

@@ -233,8 +233,4 @@ void check_subcommand_name(const CLI::App& app, int argc, char** argv) {
         "unknown command '" + word + "'" + did_you_mean(word, views) + " (commands: " + list + ")");
 }
 
-std::string count_of(size_t n, const char* singular, const char* plural) {
-    return std::to_string(n) + " " + (n == 1 ? singular : plural);
-}
-
 }  // namespace facet

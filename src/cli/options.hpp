@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/option_values.hpp"
+#include "core/plain_text.hpp"  // count_of
 #include "scene/scene_desc.hpp"
 
 namespace CLI {
@@ -64,8 +65,5 @@ void reject_unknown_arguments(CLI::App* command);
 // argv[1] when it names no subcommand: an error with a did-you-mean and the
 // list of subcommands. Does nothing for options (-h, --version).
 void check_subcommand_name(const CLI::App& app, int argc, char** argv);
-
-// "1 file", "3 files".
-std::string count_of(size_t n, const char* singular, const char* plural);
 
 }  // namespace facet

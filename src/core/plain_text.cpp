@@ -106,4 +106,22 @@ std::string text_for_message(std::string_view text, size_t max_chars) {
     return out;
 }
 
+std::string with_long_words_cut(std::string_view text, size_t max_chars) {
+    std::string out;
+    size_t at = 0;
+    while (at < text.size()) {
+        const size_t space = text.find_first_of(" \n", at);
+        const size_t end = space == std::string_view::npos ? text.size() : space;
+        const std::string_view word = text.substr(at, end - at);
+        out += word.size() > max_chars ? text_for_message(word, max_chars) : std::string(word);
+        if (end < text.size()) out += text[end];
+        at = end + 1;
+    }
+    return out;
+}
+
+std::string count_of(size_t n, const char* singular, const char* plural) {
+    return std::to_string(n) + " " + (n == 1 ? singular : plural);
+}
+
 }  // namespace facet

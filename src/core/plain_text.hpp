@@ -26,4 +26,12 @@ std::optional<std::string> line_breaking_character(std::string_view text);
 // a 5 MB message.
 std::string text_for_message(std::string_view text, size_t max_chars = 80);
 
+// A message from a library, with every word (a run without spaces) longer
+// than `max_chars` cut as text_for_message cuts a value: a library may
+// quote a 5 MB data: URI whole.
+std::string with_long_words_cut(std::string_view text, size_t max_chars = 80);
+
+// "1 file", "3 files": a count and the word that goes with it.
+std::string count_of(size_t n, const char* singular, const char* plural);
+
 }  // namespace facet

@@ -12,6 +12,7 @@
 
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/plain_text.hpp"
 #include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
@@ -440,13 +441,13 @@ namespace {
     const size_t finished = manifest.frames.size();
     std::string listed;
     try {
-        listed = "; the " + std::to_string(finished) + " images finished are listed in " +
-                 ledger.finish(std::move(manifest));
+        listed = "; " + count_of(finished, "image finished is", "images finished are") +
+                 " listed in " + ledger.finish(std::move(manifest));
     } catch (const Error&) {
         listed =
             "; no manifest could be written either: the same command with --skip-existing "
             "finds the " +
-            std::to_string(finished) + " images finished and renders the rest";
+            count_of(finished, "image", "images") + " finished and renders the rest";
     }
     try {
         std::rethrow_exception(failure);

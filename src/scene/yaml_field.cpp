@@ -457,7 +457,11 @@ std::string existing_file(const Field& field, const std::string& base_dir) {
     if (!path.is_absolute()) path = std::filesystem::path(base_dir) / path;
     const std::string resolved = path.lexically_normal().string();
     const std::string problem = input_file_problem(resolved);
-    if (!problem.empty()) field.fail(resolved + ": " + problem);
+    if (!problem.empty())
+        field.fail(
+            "cannot read '" +
+            text_for_message(std::filesystem::absolute(resolved).lexically_normal().string(), 200) +
+            "': " + problem + "; a file is needed here");
     return resolved;
 }
 
