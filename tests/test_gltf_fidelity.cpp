@@ -671,7 +671,10 @@ TEST_CASE(
     CHECK(run_facet("validate '" + scene + "'").exit_code == 0);
 }
 
-TEST_CASE("facet info shows what it can of any file, and its extension lists", "[gltf][cli]") {
+TEST_CASE(
+    "facet info shows what it can of any file and its extension lists, and says in render's "
+    "words, with render's exit code, when render refuses it",
+    "[gltf][cli]") {
     TempDir dir("gltf-info");
     Gltf g;
     g.doc["materials"] = {{{"name", "used"}}, {{"name", "unused"}}};
@@ -682,10 +685,19 @@ TEST_CASE("facet info shows what it can of any file, and its extension lists", "
     const std::string file = g.write(dir.file("needs.gltf"));
     require_input_error([&] { load_gltf(file); },
                         "requires the glTF extension KHR_materials_variants");
-    const RunResult info = run_facet("info --json '" + file + "'");
+    const RunResult render =
+        run_facet("render '" + file + "' -f 1 --size 32x24 -o '" + dir.file("out") + "'");
+    CHECK(render.exit_code == 2);
+    const std::string refusal = render.output.substr(render.output.find("facet: error: "));
+    const RunResult info =
+        run_command("'" + facet_executable() + "' info --json '" + file + "' 2>" + dir.file("err"));
     INFO(info.output);
-    REQUIRE(info.exit_code == 0);
+    CHECK(info.exit_code == 2);
+    CHECK(read_file(dir.file("err")) == refusal);
     const json j = json::parse(info.output);
+    CHECK(j["renders"] == false);
+    CHECK_THAT(j["render_errors"].dump(),
+               Contains("requires the glTF extension KHR_materials_variants"));
     CHECK(j["triangles"] == 1);
     CHECK(j["extensions"]["used"] ==
           json::array({"KHR_materials_variants", "KHR_materials_sheen", "EXT_texture_webp"}));
@@ -695,10 +707,33 @@ TEST_CASE("facet info shows what it can of any file, and its extension lists", "
     // Only the material a part uses; no unused "default".
     REQUIRE(j["materials"].size() == 1);
     CHECK(j["materials"][0]["name"] == "used");
-    CHECK_THAT(j["warnings"].dump(), Contains("cannot be rendered"));
     const RunResult text = run_facet("info '" + file + "'");
-    CHECK(text.exit_code == 0);
-    CHECK_THAT(text.output, Contains("not read KHR_materials_variants, KHR_materials_sheen"));
+    CHECK(text.exit_code == 2);
+    CHECK_THAT(text.output, Contains("not read KHR_materials_variants, KHR_materials_sheen") &&
+                                Contains(refusal));
+}
+
+TEST_CASE(
+    "facet info of a file that requires KTX2 textures without fallbacks: render's error, and "
+    "no texture 'drawn without it'",
+    "[gltf][cli]") {
+    TempDir dir("gltf-info-ktx2");
+    Gltf g;
+    g.doc["images"] = {{{"uri", "paint.ktx2"}}};
+    g.doc["textures"] = {{{"extensions", {{"KHR_texture_basisu", {{"source", 0}}}}}}};
+    quad_mesh(g, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+    g.doc["extensionsUsed"] = {"KHR_texture_basisu"};
+    g.doc["extensionsRequired"] = {"KHR_texture_basisu"};
+    write_text(dir.file("paint.ktx2"), "\xabKTX 20\xbb\r\n\x1a\n");
+    const std::string file = g.write(dir.file("ktx2.gltf"));
+    const RunResult render =
+        run_facet("render '" + file + "' -f 1 --size 32x24 -o '" + dir.file("out") + "'");
+    CHECK(render.exit_code == 2);
+    const std::string refusal = render.output.substr(render.output.find("facet: error: "));
+    const RunResult info = run_facet("info '" + file + "'");
+    INFO(info.output);
+    CHECK(info.exit_code == 2);
+    CHECK_THAT(info.output, Contains(refusal) && !Contains("drawn without it"));
 }
 
 TEST_CASE("KHR_lights_punctual: lux and candela are lit as the Lambertian 1/pi says",

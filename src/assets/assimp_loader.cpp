@@ -272,8 +272,7 @@ Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
             const unsigned index = at.node->mMeshes[i];
             if (index >= scene->mNumMeshes) bad(path, "a node refers to a missing mesh");
             const aiMesh& source = *scene->mMeshes[index];
-            planned += static_cast<uint64_t>(source.mNumVertices) * 64 +
-                       static_cast<uint64_t>(source.mNumFaces) * 48;
+            planned += planned_part_bytes(source.mNumVertices, uint64_t(3) * source.mNumFaces);
             check_memory("loading " + path, {{"mesh instances", planned}}, memory);
             MeshPart part = read_part(source, at.world, path);
             if (part.indices.empty()) continue;

@@ -144,7 +144,7 @@ ExtensionLists read_extension_lists(std::span<const uint8_t> bytes, const std::s
 }
 
 ExtensionCheck check_extensions(const ExtensionLists& lists, const std::string& path,
-                                bool refuse_required) {
+                                std::vector<Error>* refusals) {
     const auto& supported = supported_extensions();
     ExtensionCheck check;
     auto required = [&](const std::string& name) {
@@ -157,10 +157,11 @@ ExtensionCheck check_extensions(const ExtensionLists& lists, const std::string& 
         // KTX2 textures with PNG/JPEG fallbacks can still be drawn; that is
         // checked texture by texture once the file is parsed.
         if (name == "KHR_texture_basisu") continue;
-        const std::string why = "requires the glTF extension " + name +
-                                ", which facet does not support (" + what_is_lost(name) + ")";
-        if (refuse_required) bad(path, why);
-        check.warnings.push_back(file_warning(path, why + ": it cannot be rendered"));
+        const Error refusal(ExitCode::invalid_input, path + ": requires the glTF extension " +
+                                                         name + ", which facet does not support (" +
+                                                         what_is_lost(name) + ")");
+        if (!refusals) throw refusal;
+        refusals->push_back(refusal);
     }
     for (const std::string& name : lists.used) {
         if (supported.count(name) || required(name)) continue;

@@ -44,12 +44,13 @@ struct ExtensionCheck {
 };
 
 // An extension facet does not support is an error (invalid_input, naming
-// it and what it does) when the file requires it and `refuse_required` is
-// set (else a warning that the file cannot be rendered), and a warning
-// naming it and what is lost when the file only uses it.
-// KHR_texture_basisu is left to check_basisu_fallbacks (gltf_materials.hpp).
+// it and what it does) when the file requires it, thrown, or appended to
+// `refusals` when given (`facet info`: the file is read on, and the error
+// reported as render reports it); and a warning naming it and what is lost
+// when the file only uses it. KHR_texture_basisu is left to
+// check_basisu_fallbacks (gltf_materials.hpp).
 ExtensionCheck check_extensions(const ExtensionLists& lists, const std::string& path,
-                                bool refuse_required);
+                                std::vector<Error>* refusals);
 
 // How a textureInfo is read: its texture coordinate set, and its
 // KHR_texture_transform.

@@ -1,10 +1,13 @@
 #include "assets/gltf_field_types.hpp"
 
 #include <algorithm>
+#include <cstdint>
+#include <limits>
 
 #include <nlohmann/json.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "core/plain_text.hpp"
 
 namespace facet::gltf_detail {
 namespace {
@@ -55,7 +58,92 @@ class FieldTypes {
         for_each_item(doc, "textures", "", [&](const json& texture, const std::string& at) {
             index_if_present(texture, "source", at);
             index_if_present(texture, "sampler", at);
+            if (const json* extensions = object_if_present(texture, "extensions", at))
+                for (const auto& [name, extension] : extensions->items())
+                    if (extension.is_object())
+                        index_if_present(extension, "source", at + ".extensions." + name);
         });
+        for_each_item(doc, "samplers", "", [&](const json& sampler, const std::string& at) {
+            for (const char* key : {"magFilter", "minFilter", "wrapS", "wrapT"})
+                whole_if_present(sampler, key, at);
+        });
+        references(doc);
+    }
+
+    // Every other field that refers to an item by its index: the nodes,
+    // scenes, accessors, buffer views, skins, animations and morph targets.
+    void references(const json& doc) {
+        index_if_present(doc, "scene", "");
+        for_each_item(doc, "scenes", "", [&](const json& scene, const std::string& at) {
+            index_list_if_present(scene, "nodes", at);
+        });
+        for_each_item(doc, "nodes", "", [&](const json& node, const std::string& at) {
+            for (const char* key : {"camera", "skin", "mesh"}) index_if_present(node, key, at);
+            index_list_if_present(node, "children", at);
+            if (const json* extensions = object_if_present(node, "extensions", at)) {
+                const std::string p = at + ".extensions";
+                if (const json* light = object_if_present(*extensions, "KHR_lights_punctual", p))
+                    index_if_present(*light, "light", p + ".KHR_lights_punctual");
+                if (const json* instancing =
+                        object_if_present(*extensions, "EXT_mesh_gpu_instancing", p))
+                    index_map_if_present(*instancing, "attributes", p + ".EXT_mesh_gpu_instancing");
+            }
+        });
+        for_each_item(doc, "meshes", "", [&](const json& mesh, const std::string& at) {
+            for_each_item(mesh, "primitives", at, [&](const json& primitive, const std::string& p) {
+                index_map_if_present(primitive, "attributes", p);
+                for_each_item(primitive, "targets", p,
+                              [&](const json& target, const std::string& t) {
+                                  for (const auto& [name, value] : target.items())
+                                      index_value(value, t + "." + name);
+                              });
+            });
+        });
+        for_each_item(doc, "accessors", "", [&](const json& accessor, const std::string& at) {
+            index_if_present(accessor, "bufferView", at);
+            if (const json* sparse = object_if_present(accessor, "sparse", at))
+                sparse_accessor(accessor, *sparse, at + ".sparse");
+        });
+        for_each_item(doc, "bufferViews", "", [&](const json& view, const std::string& at) {
+            index_if_present(view, "buffer", at);
+        });
+        for_each_item(doc, "skins", "", [&](const json& skin, const std::string& at) {
+            index_if_present(skin, "inverseBindMatrices", at);
+            index_if_present(skin, "skeleton", at);
+            index_list_if_present(skin, "joints", at);
+        });
+        for_each_item(doc, "animations", "", [&](const json& animation, const std::string& at) {
+            for_each_item(animation, "channels", at,
+                          [&](const json& channel, const std::string& c) {
+                              index_if_present(channel, "sampler", c);
+                              if (const json* target = object_if_present(channel, "target", c))
+                                  index_if_present(*target, "node", c + ".target");
+                          });
+            for_each_item(animation, "samplers", at,
+                          [&](const json& sampler, const std::string& s) {
+                              index_if_present(sampler, "input", s);
+                              index_if_present(sampler, "output", s);
+                          });
+        });
+    }
+
+    // A sparse accessor: its count a whole number from 1 to the accessor's
+    // count, and its indices and values in buffer views.
+    void sparse_accessor(const json& accessor, const json& sparse, const std::string& at) {
+        const auto count = sparse.find("count");
+        if (count == sparse.end()) wrong(at + ".count", "present");
+        index_value(*count, at + ".count");
+        const auto total = accessor.find("count");
+        if (total != accessor.end() && total->is_number_unsigned() &&
+            (count->get<uint64_t>() < 1 || count->get<uint64_t>() > total->get<uint64_t>()))
+            wrong(at + ".count",
+                  "from 1 to the accessor's count (" + total->dump() + "), not " + count->dump());
+        for (const char* part : {"indices", "values"}) {
+            const json* p = object_if_present(sparse, part, at);
+            if (!p) wrong(at + "." + part, "present");
+            if (!p->contains("bufferView")) wrong(at + "." + part + ".bufferView", "present");
+            index_if_present(*p, "bufferView", at + "." + part);
+        }
     }
 
   private:
@@ -84,10 +172,43 @@ class FieldTypes {
         return &*it;
     }
 
+    // An index: a whole number from 0 to the largest tinygltf keeps
+    // (2^31 - 1). A larger one would wrap to a valid index.
+    void index_value(const json& value, const std::string& field) {
+        if (!value.is_number_unsigned() ||
+            value.get<uint64_t>() > static_cast<uint64_t>(std::numeric_limits<int32_t>::max()))
+            wrong(field, "an index (a whole number from 0 to 2147483647), not " +
+                             text_for_message(value.dump()));
+    }
+
     void index_if_present(const json& parent, const char* key, const std::string& at) {
         const auto it = parent.find(key);
-        if (it != parent.end() && !it->is_number_unsigned())
-            wrong(at + "." + key, "an index (a whole number from 0), not " + it->dump());
+        if (it != parent.end()) index_value(*it, (at.empty() ? "" : at + ".") + key);
+    }
+
+    void index_list_if_present(const json& parent, const char* key, const std::string& at) {
+        const auto it = parent.find(key);
+        if (it == parent.end()) return;
+        const std::string field = (at.empty() ? "" : at + ".") + key;
+        if (!it->is_array()) wrong(field, "a list of indices");
+        for (size_t i = 0; i < it->size(); ++i)
+            index_value((*it)[i], field + "[" + std::to_string(i) + "]");
+    }
+
+    // A mapping of names to indices (a primitive's attributes).
+    void index_map_if_present(const json& parent, const char* key, const std::string& at) {
+        const json* map = object_if_present(parent, key, at);
+        if (!map) return;
+        for (const auto& [name, value] : map->items())
+            index_value(value, at + "." + key + "." + name);
+    }
+
+    // A whole number (an enum such as a sampler's filter): tinygltf drops
+    // a value of another type without a word.
+    void whole_if_present(const json& parent, const char* key, const std::string& at) {
+        const auto it = parent.find(key);
+        if (it != parent.end() && !it->is_number_integer())
+            wrong(at + "." + key, "a whole number, not " + text_for_message(it->dump()));
     }
 
     void number_if_present(const json& parent, const char* key, const std::string& at) {

@@ -120,6 +120,7 @@ struct ReadModel {
     std::string warnings;  // tinygltf's, trimmed
     gltf_detail::ExtensionLists lists;
     gltf_detail::ExtensionCheck extensions;  // ignored ones, and their warnings
+    std::vector<Error> refusals;             // inspecting: what render refuses the file for
     gltf_detail::UnreadImages unread;
 };
 
@@ -161,7 +162,8 @@ ReadModel read_model(const MeshFile& file, const AssetContext& context) {
     // Before tinygltf parses buffers that a compression extension may have
     // left without data, so the error names the extension.
     read.lists = gltf_detail::read_extension_lists(file.bytes, path);
-    read.extensions = gltf_detail::check_extensions(read.lists, path, !context.inspect_only);
+    read.extensions = gltf_detail::check_extensions(
+        read.lists, path, context.inspect_only ? &read.refusals : nullptr);
     tinygltf::TinyGLTF loader;
     LoadContext load{path, "", &context, std::nullopt, {}};
     // tinygltf joins its folder (the path up to the last slash) and a URI with a slash.
@@ -413,8 +415,7 @@ const std::vector<std::optional<gltf_detail::MeshSpacePrimitive>>& NodeWalk::pri
 
 void NodeWalk::place(int node_index, size_t primitive, const gltf_detail::MeshSpacePrimitive& p,
                      const glm::dmat4& node_world, const glm::dmat4& instance, bool first) {
-    constexpr uint64_t kPerVertex = 64, kPerIndex = 16;  // the part and what builds it
-    planned_ += p.positions.size() * kPerVertex + p.indices.size() * kPerIndex;
+    planned_ += planned_part_bytes(p.positions.size(), p.indices.size());
     check_memory("loading " + path_, {{"mesh instances", planned_}}, memory_);
     Warnings repeated;  // an instance's copies repeat the first's warnings
     std::vector<uint32_t> source_vertex;
@@ -561,18 +562,18 @@ Mesh load_gltf(const MeshFile& file, const AssetContext& context) {
     if (!read.warnings.empty()) mesh.warnings.push_back(file_warning(path, read.warnings));
     mesh.warnings.insert(mesh.warnings.end(), read.extensions.warnings.begin(),
                          read.extensions.warnings.end());
-    gltf_detail::check_basisu_fallbacks(
-        model, path,
-        !context.inspect_only && std::count(read.lists.required.begin(), read.lists.required.end(),
-                                            "KHR_texture_basisu") > 0,
-        mesh.warnings);
+    mesh.refusals = read.refusals;
+    const bool basisu_required = std::count(read.lists.required.begin(), read.lists.required.end(),
+                                            "KHR_texture_basisu") > 0;
+    gltf_detail::check_basisu_fallbacks(model, path, basisu_required, mesh.warnings,
+                                        context.inspect_only ? &mesh.refusals : nullptr);
     std::shared_ptr<MeshRig> rig;
     if (gltf_detail::has_rig_data(model)) {
         rig = std::make_shared<MeshRig>();
         gltf_detail::read_rig_nodes_and_animations(model, path, *rig, mesh.warnings);
     }
-    mesh.materials =
-        gltf_detail::read_materials(model, path, read.unread, context.textures, mesh.warnings);
+    mesh.materials = gltf_detail::read_materials(model, path, read.unread, context.textures,
+                                                 basisu_required, mesh.warnings);
     // Threads for the normals of a big file's primitives; a small file's
     // would cost more to start than they save.
     constexpr size_t kParallelBytes = size_t(4) << 20;

@@ -86,15 +86,22 @@ std::vector<int> image_choices(const tinygltf::Texture& t) {
 class TextureCache {
   public:
     TextureCache(const tinygltf::Model& model, const std::string& path, const UnreadImages& unread,
-                 TextureBudget* budget)
-        : model_(model), path_(path), unread_(unread), budget_(budget) {}
+                 TextureBudget* budget, bool basisu_required)
+        : model_(model),
+          path_(path),
+          unread_(unread),
+          budget_(budget),
+          basisu_required_(basisu_required) {}
 
     // A texture as read: null with `lost` saying why, or drawn, `lost`
     // then saying why its preferred image gave way to a fallback (empty
     // when none did). Kept, so every material that reads it is told.
+    // `refused`: a KTX2 texture without a fallback in a file that requires
+    // KHR_texture_basisu, which a render refuses (check_basisu_fallbacks).
     struct Read {
         std::shared_ptr<const Texture> texture;
         std::string lost;
+        bool refused = false;
     };
     const Read& texture(int index);
     // The same texture read as data (Texture::as_data): normal,
@@ -108,6 +115,7 @@ class TextureCache {
     const std::string& path_;
     const UnreadImages& unread_;
     TextureBudget* budget_;
+    bool basisu_required_;
     std::map<int, std::shared_ptr<const Texture>> images_;
     std::map<int, Read> textures_;
     std::map<int, Read> data_textures_;
@@ -158,11 +166,13 @@ const TextureCache::Read& TextureCache::texture(int index) {
         if (decoded) break;
         read.lost += (read.lost.empty() ? "" : "; ") + why;
     }
-    if (choices.empty())
-        read.lost = t.extensions.count("KHR_texture_basisu")
-                        ? "KTX2 (KHR_texture_basisu) is not supported, and the texture has no "
-                          "PNG/JPEG fallback"
-                        : "the texture has no image";
+    if (choices.empty()) {
+        const bool ktx2 = t.extensions.count("KHR_texture_basisu") > 0;
+        read.lost = ktx2 ? "KTX2 (KHR_texture_basisu) is not supported, and the texture has no "
+                           "PNG/JPEG fallback"
+                         : "the texture has no image";
+        read.refused = ktx2 && basisu_required_;
+    }
     if (decoded) {
         auto copy = std::make_shared<Texture>(*decoded);  // shares the levels
         copy->sampler = sampler_of(model_, t.sampler, path_);
@@ -195,7 +205,9 @@ TextureSlot slot_of(const tinygltf::TextureInfo& info, TextureCache& cache, cons
         meaning == TexelMeaning::data ? cache.data_texture(info.index) : cache.texture(info.index);
     slot.texture = read.texture;
     if (!slot.texture) {
-        warnings.push_back(file_warning(path, what + ": " + read.lost + "; " + without));
+        // A refused texture is not drawn without: the file is not drawn.
+        if (!read.refused)
+            warnings.push_back(file_warning(path, what + ": " + read.lost + "; " + without));
         return slot;
     }
     if (!read.lost.empty())
@@ -435,8 +447,8 @@ Material read_material(const tinygltf::Material& m, size_t index, TextureCache& 
 
 std::vector<Material> read_materials(const tinygltf::Model& model, const std::string& path,
                                      const UnreadImages& unread, TextureBudget* budget,
-                                     Warnings& warnings) {
-    TextureCache cache(model, path, unread, budget);
+                                     bool basisu_required, Warnings& warnings) {
+    TextureCache cache(model, path, unread, budget, basisu_required);
     std::vector<Material> materials;
     for (size_t i = 0; i < model.materials.size(); ++i)
         materials.push_back(read_material(model.materials[i], i, cache, path, warnings));
@@ -444,16 +456,20 @@ std::vector<Material> read_materials(const tinygltf::Model& model, const std::st
 }
 
 void check_basisu_fallbacks(const tinygltf::Model& model, const std::string& path, bool required,
-                            Warnings& warnings) {
+                            Warnings& warnings, std::vector<Error>* refusals) {
     size_t ktx2 = 0;
     for (size_t i = 0; i < model.textures.size(); ++i) {
         const tinygltf::Texture& t = model.textures[i];
         if (!t.extensions.count("KHR_texture_basisu")) continue;
         ++ktx2;
-        if (required && image_choices(t).empty())
-            bad(path, "texture " + std::to_string(i) +
-                          ": KTX2 (KHR_texture_basisu) is not supported; the file has no "
-                          "PNG/JPEG fallback");
+        if (!required || !image_choices(t).empty()) continue;
+        const Error refusal(ExitCode::invalid_input,
+                            path + ": texture " + std::to_string(i) +
+                                ": KTX2 (KHR_texture_basisu) is not supported; the file has no "
+                                "PNG/JPEG fallback");
+        if (!refusals) throw refusal;
+        if (refusals->empty() || refusals->back().what() != std::string(refusal.what()))
+            refusals->push_back(refusal);
     }
     if (ktx2 > 0)
         warnings.push_back(

@@ -22,17 +22,20 @@ using UnreadImages = std::map<std::string, std::string>;
 // reads are decoded (by their bytes: PNG, JPEG, WebP, AVIF), charged to
 // `budget`. A texture that is missing or cannot be decoded is a warning
 // naming the file, the material and the map, and the material is drawn
-// without it; a texture whose only image is KTX2 likewise. The
-// metallic-roughness, normal and occlusion maps are read as data
-// (Texture::as_data); which style draws them is the renderer's business.
+// without it; a texture whose only image is KTX2 likewise, unless the
+// file requires KHR_texture_basisu (`basisu_required`: a render refuses
+// the file, check_basisu_fallbacks). The metallic-roughness, normal and
+// occlusion maps are read as data (Texture::as_data); which style draws
+// them is the renderer's business.
 std::vector<Material> read_materials(const tinygltf::Model& model, const std::string& path,
                                      const UnreadImages& unread, TextureBudget* budget,
-                                     Warnings& warnings);
+                                     bool basisu_required, Warnings& warnings);
 
 // KHR_texture_basisu when the file requires it: every texture must keep a
 // PNG/JPEG `source` as a fallback (then a warning), else an error that
-// says there is none.
+// says there is none: thrown, or appended to `refusals` when given (as
+// check_extensions does).
 void check_basisu_fallbacks(const tinygltf::Model& model, const std::string& path, bool required,
-                            Warnings& warnings);
+                            Warnings& warnings, std::vector<Error>* refusals);
 
 }  // namespace facet::gltf_detail

@@ -16,6 +16,8 @@
 #include "assets/mesh_format.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
+#include "core/limits.hpp"
+#include "core/number_text.hpp"
 #include "core/parallel_sort.hpp"
 #include "core/thread_pool.hpp"
 
@@ -330,9 +332,19 @@ void validate_part(const MeshPart& part, const std::string& source) {
             throw Error(ExitCode::invalid_input,
                         source + ": index " + std::to_string(i) + " is out of range (" +
                             std::to_string(part.positions.size()) + " vertices)");
-    for (const auto& p : part.positions)
+    for (const auto& p : part.positions) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
             throw Error(ExitCode::invalid_input, source + ": a vertex position is not finite");
+        // As far as scene lengths go: beyond, the rasterizer's fixed point
+        // cannot place a triangle, and it would be lost without a word.
+        const float largest = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+        if (largest > kMaxCoordinate)
+            throw Error(ExitCode::invalid_input,
+                        source + ": a vertex is at " + format_number(largest) +
+                            " from the origin, past the largest coordinate facet draws (" +
+                            format_number(kMaxCoordinate) +
+                            "); a node's scale or the file's units are off");
+    }
 }
 
 namespace {
@@ -363,7 +375,15 @@ MeshFile read_mesh_file(const std::string& path, const AssetContext& context) {
 }
 
 Mesh load_mesh(const MeshFile& file, const AssetContext& context) {
-    Mesh mesh = load_by_format(file, context);
+    Mesh mesh;
+    try {
+        mesh = load_by_format(file, context);
+    } catch (const std::bad_alloc&) {
+        // The loaders check their estimates first (core/memory.hpp); past
+        // them, the file is still named.
+        throw Error(ExitCode::runtime_failure, file.path + ": out of memory while loading it (" +
+                                                   describe_bytes(file.bytes.size()) + " on disk)");
+    }
     // Once the file's materials are known, whichever format gave them.
     add_normal_map_tangents(mesh, mesh.materials, mesh.warnings);
     return mesh;

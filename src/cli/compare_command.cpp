@@ -13,6 +13,7 @@
 #include "compare/self_test.hpp"
 #include "compare/thresholds.hpp"
 #include "core/error.hpp"
+#include "core/number_text.hpp"
 #include "output/encoders.hpp"
 #include "scene/thresholds_file.hpp"
 
@@ -73,12 +74,6 @@ const char* line_tag(const FileResult& r) {
     return r.status == FileStatus::unreadable ? "ERROR" : "FAIL";
 }
 
-std::string short_number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
-
 void print_summary(const CompareReport& report, bool quiet) {
     const CompareCounts& c = report.counts;
     if (quiet) return;
@@ -88,7 +83,7 @@ void print_summary(const CompareReport& report, bool quiet) {
                 "sequence %s%s%s (%s): %s, flicker %.4g%s\n", s.camera.c_str(),
                 s.camera.empty() ? "" : "/", s.pass.c_str(), s.format.c_str(),
                 s.worst_frame ? ("worst frame " + std::to_string(*s.worst_frame) + " (" +
-                                 short_number(s.worst_percent) + "% failing)")
+                                 format_number(s.worst_percent, 4) + "% failing)")
                                     .c_str()
                               : "no failing pixels",
                 s.flicker,

@@ -133,6 +133,10 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
     j["skins"] = rig ? rig->skins.size() : 0;
     j["morphed_parts"] = facts.morphed_parts;
     j["most_morph_targets"] = facts.most_targets;
+    // What a render of the file does: draw it, or stop with these errors.
+    j["renders"] = mesh.refusals.empty();
+    j["render_errors"] = Json::array();
+    for (const Error& e : mesh.refusals) j["render_errors"].push_back(e.what());
     j["warnings"] = warnings_json(mesh.warnings);
     std::printf("%s\n", j.dump(2).c_str());
 }
@@ -227,7 +231,10 @@ int info_command(const std::string& path, bool allow_outside, bool json, unsigne
         print_mesh_json(path, mesh);
     else
         print_mesh_text(path, mesh);
-    return 0;
+    // What render would stop with, in its words, and its exit code: info
+    // shows what it can of the file, and says that it cannot be rendered.
+    for (const Error& e : mesh.refusals) std::fprintf(stderr, "facet: error: %s\n", e.what());
+    return mesh.refusals.empty() ? 0 : static_cast<int>(mesh.refusals.front().code());
 }
 
 int styles_command(const std::string& name, bool json) {

@@ -8,6 +8,7 @@
 
 #include "compare/ssim.hpp"
 #include "core/color.hpp"
+#include "core/number_text.hpp"
 
 namespace facet {
 namespace {
@@ -119,12 +120,6 @@ bool matched_nearby(ImageKind kind, const Tolerance& t, const CompareImage& ref,
     return found(at(candidate, x, y), ref, false) && found(at(ref, x, y), candidate, true);
 }
 
-std::string format_number(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.4g", v);
-    return text;
-}
-
 // The outcome of one channel group from its counts (thresholds.hpp).
 void decide(PixelVerdict& v, const Tolerance& t, const char* what) {
     const double percent_failed = v.percent_failed();
@@ -133,22 +128,22 @@ void decide(PixelVerdict& v, const Tolerance& t, const char* what) {
     if (v.pixels_failed > t.allowed_failures && percent_failed > t.fail_percent) {
         v.outcome = Outcome::fail;
         v.reason = prefix + std::to_string(v.pixels_failed) + " pixels (" +
-                   format_number(percent_failed) + "%) over the fail threshold " +
-                   format_number(t.fail) + "; fail_percent is " + format_number(t.fail_percent) +
-                   "%";
+                   format_number(percent_failed, 4) + "%) over the fail threshold " +
+                   format_number(t.fail, 4) + "; fail_percent is " +
+                   format_number(t.fail_percent, 4) + "%";
         if (v.background_mismatch)
             v.reason += ", " + std::to_string(v.background_mismatch) +
                         " of them background in one image only";
     } else if (v.stats.max > t.hard_fail || (v.background_mismatch && t.hard_fail < 1e30)) {
         v.outcome = Outcome::fail;
-        v.reason = prefix + "largest difference " + format_number(v.stats.max) + " at (" +
+        v.reason = prefix + "largest difference " + format_number(v.stats.max, 4) + " at (" +
                    std::to_string(v.stats.max_x) + ", " + std::to_string(v.stats.max_y) +
-                   ") is over hard_fail " + format_number(t.hard_fail);
+                   ") is over hard_fail " + format_number(t.hard_fail, 4);
     } else if (v.pixels_warned > t.allowed_failures && percent_warned > t.warn_percent) {
         v.outcome = Outcome::warn;
         v.reason = prefix + std::to_string(v.pixels_warned) + " pixels (" +
-                   format_number(percent_warned) + "%) over the warn threshold " +
-                   format_number(t.warn);
+                   format_number(percent_warned, 4) + "%) over the warn threshold " +
+                   format_number(t.warn, 4);
         if (v.pixels_failed)
             v.reason += ", " + std::to_string(v.pixels_failed) + " over fail (allowed)";
     }
@@ -313,8 +308,8 @@ Judgement judge_images(const CompareImage& ref, const CompareImage& candidate,
         if (in.tolerance.ssim_min > 0 && *j.ssim < in.tolerance.ssim_min) {
             if (j.pixels.outcome != Outcome::fail)
                 j.pixels.reason = std::string(image_kind_name(in.kind)) + ": SSIM " +
-                                  format_number(*j.ssim) + " is below ssim_min " +
-                                  format_number(in.tolerance.ssim_min);
+                                  format_number(*j.ssim, 4) + " is below ssim_min " +
+                                  format_number(in.tolerance.ssim_min, 4);
             j.pixels.outcome = Outcome::fail;
             j.outcome = Outcome::fail;
         }

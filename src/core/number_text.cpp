@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace facet {
 
@@ -20,6 +21,12 @@ std::optional<double> read_finite_number(std::string_view text) {
     if (text.empty() || error != std::errc() || stop != end || !std::isfinite(value))
         return std::nullopt;
     return value;
+}
+
+std::string format_number(double value, int significant_digits) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.*g", significant_digits, value);
+    return text;
 }
 
 }  // namespace facet

@@ -6,6 +6,7 @@
 // "010" is ten (not eight, as base-detecting readers take it), and a number
 // too large for its type is refused instead of wrapping or saturating.
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace facet {
@@ -16,5 +17,9 @@ std::optional<long long> read_whole_number(std::string_view text);
 // A decimal number as std::from_chars reads it ("2", "-0.5", ".5", "1e-3"),
 // all of `text`; NaN, infinity and numbers beyond double's range are refused.
 std::optional<double> read_finite_number(std::string_view text);
+
+// A number for a message, as printf's %g writes it with that many
+// significant digits ("0.5", "1e+07", "65504").
+std::string format_number(double value, int significant_digits = 6);
 
 }  // namespace facet

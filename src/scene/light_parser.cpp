@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 #include "scene/color_temperature.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/yaml_field.hpp"
@@ -56,12 +57,6 @@ const LightKeys& light_type(const Field& f) {
         names.push_back(entry.type);
     }
     f.fail_not_one_of(type, names);
-}
-
-std::string format_number(double value) {
-    std::ostringstream s;
-    s << value;
-    return s.str();
 }
 
 // `color: [r, g, b]`, `"#rrggbb"`, a keyed colour, or `{ kelvin: K }` with K

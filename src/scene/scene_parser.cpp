@@ -10,6 +10,7 @@
 #include "core/frame_range.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
+#include "core/number_text.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
@@ -23,12 +24,6 @@ EnvironmentDesc parse_environment(const Field& f,
                                   const std::string& base_dir);  // environment_parser.cpp
 
 namespace {
-
-std::string format_number(double value) {
-    std::ostringstream s;
-    s << value;
-    return s.str();
-}
 
 glm::vec3 nonzero_direction(const Field& field) {
     glm::vec3 v = field.vec3();

@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/input_file.hpp"
+#include "core/limits.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
@@ -175,7 +176,7 @@ void apply_occlusion(const Field& f, OcclusionDesc& o) {
     }
     f.check_keys({"enabled", "radius", "strength", "samples", "resolution"});
     o.enabled = f.has("enabled") ? f["enabled"].boolean() : true;
-    if (f.has("radius")) o.radius = f["radius"].animated_number(0.001, 1000);
+    if (f.has("radius")) o.radius = f["radius"].animated_number(1e-6, kMaxCoordinate);
     if (f.has("strength")) o.strength = f["strength"].animated_number(0, 10);
     if (f.has("samples")) o.samples = f["samples"].integer(4, 64);
     if (f.has("resolution")) o.half_resolution = f["resolution"].choice({"half", "full"}) == "half";
