@@ -56,6 +56,8 @@ seeds_for() {
 # use soon after the free, and freed pages go back to the system.
 export ASAN_OPTIONS=detect_leaks=1:quarantine_size_mb=16:thread_local_quarantine_size_kb=256:allocator_release_to_os_interval_ms=500
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+# Leaks inside libassimp itself are not facet's (tests/fuzz/lsan_suppressions.txt).
+export LSAN_OPTIONS=suppressions=$root/tests/fuzz/lsan_suppressions.txt
 # The assimp harness reads a byte that names the file, then the file:
 # assimp's own STL, FBX, Collada and 3DS test models (up to 256 KB) are its
 # seeds, each after its format's byte (tests/fuzz/fuzz_targets.cpp).
@@ -77,13 +79,16 @@ status=0
 for t in "${targets[@]}"; do
     found="$build/corpus/$t"
     mkdir -p "$found" "$build/findings"
+    # The checked-in corpus and regressions (a harness may have none yet),
+    # then the seeds found on this machine.
     seeds=()
-    for s in $(seeds_for "$t"); do [ -e "$s" ] && seeds+=("$s"); done
+    for s in "$root/tests/fuzz/corpus/$t" "$root/tests/fuzz/regressions/$t" $(seeds_for "$t"); do
+        [ -e "$s" ] && seeds+=("$s")
+    done
     echo "fuzz: $t for ${seconds}s" >&2
     if ! "$build/tests/fuzz/fuzz_$t" -max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 \
             -max_len=262144 -print_final_stats=1 -artifact_prefix="$build/findings/$t-" \
-            "$found" "$root/tests/fuzz/corpus/$t" "$root/tests/fuzz/regressions/$t" \
-            "${seeds[@]}" >"$build/fuzz-$t.log" 2>&1; then
+            "$found" "${seeds[@]}" >"$build/fuzz-$t.log" 2>&1; then
         tail -n 60 "$build/fuzz-$t.log" >&2
         echo "fuzz: $t found a problem; its input is in $build/findings/ (log: $build/fuzz-$t.log)" >&2
         status=1

@@ -37,7 +37,8 @@ size_t replay(const std::string& kind, const std::string& target) {
 }  // namespace
 
 TEST_CASE("fuzz regression inputs load or are refused cleanly", "[fuzz]") {
-    for (const char* target : {"scene", "obj", "gltf", "texture", "environment", "manifest"}) {
+    for (const char* target :
+         {"scene", "obj", "gltf", "texture", "environment", "ply", "assimp", "manifest"}) {
         INFO(target);
         CHECK(replay("regressions", target) > 0);
     }

@@ -103,7 +103,7 @@ TEST_CASE("a node scale that puts vertices past facet's range is an error, not h
           "[gltf]") {
     TempDir dir("gltf-scale");
     Gltf g;
-    g.doc["materials"] = {json::object()};
+    g.doc["materials"] = json::array({json::object()});
     g.one_quad_scene();
     g.doc["nodes"][0]["scale"] = {1e10, 1e10, 1e10};
     const std::string file = g.write(dir.file("huge-scale.gltf"));

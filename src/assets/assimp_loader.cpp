@@ -23,6 +23,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 #include <glm/mat4x4.hpp>
 
+#include "assets/isolated_call.hpp"
 #include "assets/mesh.hpp"
 #include "assets/mesh_format.hpp"
 #include "assets/ply_check.hpp"
@@ -105,12 +106,80 @@ std::string texture_file(const std::string& path, const std::string& where, std:
     }
 }
 
+// Why assimp could not read a file, in words: it reports a failed
+// allocation as "std::bad_alloc", and sometimes nothing.
+std::string assimp_error(const Assimp::Importer& importer) {
+    const std::string error = importer.GetErrorString();
+    if (error.empty()) return "cannot read it (assimp gives no reason)";
+    if (error == "std::bad_alloc")
+        return "cannot read it: it asks for more memory than there is (damaged, or far too large)";
+    return "cannot read: " + with_long_words_cut(error);
+}
+
+// A texture that cannot be used: a warning naming it, without the file's
+// name twice.
+void texture_warning(const std::string& path, const Error& e, Warnings& warnings) {
+    std::string message = e.what();
+    if (message.compare(0, path.size() + 2, path + ": ") == 0) message.erase(0, path.size() + 2);
+    warnings.push_back(file_warning(path, message + "; drawn without it"));
+}
+
+// The mesh assimp's child process sends back: its parts, the fields of its
+// materials that read_materials sets, its warnings, and each material's
+// texture file.
+void write_mesh(const Mesh& mesh, const std::vector<std::string>& textures, ByteWriter& out) {
+    out.u32(static_cast<uint32_t>(mesh.parts.size()));
+    for (const MeshPart& p : mesh.parts) {
+        out.array(p.positions), out.array(p.normals), out.array(p.uvs), out.array(p.uvs1);
+        out.array(p.tangents), out.array(p.colors), out.array(p.indices);
+        out.u32(p.material);
+    }
+    out.u32(static_cast<uint32_t>(mesh.materials.size()));
+    for (size_t i = 0; i < mesh.materials.size(); ++i) {
+        const Material& m = mesh.materials[i];
+        out.text(m.name);
+        for (int c = 0; c < 3; ++c) out.f32(m.color[c]);
+        out.f32(m.shininess);
+        out.u32(m.double_sided ? 1 : 0);
+        out.text(textures[i]);
+    }
+    out.u32(static_cast<uint32_t>(mesh.warnings.size()));
+    for (const Warning& w : mesh.warnings) out.text(w.where.file), out.text(w.message);
+}
+
+Mesh read_mesh(ByteReader& in, std::vector<std::string>& textures) {
+    Mesh mesh;
+    mesh.loader = "assimp";
+    mesh.parts.resize(in.u32());
+    for (MeshPart& p : mesh.parts) {
+        p.positions = in.array<glm::vec3>(), p.normals = in.array<glm::vec3>();
+        p.uvs = in.array<glm::vec2>(), p.uvs1 = in.array<glm::vec2>();
+        p.tangents = in.array<glm::vec4>(), p.colors = in.array<glm::vec3>();
+        p.indices = in.array<uint32_t>();
+        p.material = in.u32();
+    }
+    mesh.materials.resize(in.u32());
+    for (Material& m : mesh.materials) {
+        m.name = in.text();
+        for (int c = 0; c < 3; ++c) m.color[c] = in.f32();
+        m.shininess = in.f32();
+        m.double_sided = in.u32() != 0;
+        textures.push_back(in.text());
+    }
+    mesh.warnings.resize(in.u32());
+    for (Warning& w : mesh.warnings) w.where.file = in.text(), w.message = in.text();
+    return mesh;
+}
+
+// The file's materials, each with the texture file its diffuse map names
+// ("" for none) in `textures`; the textures are decoded later, outside
+// assimp's process (load_assimp).
 std::vector<Material> read_materials(const aiScene& scene, const MeshFile& file,
-                                     const AssetContext& context, Warnings& warnings) {
+                                     const AssetContext& context, Warnings& warnings,
+                                     std::vector<std::string>& textures) {
     const std::string& path = file.path;
     const bool without_materials = file.format == MeshFormat::ply || file.format == MeshFormat::stl;
     std::vector<Material> materials;
-    std::map<std::string, std::shared_ptr<const Texture>> textures;
     for (unsigned i = 0; i < scene.mNumMaterials; ++i) {
         const aiMaterial& m = *scene.mMaterials[i];
         Material mat;
@@ -127,28 +196,22 @@ std::vector<Material> read_materials(const aiScene& scene, const MeshFile& file,
         int two_sided = 0;
         if (!without_materials && m.Get(AI_MATKEY_TWOSIDED, two_sided) == AI_SUCCESS)
             mat.double_sided = two_sided != 0;
-        aiString file;
+        aiString file_name;
+        std::string texture;
         // "*N" names a texture inside the file; those are not read. A
-        // texture that cannot be read is a warning: files from these
+        // texture that cannot be found is a warning: files from these
         // formats often name one on the machine that made them.
-        if (m.GetTexture(aiTextureType_DIFFUSE, 0, &file) == AI_SUCCESS && file.length > 0 &&
-            file.C_Str()[0] != '*') {
+        if (m.GetTexture(aiTextureType_DIFFUSE, 0, &file_name) == AI_SUCCESS &&
+            file_name.length > 0 && file_name.C_Str()[0] != '*') {
             const std::string where = "material '" + mat.name + "': diffuse texture";
             try {
-                const std::string texture = texture_file(path, where, file.C_Str(), context);
-                auto& slot = textures[texture];
-                if (!slot)
-                    slot = std::make_shared<Texture>(load_texture(texture, context.textures));
-                mat.base_color_map.texture = slot;
-                if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
+                texture = texture_file(path, where, file_name.C_Str(), context);
             } catch (const Error& e) {
-                std::string message = e.what();
-                if (message.compare(0, path.size() + 2, path + ": ") == 0)
-                    message.erase(0, path.size() + 2);
-                warnings.push_back(file_warning(path, message + "; drawn without it"));
+                texture_warning(path, e, warnings);
             }
         }
         materials.push_back(mat);
+        textures.push_back(texture);
     }
     return materials;
 }
@@ -198,29 +261,36 @@ MeshPart read_part(const aiMesh& source, const glm::mat4& world, const std::stri
     return part;
 }
 
-// Every vertex position of every mesh in the file is a finite number.
-void require_finite_positions(const aiScene& scene, const std::string& path) {
+// What assimp's reader made, checked before its processing steps rely on
+// it: every vertex position a finite number, every face with indices, all
+// of them below the mesh's vertex count. (Its triangulation asserts the
+// last two, stopping the process on a hostile file.)
+void check_raw_meshes(const aiScene& scene, const std::string& path) {
     for (unsigned m = 0; m < scene.mNumMeshes; ++m) {
         const aiMesh& mesh = *scene.mMeshes[m];
+        const std::string what = "mesh '" + std::string(mesh.mName.C_Str()) + "': ";
         for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
             const aiVector3D& p = mesh.mVertices[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-                bad(path, "mesh '" + std::string(mesh.mName.C_Str()) + "': vertex " +
-                              std::to_string(v) + "'s position is not finite");
+                bad(path, what + "vertex " + std::to_string(v) + "'s position is not finite");
+        }
+        for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
+            const aiFace& face = mesh.mFaces[f];
+            if (face.mNumIndices == 0 || !face.mIndices)
+                bad(path, what + "face " + std::to_string(f) + " has no vertices");
+            for (unsigned k = 0; k < face.mNumIndices; ++k)
+                if (face.mIndices[k] >= mesh.mNumVertices)
+                    bad(path, what + "face " + std::to_string(f) + " refers to vertex " +
+                                  std::to_string(face.mIndices[k]) + " of " +
+                                  std::to_string(mesh.mNumVertices));
         }
     }
 }
 
-}  // namespace
-
-Mesh load_assimp(const std::string& path, const AssetContext& context) {
-    MeshFile file{path, read_input_file(path, "mesh", context.paths.max_file_bytes)};
-    const auto format = mesh_format_of_bytes(file.bytes, file.bytes.size());
-    file.format = format ? *format : mesh_format_of_name(path).value_or(MeshFormat::stl);
-    return load_assimp(file, context);
-}
-
-Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
+// The mesh as assimp reads it, without decoding its textures: their files
+// go into `textures`, one per material ("" for none).
+Mesh assimp_mesh(const MeshFile& file, const AssetContext& context,
+                 std::vector<std::string>& textures) {
     const std::string& path = file.path;
     // A PLY file's structure is checked before assimp reads it
     // (assets/ply_check.hpp).
@@ -238,21 +308,21 @@ Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
     const aiScene* scene = importer.ReadFileFromMemory(file.bytes.data(), file.bytes.size(), 0,
                                                        assimp_hint(file.format));
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
-        bad(path, "cannot read: " + with_long_words_cut(importer.GetErrorString()));
-    require_finite_positions(*scene, path);
+        bad(path, assimp_error(importer));
+    check_raw_meshes(*scene, path);
     scene =
         importer.ApplyPostProcessing(aiProcess_Triangulate | aiProcess_SortByPType |
                                      aiProcess_FindDegenerates | aiProcess_JoinIdenticalVertices);
-    if (!scene || !scene->mRootNode)
-        bad(path, "cannot read: " + with_long_words_cut(importer.GetErrorString()));
+    if (!scene || !scene->mRootNode) bad(path, assimp_error(importer));
     Mesh mesh;
     mesh.source = path;
     mesh.loader = "assimp";
-    mesh.materials = read_materials(*scene, file, context, mesh.warnings);
+    mesh.materials = read_materials(*scene, file, context, mesh.warnings, textures);
     const uint32_t default_material = static_cast<uint32_t>(mesh.materials.size());
     Material fallback;
     fallback.name = "default";
     mesh.materials.push_back(fallback);
+    textures.push_back("");
 
     // Every instance of a mesh is baked, so a small file can ask for far
     // more than its size: the vertices are counted before they are read.
@@ -285,6 +355,47 @@ Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
                 {at.node->mChildren[c], at.world * to_glm(at.node->mChildren[c]->mTransformation)});
     }
     if (mesh.triangle_count() == 0) bad(path, "the file has no triangles to render");
+    return mesh;
+}
+
+}  // namespace
+
+Mesh load_assimp(const std::string& path, const AssetContext& context) {
+    MeshFile file{path, read_input_file(path, "mesh", context.paths.max_file_bytes)};
+    const auto format = mesh_format_of_bytes(file.bytes, file.bytes.size());
+    file.format = format ? *format : mesh_format_of_name(path).value_or(MeshFormat::stl);
+    return load_assimp(file, context);
+}
+
+Mesh load_assimp(const MeshFile& file, const AssetContext& context) {
+    // assimp's readers are not safe against hostile files (fuzzed, they
+    // crash, loop and allocate gigabytes): they run in a child process,
+    // which sends back the mesh without its textures (isolated_call.hpp).
+    std::vector<std::string> textures;
+    const std::vector<uint8_t> answer = run_isolated(file.path, [&] {
+        ByteWriter out;
+        std::vector<std::string> paths;
+        write_mesh(assimp_mesh(file, context, paths), paths, out);
+        return out.take();
+    });
+    ByteReader reader(answer);
+    Mesh mesh = read_mesh(reader, textures);
+    mesh.source = file.path;
+    // The textures, decoded here under the run's texture budget.
+    std::map<std::string, std::shared_ptr<const Texture>> decoded;
+    for (size_t i = 0; i < textures.size(); ++i) {
+        if (textures[i].empty()) continue;
+        Material& mat = mesh.materials[i];
+        try {
+            auto& slot = decoded[textures[i]];
+            if (!slot)
+                slot = std::make_shared<Texture>(load_texture(textures[i], context.textures));
+            mat.base_color_map.texture = slot;
+            if (mat.color == glm::vec3(0)) mat.color = glm::vec3(1);
+        } catch (const Error& e) {
+            texture_warning(file.path, e, mesh.warnings);
+        }
+    }
     return mesh;
 }
 

@@ -53,11 +53,16 @@ Header parse_header(const std::vector<uint8_t>& bytes, const std::string& path) 
     const size_t scan = std::min(bytes.size(), kMaxHeaderBytes);
     const std::string head(bytes.begin(), bytes.begin() + static_cast<long>(scan));
     if (head.compare(0, 3, "ply") != 0) bad(path, "file does not start with 'ply'");
-    size_t end = head.find("end_header");
+    size_t end = head.find("\nend_header");
     if (end == std::string::npos)
         bad(path, "header does not end (no end_header in its first 64 KiB)");
-    size_t after = head.find('\n', end);
-    if (after == std::string::npos) bad(path, "header's end_header line does not end");
+    ++end;
+    // The line is end_header and nothing else: assimp's reader, given more
+    // on it ("end_header#0 0 0"), never finds the header's end and loops.
+    size_t after = end + std::strlen("end_header");
+    if (after < head.size() && head[after] == '\r') ++after;
+    if (after >= head.size() || head[after] != '\n')
+        bad(path, "header's end_header line holds more than end_header");
     Header h;
     h.data_start = after + 1;
     std::istringstream lines(head.substr(0, end));
@@ -69,12 +74,20 @@ Header parse_header(const std::vector<uint8_t>& bytes, const std::string& path) 
         std::string word;
         words >> word;
         const std::string at = "header line " + std::to_string(number) + ": ";
+        if (word == "ply" && number > 1) bad(path, at + "'ply' again inside the header");
         if (word.empty() || word == "ply" || word == "comment" || word == "obj_info") continue;
         if (word == "format") {
-            words >> h.format;
+            // Exactly one, as "format TYPE 1.0": with two, or a version
+            // assimp reads otherwise, it could read the data in another
+            // format than the one checked here, past the end of its buffers.
+            std::string version, extra;
+            if (!h.format.empty()) bad(path, at + "a second format line");
+            words >> h.format >> version;
             if (h.format != "ascii" && h.format != "binary_little_endian" &&
                 h.format != "binary_big_endian")
                 bad(path, at + "unknown format '" + h.format + "'");
+            if (version != "1.0" || words >> extra)
+                bad(path, at + "the format line must end with version 1.0");
         } else if (word == "element") {
             Element e;
             long double count = -1;

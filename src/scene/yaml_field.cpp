@@ -360,7 +360,7 @@ std::string yaml_quoted(const std::string& text) {
             ++i;
         } else if (byte(i) == 0xe2 && i + 2 < emitted.size() && byte(i + 1) == 0x80 &&
                    (byte(i + 2) == 0xa8 || byte(i + 2) == 0xa9)) {
-            safe += "\\u20" + hex_byte(byte(i + 2));
+            safe += "\\u20" + hex_byte(byte(i + 2) & 0x3f);  // E2 80 A8 is U+2028
             i += 2;
         } else {
             safe += emitted[i];
