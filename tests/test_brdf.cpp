@@ -49,7 +49,7 @@ double ggx_density(const glm::dvec3& v, const glm::dvec3& l, double alpha) {
 glm::dvec3 reflected_energy(const pbr::Material& material, double n_dot_v,
                             MultipleScattering multiple_scattering) {
     const glm::dvec3 v = view_at(n_dot_v);
-    const pbr::ShadingPoint point =
+    const pbr::PbrPoint<float> point =
         pbr::prepare_shading_point({0, 0, 1}, glm::vec3(v), material, multiple_scattering);
     const double alpha = pbr::alpha_from_roughness(material.roughness), a2 = alpha * alpha;
     const double count = static_cast<double>(kSteps) * kSteps;
@@ -261,9 +261,9 @@ TEST_CASE("brdf: the energy compensation depends on n.v alone, so it is not reci
         return pbr::brdf_cosine(n, from, to, rough_gold, MultipleScattering::compensated) /
                glm::dot(n, to);
     };
-    const pbr::ShadingPoint at_v =
+    const pbr::PbrPoint<float> at_v =
         pbr::prepare_shading_point(n, v, rough_gold, MultipleScattering::compensated);
-    const pbr::ShadingPoint at_l =
+    const pbr::PbrPoint<float> at_l =
         pbr::prepare_shading_point(n, l, rough_gold, MultipleScattering::compensated);
     const glm::vec3 ratio = compensated(v, l) / compensated(l, v);
     for (int c = 0; c < 3; ++c) {

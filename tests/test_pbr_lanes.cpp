@@ -1,13 +1,15 @@
-// The `pbr` model runs eight points at a time (shade/model_pbr.cpp) over
-// the same formulas as the one-point functions of shade/brdf.hpp and
-// shade/environment_map.hpp. These tests pin that each lane gives the
-// one-point function's bits, so the documented formulas are what renders.
+// The `pbr` model runs eight points at a time (shade/model_pbr.cpp) through
+// the templates of shade/brdf.hpp and shade/light_sample.hpp that also give
+// the one-point functions, and the environment has one-point and
+// eight-point lookups. These tests pin that each lane gives the one-point
+// function's bits, so the documented formulas are what renders.
 #include <catch2/catch.hpp>
 
 #include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -15,6 +17,7 @@
 #include "shade/brdf.hpp"
 #include "shade/environment_map.hpp"
 #include "shade/shading_models.hpp"
+#include "shade/shadow_map.hpp"
 
 using namespace facet;
 using simd::splat;
@@ -107,6 +110,104 @@ TEST_CASE("pbr lanes: each lane of the model is brdf.hpp's f(v, l) (n.l) times p
             CHECK(same_bits(out.color[c][i], expected[c]));
         }
     }
+}
+
+namespace {
+
+// An orthographic shadow map from `to_light` whose left half of texels has
+// a caster halfway along, so that some lanes are shadowed and some are not.
+ShadowMap half_shadowed_map(const glm::vec3& to_light) {
+    ShadowMap map;
+    const ShadowBasis basis = shadow_basis(-to_light);
+    set_orthographic(map, 16, shadow_view(basis, to_light * 10.0f), 4.0f, 0.1f, 20.0f);
+    for (int y = 0; y < map.size; ++y)
+        for (int x = 0; x < map.size; ++x)
+            map.depth[static_cast<size_t>(y * map.size + x)] =
+                x < map.size / 2 ? 5.0f : std::numeric_limits<float>::infinity();
+    return map;
+}
+
+}  // namespace
+
+TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit",
+          "[shade][pbr]") {
+    // The one-point instantiation covers what brdf_cosine alone does not:
+    // KHR_materials_specular's f0 and f90, the clear coat and its normal,
+    // occlusion, point and spot lights with ranges, shadows, ambient light
+    // and the environment's split sum, rotated and scaled.
+    const std::array<LanePoint, simd::kLanes> points = lane_points();
+    const glm::vec3 eye(0.5f, 2.0f, 4.0f);
+    SurfaceLanes in;
+    in.count = simd::kLanes;
+    for (int i = 0; i < simd::kLanes; ++i) {
+        const glm::vec3 position(-2.0f + 0.55f * i, 0.1f * i, 0.3f * (i % 3));
+        in.surface.px[i] = position.x, in.surface.py[i] = position.y, in.surface.pz[i] = position.z;
+        in.surface.nx[i] = points[i].n.x * 2.0f, in.surface.ny[i] = points[i].n.y * 2.0f;
+        in.surface.nz[i] = points[i].n.z * 2.0f;  // any length
+        in.surface.receives_shadow[i] = i == 5 ? 0.0f : 1.0f;
+        for (int c = 0; c < 3; ++c) {
+            in.albedo[c][i] = points[i].base[c];
+            in.pbr.f0[c][i] = 0.02f + 0.01f * static_cast<float>(i + c);
+            in.pbr.coat_normal[c][i] = points[(i + 3) % simd::kLanes].n[c];
+        }
+        in.pbr.metallic[i] = points[i].metallic;
+        in.pbr.roughness[i] = points[i].roughness;
+        in.pbr.occlusion[i] = 1.0f - 0.07f * static_cast<float>(i);
+        in.pbr.f90[i] = 0.6f + 0.05f * static_cast<float>(i);
+        in.pbr.clearcoat[i] = i % 2 == 0 ? 0.0f : 0.2f * static_cast<float>(i);
+        in.pbr.clearcoat_roughness[i] = 0.1f * static_cast<float>(i);
+    }
+    std::vector<ShadeLight> lights(4);
+    lights[0].direction = glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f));
+    lights[0].radiance = glm::vec3(1.0f, 0.9f, 0.8f);
+    const ShadowMap shadow = half_shadowed_map(lights[0].direction);
+    lights[0].shadow = &shadow;
+    lights[1].is_point = true;
+    lights[1].position = glm::vec3(0.0f, 3.0f, 1.0f);
+    lights[1].radiance = glm::vec3(4.0f, 2.0f, 1.0f);
+    lights[1].inv_range = 1.0f / 4.5f;
+    lights[2].is_point = true;
+    lights[2].position = glm::vec3(1.0f, 4.0f, 0.0f);
+    lights[2].direction = glm::vec3(0.0f, 1.0f, 0.0f);
+    lights[2].radiance = glm::vec3(6.0f);
+    set_spot_cone(lights[2], 20.0f, 35.0f);
+    lights[3].is_ambient = true;
+    lights[3].radiance = glm::vec3(0.05f, 0.06f, 0.07f);
+    const pbr::SharedEnvironment studio = pbr::shared_studio_environment();
+    const EnvironmentLighting environment = environment_at(studio.get(), 0.7f, 33.0f);
+    ShadingContext context{eye, lights, glm::vec2(0.1f, 10.0f), &environment};
+    ShadedLanes out;
+    shade_pbr(in, context, out);
+
+    int shadowed = 0;
+    for (int i = 0; i < simd::kLanes; ++i) {
+        const glm::vec3 position(in.surface.px[i], in.surface.py[i], in.surface.pz[i]);
+        const glm::vec3 normal(in.surface.nx[i], in.surface.ny[i], in.surface.nz[i]);
+        pbr::SurfaceTerms<float> terms;
+        for (int c = 0; c < 3; ++c) {
+            terms.base[c] = in.albedo[c][i];
+            terms.f0[c] = in.pbr.f0[c][i];
+            terms.coat_normal[c] = in.pbr.coat_normal[c][i];
+        }
+        terms.metallic = in.pbr.metallic[i];
+        terms.roughness = in.pbr.roughness[i];
+        terms.occlusion = in.pbr.occlusion[i];
+        terms.f90 = in.pbr.f90[i];
+        terms.coat = in.pbr.clearcoat[i];
+        terms.coat_roughness = in.pbr.clearcoat_roughness[i];
+        const glm::vec3 expected =
+            shade_pbr_point(position, normal, in.surface.receives_shadow[i] > 0.0f, terms, context);
+        if (shadow_visibility(shadow, position, normal) < 1.0f) ++shadowed;
+        INFO("lane " << i);
+        for (int c = 0; c < 3; ++c) {
+            INFO("channel " << c << ": " << out.color[c][i] << " against " << expected[c]);
+            CHECK(expected[c] > 0.0f);
+            CHECK(same_bits(out.color[c][i], expected[c]));
+        }
+    }
+    // The shadow map darkens some lanes and not others.
+    CHECK(shadowed > 0);
+    CHECK(shadowed < simd::kLanes);
 }
 
 TEST_CASE("pbr lanes: the environment's eight-point lookups are its one-point lookups, to the bit",

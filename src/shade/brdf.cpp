@@ -4,7 +4,6 @@
 
 #include "core/exact_trig.hpp"
 #include "shade/hammersley.hpp"
-#include "shade/light_sample.hpp"
 
 namespace facet::pbr {
 
@@ -118,39 +117,12 @@ const DfgTable& dfg_table() {
     return table;
 }
 
-ShadingPoint prepare_shading_point(const glm::vec3& n, const glm::vec3& v, const Material& material,
-                                   MultipleScattering multiple_scattering) {
-    ShadingPoint p;
-    p.n = n;
-    p.v = v;
-    p.n_dot_v = std::max(dot3(n, v), kMinNdotV);
-    p.alpha = alpha_from_roughness(material.roughness);
-    p.metallic = std::clamp(material.metallic, 0.0f, 1.0f);
-    p.base_color = material.base_color;
-    p.dielectric_f0 = f0_from_ior(material.ior);
-    if (multiple_scattering == MultipleScattering::compensated) {
-        const float albedo = dfg_table().lookup(p.n_dot_v, material.roughness).albedo();
-        p.metal_compensation = energy_compensation(p.base_color, albedo);
-        p.dielectric_compensation = energy_compensation(p.dielectric_f0, albedo);
-    }
-    return p;
-}
-
-glm::vec3 brdf_cosine(const ShadingPoint& p, const glm::vec3& l) {
-    const float n_dot_l = dot3(p.n, l);
-    if (!(n_dot_l > 0.0f)) return glm::vec3(0.0f);
-    const HalfVector h = half_vector(p.n, p.v, l);
-    const float specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.alpha);
-    const float weight = schlick_weight(h.v_dot_h);
-
-    // fresnel_mix: the diffuse base under a specular layer, weighted by F.
-    const float dielectric_fresnel = schlick_fresnel(p.dielectric_f0, weight);
-    const glm::vec3 dielectric =
-        (1.0f - dielectric_fresnel) * (1.0f / kPi) * p.base_color +
-        glm::vec3(dielectric_fresnel * specular * p.dielectric_compensation);
-    // conductor_fresnel: the specular lobe tinted by the metal's F.
-    const glm::vec3 metal = schlick_fresnel(p.base_color, weight) * specular * p.metal_compensation;
-    return ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
+SurfaceTerms<float> surface_terms(const Material& material) {
+    const float f0 = f0_from_ior(material.ior);
+    const lanes::Vec3<float> base = {material.base_color.x, material.base_color.y,
+                                     material.base_color.z};
+    return {base, material.metallic, material.roughness, 1.0f, {f0, f0, f0}, 1.0f, 0.0f, 0.0f,
+            {0.0f, 1.0f, 0.0f}};
 }
 
 }  // namespace facet::pbr

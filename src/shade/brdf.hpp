@@ -16,18 +16,20 @@
 // that a white rough metal reflects all the light it receives.
 //
 // Per shading point, once:
-//   const ShadingPoint p = prepare_shading_point(n, v, material, MultipleScattering::compensated);
+//   const PbrPoint<T> p = prepare_point(n, v, terms, MultipleScattering::compensated, table);
 // per light (l towards the light, radiance arriving at the point):
 //   colour += radiance * brdf_cosine(p, l);
+// and for light from every direction, environment_response.
 //
-// n, v and l are unit vectors; v points towards the viewer. Scalar code for
-// now: the renderer's eight-lane version is meant to overload the same
-// names on simd::vf, so the formulas take dot products (and one cross
-// product) and avoid branches where a select will do. Only IEEE-exact
-// operations (add, mul, div, sqrt, compares) are used, so results have the
-// same bits on every x86-64, like core/simd_math.hpp. No global mutable
-// state: the table is an object the caller owns, or dfg_table()'s
-// function-local static.
+// n, v and l are unit vectors; v points towards the viewer. Every term is a
+// template on the number type T (shade/lanes.hpp): float for one point,
+// simd::vf for the renderer's eight, so a point's result is lane 0 of the
+// eight-point one, to the bit, and the formulas documented here are the
+// ones that render. They take dot products (and one cross product) and
+// select where a branch would diverge. Only IEEE-exact operations (add,
+// mul, div, sqrt, compares) are used, so results have the same bits on
+// every x86-64, like core/simd_math.hpp. No global mutable state: the table
+// is an object the caller owns, or dfg_table()'s function-local static.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -36,7 +38,7 @@
 
 #include "core/simd_math.hpp"
 
-#include "shade/light_sample.hpp"  // dot3
+#include "shade/lanes.hpp"
 
 namespace facet::pbr {
 
@@ -58,19 +60,15 @@ constexpr float kMinNdotV = 1e-4f;
 // KHR_materials_ior's default): F0 = 0.04.
 constexpr float kDefaultIor = 1.5f;
 
-// The glTF metallic-roughness inputs at one point.
-struct Material {
-    glm::vec3 base_color{1.0f};  // linear RGB: a dielectric's albedo, a metal's F0
-    float metallic = 1.0f;       // 0 dielectric .. 1 metal (glTF's default is 1)
-    float roughness = 1.0f;      // perceptual roughness 0..1 (glTF's default is 1)
-    float ior = kDefaultIor;     // the dielectric's index of refraction
-};
 
 // alpha = roughness^2, the mapping to GGX's width that Burley 2012 made
 // perceptually linear and glTF adopts (Appendix B.2.3). The roughness is
 // first clamped to [kMinRoughness, 1].
-inline float alpha_from_roughness(float roughness) {
-    const float r = std::clamp(roughness, kMinRoughness, 1.0f);
+template <typename T>
+[[gnu::always_inline]] inline T alpha_from_roughness(T roughness) {
+    using lanes::select, lanes::splat;
+    const T low = splat<T>(kMinRoughness), one = splat<T>(1.0f);
+    const T r = select(roughness < low, low, select(one < roughness, one, roughness));
     return r * r;
 }
 
@@ -84,44 +82,56 @@ inline float f0_from_ior(float ior) {
 
 // Schlick 1994's weight (1 - v.h)^5, the part of F that depends on the
 // angle. v.h is clamped to [0, 1].
-inline float schlick_weight(float v_dot_h) {
-    const float m = 1.0f - std::clamp(v_dot_h, 0.0f, 1.0f);
-    const float m2 = m * m;
+template <typename T>
+[[gnu::always_inline]] inline T schlick_weight(T v_dot_h) {
+    const T m = 1.0f - lanes::clamp01(v_dot_h);
+    const T m2 = m * m;
     return m2 * m2 * m;
 }
 
-// Schlick 1994's Fresnel F = F0 + (1 - F0)(1 - v.h)^5 with F90 = 1, as
-// glTF Appendix B.3.4 writes it for conductor_fresnel and fresnel_mix.
-// `weight` is schlick_weight(v.h), computed once for all channels.
-inline float schlick_fresnel(float f0, float weight) {
-    return f0 + (1.0f - f0) * weight;
-}
-inline glm::vec3 schlick_fresnel(const glm::vec3& f0, float weight) {
-    return {schlick_fresnel(f0.x, weight), schlick_fresnel(f0.y, weight),
-            schlick_fresnel(f0.z, weight)};
+// Schlick 1994's Fresnel F = F0 + (F90 - F0)(1 - v.h)^5, as glTF Appendix
+// B.3.4 writes it for conductor_fresnel and fresnel_mix (F90 = 1) and
+// KHR_materials_specular (F90 its weight). `weight` is schlick_weight(v.h),
+// computed once for all channels.
+template <typename T>
+[[gnu::always_inline]] inline T schlick_fresnel(T f0, T weight, T f90 = lanes::splat<T>(1.0f)) {
+    return f0 + (f90 - f0) * weight;
 }
 
 // The half vector h = normalise(l + v) as the BRDF uses it. All three
 // are symmetric in l and v to the bit (l + v = v + l, and v.h = l.h is
 // taken as |l + v| / 2, which holds for unit l and v), so the BRDF is
 // exactly reciprocal.
+template <typename T>
 struct HalfVector {
-    float n_dot_h = 0.0f;
+    T n_dot_h = lanes::splat<T>(0.0f);
     // |n x h|^2 = 1 - (n.h)^2, from the cross product: as 1 - (n.h)^2 in
     // float it would carry an error of about 1e-7, more than alpha^2 of a
     // smooth surface (6e-6 at roughness 0.05), and bias GGX's peak (Filament
     // computes D from n x h for the same reason).
-    float n_cross_h_squared = 1.0f;
-    float v_dot_h = 0.0f;
+    T n_cross_h_squared = lanes::splat<T>(1.0f);
+    T v_dot_h = lanes::splat<T>(0.0f);
 };
-// Zero n.h and v.h when v = -l (no half vector).
-inline HalfVector half_vector(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
-    const glm::vec3 s = l + v;
-    const float s2 = dot3(s, s);
-    if (!(s2 > 1e-12f)) return {};
-    const float length = std::sqrt(s2);
-    const glm::vec3 n_cross_s(n.y * s.z - n.z * s.y, n.z * s.x - n.x * s.z, n.x * s.y - n.y * s.x);
-    return {dot3(n, s) / length, dot3(n_cross_s, n_cross_s) / s2, 0.5f * length};
+
+// Zero n.h and v.h (and |n x h|^2 one) where v = -l (no half vector).
+template <typename T>
+[[gnu::always_inline]] inline HalfVector<T> half_vector(const lanes::Vec3<T>& n,
+                                                        const lanes::Vec3<T>& v,
+                                                        const lanes::Vec3<T>& l) {
+    using lanes::select, lanes::splat;
+    const lanes::Vec3<T> s = {l[0] + v[0], l[1] + v[1], l[2] + v[2]};
+    const T s2 = lanes::dot(s, s);
+    const lanes::Mask<T> ok = s2 > splat<T>(1e-12f);
+    const T safe = select(ok, s2, splat<T>(1.0f));
+    const T length = lanes::square_root(safe);
+    const lanes::Vec3<T> n_cross_s = {n[1] * s[2] - n[2] * s[1], n[2] * s[0] - n[0] * s[2],
+                                      n[0] * s[1] - n[1] * s[0]};
+    return {select(ok, lanes::dot(n, s) / length, splat<T>(0.0f)),
+            select(ok, lanes::dot(n_cross_s, n_cross_s) / safe, splat<T>(1.0f)),
+            select(ok, 0.5f * length, splat<T>(0.0f))};
+}
+inline HalfVector<float> half_vector(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l) {
+    return half_vector<float>({n.x, n.y, n.z}, {v.x, v.y, v.z}, {l.x, l.y, l.z});
 }
 
 // The GGX / Trowbridge-Reitz normal distribution (Walter et al. 2007, eq.
@@ -130,11 +140,20 @@ inline HalfVector half_vector(const glm::vec3& n, const glm::vec3& v, const glm:
 // in 1/sr, normalised so that the integral of D(h)(n.h) over the
 // hemisphere is 1. The denominator's (n.h)^2 (alpha^2 - 1) + 1 is computed
 // as (n.h)^2 alpha^2 + |n x h|^2 (HalfVector says why).
-inline float ggx_distribution(float n_dot_h, float n_cross_h_squared, float alpha) {
-    if (!(n_dot_h > 0.0f)) return 0.0f;
-    const float a2 = alpha * alpha;
-    const float d = n_dot_h * n_dot_h * a2 + n_cross_h_squared;
-    return a2 / (kPi * d * d);
+template <typename T>
+[[gnu::always_inline]] inline T ggx_distribution(T n_dot_h, T n_cross_h_squared, T alpha) {
+    const T a2 = alpha * alpha;
+    const T d = n_dot_h * n_dot_h * a2 + n_cross_h_squared;
+    return lanes::select(n_dot_h > lanes::splat<T>(0.0f), a2 / (kPi * d * d),
+                         lanes::splat<T>(0.0f));
+}
+
+// sqrt((n.x)^2 (1 - alpha^2) + alpha^2): one side's root of the
+// height-correlated Smith term below, computed once for the view.
+template <typename T>
+[[gnu::always_inline]] inline T smith_root(T n_dot_x, T alpha) {
+    const T a2 = alpha * alpha;
+    return lanes::square_root(n_dot_x * n_dot_x * (1.0f - a2) + a2);
 }
 
 // The height-correlated Smith masking-shadowing function for GGX (Heitz
@@ -143,8 +162,8 @@ inline float ggx_distribution(float n_dot_h, float n_cross_h_squared, float alph
 // (glTF Appendix B.3.2's visibility nu; Filament's V):
 //   V = 1 / (2 (n.v sqrt(alpha^2 + (1 - alpha^2)(n.l)^2)
 //             + n.l sqrt(alpha^2 + (1 - alpha^2)(n.v)^2)))
-// for n.l > 0 and n.v > 0 (the caller checks). Templated on the float type
-// so that the DFG table can integrate it in double.
+// for n.l > 0 and n.v > 0 (the caller checks). In double too, for the DFG
+// table's integration.
 template <typename Real>
 inline Real smith_ggx_correlated_visibility(Real n_dot_l, Real n_dot_v, Real alpha) {
     const Real a2 = alpha * alpha;
@@ -154,10 +173,17 @@ inline Real smith_ggx_correlated_visibility(Real n_dot_l, Real n_dot_v, Real alp
 }
 
 // The single-scattering specular microfacet BRDF without its Fresnel
-// factor, glTF Appendix B.3.2's specular_brdf(alpha) = V * D, in 1/sr.
-inline float specular_brdf(const HalfVector& h, float n_dot_l, float n_dot_v, float alpha) {
-    return ggx_distribution(h.n_dot_h, h.n_cross_h_squared, alpha) *
-           smith_ggx_correlated_visibility(n_dot_l, n_dot_v, alpha);
+// factor, glTF Appendix B.3.2's specular_brdf(alpha) = V * D, in 1/sr,
+// with the view's Smith root given (smith_root(n.v, alpha)).
+template <typename T>
+[[gnu::always_inline]] inline T specular_brdf(const HalfVector<T>& h, T n_dot_l, T n_dot_v,
+                                              T view_root, T alpha) {
+    const T distribution = ggx_distribution(h.n_dot_h, h.n_cross_h_squared, alpha);
+    const T light_root = smith_root(n_dot_l, alpha);
+    return distribution * (0.5f / (n_dot_l * view_root + n_dot_v * light_root));
+}
+inline float specular_brdf(const HalfVector<float>& h, float n_dot_l, float n_dot_v, float alpha) {
+    return specular_brdf(h, n_dot_l, n_dot_v, smith_root(n_dot_v, alpha), alpha);
 }
 
 // The directional albedo of the specular lobe, split as Karis 2013 ("Real
@@ -207,54 +233,209 @@ DfgTable compute_dfg_table();
 // static const: thread-safe, never modified).
 const DfgTable& dfg_table();
 
-// The multiplier that restores the energy a single-scattering lobe of
-// directional albedo E loses to multiple scattering between microfacets:
-//   1 + f0 (1/E - 1)
-// (Turquin 2019, "Practical multiple scattering compensation for microfacet
-// models"; the same scaling of the split sum by Fdez-Aguera 2019, as
-// Filament applies it, "Energy loss in specular reflectance", 4.7.2; an
-// approximation of Kulla & Conty 2017's extra lobe). A white metal (f0 = 1)
-// then reflects everything: E * (1/E) = 1.
-inline glm::vec3 energy_compensation(const glm::vec3& f0, float albedo) {
-    const float k = 1.0f / albedo - 1.0f;
-    return glm::vec3(1.0f) + f0 * k;
-}
-inline float energy_compensation(float f0, float albedo) {
-    return 1.0f + f0 * (1.0f / albedo - 1.0f);
-}
-
-// Whether the specular lobes get the energy compensation. `ignored` is the
-// specification's single-scattering BRDF exactly.
+// Whether the specular lobes get the energy compensation below. `ignored`
+// is the specification's single-scattering BRDF exactly.
 enum class MultipleScattering { ignored, compensated };
 
-// Everything at one shading point that does not depend on the light: worked
-// out once, then used for every light.
-struct ShadingPoint {
-    glm::vec3 n{0.0f, 1.0f, 0.0f}, v{0.0f, 1.0f, 0.0f};  // unit
-    float n_dot_v = 1.0f;  // at least kMinNdotV (a shading normal may face away)
-    float alpha = 1.0f;
-    float metallic = 1.0f;                 // clamped to [0, 1]
-    glm::vec3 base_color{1.0f};            // also the metal's f0
-    float dielectric_f0 = 0.04f;           // f0_from_ior(ior)
-    glm::vec3 metal_compensation{1.0f};    // energy_compensation(base_color, E)
-    float dielectric_compensation = 1.0f;  // energy_compensation(dielectric_f0, E)
+// A clear coat is a dielectric of ior 1.5 (KHR_materials_clearcoat).
+constexpr float kCoatF0 = 0.04f;
+
+// The `pbr` model's inputs at a point, textures applied.
+template <typename T>
+struct SurfaceTerms {
+    lanes::Vec3<T> base;  // linear RGB: a dielectric's albedo, a metal's F0
+    T metallic, roughness;
+    T occlusion;  // of indirect light: 1 none, 0 all
+    // The dielectric's reflectance at normal incidence (from the ior, times
+    // KHR_materials_specular's colour and weight) and at grazing (the weight).
+    lanes::Vec3<T> f0;
+    T f90;
+    T coat, coat_roughness;  // KHR_materials_clearcoat's factor and roughness
+    // The coat's normal: the surface's before its normal map (the coat is
+    // smooth lacquer over the relief), on the viewer's side, any length.
+    lanes::Vec3<T> coat_normal;
 };
 
-ShadingPoint prepare_shading_point(const glm::vec3& n, const glm::vec3& v, const Material& material,
-                                   MultipleScattering multiple_scattering);
+// Everything at a point that does not depend on the light: worked out once,
+// then used for every light and the environment.
+template <typename T>
+struct PbrPoint {
+    lanes::Vec3<T> n, v, coat_n;  // unit
+    T n_dot_v, coat_n_dot_v;      // at least kMinNdotV (a shading normal may face away)
+    lanes::Vec3<T> base;
+    T metallic, roughness, alpha, occlusion;  // clamped to [0, 1]; alpha from roughness
+    lanes::Vec3<T> f0;
+    T f90;
+    T coat, coat_roughness, coat_alpha;
+    bool any_coat;  // a lane has a coat: the coat's terms are worked out
+    T dfg_scale, dfg_bias, coat_dfg_scale, coat_dfg_bias;  // DfgTable's terms at n.v (0: no coat)
+    // The multiplier that restores the energy a single-scattering lobe of
+    // directional albedo E loses to multiple scattering between microfacets:
+    //   1 + f0 (1/E - 1)
+    // (Turquin 2019, "Practical multiple scattering compensation for
+    // microfacet models"; the same scaling of the split sum by Fdez-Aguera
+    // 2019, as Filament applies it, "Energy loss in specular reflectance",
+    // 4.7.2; an approximation of Kulla & Conty 2017's extra lobe). A white
+    // metal (f0 = 1) then reflects everything: E * (1/E) = 1.
+    lanes::Vec3<T> metal_compensation, dielectric_compensation;
+    // smith_root(n.v, alpha) of each lobe.
+    T view_root, coat_view_root;
+};
+
+// The point for unit n and v and the surface's terms.
+template <typename T>
+PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
+                          const SurfaceTerms<T>& s, MultipleScattering multiple_scattering,
+                          const DfgTable& table) {
+    using lanes::clamp01, lanes::select, lanes::splat;
+    PbrPoint<T> p;
+    p.n = n;
+    p.v = v;
+    p.n_dot_v = lanes::max_of(lanes::dot(n, v), splat<T>(kMinNdotV));
+    p.base = s.base;
+    p.metallic = clamp01(s.metallic);
+    p.roughness = clamp01(s.roughness);
+    p.alpha = alpha_from_roughness(p.roughness);
+    p.occlusion = clamp01(s.occlusion);
+    p.f0 = s.f0;
+    p.f90 = s.f90;
+    p.coat = clamp01(s.coat);
+    p.coat_roughness = clamp01(s.coat_roughness);
+    p.coat_alpha = alpha_from_roughness(p.coat_roughness);
+    const auto dfg = table.lookup(p.n_dot_v, p.roughness);
+    p.dfg_scale = dfg.scale, p.dfg_bias = dfg.bias;
+    const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
+    p.any_coat = lanes::any(coated);
+    p.coat_dfg_scale = p.coat_dfg_bias = splat<T>(0.0f);
+    p.coat_n = p.n;
+    p.coat_n_dot_v = p.n_dot_v;
+    if (p.any_coat) {
+        p.coat_n = lanes::normalise_or(s.coat_normal, p.n);
+        p.coat_n_dot_v = lanes::max_of(lanes::dot(p.coat_n, v), splat<T>(kMinNdotV));
+        const auto terms = table.lookup(p.coat_n_dot_v, p.coat_roughness);
+        p.coat_dfg_scale = select(coated, T(terms.scale), splat<T>(0.0f));
+        p.coat_dfg_bias = select(coated, T(terms.bias), splat<T>(0.0f));
+    }
+    const bool compensated = multiple_scattering == MultipleScattering::compensated;
+    const T k = 1.0f / (p.dfg_scale + p.dfg_bias) - 1.0f;
+    for (int c = 0; c < 3; ++c) {
+        p.metal_compensation[c] = compensated ? 1.0f + p.base[c] * k : splat<T>(1.0f);
+        p.dielectric_compensation[c] = compensated ? 1.0f + p.f0[c] * k : splat<T>(1.0f);
+    }
+    p.view_root = smith_root(p.n_dot_v, p.alpha);
+    p.coat_view_root = p.any_coat ? smith_root(p.coat_n_dot_v, p.coat_alpha) : p.view_root;
+    return p;
+}
+
+// The coat's share of what reaches the base: 1 - coat * E_coat (its
+// directional albedo), the same for lights and the environment, so a
+// white coated surface under a white environment still reflects 1. Exactly
+// 1 without a coat (its terms are zero there).
+template <typename T>
+[[gnu::always_inline]] inline T coat_transmission(const PbrPoint<T>& p) {
+    return 1.0f - p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
+}
 
 // The glTF BRDF times the cosine, f(v, l) (n.l), for one light direction l
-// (unit, towards the light), in 1/sr: times the irradiance a light gives
-// on a plane facing it (a punctual light's colour times intensity at the
-// point) it is the radiance reflected towards v. Zero when the light is
-// below the surface (n.l <= 0). This is the
-// glTF Appendix B.3.5 sum
+// (unit, towards the light), in 1/sr: times the irradiance a light gives on
+// a plane facing it it is the radiance reflected towards v. Zero where the
+// light is below the surface (n.l <= 0). glTF Appendix B.3.5's sum
 //   (1 - metallic) * mix(base/pi, specular, F_dielectric)
 //   + metallic * F_metal * specular
-// with each specular lobe times its compensation (1 when ignored).
-glm::vec3 brdf_cosine(const ShadingPoint& point, const glm::vec3& l);
+// with each specular lobe times its compensation, KHR_materials_specular's
+// f0 and f90 for the dielectric, and the coat over both:
+//   base * (1 - coat * E_coat) + coat * F_coat * specular_coat.
+template <typename T>
+lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
+    using lanes::select, lanes::splat;
+    const T zero = splat<T>(0.0f);
+    const T n_dot_l = lanes::dot(p.n, l);
+    const lanes::Mask<T> lit = n_dot_l > zero;
+    lanes::Vec3<T> result = {zero, zero, zero};
+    if (lanes::any(lit)) {
+        const HalfVector<T> h = half_vector(p.n, p.v, l);
+        const T specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.view_root, p.alpha);
+        const T w = schlick_weight(h.v_dot_h);
+        for (int c = 0; c < 3; ++c) {
+            // fresnel_mix: the diffuse base under a specular layer, weighted by F.
+            const T fd = schlick_fresnel(p.f0[c], w, p.f90);
+            const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.base[c] +
+                                 fd * specular * p.dielectric_compensation[c];
+            // conductor_fresnel: the specular lobe tinted by the metal's F.
+            const T metal =
+                schlick_fresnel(p.base[c], w) * specular * p.metal_compensation[c];
+            const T sum = ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
+            result[c] = select(lit, sum, zero);
+        }
+    }
+    if (!p.any_coat) return result;
+    const T transmission = coat_transmission(p);
+    const T coat_n_dot_l = lanes::dot(p.coat_n, l);
+    const lanes::Mask<T> coat_lit = (coat_n_dot_l > zero) & (p.coat > zero);
+    const HalfVector<T> h = half_vector(p.coat_n, p.v, l);
+    const T f = schlick_fresnel(splat<T>(kCoatF0), schlick_weight(h.v_dot_h));
+    const T coat = p.coat * f *
+                   specular_brdf(h, coat_n_dot_l, p.coat_n_dot_v, p.coat_view_root, p.coat_alpha) *
+                   coat_n_dot_l;
+    for (int c = 0; c < 3; ++c) {
+        result[c] *= transmission;
+        result[c] = select(coat_lit, result[c] + coat, result[c]);
+    }
+    return result;
+}
 
-// The same in one call, for tests and one-off use.
+// The split sum for light from every direction: an environment whose
+// diffuse radiance E(n)/pi is `diffuse` and whose specular lobes read
+// `specular` and `coat_specular` (prefiltered along the reflected view).
+// Metal and dielectric lobes are weighted by their directional albedo
+// f0 * scale + f90 * bias (Karis 2013) and compensated, the dielectric's
+// diffuse by what its lobe leaves (Fdez-Aguera 2019), then the coat over both.
+template <typename T>
+lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& diffuse,
+                                    const lanes::Vec3<T>& specular,
+                                    const lanes::Vec3<T>& coat_specular) {
+    using lanes::select, lanes::splat;
+    const T coat_albedo = p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
+    const T transmission = coat_transmission(p);
+    const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
+    lanes::Vec3<T> result;
+    for (int c = 0; c < 3; ++c) {
+        const T dielectric_lobe =
+            (p.f0[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
+        const T metal_lobe = (p.base[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
+        const T dielectric =
+            (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) * p.base[c] * diffuse[c] +
+            dielectric_lobe * specular[c];
+        result[c] = (1.0f - p.metallic) * dielectric + p.metallic * metal_lobe * specular[c];
+        if (p.any_coat)
+            result[c] = select(coated, result[c] * transmission + coat_albedo * coat_specular[c],
+                               result[c]);
+    }
+    return result;
+}
+
+// The glTF metallic-roughness inputs at one point, for one-off use and tests.
+struct Material {
+    glm::vec3 base_color{1.0f};  // linear RGB: a dielectric's albedo, a metal's F0
+    float metallic = 1.0f;       // 0 dielectric .. 1 metal (glTF's default is 1)
+    float roughness = 1.0f;      // perceptual roughness 0..1 (glTF's default is 1)
+    float ior = kDefaultIor;     // the dielectric's index of refraction
+};
+
+// A core glTF material's terms: no coat, f90 1, no occlusion.
+SurfaceTerms<float> surface_terms(const Material& material);
+
+// The one-point forms, with unit n, v and l.
+inline PbrPoint<float> prepare_shading_point(const glm::vec3& n, const glm::vec3& v,
+                                             const Material& material,
+                                             MultipleScattering multiple_scattering) {
+    return prepare_point<float>({n.x, n.y, n.z}, {v.x, v.y, v.z}, surface_terms(material),
+                                multiple_scattering, dfg_table());
+}
+inline glm::vec3 brdf_cosine(const PbrPoint<float>& p, const glm::vec3& l) {
+    const lanes::Vec3<float> f = brdf_cosine<float>(p, {l.x, l.y, l.z});
+    return {f[0], f[1], f[2]};
+}
 inline glm::vec3 brdf_cosine(const glm::vec3& n, const glm::vec3& v, const glm::vec3& l,
                              const Material& material, MultipleScattering multiple_scattering) {
     return brdf_cosine(prepare_shading_point(n, v, material, multiple_scattering), l);

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/simd_math.hpp"
+#include "shade/lanes.hpp"
 
 namespace facet {
 
@@ -43,13 +44,6 @@ enum class Highlight { phong, blinn };
 // The falloff formulas, written once for one value (float) and for eight
 // (simd::vf), so per-pixel, per-vertex and stylised shading agree. Always
 // inlined, like simd_math.hpp's helpers, for the AVX2 clones that call them.
-inline float clamp01(float x) {
-    return std::min(std::max(x, 0.0f), 1.0f);
-}
-[[gnu::always_inline]] inline simd::vf clamp01(simd::vf x) {
-    return simd::vmin(simd::vmax(x, simd::splat(0.0f)), simd::splat(1.0f));
-}
-
 // The range window of glTF's KHR_lights_punctual (after Karis 2013, "Real
 // Shading in Unreal Engine 4"): clamp(1 - (d / range)^4, 0, 1)^2, which
 // multiplies the inverse-square falloff and reaches zero, smoothly, at the
@@ -57,7 +51,7 @@ inline float clamp01(float x) {
 template <typename T>
 [[gnu::always_inline]] inline T range_window(T dist2, float inv_range) {
     const T x = dist2 * (inv_range * inv_range);  // (d / range)^2
-    const T w = clamp01(1.0f - x * x);
+    const T w = lanes::clamp01(1.0f - x * x);
     return w * w;
 }
 
@@ -65,7 +59,7 @@ template <typename T>
 // the axis, 0 outside the outer cone and 1 inside the inner one.
 template <typename T>
 [[gnu::always_inline]] inline T spot_cone(T cos_angle, const ShadeLight& light) {
-    const T t = clamp01(cos_angle * light.spot_scale + light.spot_offset);
+    const T t = lanes::clamp01(cos_angle * light.spot_scale + light.spot_offset);
     return t * t * (3.0f - 2.0f * t);
 }
 

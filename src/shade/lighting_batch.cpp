@@ -4,7 +4,7 @@
 
 #include <glm/trigonometric.hpp>
 
-#include "shade/light_lanes.hpp"
+#include "shade/light_sample.hpp"
 
 namespace facet {
 
@@ -29,47 +29,27 @@ void pad_batch(SurfaceBatch& s, int count) {
 
 namespace {
 
-// Per lane, the unit normal (n) and the unit vector to the eye (e).
-struct UnitVectors {
-    vf nx, ny, nz, ex, ey, ez;
-};
+using Vec3 = lanes::Vec3<vf>;
 
-// Unit normal (a zero one becomes +Y) and unit vector to the eye.
-[[gnu::always_inline]] inline void normalise(vf x, vf y, vf z, UnitVectors& u, bool eye_vector) {
-    vf len = simd::vsqrt(x * x + y * y + z * z);
-    vi ok = len > splat(0.0f);
-    vf inv = 1.0f / (ok ? len : splat(1.0f));
-    if (eye_vector) {
-        u.ex = x * inv;
-        u.ey = y * inv;
-        u.ez = z * inv;
-    } else {
-        u.nx = ok ? x * inv : splat(0.0f);
-        u.ny = ok ? y * inv : splat(1.0f);
-        u.nz = ok ? z * inv : splat(0.0f);
-    }
-}
+// Per lane, the unit normal (n; a zero one becomes +Y) and the unit vector
+// to the eye (e).
+struct UnitVectors {
+    Vec3 n, e;
+};
 
 // The cosine the highlight's power raises: of the half vector and the
 // normal (Blinn), or of the reflected light and the eye vector (Phong).
 [[gnu::always_inline]] inline vf highlight_cosine(Highlight highlight, const UnitVectors& s,
-                                                  const IncomingLight& in, vf n_dot_l) {
+                                                  const Vec3& l) {
     const vf zero = splat(0.0f);
-    const vf lx = in.lx, ly = in.ly, lz = in.lz;
-    vf cosine;
     if (highlight == Highlight::blinn) {
-        vf hx = lx + s.ex, hy = ly + s.ey, hz = lz + s.ez;
-        vf len2 = hx * hx + hy * hy + hz * hz;
-        vf len = simd::vsqrt(len2);
-        vi ok = len > zero;
-        cosine = (s.nx * hx + s.ny * hy + s.nz * hz) / (ok ? len : splat(1.0f));
-        cosine = ok ? cosine : zero;
-    } else {
-        vf twice = 2.0f * n_dot_l;
-        vf rx = twice * s.nx - lx, ry = twice * s.ny - ly, rz = twice * s.nz - lz;
-        cosine = rx * s.ex + ry * s.ey + rz * s.ez;
+        const Vec3 h = {l[0] + s.e[0], l[1] + s.e[1], l[2] + s.e[2]};
+        const vf len = simd::vsqrt(lanes::dot(h, h));
+        const vi ok = len > zero;
+        const vf cosine = lanes::dot(s.n, h) / (ok ? len : splat(1.0f));
+        return ok ? cosine : zero;
     }
-    return cosine;
+    return lanes::dot(lanes::reflect(s.n, l), s.e);
 }
 
 // Adds one light's diffuse and highlight to `out`.
@@ -77,22 +57,24 @@ struct UnitVectors {
                                              const UnitVectors& s, Highlight highlight,
                                              LightingBatch& out) {
     const vf zero = splat(0.0f);
-    IncomingLight in = incoming_light(light, p);
-    vf n_dot_l = s.nx * in.lx + s.ny * in.ly + s.nz * in.lz;
-    vi lit = in.usable & (n_dot_l > zero);
-    if (light.shadow) apply_shadow(*light.shadow, p, s.nx, s.ny, s.nz, lit, in);
-    vf d = lit ? p.diffuse * n_dot_l : zero;
-    out.dr += d * in.rr;
-    out.dg += d * in.rg;
-    out.db += d * in.rb;
+    const Vec3 position = {p.px, p.py, p.pz};
+    IncomingLight<vf> in = incoming_light<vf>(light, position);
+    const vf n_dot_l = lanes::dot(s.n, in.to_light);
+    const vi lit = in.usable & (n_dot_l > zero);
+    if (light.shadow)
+        apply_shadow(*light.shadow, position, s.n, lit & (p.receives_shadow > zero), in);
+    const vf d = lit ? p.diffuse * n_dot_l : zero;
+    out.dr += d * in.radiance[0];
+    out.dg += d * in.radiance[1];
+    out.db += d * in.radiance[2];
 
-    vf cosine = highlight_cosine(highlight, s, in, n_dot_l);
-    vi highlighted = lit & (cosine > zero) & (p.specular > zero);
-    vf power = simd::vpow_unit(simd::vmin(cosine, splat(1.0f)), p.shininess);
-    vf k = highlighted ? p.specular * power : zero;
-    out.sr += k * in.rr;
-    out.sg += k * in.rg;
-    out.sb += k * in.rb;
+    const vf cosine = highlight_cosine(highlight, s, in.to_light);
+    const vi highlighted = lit & (cosine > zero) & (p.specular > zero);
+    const vf power = simd::vpow_unit(simd::vmin(cosine, splat(1.0f)), p.shininess);
+    const vf k = highlighted ? p.specular * power : zero;
+    out.sr += k * in.radiance[0];
+    out.sg += k * in.radiance[1];
+    out.sb += k * in.radiance[2];
 }
 
 }  // namespace
@@ -100,8 +82,11 @@ struct UnitVectors {
 LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& eye,
                                   std::span<const ShadeLight> lights, Highlight highlight) {
     UnitVectors s;
-    normalise(surface.nx, surface.ny, surface.nz, s, false);
-    normalise(eye.x - surface.px, eye.y - surface.py, eye.z - surface.pz, s, true);
+    s.n = lanes::normalise_or<vf>({surface.nx, surface.ny, surface.nz},
+                                  {splat(0.0f), splat(1.0f), splat(0.0f)});
+    // A point at the eye keeps its zero vector.
+    const Vec3 to_eye = {eye.x - surface.px, eye.y - surface.py, eye.z - surface.pz};
+    s.e = lanes::normalise_or(to_eye, to_eye);
     const SurfaceBatch& p = surface;
     LightingBatch out;
     const glm::vec3 ambient = ambient_light(lights);

@@ -20,6 +20,8 @@ namespace facet {
 
 namespace pbr {
 class PrefilteredEnvironment;  // shade/environment_map.hpp
+template <typename T>
+struct SurfaceTerms;  // shade/brdf.hpp
 }
 
 struct SurfaceLanes;
@@ -67,5 +69,10 @@ EnvironmentLighting environment_at(const pbr::PrefilteredEnvironment* map, float
                                    float rotation_degrees);
 
 void shade_pbr(const SurfaceLanes& in, const ShadingContext& context, ShadedLanes& out);
+
+// One point through the same template as shade_pbr's eight: a lane's
+// colour for the same inputs, to the bit (tests/test_pbr_lanes.cpp).
+glm::vec3 shade_pbr_point(const glm::vec3& position, const glm::vec3& normal, bool receives_shadow,
+                          const pbr::SurfaceTerms<float>& terms, const ShadingContext& context);
 
 }  // namespace facet
