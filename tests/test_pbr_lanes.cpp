@@ -129,8 +129,7 @@ ShadowMap half_shadowed_map(const glm::vec3& to_light) {
 
 }  // namespace
 
-TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit",
-          "[shade][pbr]") {
+TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit", "[shade][pbr]") {
     // The one-point instantiation covers what brdf_cosine alone does not:
     // KHR_materials_specular's f0 and f90, the clear coat and its normal,
     // occlusion, point and spot lights with ranges, shadows, ambient light

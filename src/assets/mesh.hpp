@@ -28,6 +28,22 @@ enum class AlphaMode { opaque, mask, blend };
 // gives one. The stylised models' highlights are designed for it.
 constexpr float kDefaultSpecular = 0.4f;
 
+// The steps of the shading stage's surface path (render/shade_batch.cpp)
+// that a material, a mesh part and a style may need beyond a material of
+// constants: one bit each. A batch whose set is empty, under a Phong,
+// Blinn-Phong or unlit style without layers, takes the path compiled
+// without any of them.
+enum MaterialFeature : uint32_t {
+    kBaseColorMap = 1u << 0,   // the base colour map multiplies the albedo
+    kVertexColors = 1u << 1,   // the part's vertex colours multiply it (a part's, not a material's)
+    kPhysicalMaps = 1u << 2,   // the `pbr` model's metal-rough, occlusion, specular and coat maps
+    kNormalMaps = 1u << 3,     // the `pbr` model's normal maps (the base's, the coat's)
+    kEmission = 1u << 4,       // unlit, or emission added to what the model made
+    kShadowCatcher = 1u << 5,  // shows only the shadows on it
+    kFade = 1u << 6,           // fades into the background with distance
+};
+constexpr int kMaterialFeatureCount = 7;
+
 struct Material {
     std::string name;
     glm::vec3 color = {0.8f, 0.8f, 0.8f};  // linear base colour
@@ -96,6 +112,23 @@ struct Material {
     // base's normal map, else the coat's (glTF gives both one tangent frame).
     const TextureSlot& tangent_space_map() const {
         return normal_map ? normal_map : clearcoat_normal_map;
+    }
+
+    // What shading must do for this material beyond its constants
+    // (MaterialFeature): the single source of it, read once per frame for
+    // the frame's values. A new key that needs a step of its own adds its
+    // bit here.
+    uint32_t features() const {
+        uint32_t f = 0;
+        if (base_color_map) f |= kBaseColorMap;
+        if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
+            clearcoat_map || clearcoat_roughness_map)
+            f |= kPhysicalMaps;
+        if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
+        if (unlit || emissive != glm::vec3(0)) f |= kEmission;
+        if (shadow_catcher) f |= kShadowCatcher;
+        if (fade_end > fade_start) f |= kFade;
+        return f;
     }
 };
 

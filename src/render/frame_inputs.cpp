@@ -1,6 +1,7 @@
 #include "render/frame_inputs.hpp"
 
 #include "render/framing_shapes.hpp"
+#include "shade/shading_models.hpp"
 
 #include <algorithm>
 
@@ -24,6 +25,20 @@ std::vector<Material> frame_materials(const World& world, const FrameState& stat
         if (s.roughness) mat.roughness = *s.roughness;
     }
     return materials;
+}
+
+// FrameInputs::draw_features.
+std::vector<uint32_t> settle_draw_features(const World& world,
+                                           const std::vector<Material>& materials,
+                                           const std::vector<StyleState>& styles) {
+    std::vector<uint32_t> features;
+    features.reserve(styles.size() * world.draws.size());
+    for (const StyleState& style : styles)
+        for (const Draw& draw : world.draws)
+            features.push_back(
+                drawn_features(style, materials[draw.material].features() |
+                                          (draw.has_colors ? uint32_t{kVertexColors} : 0u)));
+    return features;
 }
 
 }  // namespace
@@ -88,6 +103,11 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     in.materials = frame_materials(world_, in.state);
     for (const StyleDesc* style : plan_.styles)
         in.styles.push_back(evaluate_style(*style, at, tams_));
+    in.draw_features = settle_draw_features(world_, in.materials, in.styles);
+    for (const StyleState& style : in.styles) {
+        in.style_needs.push_back(needs_of(style.model));
+        in.style_plain.push_back(plain_style(style) ? 1 : 0);
+    }
     if (plan_.outlines)
         in.outlines =
             evaluate_outlines(scene_.style.outlines, at, static_cast<float>(samples_per_side_));

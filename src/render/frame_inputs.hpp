@@ -15,6 +15,7 @@
 #include "render/style_eval.hpp"
 #include "render/world.hpp"
 #include "shade/model_pbr.hpp"
+#include "shade/shading_models.hpp"
 #include "shade/style_state.hpp"
 
 namespace facet {
@@ -39,8 +40,16 @@ struct FrameInputs {
     CameraMatrices camera;
     std::vector<Material> materials;  // the world's, with this frame's animated values
     std::vector<StyleState> styles;   // StylePlan::styles at this frame
-    OutlineStyle outlines;            // when StylePlan::outlines; widths in sample pixels
-    OcclusionStyle occlusion;         // when StylePlan::occlusion
+    // Per style and draw, draw_features[style * draws + draw]: the features
+    // (MaterialFeature) the style draws of the draw's material and mesh
+    // part at this frame, settled once for the shading stage.
+    std::vector<uint32_t> draw_features;
+    // Per style: what its model reads, and whether its batches with no
+    // drawn feature take the plain path (shade/shading_models.hpp).
+    std::vector<ModelNeeds> style_needs;
+    std::vector<uint8_t> style_plain;
+    OutlineStyle outlines;     // when StylePlan::outlines; widths in sample pixels
+    OcclusionStyle occlusion;  // when StylePlan::occlusion
     // Linear RGBA behind everything, premultiplied; transparent black when
     // the environment is the background (composited after shading).
     glm::vec4 background;

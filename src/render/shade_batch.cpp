@@ -3,19 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
 #include "core/color.hpp"
+#include "raster/surface_sample.hpp"
 #include "render/hatch_charts.hpp"
 #include "render/normal_map_lookup.hpp"
-#include "shade/brdf.hpp"
 #include "shade/environment_map.hpp"
 #include "shade/layers.hpp"
+#include "shade/light_sample.hpp"
 #include "shade/lighting_batch.hpp"
-#include "shade/model_phong.hpp"
-#include "shade/model_unlit.hpp"
-#include "shade/style_math.hpp"
+#include "shade/material_terms.hpp"
+#include "shade/shading_models.hpp"
 #include "shade/texture_lod.hpp"
 #include "shade/wireframe.hpp"
 
@@ -26,22 +27,25 @@ using simd::kLanes;
 using simd::vf;
 using simd::vi;
 
-// What a style's model reads besides the barycentrics and the albedo.
-struct Needs {
-    bool position, normal, light_terms, vertex_light;
-};
+// A batch being shaded: the caller's request, the result every path
+// writes in full, and what the steps share in between.
+struct Batch {
+    // The rest is written before it is read: left uninitialised, not cleared per batch.
+    Batch(const ShadeRequest& r, ShadeResult& out) : request(r), result(out), count(r.count) {}
 
-Needs needs_of(const StyleState& style, bool gbuffer_normal) {
-    const ShadingModel m = style.model;
-    const bool lit = m == ShadingModel::flat || m == ShadingModel::phong ||
-                     m == ShadingModel::blinn_phong || m == ShadingModel::palette ||
-                     m == ShadingModel::gooch || m == ShadingModel::toon || m == ShadingModel::pbr;
-    // Gouraud lights the vertices, but looks up shadows per pixel, which
-    // needs the pixel's position and normal.
-    const bool gouraud = m == ShadingModel::gouraud;
-    return {lit || gouraud, lit || gouraud || m == ShadingModel::normal || gbuffer_normal, lit,
-            gouraud};
-}
+    const ShadeRequest& request;
+    ShadeResult& result;
+    int count;
+    const ShadeSetup* setup[kLanes];
+    // Per lane: its material, whether its part has texture coordinates and
+    // vertex colours, and its draw's features (FrameInputs::draw_features).
+    const Material* material[kLanes];
+    bool has_uvs[kLanes];
+    bool has_colors[kLanes];
+    uint32_t features[kLanes];
+    SurfaceSamples sample;
+    SurfaceLanes lanes;
+};
 
 // The lanes that show the same triangle id: most batches hold one or two
 // triangles, so their data is loaded once per group, not once per lane.
@@ -69,37 +73,8 @@ struct LaneGroup {
     return count;
 }
 
-// A value from one group's triangle: splatted for the first group, then
-// selected into each further group's lanes. With one group (the usual case)
-// `Single` leaves out the selects.
-template <bool Single>
-[[gnu::always_inline]] inline void put(vf& v, vi mask, float value, bool first) {
-    if (Single || first)
-        v = simd::splat(value);
-    else
-        v = mask ? simd::splat(value) : v;
-}
-
-// The `pbr` model's terms of a material (shade/model_pbr.hpp): the
-// dielectric's reflectances from its ior and KHR_materials_specular
-// (f0 = min(f0(ior) * colour, 1) * weight, f90 = weight), no occlusion yet.
-template <bool Single>
-[[gnu::always_inline]] inline void put_physical_terms(const Material& m, vi mask, bool first,
-                                                      PbrLanes& p) {
-    put<Single>(p.metallic, mask, m.metallic, first);
-    put<Single>(p.roughness, mask, m.roughness, first);
-    put<Single>(p.occlusion, mask, 1.0f, first);
-    const float f0 = pbr::f0_from_ior(m.ior);
-    for (int a = 0; a < 3; ++a)
-        put<Single>(p.f0[a], mask, std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight,
-                    first);
-    put<Single>(p.f90, mask, m.specular_weight, first);
-    put<Single>(p.clearcoat, mask, m.clearcoat, first);
-    put<Single>(p.clearcoat_roughness, mask, m.clearcoat_roughness, first);
-}
-
-// The corners' positions, normals and Gouraud light, and the material's
-// terms, of each group's triangle, as lanes.
+// The corners' positions, normals and Gouraud light of each group's
+// triangle, as lanes.
 struct CornerLanes {
     vf p[3][3], n[3][3], diffuse[3][3], specular[3][3];  // [corner][axis]
     // Gouraud with shadows: the shadow-casting lights' direct light.
@@ -107,91 +82,76 @@ struct CornerLanes {
     vf back{};  // every group sets it; zero for the compiler's sake
 };
 
-// One group's triangle's corner positions and normals (each when asked)
-// and which side the viewer sees, into `c`'s lanes.
-template <bool Single>
-[[gnu::always_inline]] inline void put_corners(const ShadeInputs& in, const ShadeSetup& setup,
-                                               vi mask, bool first, bool positions, bool normals,
-                                               CornerLanes& c) {
-    const TransformedVertices& v = in.vertices;
-    const uint32_t* corners = &in.world.indices[3 * static_cast<size_t>(setup.source_triangle)];
-    for (int k = 0; k < 3; ++k)
-        for (int a = 0; a < 3; ++a) {
-            if (positions) put<Single>(c.p[k][a], mask, v.world_position[corners[k]][a], first);
-            if (normals) put<Single>(c.n[k][a], mask, v.world_normal[corners[k]][a], first);
-        }
-    put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
-}
-
 // Axis `a` of a corner attribute at the lanes' barycentrics.
 [[gnu::always_inline]] inline vf interpolate_corners(const vf (&bary)[3], const vf (&corner)[3][3],
                                                      int a) {
     return bary[0] * corner[0][a] + bary[1] * corner[1][a] + bary[2] * corner[2][a];
 }
 
-// A normal of the triangle's front turned to the side the viewer sees.
-[[gnu::always_inline]] inline void turn_to_viewer(const CornerLanes& c, vf (&normal)[3]) {
-    const vi facing_away = c.back > simd::splat(0.0f);
-    for (int a = 0; a < 3; ++a) normal[a] = facing_away ? -normal[a] : normal[a];
+// One group's triangle's corners (positions and normals when `needs` asks,
+// Gouraud's light) and which side the viewer sees, into `c`'s lanes.
+template <bool Single>
+[[gnu::always_inline]] inline void put_corners(const ShadeInputs& in, const ShadeSetup& setup,
+                                               vi mask, bool first, const ModelNeeds& needs,
+                                               bool face_normal, CornerLanes& c) {
+    const TransformedVertices& v = in.vertices;
+    const uint32_t* corners = &in.world.indices[3 * static_cast<size_t>(setup.source_triangle)];
+    const bool positions = needs.position || face_normal;
+    const bool normals = needs.normal && !face_normal;
+    for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) {
+            if (positions) put<Single>(c.p[k][a], mask, v.world_position[corners[k]][a], first);
+            if (normals) put<Single>(c.n[k][a], mask, v.world_normal[corners[k]][a], first);
+        }
+    put<Single>(c.back, mask, setup.back_facing ? 1.0f : 0.0f, first);
+    if (!needs.vertex_light) return;
+    for (int k = 0; k < 3; ++k)
+        for (int a = 0; a < 3; ++a) {
+            put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
+            put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
+            if (v.direct.empty()) continue;
+            const LightingResult& d = v.direct[corners[k]];
+            put<Single>(c.direct_diffuse[k][a], mask, d.diffuse[a], first);
+            put<Single>(c.direct_specular[k][a], mask, d.specular[a], first);
+        }
 }
 
-template <bool Single>
+// Each group's corners and material terms into the lanes, and (for the
+// general path's steps) each lane's material, part and features.
+template <bool Plain, bool Single>
 [[gnu::always_inline]] inline void gather_groups(const ShadeInputs& in, const StyleState& style,
-                                                 const Needs& needs, const LaneGroup* groups,
-                                                 int group_count, ShadeBatch& b, CornerLanes& c) {
+                                                 uint32_t style_index, const ModelNeeds& needs,
+                                                 const LaneGroup* groups, int group_count, Batch& b,
+                                                 CornerLanes& c) {
     const World& world = in.world;
-    const TransformedVertices& v = in.vertices;
-    const bool flat = style.model == ShadingModel::flat;
-    SurfaceBatch& s = b.lanes.surface;
+    const bool face_normal = style.model == ShadingModel::flat;
+    const size_t feature_row = style_index * world.draws.size();
     for (int g = 0; g < group_count; ++g) {
         const bool first = g == 0;
         const vi mask = groups[g].mask;
         const ShadeSetup& setup = *b.setup[groups[g].lane];
-        put_corners<Single>(in, setup, mask, first, needs.position || flat, needs.normal && !flat,
-                            c);
-        const uint32_t* corners = &world.indices[3 * static_cast<size_t>(setup.source_triangle)];
-        if (needs.vertex_light)
-            for (int k = 0; k < 3; ++k)
-                for (int a = 0; a < 3; ++a) {
-                    put<Single>(c.diffuse[k][a], mask, v.lit[corners[k]].diffuse[a], first);
-                    put<Single>(c.specular[k][a], mask, v.lit[corners[k]].specular[a], first);
-                    if (!v.direct.empty()) {
-                        const LightingResult& d = v.direct[corners[k]];
-                        put<Single>(c.direct_diffuse[k][a], mask, d.diffuse[a], first);
-                        put<Single>(c.direct_specular[k][a], mask, d.specular[a], first);
-                    }
-                }
-        const Draw& draw = world.draws[world.triangle_draw[setup.source_triangle]];
+        put_corners<Single>(in, setup, mask, first, needs, face_normal, c);
+        const uint32_t draw_index = world.triangle_draw[setup.source_triangle];
+        const Draw& draw = world.draws[draw_index];
         const Material& m = in.frame.materials[draw.material];
-        if (needs.light_terms) {
-            put<Single>(s.ambient, mask, m.ambient, first);
-            put<Single>(s.diffuse, mask, m.diffuse, first);
-            put<Single>(s.specular, mask, m.specular, first);
-            put<Single>(s.shininess, mask, m.shininess, first);
-        }
         if (needs.position)
-            put<Single>(s.receives_shadow, mask, world.receives_shadows[draw.object], first);
-        if (style.model == ShadingModel::pbr)
-            put_physical_terms<Single>(m, mask, first, b.lanes.pbr);
-        for (int a = 0; a < 3; ++a)
-            put<Single>(b.lanes.albedo[a], mask,
-                        style.base_color ? (*style.base_color)[a] : m.color[a], first);
+            put<Single>(b.lanes.surface.receives_shadow, mask, world.receives_shadows[draw.object],
+                        first);
+        put_material_terms<Single>(m, style, needs, mask, first, b.lanes);
+        if (Single) {
+            std::fill(b.result.object, b.result.object + kLanes, draw.object);
+            if constexpr (Plain) continue;
+        }
         const unsigned lanes = Single ? 0xffu : simd::movemask(mask);
-        for (int lane = 0; lane < kLanes; ++lane)
-            if ((lanes >> lane) & 1) {
-                b.object[lane] = draw.object;
-                b.material[lane] = &m;
-                b.has_uvs[lane] = draw.has_uvs;
-                b.has_colors[lane] = draw.has_colors;
-            }
-        b.any_texture = b.any_texture || m.base_color_map;
-        b.any_physical_map = b.any_physical_map || m.metal_rough_map || m.occlusion_map ||
-                             m.normal_map || m.clearcoat_normal_map || m.specular_weight_map ||
-                             m.specular_color_map || m.clearcoat_map || m.clearcoat_roughness_map;
-        b.any_vertex_colors = b.any_vertex_colors || draw.has_colors;
-        b.any_emission = b.any_emission || m.unlit || m.emissive != glm::vec3(0);
-        b.any_shadow_catcher = b.any_shadow_catcher || m.shadow_catcher;
-        b.any_fade = b.any_fade || m.fade_end > m.fade_start;
+        for (int lane = 0; lane < kLanes; ++lane) {
+            if (!((lanes >> lane) & 1)) continue;
+            b.result.object[lane] = draw.object;
+            if constexpr (Plain) continue;
+            b.material[lane] = &m;
+            b.has_uvs[lane] = draw.has_uvs;
+            b.has_colors[lane] = draw.has_colors;
+            b.features[lane] = in.frame.draw_features[feature_row + draw_index];
+        }
     }
 }
 
@@ -243,58 +203,69 @@ ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> ligh
 // shadow-casting lights' direct light (diffuse and highlight) that its own
 // shadow lookups find blocked (the lighting stays per vertex, the shadow
 // edge does not). Lights without shadows keep all of theirs.
-template <typename Interpolate>
-void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolate&& interpolate,
-                         ShadeBatch& b) {
+void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Batch& b) {
     const ShadowShare share = shadow_share(in, in.shadow_lights, b.lanes.surface);
     for (int a = 0; a < 3; ++a) {
-        b.lanes.vertex_diffuse[a] -= share.channel[a] * interpolate(c.direct_diffuse, a);
-        b.lanes.vertex_specular[a] -= share.channel[a] * interpolate(c.direct_specular, a);
+        b.lanes.vertex_diffuse[a] -=
+            share.channel[a] * interpolate_corners(b.sample.bary, c.direct_diffuse, a);
+        b.lanes.vertex_specular[a] -=
+            share.channel[a] * interpolate_corners(b.sample.bary, c.direct_specular, a);
     }
 }
 
-// Positions, normals and Gouraud light interpolated with the lanes'
-// barycentrics; normals turned to the viewer.
-[[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
-                                                   const Needs& needs, const LaneGroup* groups,
-                                                   int group_count, ShadeBatch& b) {
-    CornerLanes c;
-    b.any_texture = b.any_vertex_colors = b.any_emission = b.any_shadow_catcher = false;
-    b.any_physical_map = false;
-    b.any_fade = false;
-    if (group_count == 1)
-        gather_groups<true>(in, style, needs, groups, group_count, b, c);
-    else
-        gather_groups<false>(in, style, needs, groups, group_count, b, c);
-    auto interpolate = [&](const vf(&corner)[3][3], int a) {
-        return interpolate_corners(b.sample.bary, corner, a);
-    };
-    SurfaceBatch& s = b.lanes.surface;
-    if (style.model == ShadingModel::flat) {  // the face normal: (p1 - p0) x (p2 - p0)
+// The normal the model reads and the G-buffer keeps: the face's for flat
+// shading ((p1 - p0) x (p2 - p0)), else the corners' interpolated; turned
+// to the viewer. Zero when nothing needs one.
+[[gnu::always_inline]] inline void gather_normal(const StyleState& style, const ModelNeeds& needs,
+                                                 const CornerLanes& c, Batch& b) {
+    vf(&normal)[3] = b.result.normal;
+    if (!needs.normal) {
+        for (vf& axis : normal) axis = simd::splat(0.0f);
+        return;
+    }
+    if (style.model == ShadingModel::flat) {
         vf e1[3], e2[3];
         for (int a = 0; a < 3; ++a) e1[a] = c.p[1][a] - c.p[0][a], e2[a] = c.p[2][a] - c.p[0][a];
-        b.normal[0] = e1[1] * e2[2] - e2[1] * e1[2];
-        b.normal[1] = e1[2] * e2[0] - e2[2] * e1[0];
-        b.normal[2] = e1[0] * e2[1] - e2[0] * e1[1];
-    } else if (needs.normal) {
-        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate(c.n, a);
+        normal[0] = e1[1] * e2[2] - e2[1] * e1[2];
+        normal[1] = e1[2] * e2[0] - e2[2] * e1[0];
+        normal[2] = e1[0] * e2[1] - e2[0] * e1[1];
+    } else {
+        for (int a = 0; a < 3; ++a) normal[a] = interpolate_corners(b.sample.bary, c.n, a);
     }
-    if (needs.normal) {
-        turn_to_viewer(c, b.normal);
-        s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
-        if (style.model == ShadingModel::pbr)
-            for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a] = b.normal[a];
+    const vi facing_away = c.back > simd::splat(0.0f);
+    for (int a = 0; a < 3; ++a) normal[a] = facing_away ? -normal[a] : normal[a];
+    SurfaceBatch& s = b.lanes.surface;
+    s.nx = normal[0], s.ny = normal[1], s.nz = normal[2];
+    if (style.model == ShadingModel::pbr)
+        for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a] = normal[a];
+}
+
+// Positions, normals and Gouraud light interpolated with the lanes'
+// barycentrics, and the materials' terms.
+template <bool Plain>
+[[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
+                                                   uint32_t style_index, const ModelNeeds& needs,
+                                                   const LaneGroup* groups, int group_count,
+                                                   Batch& b) {
+    CornerLanes c;
+    if (group_count == 1)
+        gather_groups<Plain, true>(in, style, style_index, needs, groups, group_count, b, c);
+    else
+        gather_groups<Plain, false>(in, style, style_index, needs, groups, group_count, b, c);
+    gather_normal(style, needs, c, b);
+    SurfaceBatch& s = b.lanes.surface;
+    if (needs.position) {
+        s.px = interpolate_corners(b.sample.bary, c.p, 0);
+        s.py = interpolate_corners(b.sample.bary, c.p, 1);
+        s.pz = interpolate_corners(b.sample.bary, c.p, 2);
     }
-    if (needs.position)
-        s.px = interpolate(c.p, 0), s.py = interpolate(c.p, 1), s.pz = interpolate(c.p, 2);
     b.lanes.depth = b.sample.w;
-    if (needs.vertex_light) {
-        for (int a = 0; a < 3; ++a) {
-            b.lanes.vertex_diffuse[a] = interpolate(c.diffuse, a);
-            b.lanes.vertex_specular[a] = interpolate(c.specular, a);
-        }
-        if (!in.vertices.direct.empty()) shadow_vertex_light(in, c, interpolate, b);
+    if (!needs.vertex_light) return;
+    for (int a = 0; a < 3; ++a) {
+        b.lanes.vertex_diffuse[a] = interpolate_corners(b.sample.bary, c.diffuse, a);
+        b.lanes.vertex_specular[a] = interpolate_corners(b.sample.bary, c.specular, a);
     }
+    if (!in.vertices.direct.empty()) shadow_vertex_light(in, c, b);
 }
 
 // The depth of the nearest sample of a pixel of side x side samples centred
@@ -314,7 +285,7 @@ void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Interpolat
 
 // One lane's surface sample with derivatives per output pixel (k samples):
 // shading happens once per pixel, so footprints are a pixel's.
-SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
+SurfaceSample pixel_sample(const Batch& b, int lane, int side) {
     SurfaceSample s = surface_lane(b.sample, lane, *b.setup[lane]);
     const float k = static_cast<float>(side);
     s.ddx *= k;
@@ -325,7 +296,7 @@ SurfaceSample pixel_sample(const ShadeBatch& b, int lane, int side) {
 // The corners' texture coordinates of each lane's triangle, in `slot`'s
 // set and tiling: World::corner_uvs over lanes. Lanes outside `lanes`
 // repeat the first of them.
-UvLanes corner_uv_lanes(const World& world, const ShadeBatch& b, const TextureSlot& slot,
+UvLanes corner_uv_lanes(const World& world, const Batch& b, const TextureSlot& slot,
                         unsigned lanes) {
     const std::vector<glm::vec2>& set = world.uv_set(slot);
     const int first = __builtin_ctz(lanes);
@@ -344,119 +315,69 @@ UvLanes corner_uv_lanes(const World& world, const ShadeBatch& b, const TextureSl
     return c;
 }
 
-// Looks up each lane's texture `slot_of(lane)` (null: none) with the
-// lane's pixel footprint (shading happens once per pixel of k x k samples),
-// the lanes that share a slot together; `use(lane, texel)` takes each.
-// The coordinates are found over the lanes; the filtered lookups, one lane
-// at a time.
-template <typename SlotOf, typename Use>
-void sample_slots(const ShadeInputs& in, const ShadeBatch& b, SlotOf slot_of, Use use) {
-    unsigned todo = 0;
-    for (int i = 0; i < b.count; ++i)
-        if (slot_of(i)) todo |= 1u << i;
-    if (todo == 0) return;
-    const float k = static_cast<float>(in.samples_per_side);
-    const SurfaceSamples& s = b.sample;
-    const FootprintLanes footprint{s.bary[1],    s.bary[2],    s.ddx[1] * k,
-                                   s.ddx[2] * k, s.ddy[1] * k, s.ddy[2] * k};
-    while (todo) {
-        const TextureSlot* slot = slot_of(__builtin_ctz(todo));
-        unsigned mine = 0;
+// The texture lookups of shade/material_terms.hpp: each lane's texture
+// `slot_of(lane)` (null: none) with the lane's pixel footprint (shading
+// happens once per pixel of k x k samples), the lanes that share a slot
+// together; `use(lane, texel)` takes each. The coordinates are found over
+// the lanes; the filtered lookups, one lane at a time.
+struct TextureLookups {
+    const ShadeInputs& in;
+    const Batch& b;
+
+    template <typename SlotOf, typename Use>
+    void operator()(SlotOf&& slot_of, Use&& use) const {
+        unsigned todo = 0;
         for (int i = 0; i < b.count; ++i)
-            if ((todo >> i) & 1 && slot_of(i) == slot) mine |= 1u << i;
-        const Texture& texture = *slot->texture;
-        const TextureLookupLanes t =
-            texture_lookups(corner_uv_lanes(in.world, b, *slot, mine), footprint,
-                            glm::vec2(texture.width, texture.height));
-        for (int i = 0; i < b.count; ++i)
-            if ((mine >> i) & 1) use(i, texture.sample(glm::vec2(t.u[i], t.v[i]), t.lod[i]));
-        todo &= ~mine;
+            if (slot_of(i)) todo |= 1u << i;
+        if (todo == 0) return;
+        const float k = static_cast<float>(in.samples_per_side);
+        const SurfaceSamples& s = b.sample;
+        const FootprintLanes footprint{s.bary[1],    s.bary[2],    s.ddx[1] * k,
+                                       s.ddx[2] * k, s.ddy[1] * k, s.ddy[2] * k};
+        while (todo) {
+            const TextureSlot* slot = slot_of(__builtin_ctz(todo));
+            unsigned mine = 0;
+            for (int i = 0; i < b.count; ++i)
+                if ((todo >> i) & 1 && slot_of(i) == slot) mine |= 1u << i;
+            const Texture& texture = *slot->texture;
+            const TextureLookupLanes t =
+                texture_lookups(corner_uv_lanes(in.world, b, *slot, mine), footprint,
+                                glm::vec2(texture.width, texture.height));
+            for (int i = 0; i < b.count; ++i)
+                if ((mine >> i) & 1) use(i, texture.sample(glm::vec2(t.u[i], t.v[i]), t.lod[i]));
+            todo &= ~mine;
+        }
     }
-}
+};
 
-// A material texture slot of each lane, for sample_slots.
-template <typename Slot>
-auto slot_of(const ShadeBatch& b, Slot slot) {
-    return [&b, slot](int lane) -> const TextureSlot* {
-        const TextureSlot& t = b.material[lane]->*slot;
-        return t ? &t : nullptr;
-    };
-}
-
-void apply_textures(const ShadeInputs& in, ShadeBatch& b) {
-    sample_slots(in, b, slot_of(b, &Material::base_color_map), [&](int i, const glm::vec4& texel) {
-        for (int a = 0; a < 3; ++a) b.lanes.albedo[a][i] *= texel[a];
-    });
-}
-
-// The `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness (B metal, G
-// roughness), occlusion (R, blended by its strength), KHR_materials_specular
-// (A weight, RGB colour) and clearcoat (R strength, G roughness), each
-// multiplying its factor.
-void apply_physical_maps(const ShadeInputs& in, ShadeBatch& b) {
-    PbrLanes& p = b.lanes.pbr;
-    sample_slots(in, b, slot_of(b, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
-        p.roughness[i] *= t.g;
-        p.metallic[i] *= t.b;
-    });
-    sample_slots(in, b, slot_of(b, &Material::occlusion_map), [&](int i, const glm::vec4& t) {
-        p.occlusion[i] = 1.0f + b.material[i]->occlusion_strength * (t.r - 1.0f);
-    });
-    float weight[simd::kLanes], tint[3][simd::kLanes];
-    std::fill(weight, weight + simd::kLanes, 1.0f);
-    std::fill(&tint[0][0], &tint[0][0] + 3 * simd::kLanes, 1.0f);
-    sample_slots(in, b, slot_of(b, &Material::specular_weight_map),
-                 [&](int i, const glm::vec4& t) { weight[i] = t.a; });
-    sample_slots(in, b, slot_of(b, &Material::specular_color_map), [&](int i, const glm::vec4& t) {
-        for (int a = 0; a < 3; ++a) tint[a][i] = t[a];
-    });
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        if (!m.specular_weight_map && !m.specular_color_map) continue;
-        const float f0 = pbr::f0_from_ior(m.ior);
-        for (int a = 0; a < 3; ++a)
-            p.f0[a][i] = std::min(f0 * m.specular_color[a] * tint[a][i], 1.0f) * m.specular_weight *
-                         weight[i];
-        p.f90[i] = m.specular_weight * weight[i];
-    }
-    sample_slots(in, b, slot_of(b, &Material::clearcoat_map),
-                 [&](int i, const glm::vec4& t) { p.clearcoat[i] *= t.r; });
-    sample_slots(in, b, slot_of(b, &Material::clearcoat_roughness_map),
-                 [&](int i, const glm::vec4& t) { p.clearcoat_roughness[i] *= t.g; });
-}
-
-// Normal maps turn the shading normal, lane by lane, in the tangent frame
-// the vertices carry (shade/normal_map.hpp). The G-buffer's normal (outlines,
-// occlusion, the normal pass) turns with it. A clear coat's own map turns
-// the coat's normal from the same unmapped normal: its relief is not the base's.
-void apply_normal_maps(const ShadeInputs& in, ShadeBatch& b) {
-    SurfaceBatch& s = b.lanes.surface;
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        const uint32_t triangle = b.setup[i]->source_triangle;
-        const bool base = draws_normal_map(in.world, in.vertices, m.normal_map, triangle);
-        const bool coat = m.clearcoat > 0.0f &&
-                          draws_normal_map(in.world, in.vertices, m.clearcoat_normal_map, triangle);
-        if (!base && !coat) continue;
+// kNormalMaps: the maps' normals in the tangent frame the vertices carry
+// (shade/normal_map.hpp). The G-buffer's normal (outlines, occlusion, the
+// normal pass) turns with the base's.
+void apply_normal_maps(const ShadeInputs& in, Batch& b) {
+    vf(&normal)[3] = b.result.normal;
+    auto normal_at = [&](int i, const TextureSlot& map, float scale) -> std::optional<glm::vec3> {
+        if (!draws_normal_map(in.world, in.vertices, map, b.setup[i]->source_triangle))
+            return std::nullopt;
         const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
-        const glm::vec3 shown(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
+        const glm::vec3 shown(normal[0][i], normal[1][i], normal[2][i]);
         const glm::vec3 front =
             normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
-        if (coat) {
-            const glm::vec3 n = normal_from_map(in.world, in.vertices, m.clearcoat_normal_map,
-                                                m.clearcoat_normal_scale, pixel, front);
+        return normal_from_map(in.world, in.vertices, map, scale, pixel, front);
+    };
+    SurfaceBatch& s = b.lanes.surface;
+    facet::apply_normal_maps(
+        b.material, b.count, normal_at,
+        [&](int i, const glm::vec3& n) {
+            for (int a = 0; a < 3; ++a) normal[a][i] = n[a];
+            s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
+        },
+        [&](int i, const glm::vec3& n) {
             for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a][i] = n[a];
-        }
-        if (!base) continue;
-        const glm::vec3 n =
-            normal_from_map(in.world, in.vertices, m.normal_map, m.normal_scale, pixel, front);
-        for (int a = 0; a < 3; ++a) b.normal[a][i] = n[a];
-        s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
-    }
+        });
 }
 
-// Vertex colours multiply the albedo, lane by lane: few meshes have them.
-void apply_vertex_colors(const ShadeInputs& in, ShadeBatch& b) {
+// kVertexColors: they multiply the albedo, lane by lane.
+void apply_vertex_colors(const ShadeInputs& in, Batch& b) {
     for (int i = 0; i < b.count; ++i) {
         if (!b.has_colors[i]) continue;
         const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
@@ -475,88 +396,61 @@ bool environment_diffuse(const ShadeInputs& in, const StyleState& style, const S
                          vf (&out)[3]) {
     const EnvironmentLighting& e = in.frame.environment;
     if (style.model != ShadingModel::pbr || !e.map || !(e.intensity > 0.0f)) return false;
-    const vf length = simd::vsqrt(s.nx * s.nx + s.ny * s.ny + s.nz * s.nz);
-    const vi ok = length > simd::splat(0.0f);
-    const vf inverse = 1.0f / (ok ? length : simd::splat(1.0f));
-    const vf n[3] = {ok ? s.nx * inverse : simd::splat(0.0f),
-                     ok ? s.ny * inverse : simd::splat(1.0f),
-                     ok ? s.nz * inverse : simd::splat(0.0f)};
+    const lanes::Vec3<vf> n = lanes::normalise_or<vf>(
+        {s.nx, s.ny, s.nz}, {simd::splat(0.0f), simd::splat(1.0f), simd::splat(0.0f)});
     vf turned[3];
-    e.to_map(n, turned);
+    e.to_map({n[0], n[1], n[2]}, turned);
     e.map->diffuse(turned, out);
     for (vf& channel : out) channel *= e.intensity;
     return true;
 }
 
-// Shadow catchers: the share of the light the shadows take at each point,
+// kShadowCatcher: the share of the light the shadows take at each point,
 // from the same lights lit twice, with and without their shadow maps, and
 // compared by the diffuse light's luminance. The lane then shows the
 // background darkened by that share, which covers it by as much. Only the
 // lit models and Gouraud know positions and normals; with the others
 // nothing shows.
-void apply_shadow_catchers(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
+void apply_shadow_catchers(const ShadeInputs& in, uint32_t style_index, Batch& b) {
+    const StyleState& style = in.frame.styles[style_index];
     const glm::vec4 background = in.frame.background;
     vf environment[3];
     const bool lit_by_environment = environment_diffuse(in, style, b.lanes.surface, environment);
-    const vf share = needs_of(style, false).position
+    const vf share = in.frame.style_needs[style_index].position
                          ? shadow_share(in, in.lights, b.lanes.surface,
                                         lit_by_environment ? environment : nullptr)
                                .luminance
                          : simd::splat(0.0f);
+    ShadeResult& r = b.result;
     for (int i = 0; i < b.count; ++i) {
-        if (!b.material[i]->shadow_catcher) continue;
-        for (int a = 0; a < 3; ++a) b.color[a][i] = background[a] * (1.0f - share[i]);
-        b.coverage[i] = share[i];
+        if (!(b.features[i] & kShadowCatcher)) continue;
+        for (int a = 0; a < 3; ++a) r.color[a][i] = background[a] * (1.0f - share[i]);
+        r.coverage[i] = share[i];
     }
 }
 
-// Fading materials: by the distance of the point from the object's origin
-// (model space, at rest), the colour goes to the background and the
-// coverage with it (smoothstep from fade_start to fade_end), as a shadow
-// catcher's does.
-void apply_fades(const ShadeInputs& in, ShadeBatch& b) {
+// kFade: the colour goes to the background, and the coverage with it, by
+// the distance of the point from its object's origin (model space, at rest).
+void apply_fades(const ShadeInputs& in, Batch& b) {
     const glm::vec4 background = in.frame.background;
+    ShadeResult& r = b.result;
     for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        if (!(m.fade_end > m.fade_start)) continue;
+        if (!(b.features[i] & kFade)) continue;
         const uint32_t* c = &in.world.indices[3 * static_cast<size_t>(b.setup[i]->source_triangle)];
         const glm::vec3 p = b.sample.bary[0][i] * in.world.positions[c[0]] +
                             b.sample.bary[1][i] * in.world.positions[c[1]] +
                             b.sample.bary[2][i] * in.world.positions[c[2]];
-        const float kept = 1.0f - smoothstep(m.fade_start, m.fade_end, glm::length(p));
+        const float kept = fade_kept(*b.material[i], glm::length(p));
         for (int a = 0; a < 3; ++a)
-            b.color[a][i] = background[a] + (b.color[a][i] - background[a]) * kept;
-        b.coverage[i] *= kept;
-    }
-}
-
-// Unlit materials show their albedo; emission (its factor times its map)
-// adds to what the model made. Only the models that light a surface:
-// normal and depth views stay measurements.
-void apply_emission(const ShadeInputs& in, const StyleState& style, ShadeBatch& b) {
-    if (!needs_of(style, false).light_terms && style.model != ShadingModel::gouraud) return;
-    glm::vec3 emitted[simd::kLanes];
-    for (int i = 0; i < b.count; ++i) emitted[i] = b.material[i]->emissive;
-    sample_slots(
-        in, b,
-        [&](int i) -> const TextureSlot* {
-            const TextureSlot& t = b.material[i]->emissive_map;
-            return t && emitted[i] != glm::vec3(0) ? &t : nullptr;
-        },
-        [&](int i, const glm::vec4& t) { emitted[i] *= glm::vec3(t); });
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        for (int a = 0; a < 3; ++a) {
-            const float base = m.unlit ? b.lanes.albedo[a][i] : b.color[a][i];
-            b.color[a][i] = base + emitted[i][a];
-        }
+            r.color[a][i] = background[a] + (r.color[a][i] - background[a]) * kept;
+        r.coverage[i] *= kept;
     }
 }
 
 // What the layers need, lane by lane: wire coverage, and (after shading,
 // from `shaded`) where to read the strokes and the paper. Lanes whose tone
 // draws no strokes skip the strokes' footprint; only pencil reads paper.
-void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBatch& b,
+void layer_inputs(const ShadeInputs& in, const StyleState& style, const Batch& b,
                   const ShadedLanes* shaded, LayerInputs (&out)[kLanes]) {
     const int side = in.samples_per_side;
     for (int i = 0; i < b.count; ++i) {
@@ -576,9 +470,8 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
         const bool strokes = h.strength > 0.0f && l.hatch_tone < 1.0f;
         if (!strokes && !h.pencil) continue;
         // pixel_sample's derivatives are per output pixel already.
-        const HatchPoint point{
-            s.triangle,  s.bary, s.ddx, s.ddy, glm::vec2(b.x[i], b.y[i]) / static_cast<float>(side),
-            b.has_uvs[i]};
+        const glm::vec2 at = glm::vec2(b.request.x[i], b.request.y[i]) / static_cast<float>(side);
+        const HatchPoint point{s.triangle, s.bary, s.ddx, s.ddy, at, b.has_uvs[i]};
         hatch_footprints(in.world, h, point, strokes ? &l.hatch : nullptr,
                          h.pencil ? &l.paper : nullptr);
     }
@@ -586,165 +479,107 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const ShadeBat
 
 // The colours of a style with layers (or lines alone), lane by lane.
 void finish_layers(const ShadeInputs& in, const StyleState& style, const ShadingContext& context,
-                   ShadeBatch& b) {
+                   Batch& b) {
     LayerInputs layers[kLanes];
-    if (style.wireframe && !style.wire_fill_shading) {  // lines alone, on a flat fill
-        layer_inputs(in, style, b, nullptr, layers);
-        if (b.want_wire) {
-            for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
-            b.wire_color = style.wire.color;
-        }
-        for (int i = 0; i < b.count; ++i) {
-            const glm::vec3 c =
-                style.wire_fill + (style.wire.color - style.wire_fill) * layers[i].wire;
-            for (int a = 0; a < 3; ++a) b.color[a][i] = c[a];
-        }
-        return;
-    }
+    ShadeResult& r = b.result;
+    const bool lines_alone = style.wireframe && !style.wire_fill_shading;  // on a flat fill
     ShadedLanes shaded;
-    shade_lanes(style, context, b.lanes, shaded);
-    layer_inputs(in, style, b, &shaded, layers);
-    if (b.want_wire && style.wireframe) {
-        for (int i = 0; i < b.count; ++i) b.wire[i] = layers[i].wire;
-        b.wire_color = style.wire.color;
+    if (!lines_alone) shade_lanes(style, context, b.lanes, shaded);
+    layer_inputs(in, style, b, lines_alone ? nullptr : &shaded, layers);
+    if (b.request.want_wire && style.wireframe) {
+        for (int i = 0; i < b.count; ++i) r.wire[i] = layers[i].wire;
+        r.wire_color = style.wire.color;
     }
     for (int i = 0; i < b.count; ++i) {
-        const glm::vec3 c = apply_layers(style, shaded.color_at(i), layers[i]);
-        for (int a = 0; a < 3; ++a) b.color[a][i] = c[a];
+        const glm::vec3 c =
+            lines_alone ? style.wire_fill + (style.wire.color - style.wire_fill) * layers[i].wire
+                        : apply_layers(style, shaded.color_at(i), layers[i]);
+        for (int a = 0; a < 3; ++a) r.color[a][i] = c[a];
     }
 }
 
-// --- Plain batches: the common case compiled apart ---
-//
-// Most batches of most scenes show triangles of one mesh whose material
-// only its constants colour, under a Phong, Blinn-Phong or unlit style
-// without layers. Asking each lane which of the general path's features
-// apply (textures, vertex colours, emission, shadow catchers, fades,
-// several materials) costs 10-20% of such a frame; a GL programmer
-// compiles them out of the shader (docs/performance.md). shade_plain does
-// the same operations as the general path in the same order and calls the
-// same model (shade_phong, shade_unlit), so it writes the same bits
-// (tests/test_shade_plain.cpp).
-
-// takes_plain_path, inlined where each batch asks.
-[[gnu::always_inline]] inline bool plain_draw(const StyleState& style, const Draw& draw,
-                                              const Material& m) {
-    const ShadingModel model = style.model;
-    const bool lit = model == ShadingModel::phong || model == ShadingModel::blinn_phong;
-    if ((!lit && model != ShadingModel::unlit) || has_layers(style)) return false;
-    if (!style.base_color && (m.base_color_map || draw.has_colors)) return false;
-    if (m.shadow_catcher || m.fade_end > m.fade_start) return false;
-    // The unlit model adds no emission (apply_emission).
-    return model == ShadingModel::unlit || !(m.unlit || m.emissive != glm::vec3(0));
-}
-
-// The batch shaded if it is plain (all its triangles of one draw, which
-// takes_plain_path); false, and nothing written, otherwise.
-bool shade_plain(const ShadeInputs& in, const StyleState& style, const LaneGroup* groups,
-                 int group_count, const SetupLanes& planes, ShadeBatch& b) {
-    if (b.want_wire) return false;
+// The features of the batch's draws: the OR of each group's draw's set.
+uint32_t batch_features(const ShadeInputs& in, uint32_t style, const Batch& b,
+                        const LaneGroup* groups, int group_count) {
     const World& world = in.world;
-    const uint32_t draw_index = world.triangle_draw[b.setup[0]->source_triangle];
-    for (int g = 1; g < group_count; ++g)
-        if (world.triangle_draw[b.setup[groups[g].lane]->source_triangle] != draw_index)
-            return false;
-    const Draw& draw = world.draws[draw_index];
-    const Material& m = in.frame.materials[draw.material];
-    if (!plain_draw(style, draw, m)) return false;
+    const uint32_t* row = &in.frame.draw_features[style * world.draws.size()];
+    uint32_t features = 0;
+    for (int g = 0; g < group_count; ++g)
+        features |= row[world.triangle_draw[b.setup[groups[g].lane]->source_triangle]];
+    return features;
+}
 
-    const bool lit = style.model != ShadingModel::unlit;
-    const SurfaceSamples sample = reconstruct_surfaces(planes, b.x, b.y);
-    b.sample.w = sample.w;
-    if (b.pixel_side > 0) b.pixel_depth = nearest_depth(planes, b.x, b.y, b.pixel_side);
-    CornerLanes c;
-    const bool normals = lit || b.want_normal;
-    if (group_count == 1)
-        put_corners<true>(in, *b.setup[0], groups[0].mask, true, lit, normals, c);
-    else
-        for (int g = 0; g < group_count; ++g)
-            put_corners<false>(in, *b.setup[groups[g].lane], groups[g].mask, g == 0, lit, normals,
-                               c);
-    if (normals) {
-        for (int a = 0; a < 3; ++a) b.normal[a] = interpolate_corners(sample.bary, c.n, a);
-        turn_to_viewer(c, b.normal);
-    }
-    std::fill(b.object, b.object + kLanes, draw.object);
-    const glm::vec3 albedo = style.base_color ? *style.base_color : m.color;
-    SurfaceLanes& lanes = b.lanes;
-    lanes.count = b.count;
-    for (int a = 0; a < 3; ++a) lanes.albedo[a] = simd::splat(albedo[a]);
-    b.coverage = simd::splat(1.0f);
-    ShadedLanes shaded;
-    if (!lit) {
-        shade_unlit(lanes, shaded);
-        for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
-        return true;
-    }
-    SurfaceBatch& s = lanes.surface;
-    s.px = interpolate_corners(sample.bary, c.p, 0);
-    s.py = interpolate_corners(sample.bary, c.p, 1);
-    s.pz = interpolate_corners(sample.bary, c.p, 2);
-    s.nx = b.normal[0], s.ny = b.normal[1], s.nz = b.normal[2];
-    s.ambient = simd::splat(m.ambient);
-    s.diffuse = simd::splat(m.diffuse);
-    s.specular = simd::splat(m.specular);
-    s.shininess = simd::splat(m.shininess);
-    s.receives_shadow = simd::splat(world.receives_shadows[draw.object]);
-    if (b.count < kLanes) pad_batch(s, b.count);
+// The surface path. `Plain` compiles out every feature's step, the layers
+// and the lines pass (the caller checks the batch needs none of them), so
+// that the common batch does no work for them and asks no lane about them:
+// a GL programmer compiles them out of the shader the same way
+// (docs/performance.md). Both instantiations run the same operations in
+// the same order, so a batch gets the same bits from either
+// (tests/test_shade_plain.cpp).
+template <bool Plain>
+void shade_surface(const ShadeInputs& in, uint32_t style_index, const LaneGroup* groups,
+                   int group_count, const SetupLanes& setup, uint32_t features, Batch& b) {
+    const StyleState& style = in.frame.styles[style_index];
+    const ShadeRequest& request = b.request;
+    ShadeResult& r = b.result;
+    b.sample = reconstruct_surfaces(setup, request.x, request.y);
+    r.depth = b.sample.w;
+    r.pixel_depth = request.pixel_side > 0
+                        ? nearest_depth(setup, request.x, request.y, request.pixel_side)
+                        : b.sample.w;
+    std::fill(r.wire, r.wire + kLanes, 0.0f);
+    r.wire_color = glm::vec3(0.0f);
+    b.lanes.count = b.count;
+    ModelNeeds needs = in.frame.style_needs[style_index];
+    needs.normal = needs.normal || request.want_normal;
+    gather_vertices<Plain>(in, style, style_index, needs, groups, group_count, b);
+    const TextureLookups lookup{in, b};
+    if (!Plain && (features & kBaseColorMap)) apply_base_color_maps(b.material, lookup, b.lanes);
+    if (!Plain && (features & kVertexColors)) apply_vertex_colors(in, b);
+    if (!Plain && (features & kPhysicalMaps))
+        apply_physical_maps(b.material, b.count, lookup, b.lanes.pbr);
+    if (!Plain && (features & kNormalMaps)) apply_normal_maps(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
                                  &in.frame.environment};
-    shade_phong(lanes, context,
-                style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn, shaded);
-    for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
-    return true;
+    if (!Plain && has_layers(style)) {
+        finish_layers(in, style, context, b);
+    } else {
+        ShadedLanes shaded;
+        if (Plain)
+            shade_plain_model(style, context, b.lanes, shaded);
+        else
+            shade_lanes(style, context, b.lanes, shaded);
+        for (int a = 0; a < 3; ++a) r.color[a] = shaded.color[a];
+    }
+    if (!Plain && (features & kEmission))
+        add_emission(b.material, b.count, lookup, b.lanes.albedo, r.color);
+    r.coverage = simd::splat(1.0f);
+    if (!Plain && (features & kShadowCatcher)) apply_shadow_catchers(in, style_index, b);
+    if (!Plain && (features & kFade)) apply_fades(in, b);
 }
 
 }  // namespace
 
-bool takes_plain_path(const StyleState& style, const Draw& draw, const Material& m) {
-    return plain_draw(style, draw, m);
-}
-
-bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style_index,
-                 ShadeBatch& b) {
-    const StyleState& style = in.frame.styles[style_index];
+bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style,
+                 const ShadeRequest& request, ShadeResult& result) {
+    Batch b(request, result);
     LaneGroup groups[kLanes];
-    const int group_count = group_lanes(b.id, groups);
+    const int group_count = group_lanes(request.id, groups);
     if (group_count == 1)
-        std::fill(b.setup, b.setup + kLanes, &raster.shade_setup(b.id[0]));
+        std::fill(b.setup, b.setup + kLanes, &raster.shade_setup(request.id[0]));
     else
-        for (int i = 0; i < kLanes; ++i) b.setup[i] = &raster.shade_setup(b.id[i]);
+        for (int i = 0; i < kLanes; ++i) b.setup[i] = &raster.shade_setup(request.id[i]);
     SetupLanes setup = splat_setup(*b.setup[0]);
     for (int g = 1; g < group_count; ++g)
         select_setup(setup, groups[g].mask, *b.setup[groups[g].lane]);
-    if (in.paths == ShadingPaths::specialised &&
-        shade_plain(in, style, groups, group_count, setup, b))
-        return true;
-    b.sample = reconstruct_surfaces(setup, b.x, b.y);
-    if (b.pixel_side > 0) b.pixel_depth = nearest_depth(setup, b.x, b.y, b.pixel_side);
-    b.lanes.count = b.count;
-    if (b.want_wire) std::fill(b.wire, b.wire + kLanes, 0.0f);
-    gather_vertices(in, style, needs_of(style, b.want_normal), groups, group_count, b);
-    if (b.any_texture && !style.base_color) apply_textures(in, b);
-    if (b.any_vertex_colors && !style.base_color) apply_vertex_colors(in, b);
-    if (b.any_physical_map && style.model == ShadingModel::pbr) {
-        apply_physical_maps(in, b);
-        apply_normal_maps(in, b);
-    }
-    const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
-                                 &in.frame.environment};
-    if (has_layers(style)) {
-        finish_layers(in, style, context, b);
-    } else {
-        ShadedLanes shaded;
-        shade_lanes(style, context, b.lanes, shaded);
-        for (int a = 0; a < 3; ++a) b.color[a] = shaded.color[a];
-    }
-    if (b.any_emission) apply_emission(in, style, b);
-    b.coverage = simd::splat(1.0f);
-    if (b.any_shadow_catcher) apply_shadow_catchers(in, style, b);
-    if (b.any_fade) apply_fades(in, b);
-    return false;
+    const uint32_t features = batch_features(in, style, b, groups, group_count);
+    const bool plain = in.paths == ShadingPaths::specialised && features == 0 &&
+                       !request.want_wire && in.frame.style_plain[style];
+    if (plain)
+        shade_surface<true>(in, style, groups, group_count, setup, features, b);
+    else
+        shade_surface<false>(in, style, groups, group_count, setup, features, b);
+    return plain;
 }
 
 }  // namespace facet

@@ -113,7 +113,7 @@ struct RowChunk {
                                                      RowChunk& chunk, ShadeCounts& counts) {
     const int side = in.samples_per_side;
     const float k = static_cast<float>(side);
-    ShadeBatch b;
+    ShadeRequest b;
     b.count = chunk.count;
     b.want_normal = want_normal;
     const int first = __builtin_ctz(mine);
@@ -125,19 +125,20 @@ struct RowChunk {
     b.x = (lane + static_cast<float>(chunk.px0)) * k + (static_cast<float>(tile.x0) + 0.5f * k);
     b.y = simd::splat(static_cast<float>(tile.y0 + chunk.py * side) + 0.5f * k);
     b.pixel_side = side > 1 ? side : 0;
-    counts.add(shade_batch(in, raster, style, b));
+    ShadeResult r;
+    counts.add(shade_batch(in, raster, style, b, r));
     const vi lane_bit = {1, 2, 4, 8, 16, 32, 64, 128};
     const vi mask = (simd::splat_i(static_cast<int32_t>(mine)) & lane_bit) != simd::splat_i(0);
-    for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? b.color[a] : chunk.color[a];
+    for (int a = 0; a < 3; ++a) chunk.color[a] = mask ? r.color[a] : chunk.color[a];
     const float background_alpha = in.frame.background.a;
-    chunk.color[3] = mask ? b.coverage + (1.0f - b.coverage) * background_alpha : chunk.color[3];
-    chunk.coverage = mask ? b.coverage : chunk.coverage;
-    chunk.depth = mask ? (side == 1 ? b.sample.w : b.pixel_depth) : chunk.depth;
+    chunk.color[3] = mask ? r.coverage + (1.0f - r.coverage) * background_alpha : chunk.color[3];
+    chunk.coverage = mask ? r.coverage : chunk.coverage;
+    chunk.depth = mask ? r.pixel_depth : chunk.depth;
     if (!want_normal) return;
-    chunk.centre_depth = mask ? b.sample.w : chunk.centre_depth;
-    for (int a = 0; a < 3; ++a) chunk.normal[a] = mask ? b.normal[a] : chunk.normal[a];
+    chunk.centre_depth = mask ? r.depth : chunk.centre_depth;
+    for (int a = 0; a < 3; ++a) chunk.normal[a] = mask ? r.normal[a] : chunk.normal[a];
     for (int i = 0; i < kLanes; ++i)
-        if ((mine >> i) & 1) chunk.object[i] = b.object[i];
+        if ((mine >> i) & 1) chunk.object[i] = r.object[i];
 }
 
 // The colour a surface shows over nothing, from its colour over the
@@ -304,7 +305,8 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
     for (int i = 0; i < f.count; ++i) order[i] = i;
     std::stable_sort(order.begin(), order.end(),
                      [&](int a, int b) { return style_of[a] < style_of[b]; });
-    ShadeBatch b;
+    ShadeRequest b;
+    ShadeResult r;
     b.want_normal = out.gbuffer != nullptr;
     b.want_wire = out.line_samples != nullptr;
     int fragment[kLanes];
@@ -325,8 +327,8 @@ void shade_fragments(const TileFragments& f, const Rasterizer& raster, const Sha
         }
         std::memcpy(&b.x, xs, sizeof b.x);
         std::memcpy(&b.y, ys, sizeof b.y);
-        counts.add(shade_batch(in, raster, style, b));
-        write(b, fragment);
+        counts.add(shade_batch(in, raster, style, b, r));
+        write(b, r, fragment);
         first += b.count;
     }
 }
@@ -346,21 +348,23 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
     std::vector<glm::vec4> nothing_sums(out.pixels_over_nothing ? pixel_count : 0, glm::vec4(0));
     std::vector<glm::vec3> normals(out.gbuffer ? static_cast<size_t>(f.count) : 0);
     std::vector<uint32_t> objects(normals.size());
-    shade_fragments(f, raster, in, out, counts, [&](const ShadeBatch& b, const int* fragment) {
-        for (int i = 0; i < b.count; ++i) {
-            const int at = fragment[i];
-            const float weight = static_cast<float>(f.samples[at]) * per_sample;
-            const glm::vec3 color(b.color[0][i], b.color[1][i], b.color[2][i]);
-            const float coverage = b.coverage[i];
-            sums[f.pixel[at]] += glm::vec4(color, coverage + (1.0f - coverage) * bg.a) * weight;
-            if (out.pixels_over_nothing)
-                nothing_sums[f.pixel[at]] += over_nothing(color, coverage, bg) * weight;
-            if (out.gbuffer) {
-                normals[at] = glm::vec3(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
-                objects[at] = b.object[i];
+    shade_fragments(
+        f, raster, in, out, counts,
+        [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
+            for (int i = 0; i < b.count; ++i) {
+                const int at = fragment[i];
+                const float weight = static_cast<float>(f.samples[at]) * per_sample;
+                const glm::vec3 color(r.color[0][i], r.color[1][i], r.color[2][i]);
+                const float coverage = r.coverage[i];
+                sums[f.pixel[at]] += glm::vec4(color, coverage + (1.0f - coverage) * bg.a) * weight;
+                if (out.pixels_over_nothing)
+                    nothing_sums[f.pixel[at]] += over_nothing(color, coverage, bg) * weight;
+                if (out.gbuffer) {
+                    normals[at] = glm::vec3(r.normal[0][i], r.normal[1][i], r.normal[2][i]);
+                    objects[at] = r.object[i];
+                }
             }
-        }
-    });
+        });
     for (int at = 0; at < f.count; ++at) {
         if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
         const int px = f.pixel_x[at], py = f.pixel_y[at];
@@ -394,25 +398,28 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
                         const ShadeTarget& out, TileFragments& f, ShadeCounts& counts) {
     build_tile_fragments(tile, in.samples_per_side, false, f);
     const int side = f.side;
-    shade_fragments(f, raster, in, out, counts, [&](const ShadeBatch& b, const int* fragment) {
-        for (int i = 0; i < b.count; ++i) {
-            const int at = fragment[i];
-            // rgb over the background, a the share of it hidden (post/resolve.hpp).
-            const glm::vec4 color(b.color[0][i], b.color[1][i], b.color[2][i], b.coverage[i]);
-            const glm::vec3 normal(b.normal[0][i], b.normal[1][i], b.normal[2][i]);
-            const glm::vec4 stroke(b.wire_color * b.wire[i], b.wire[i]);
-            for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
-                for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
-                    if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
-                    const int x = tile.x0 + sx, y = tile.y0 + sy;
-                    const float depth = sample_depth(raster, f.id[at], x, y);
-                    out.samples->at(x, y) = color;
-                    out.depth.at(x, y) = depth;
-                    if (out.line_samples) out.line_samples->at(x, y) = stroke;
-                    if (out.gbuffer) write_gbuffer(*out.gbuffer, x, y, depth, normal, b.object[i]);
-                }
-        }
-    });
+    shade_fragments(
+        f, raster, in, out, counts,
+        [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
+            for (int i = 0; i < b.count; ++i) {
+                const int at = fragment[i];
+                // rgb over the background, a the share of it hidden (post/resolve.hpp).
+                const glm::vec4 color(r.color[0][i], r.color[1][i], r.color[2][i], r.coverage[i]);
+                const glm::vec3 normal(r.normal[0][i], r.normal[1][i], r.normal[2][i]);
+                const glm::vec4 stroke(r.wire_color * r.wire[i], r.wire[i]);
+                for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
+                    for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
+                        if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
+                        const int x = tile.x0 + sx, y = tile.y0 + sy;
+                        const float depth = sample_depth(raster, f.id[at], x, y);
+                        out.samples->at(x, y) = color;
+                        out.depth.at(x, y) = depth;
+                        if (out.line_samples) out.line_samples->at(x, y) = stroke;
+                        if (out.gbuffer)
+                            write_gbuffer(*out.gbuffer, x, y, depth, normal, r.object[i]);
+                    }
+            }
+        });
     for (int ty = 0; ty < tile.height; ++ty)
         for (int tx = 0; tx < tile.width; ++tx) {
             if (tile.id[ty * kTileSize + tx] != kNoTriangle) continue;

@@ -60,7 +60,6 @@ constexpr float kMinNdotV = 1e-4f;
 // KHR_materials_ior's default): F0 = 0.04.
 constexpr float kDefaultIor = 1.5f;
 
-
 // alpha = roughness^2, the mapping to GGX's width that Burley 2012 made
 // perceptually linear and glTF adopts (Appendix B.2.3). The roughness is
 // first clamped to [kMinRoughness, 1].
@@ -362,8 +361,7 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
             const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.base[c] +
                                  fd * specular * p.dielectric_compensation[c];
             // conductor_fresnel: the specular lobe tinted by the metal's F.
-            const T metal =
-                schlick_fresnel(p.base[c], w) * specular * p.metal_compensation[c];
+            const T metal = schlick_fresnel(p.base[c], w) * specular * p.metal_compensation[c];
             const T sum = ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
             result[c] = select(lit, sum, zero);
         }

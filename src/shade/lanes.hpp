@@ -84,7 +84,8 @@ template <typename T>
 // x clamped to [0, 1] in std::clamp's order (a NaN stays).
 template <typename T>
 [[gnu::always_inline]] inline T clamp01(T x) {
-    return select(x < splat<T>(0.0f), splat<T>(0.0f), select(splat<T>(1.0f) < x, splat<T>(1.0f), x));
+    return select(x < splat<T>(0.0f), splat<T>(0.0f),
+                  select(splat<T>(1.0f) < x, splat<T>(1.0f), x));
 }
 
 template <typename T>

@@ -32,11 +32,10 @@ template <typename T>
     using lanes::select, lanes::splat;
     const T zero = splat<T>(0.0f);
     if (!light.is_point)
-        return {{splat<T>(light.direction.x), splat<T>(light.direction.y),
-                 splat<T>(light.direction.z)},
-                {splat<T>(light.radiance.x), splat<T>(light.radiance.y),
-                 splat<T>(light.radiance.z)},
-                lanes::Mask<T>(lanes::splat_mask<T>(true))};
+        return {
+            {splat<T>(light.direction.x), splat<T>(light.direction.y), splat<T>(light.direction.z)},
+            {splat<T>(light.radiance.x), splat<T>(light.radiance.y), splat<T>(light.radiance.z)},
+            lanes::Mask<T>(lanes::splat_mask<T>(true))};
     const T dx = light.position.x - position[0], dy = light.position.y - position[1],
             dz = light.position.z - position[2];
     const T dist2 = dx * dx + dy * dy + dz * dz;
@@ -69,8 +68,8 @@ inline void apply_shadow(const ShadowMap& shadow, const lanes::Vec3<float>& posi
 }
 [[gnu::always_inline]] inline void apply_shadow(const ShadowMap& shadow,
                                                 const lanes::Vec3<simd::vf>& position,
-                                                const lanes::Vec3<simd::vf>& normal,
-                                                simd::vi where, IncomingLight<simd::vf>& in) {
+                                                const lanes::Vec3<simd::vf>& normal, simd::vi where,
+                                                IncomingLight<simd::vf>& in) {
     const simd::vf visible = shadow_visibility(
         shadow, {position[0], position[1], position[2], normal[0], normal[1], normal[2]},
         simd::movemask(where));
@@ -89,15 +88,16 @@ struct LightSample {
 
 inline LightSample sample_light(const ShadeLight& light, const glm::vec3& position) {
     if (light.is_ambient) return {};
-    const IncomingLight<float> in = incoming_light<float>(light, {position.x, position.y, position.z});
+    const IncomingLight<float> in =
+        incoming_light<float>(light, {position.x, position.y, position.z});
     return {{in.to_light[0], in.to_light[1], in.to_light[2]},
             {in.radiance[0], in.radiance[1], in.radiance[2]}};
 }
 
 // Unit vector, or `fallback` for a zero vector (lanes::normalise_or for one point).
 inline glm::vec3 normalise_or(const glm::vec3& v, const glm::vec3& fallback) {
-    const lanes::Vec3<float> n = lanes::normalise_or<float>({v.x, v.y, v.z},
-                                                            {fallback.x, fallback.y, fallback.z});
+    const lanes::Vec3<float> n =
+        lanes::normalise_or<float>({v.x, v.y, v.z}, {fallback.x, fallback.y, fallback.z});
     return {n[0], n[1], n[2]};
 }
 

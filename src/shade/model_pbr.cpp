@@ -14,10 +14,10 @@ namespace {
 // shade_pbr_point is lane 0 of shade_pbr, to the bit
 // (tests/test_pbr_lanes.cpp).
 
-using pbr::kPi;
 using lanes::select;
 using lanes::splat;
 using lanes::Vec3;
+using pbr::kPi;
 
 // The environment's map lookups, for one point and for eight.
 Vec3<float> map_diffuse(const pbr::PrefilteredEnvironment& map, const Vec3<float>& n) {
@@ -84,8 +84,8 @@ Vec3<T> environment_light(const pbr::PbrPoint<T>& p, const EnvironmentLighting& 
         map_specular(map, to_map(environment, lanes::reflect(p.n, p.v)), p.roughness);
     Vec3<T> coat = {splat<T>(0.0f), splat<T>(0.0f), splat<T>(0.0f)};
     if (p.any_coat)
-        coat = map_specular(map, to_map(environment, lanes::reflect(p.coat_n, p.v)),
-                            p.coat_roughness);
+        coat =
+            map_specular(map, to_map(environment, lanes::reflect(p.coat_n, p.v)), p.coat_roughness);
     return pbr::environment_response(p, diffuse, specular, coat);
 }
 
@@ -115,10 +115,11 @@ Vec3<T> shade_points(const Vec3<T>& position, const Vec3<T>& normal, lanes::Mask
     const glm::vec3 eye = context.eye;
     const Vec3<T> v =
         lanes::normalise_or<T>({eye.x - position[0], eye.y - position[1], eye.z - position[2]}, n);
-    const pbr::PbrPoint<T> p = pbr::prepare_point(n, v, terms, pbr::MultipleScattering::compensated,
-                                                  pbr::dfg_table());
+    const pbr::PbrPoint<T> p =
+        pbr::prepare_point(n, v, terms, pbr::MultipleScattering::compensated, pbr::dfg_table());
     glm::vec3 uniform(0.0f);
-    const Vec3<T> direct = direct_light(p, position, active, receives_shadow, context.lights, uniform);
+    const Vec3<T> direct =
+        direct_light(p, position, active, receives_shadow, context.lights, uniform);
     const Vec3<T> indirect = indirect_light(p, context.environment, uniform);
     return {direct[0] + indirect[0], direct[1] + indirect[1], direct[2] + indirect[2]};
 }
@@ -154,17 +155,17 @@ void shade_pbr(const SurfaceLanes& in, const ShadingContext& context, ShadedLane
         l.clearcoat,
         l.clearcoat_roughness,
         {l.coat_normal[0], l.coat_normal[1], l.coat_normal[2]}};
-    const Vec3<simd::vf> color = shade_points<simd::vf>(
-        {s.px, s.py, s.pz}, {s.nx, s.ny, s.nz}, active, s.receives_shadow > simd::splat(0.0f),
-        terms, context);
+    const Vec3<simd::vf> color =
+        shade_points<simd::vf>({s.px, s.py, s.pz}, {s.nx, s.ny, s.nz}, active,
+                               s.receives_shadow > simd::splat(0.0f), terms, context);
     for (int c = 0; c < 3; ++c) out.color[c] = color[c];
 }
 
 glm::vec3 shade_pbr_point(const glm::vec3& position, const glm::vec3& normal, bool receives_shadow,
                           const pbr::SurfaceTerms<float>& terms, const ShadingContext& context) {
-    const Vec3<float> color = shade_points<float>({position.x, position.y, position.z},
-                                                  {normal.x, normal.y, normal.z}, true,
-                                                  receives_shadow, terms, context);
+    const Vec3<float> color =
+        shade_points<float>({position.x, position.y, position.z}, {normal.x, normal.y, normal.z},
+                            true, receives_shadow, terms, context);
     return {color[0], color[1], color[2]};
 }
 

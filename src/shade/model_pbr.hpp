@@ -22,7 +22,7 @@ namespace pbr {
 class PrefilteredEnvironment;  // shade/environment_map.hpp
 template <typename T>
 struct SurfaceTerms;  // shade/brdf.hpp
-}
+}  // namespace pbr
 
 struct SurfaceLanes;
 struct ShadedLanes;

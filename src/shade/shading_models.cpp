@@ -2,6 +2,7 @@
 
 #include "assets/mesh.hpp"
 #include "shade/gooch_style.hpp"
+#include "shade/layers.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/model_depth_view.hpp"
 #include "shade/model_gouraud.hpp"
@@ -37,20 +38,18 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
     const std::span<const ShadeLight> lights = context.lights;
     switch (style.model) {
         case ShadingModel::unlit:
-            return shade_unlit(in, out);
+        case ShadingModel::blinn_phong:
+        case ShadingModel::phong:
+            return shade_plain_model(style, context, in, out);
         case ShadingModel::depth:
             return shade_depth_view(in, context.depth_range, out);
         case ShadingModel::normal:
             return shade_normal_view(in, out);
         case ShadingModel::gouraud:
             return shade_gouraud(in, out);
-        case ShadingModel::flat:
-        case ShadingModel::blinn_phong:
-        case ShadingModel::phong:
+        case ShadingModel::flat:  // Blinn-Phong with the face's normal
             if (in.count < simd::kLanes) pad_batch(in.surface, in.count);
-            shade_phong(in, context,
-                        style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn,
-                        out);
+            shade_phong(in, context, Highlight::blinn, out);
             return;
         case ShadingModel::palette:
             shade_stylised(
@@ -81,6 +80,39 @@ void shade_lanes(const StyleState& style, const ShadingContext& context, Surface
                 out);
             return;
     }
+}
+
+void shade_plain_model(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
+                       ShadedLanes& out) {
+    if (style.model == ShadingModel::unlit) return shade_unlit(in, out);
+    if (in.count < simd::kLanes) pad_batch(in.surface, in.count);
+    shade_phong(in, context,
+                style.model == ShadingModel::phong ? Highlight::phong : Highlight::blinn, out);
+}
+
+ModelNeeds needs_of(ShadingModel m) {
+    const bool lit = m == ShadingModel::flat || m == ShadingModel::phong ||
+                     m == ShadingModel::blinn_phong || m == ShadingModel::palette ||
+                     m == ShadingModel::gooch || m == ShadingModel::toon || m == ShadingModel::pbr;
+    // Gouraud lights the vertices, but looks up shadows per pixel, which
+    // needs the pixel's position and normal.
+    const bool gouraud = m == ShadingModel::gouraud;
+    return {lit || gouraud, lit || gouraud || m == ShadingModel::normal, lit, gouraud};
+}
+
+uint32_t drawn_features(const StyleState& style, uint32_t features) {
+    if (style.base_color) features &= ~(kBaseColorMap | kVertexColors);
+    if (style.model != ShadingModel::pbr) features &= ~(kPhysicalMaps | kNormalMaps);
+    // The unlit, normal and depth models show no emission: views stay measurements.
+    if (!needs_of(style.model).position) features &= ~kEmission;
+    return features;
+}
+
+bool plain_style(const StyleState& style) {
+    const ShadingModel m = style.model;
+    return (m == ShadingModel::phong || m == ShadingModel::blinn_phong ||
+            m == ShadingModel::unlit) &&
+           !has_layers(style);
 }
 
 }  // namespace facet

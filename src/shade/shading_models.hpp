@@ -54,4 +54,29 @@ struct ShadingContext {
 void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
                  ShadedLanes& out);
 
+// shade_lanes for the plain styles' models (plain_style: Phong,
+// Blinn-Phong, unlit), which leave palette_tone alone.
+void shade_plain_model(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,
+                       ShadedLanes& out);
+
+// What a style's model reads besides the barycentrics and the albedo.
+struct ModelNeeds {
+    bool position;      // world position (and shadows, emission and catchers' light)
+    bool normal;        // the normal on the viewer's side
+    bool light_terms;   // the material's Phong terms and the lights
+    bool vertex_light;  // Gouraud's light from the vertices
+};
+ModelNeeds needs_of(ShadingModel model);
+
+// Of a material's and mesh part's features (MaterialFeature,
+// assets/mesh.hpp), those `style` draws: its own base colour replaces the
+// maps and vertex colours, only `pbr` reads its maps, and only the models
+// that light a surface add emission. Asked once per draw, style and frame.
+uint32_t drawn_features(const StyleState& style, uint32_t features);
+
+// Whether `style`'s batches with no drawn feature take the plain path, the
+// surface path compiled without any (render/shade_batch.cpp): a Phong,
+// Blinn-Phong or unlit model without layers.
+bool plain_style(const StyleState& style);
+
 }  // namespace facet

@@ -1,0 +1,179 @@
+#pragma once
+// A material's keys as the shading models read them, eight points at a
+// time: its constants (each model's terms), its maps and its emission and
+// fade. The shading stage (render/shade_batch.cpp) gathers the points and
+// runs the steps their features ask for (MaterialFeature, assets/mesh.hpp);
+// it names no material key itself. The texture lookups and the tangent
+// frames are the stage's: each step takes them as callables.
+//
+// A new material key is read here (or in its model's file), described in
+// assets/mesh.hpp with its feature bit when it needs a step of its own, and
+// read from scenes and files by scene/material_parser.cpp and
+// assets/gltf_materials.cpp (docs/architecture.md, "Adding a material key").
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "assets/mesh.hpp"
+#include "core/simd_math.hpp"
+#include "shade/brdf.hpp"
+#include "shade/shading_models.hpp"
+#include "shade/style_math.hpp"
+
+namespace facet {
+
+// A value of one group's triangle (the lanes of a batch that show the same
+// triangle): splatted for the first group, then selected into each further
+// group's lanes. With one group (the usual case) `Single` leaves out the
+// selects.
+template <bool Single>
+[[gnu::always_inline]] inline void put(simd::vf& v, simd::vi mask, float value, bool first) {
+    if (Single || first)
+        v = simd::splat(value);
+    else
+        v = mask ? simd::splat(value) : v;
+}
+
+// The constants of material `m` that `style`'s model reads, into the lanes
+// of `mask`: the albedo (the style's own colour first), the Phong terms,
+// and the `pbr` model's terms, the dielectric's reflectances from its ior
+// and KHR_materials_specular (f0 = min(f0(ior) * colour, 1) * weight,
+// f90 = weight), without occlusion until its map.
+template <bool Single>
+[[gnu::always_inline]] inline void put_material_terms(const Material& m, const StyleState& style,
+                                                      const ModelNeeds& needs, simd::vi mask,
+                                                      bool first, SurfaceLanes& lanes) {
+    SurfaceBatch& s = lanes.surface;
+    if (needs.light_terms) {
+        put<Single>(s.ambient, mask, m.ambient, first);
+        put<Single>(s.diffuse, mask, m.diffuse, first);
+        put<Single>(s.specular, mask, m.specular, first);
+        put<Single>(s.shininess, mask, m.shininess, first);
+    }
+    if (style.model == ShadingModel::pbr) {
+        PbrLanes& p = lanes.pbr;
+        put<Single>(p.metallic, mask, m.metallic, first);
+        put<Single>(p.roughness, mask, m.roughness, first);
+        put<Single>(p.occlusion, mask, 1.0f, first);
+        const float f0 = pbr::f0_from_ior(m.ior);
+        for (int a = 0; a < 3; ++a)
+            put<Single>(p.f0[a], mask, std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight,
+                        first);
+        put<Single>(p.f90, mask, m.specular_weight, first);
+        put<Single>(p.clearcoat, mask, m.clearcoat, first);
+        put<Single>(p.clearcoat_roughness, mask, m.clearcoat_roughness, first);
+    }
+    for (int a = 0; a < 3; ++a)
+        put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
+                    first);
+}
+
+// Each lane's material, for the steps below.
+using LaneMaterials = const Material* const (&)[simd::kLanes];
+
+// A material texture slot of each lane (null: none), for a `lookup`.
+template <typename Slot>
+auto slot_of(LaneMaterials material, Slot slot) {
+    return [&material, slot](int lane) -> const TextureSlot* {
+        const TextureSlot& t = material[lane]->*slot;
+        return t ? &t : nullptr;
+    };
+}
+
+// The steps' texture lookups: `lookup(slot_of, use)` reads each lane's
+// slot `slot_of(lane)` (null: none) at the lane's point and footprint and
+// calls `use(lane, texel)`.
+
+// kBaseColorMap: the map multiplies the albedo.
+template <typename Lookup>
+void apply_base_color_maps(LaneMaterials material, Lookup&& lookup, SurfaceLanes& lanes) {
+    lookup(slot_of(material, &Material::base_color_map), [&](int i, const glm::vec4& texel) {
+        for (int a = 0; a < 3; ++a) lanes.albedo[a][i] *= texel[a];
+    });
+}
+
+// kPhysicalMaps: the `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness
+// (B metal, G roughness), occlusion (R, blended by its strength),
+// KHR_materials_specular (A weight, RGB colour) and clearcoat (R strength,
+// G roughness), each multiplying its factor.
+template <typename Lookup>
+void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, PbrLanes& p) {
+    lookup(slot_of(material, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
+        p.roughness[i] *= t.g;
+        p.metallic[i] *= t.b;
+    });
+    lookup(slot_of(material, &Material::occlusion_map), [&](int i, const glm::vec4& t) {
+        p.occlusion[i] = 1.0f + material[i]->occlusion_strength * (t.r - 1.0f);
+    });
+    float weight[simd::kLanes], tint[3][simd::kLanes];
+    std::fill(weight, weight + simd::kLanes, 1.0f);
+    std::fill(&tint[0][0], &tint[0][0] + 3 * simd::kLanes, 1.0f);
+    lookup(slot_of(material, &Material::specular_weight_map),
+           [&](int i, const glm::vec4& t) { weight[i] = t.a; });
+    lookup(slot_of(material, &Material::specular_color_map), [&](int i, const glm::vec4& t) {
+        for (int a = 0; a < 3; ++a) tint[a][i] = t[a];
+    });
+    for (int i = 0; i < count; ++i) {
+        const Material& m = *material[i];
+        if (!m.specular_weight_map && !m.specular_color_map) continue;
+        const float f0 = pbr::f0_from_ior(m.ior);
+        for (int a = 0; a < 3; ++a)
+            p.f0[a][i] = std::min(f0 * m.specular_color[a] * tint[a][i], 1.0f) * m.specular_weight *
+                         weight[i];
+        p.f90[i] = m.specular_weight * weight[i];
+    }
+    lookup(slot_of(material, &Material::clearcoat_map),
+           [&](int i, const glm::vec4& t) { p.clearcoat[i] *= t.r; });
+    lookup(slot_of(material, &Material::clearcoat_roughness_map),
+           [&](int i, const glm::vec4& t) { p.clearcoat_roughness[i] *= t.g; });
+}
+
+// kNormalMaps: the base's and the coat's normal maps, lane by lane.
+// `normal_at(lane, slot, scale)` is the map's unit normal at the lane, or
+// nothing where the lane's part cannot draw it (no tangents); `set_base`
+// and `set_coat` take the results. The coat's map turns the coat's normal
+// from the same unmapped normal: its relief is not the base's.
+template <typename NormalAt, typename SetBase, typename SetCoat>
+void apply_normal_maps(LaneMaterials material, int count, NormalAt&& normal_at, SetBase&& set_base,
+                       SetCoat&& set_coat) {
+    for (int i = 0; i < count; ++i) {
+        const Material& m = *material[i];
+        if (m.clearcoat > 0.0f)
+            if (const auto n = normal_at(i, m.clearcoat_normal_map, m.clearcoat_normal_scale))
+                set_coat(i, *n);
+        if (const auto n = normal_at(i, m.normal_map, m.normal_scale)) set_base(i, *n);
+    }
+}
+
+// kEmission: unlit materials show their albedo; emission (its factor
+// times its map) adds to what the model made.
+template <typename Lookup>
+void add_emission(LaneMaterials material, int count, Lookup&& lookup, const simd::vf (&albedo)[3],
+                  simd::vf (&color)[3]) {
+    glm::vec3 emitted[simd::kLanes];
+    for (int i = 0; i < count; ++i) emitted[i] = material[i]->emissive;
+    lookup(
+        [&](int i) -> const TextureSlot* {
+            const TextureSlot& t = material[i]->emissive_map;
+            return t && emitted[i] != glm::vec3(0) ? &t : nullptr;
+        },
+        [&](int i, const glm::vec4& t) { emitted[i] *= glm::vec3(t); });
+    for (int i = 0; i < count; ++i) {
+        const Material& m = *material[i];
+        for (int a = 0; a < 3; ++a) {
+            const float base = m.unlit ? albedo[a][i] : color[a][i];
+            color[a][i] = base + emitted[i][a];
+        }
+    }
+}
+
+// kFade: how much of a point of material `m` stays, by its distance from
+// its object's origin (model space, at rest): a smoothstep from fade_start
+// (all) to fade_end (none).
+inline float fade_kept(const Material& m, float distance) {
+    return 1.0f - smoothstep(m.fade_start, m.fade_end, distance);
+}
+
+}  // namespace facet
