@@ -72,8 +72,8 @@ TEST_CASE("pbr lanes: each lane of the model is brdf.hpp's f(v, l) (n.l) times p
         in.pbr.roughness[i] = points[i].roughness;
         in.pbr.occlusion[i] = 1.0f;
         in.pbr.f90[i] = 1.0f;
-        in.pbr.clearcoat[i] = 0.0f;
-        in.pbr.clearcoat_roughness[i] = 0.0f;
+        in.pbr.coat[i] = 0.0f;
+        in.pbr.coat_roughness[i] = 0.0f;
     }
     in.surface.receives_shadow = splat(0.0f);
     ShadeLight light;
@@ -153,8 +153,8 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
         in.pbr.roughness[i] = points[i].roughness;
         in.pbr.occlusion[i] = 1.0f - 0.07f * static_cast<float>(i);
         in.pbr.f90[i] = 0.6f + 0.05f * static_cast<float>(i);
-        in.pbr.clearcoat[i] = i % 2 == 0 ? 0.0f : 0.2f * static_cast<float>(i);
-        in.pbr.clearcoat_roughness[i] = 0.1f * static_cast<float>(i);
+        in.pbr.coat[i] = i % 2 == 0 ? 0.0f : 0.2f * static_cast<float>(i);
+        in.pbr.coat_roughness[i] = 0.1f * static_cast<float>(i);
     }
     std::vector<ShadeLight> lights(4);
     lights[0].direction = glm::normalize(glm::vec3(0.3f, 1.0f, 0.4f));
@@ -192,8 +192,8 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
         terms.roughness = in.pbr.roughness[i];
         terms.occlusion = in.pbr.occlusion[i];
         terms.f90 = in.pbr.f90[i];
-        terms.coat = in.pbr.clearcoat[i];
-        terms.coat_roughness = in.pbr.clearcoat_roughness[i];
+        terms.coat = in.pbr.coat[i];
+        terms.coat_roughness = in.pbr.coat_roughness[i];
         const glm::vec3 expected =
             shade_pbr_point(position, normal, in.surface.receives_shadow[i] > 0.0f, terms, context);
         if (shadow_visibility(shadow, position, normal) < 1.0f) ++shadowed;

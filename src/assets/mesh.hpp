@@ -1,6 +1,7 @@
 #pragma once
 // Triangle meshes as loaded from files or built procedurally. A mesh is a list
 // of parts; each part has one material and its own indexed vertices.
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <map>
@@ -112,6 +113,15 @@ struct Material {
     // base's normal map, else the coat's (glTF gives both one tangent frame).
     const TextureSlot& tangent_space_map() const {
         return normal_map ? normal_map : clearcoat_normal_map;
+    }
+
+    // Every texture slot, for what applies to all maps alike (a scene's
+    // uv_scale and wrap, render/world.cpp). A new map adds itself here.
+    std::array<TextureSlot*, 10> texture_slots() {
+        return {&base_color_map,      &normal_map,    &occlusion_map,
+                &metal_rough_map,     &emissive_map,  &specular_weight_map,
+                &specular_color_map,  &clearcoat_map, &clearcoat_roughness_map,
+                &clearcoat_normal_map};
     }
 
     // What shading must do for this material beyond its constants

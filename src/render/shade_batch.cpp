@@ -124,8 +124,9 @@ template <bool Plain, bool Single>
                                                  const LaneGroup* groups, int group_count, Batch& b,
                                                  CornerLanes& c) {
     const World& world = in.world;
-    const bool face_normal = style.model == ShadingModel::flat;
+    const bool face_normal = !Plain && style.model == ShadingModel::flat;
     const size_t feature_row = style_index * world.draws.size();
+    vi objects = simd::splat_i(0);
     for (int g = 0; g < group_count; ++g) {
         const bool first = g == 0;
         const vi mask = groups[g].mask;
@@ -138,21 +139,19 @@ template <bool Plain, bool Single>
             put<Single>(b.lanes.surface.receives_shadow, mask, world.receives_shadows[draw.object],
                         first);
         put_material_terms<Single>(m, style, needs, mask, first, b.lanes);
-        if (Single) {
-            std::fill(b.result.object, b.result.object + kLanes, draw.object);
-            if constexpr (Plain) continue;
-        }
+        const vi object = simd::splat_i(static_cast<int32_t>(draw.object));
+        objects = (Single || first) ? object : (mask ? object : objects);
+        if constexpr (Plain) continue;
         const unsigned lanes = Single ? 0xffu : simd::movemask(mask);
         for (int lane = 0; lane < kLanes; ++lane) {
             if (!((lanes >> lane) & 1)) continue;
-            b.result.object[lane] = draw.object;
-            if constexpr (Plain) continue;
             b.material[lane] = &m;
             b.has_uvs[lane] = draw.has_uvs;
             b.has_colors[lane] = draw.has_colors;
             b.features[lane] = in.frame.draw_features[feature_row + draw_index];
         }
     }
+    std::memcpy(b.result.object, &objects, sizeof objects);
 }
 
 // The share of the direct light of `lights` that shadows take from each
@@ -203,40 +202,43 @@ ShadowShare shadow_share(const ShadeInputs& in, std::span<const ShadeLight> ligh
 // shadow-casting lights' direct light (diffuse and highlight) that its own
 // shadow lookups find blocked (the lighting stays per vertex, the shadow
 // edge does not). Lights without shadows keep all of theirs.
-void shadow_vertex_light(const ShadeInputs& in, const CornerLanes& c, Batch& b) {
+void shadow_vertex_light(const ShadeInputs& in, const SurfaceSamples& sample, const CornerLanes& c,
+                         Batch& b) {
     const ShadowShare share = shadow_share(in, in.shadow_lights, b.lanes.surface);
     for (int a = 0; a < 3; ++a) {
         b.lanes.vertex_diffuse[a] -=
-            share.channel[a] * interpolate_corners(b.sample.bary, c.direct_diffuse, a);
+            share.channel[a] * interpolate_corners(sample.bary, c.direct_diffuse, a);
         b.lanes.vertex_specular[a] -=
-            share.channel[a] * interpolate_corners(b.sample.bary, c.direct_specular, a);
+            share.channel[a] * interpolate_corners(sample.bary, c.direct_specular, a);
     }
 }
 
 // The normal the model reads and the G-buffer keeps: the face's for flat
 // shading ((p1 - p0) x (p2 - p0)), else the corners' interpolated; turned
 // to the viewer. Zero when nothing needs one.
+template <bool Plain>
 [[gnu::always_inline]] inline void gather_normal(const StyleState& style, const ModelNeeds& needs,
-                                                 const CornerLanes& c, Batch& b) {
+                                                 const SurfaceSamples& sample, const CornerLanes& c,
+                                                 Batch& b) {
     vf(&normal)[3] = b.result.normal;
     if (!needs.normal) {
         for (vf& axis : normal) axis = simd::splat(0.0f);
         return;
     }
-    if (style.model == ShadingModel::flat) {
+    if (!Plain && style.model == ShadingModel::flat) {
         vf e1[3], e2[3];
         for (int a = 0; a < 3; ++a) e1[a] = c.p[1][a] - c.p[0][a], e2[a] = c.p[2][a] - c.p[0][a];
         normal[0] = e1[1] * e2[2] - e2[1] * e1[2];
         normal[1] = e1[2] * e2[0] - e2[2] * e1[0];
         normal[2] = e1[0] * e2[1] - e2[0] * e1[1];
     } else {
-        for (int a = 0; a < 3; ++a) normal[a] = interpolate_corners(b.sample.bary, c.n, a);
+        for (int a = 0; a < 3; ++a) normal[a] = interpolate_corners(sample.bary, c.n, a);
     }
     const vi facing_away = c.back > simd::splat(0.0f);
     for (int a = 0; a < 3; ++a) normal[a] = facing_away ? -normal[a] : normal[a];
     SurfaceBatch& s = b.lanes.surface;
     s.nx = normal[0], s.ny = normal[1], s.nz = normal[2];
-    if (style.model == ShadingModel::pbr)
+    if (!Plain && style.model == ShadingModel::pbr)
         for (int a = 0; a < 3; ++a) b.lanes.pbr.coat_normal[a] = normal[a];
 }
 
@@ -246,26 +248,26 @@ template <bool Plain>
 [[gnu::always_inline]] inline void gather_vertices(const ShadeInputs& in, const StyleState& style,
                                                    uint32_t style_index, const ModelNeeds& needs,
                                                    const LaneGroup* groups, int group_count,
-                                                   Batch& b) {
+                                                   const SurfaceSamples& sample, Batch& b) {
     CornerLanes c;
     if (group_count == 1)
         gather_groups<Plain, true>(in, style, style_index, needs, groups, group_count, b, c);
     else
         gather_groups<Plain, false>(in, style, style_index, needs, groups, group_count, b, c);
-    gather_normal(style, needs, c, b);
+    gather_normal<Plain>(style, needs, sample, c, b);
     SurfaceBatch& s = b.lanes.surface;
     if (needs.position) {
-        s.px = interpolate_corners(b.sample.bary, c.p, 0);
-        s.py = interpolate_corners(b.sample.bary, c.p, 1);
-        s.pz = interpolate_corners(b.sample.bary, c.p, 2);
+        s.px = interpolate_corners(sample.bary, c.p, 0);
+        s.py = interpolate_corners(sample.bary, c.p, 1);
+        s.pz = interpolate_corners(sample.bary, c.p, 2);
     }
-    b.lanes.depth = b.sample.w;
+    b.lanes.depth = sample.w;
     if (!needs.vertex_light) return;
     for (int a = 0; a < 3; ++a) {
-        b.lanes.vertex_diffuse[a] = interpolate_corners(b.sample.bary, c.diffuse, a);
-        b.lanes.vertex_specular[a] = interpolate_corners(b.sample.bary, c.specular, a);
+        b.lanes.vertex_diffuse[a] = interpolate_corners(sample.bary, c.diffuse, a);
+        b.lanes.vertex_specular[a] = interpolate_corners(sample.bary, c.specular, a);
     }
-    if (!in.vertices.direct.empty()) shadow_vertex_light(in, c, b);
+    if (!in.vertices.direct.empty()) shadow_vertex_light(in, sample, c, b);
 }
 
 // The depth of the nearest sample of a pixel of side x side samples centred
@@ -517,22 +519,28 @@ uint32_t batch_features(const ShadeInputs& in, uint32_t style, const Batch& b,
 // the same order, so a batch gets the same bits from either
 // (tests/test_shade_plain.cpp).
 template <bool Plain>
-void shade_surface(const ShadeInputs& in, uint32_t style_index, const LaneGroup* groups,
-                   int group_count, const SetupLanes& setup, uint32_t features, Batch& b) {
+[[gnu::always_inline]] inline void shade_surface(const ShadeInputs& in, uint32_t style_index,
+                                                 const LaneGroup* groups, int group_count,
+                                                 const SetupLanes& setup, uint32_t features,
+                                                 Batch& b) {
     const StyleState& style = in.frame.styles[style_index];
     const ShadeRequest& request = b.request;
     ShadeResult& r = b.result;
-    b.sample = reconstruct_surfaces(setup, request.x, request.y);
-    r.depth = b.sample.w;
+    // A local, so that the plain path computes only what it reads (the
+    // derivatives are the textures' and the layers').
+    const SurfaceSamples sample = reconstruct_surfaces(setup, request.x, request.y);
+    if constexpr (!Plain) b.sample = sample;
+    r.depth = sample.w;
     r.pixel_depth = request.pixel_side > 0
                         ? nearest_depth(setup, request.x, request.y, request.pixel_side)
-                        : b.sample.w;
+                        : sample.w;
     std::fill(r.wire, r.wire + kLanes, 0.0f);
     r.wire_color = glm::vec3(0.0f);
     b.lanes.count = b.count;
     ModelNeeds needs = in.frame.style_needs[style_index];
     needs.normal = needs.normal || request.want_normal;
-    gather_vertices<Plain>(in, style, style_index, needs, groups, group_count, b);
+    if constexpr (Plain) needs.vertex_light = false;  // the plain models light no vertices
+    gather_vertices<Plain>(in, style, style_index, needs, groups, group_count, sample, b);
     const TextureLookups lookup{in, b};
     if (!Plain && (features & kBaseColorMap)) apply_base_color_maps(b.material, lookup, b.lanes);
     if (!Plain && (features & kVertexColors)) apply_vertex_colors(in, b);
@@ -558,6 +566,16 @@ void shade_surface(const ShadeInputs& in, uint32_t style_index, const LaneGroup*
     if (!Plain && (features & kFade)) apply_fades(in, b);
 }
 
+// The general instantiation as a function of its own, so that the compiler
+// shares no work between it and the plain one inlined in shade_batch: the
+// plain one then computes only what it reads (not the derivatives that
+// textures and layers need).
+[[gnu::noinline]] void shade_general(const ShadeInputs& in, uint32_t style_index,
+                                     const LaneGroup* groups, int group_count,
+                                     const SetupLanes& setup, uint32_t features, Batch& b) {
+    shade_surface<false>(in, style_index, groups, group_count, setup, features, b);
+}
+
 }  // namespace
 
 bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style,
@@ -578,7 +596,7 @@ bool shade_batch(const ShadeInputs& in, const Rasterizer& raster, uint32_t style
     if (plain)
         shade_surface<true>(in, style, groups, group_count, setup, features, b);
     else
-        shade_surface<false>(in, style, groups, group_count, setup, features, b);
+        shade_general(in, style, groups, group_count, setup, features, b);
     return plain;
 }
 

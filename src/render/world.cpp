@@ -48,11 +48,7 @@ void resolve_physical_terms(const MaterialDesc& desc, TextureFiles& textures, Te
                             Material& m) {
     if (desc.metallic) m.metallic = desc.metallic->value;
     if (desc.roughness) m.roughness = desc.roughness->value;
-    if (desc.normal_scale) m.normal_scale = *desc.normal_scale;
-    if (desc.occlusion_strength) m.occlusion_strength = *desc.occlusion_strength;
-    if (desc.ior) m.ior = *desc.ior;
-    if (desc.clearcoat) m.clearcoat = *desc.clearcoat;
-    if (desc.clearcoat_roughness) m.clearcoat_roughness = *desc.clearcoat_roughness;
+    for (const auto& [field, value] : desc.constants) m.*field = value;
     if (desc.normal_map) m.normal_map = scene_map(*desc.normal_map, true, textures, budget);
     if (desc.occlusion_map)
         m.occlusion_map = scene_map(*desc.occlusion_map, true, textures, budget);
@@ -86,10 +82,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, Textur
     // uv_scale multiplies the coordinates the file's mapping gives, and
     // wrap replaces its samplers', for every map alike: the file's
     // specular and clearcoat maps too, or they would slide off the others.
-    for (TextureSlot* slot :
-         {&m.base_color_map, &m.normal_map, &m.occlusion_map, &m.metal_rough_map, &m.emissive_map,
-          &m.specular_weight_map, &m.specular_color_map, &m.clearcoat_map,
-          &m.clearcoat_roughness_map, &m.clearcoat_normal_map}) {
+    for (TextureSlot* slot : m.texture_slots()) {
         if (!*slot) continue;
         if (desc.uv_scale) slot->transform = slot->transform.scaled(glm::dvec2(*desc.uv_scale));
         if (desc.wrap) {

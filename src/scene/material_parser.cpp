@@ -14,18 +14,30 @@ MaterialDesc::Map map_of(const Field& f, const std::string& base_dir) {
     return {existing_file(f, base_dir), f.where(), f.path()};
 }
 
+// A material's number keys that do not animate: the scene's name, the
+// field of Material it sets and its range. A new key of this kind is one
+// line here (docs/architecture.md, "Adding a material key").
+struct NumberKey {
+    const char* name;
+    float Material::*field;
+    double low, high;
+};
+constexpr NumberKey kNumberKeys[] = {
+    {"normal_scale", &Material::normal_scale, -10, 10},
+    {"occlusion_strength", &Material::occlusion_strength, 0, 1},
+    {"ior", &Material::ior, 1, 10},
+    {"clearcoat", &Material::clearcoat, 0, 1},
+    {"clearcoat_roughness", &Material::clearcoat_roughness, 0, 1},
+};
+
 // The keys of the `pbr` model (docs/pbr.md, "Material keys").
 void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialDesc& m) {
     if (f.has("metallic")) m.metallic = f["metallic"].animated_number(0, 1);
     if (f.has("roughness")) m.roughness = f["roughness"].animated_number(0, 1);
-    auto number = [&](const char* key, std::optional<float>& out, double low, double high) {
-        if (f.has(key)) out = static_cast<float>(f[key].number(low, high));
-    };
-    number("normal_scale", m.normal_scale, -10, 10);
-    number("occlusion_strength", m.occlusion_strength, 0, 1);
-    number("ior", m.ior, 1, 10);
-    number("clearcoat", m.clearcoat, 0, 1);
-    number("clearcoat_roughness", m.clearcoat_roughness, 0, 1);
+    for (const NumberKey& key : kNumberKeys)
+        if (f.has(key.name))
+            m.constants.push_back(
+                {key.field, static_cast<float>(f[key.name].number(key.low, key.high))});
     auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
         if (f.has(key)) out = map_of(f[key], base_dir);
     };
@@ -41,33 +53,13 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
 
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
-    f.check_keys({"color",
-                  "ambient",
-                  "diffuse",
-                  "specular",
-                  "ka",
-                  "kd",
-                  "ks",
-                  "shininess",
-                  "texture",
-                  "wrap",
-                  "uv_scale",
-                  "double_sided",
-                  "emissive",
-                  "unlit",
-                  "shadow_catcher",
-                  "fade",
-                  "metallic",
-                  "roughness",
-                  "normal_map",
-                  "normal_scale",
-                  "occlusion_map",
-                  "occlusion_strength",
-                  "metal_rough_map",
-                  "emissive_map",
-                  "ior",
-                  "clearcoat",
-                  "clearcoat_roughness"});
+    std::vector<const char*> keys = {
+        "color",      "ambient",       "diffuse",         "specular",    "ka",       "kd",
+        "ks",         "shininess",     "texture",         "wrap",        "uv_scale", "double_sided",
+        "emissive",   "unlit",         "shadow_catcher",  "fade",        "metallic", "roughness",
+        "normal_map", "occlusion_map", "metal_rough_map", "emissive_map"};
+    for (const NumberKey& key : kNumberKeys) keys.push_back(key.name);
+    f.check_keys(keys);
     if (f.has("color")) m.color = f["color"].animated_color3();
     // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.
     auto coefficient = [&](const char* name, const char* alias) -> std::optional<Field> {

@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/ext/vector_int2.hpp>
@@ -12,6 +13,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "assets/mesh.hpp"
 #include "assets/texture.hpp"
 #include "cloth/cloth_params.hpp"
 #include "core/diagnostics.hpp"
@@ -193,7 +195,10 @@ struct MaterialDesc {
     std::optional<glm::vec2> fade;       // [start, end]: fades into the background between
     // The physically based terms (style pbr, docs/pbr.md).
     std::optional<Animated<float>> metallic, roughness;
-    std::optional<float> normal_scale, occlusion_strength, ior, clearcoat, clearcoat_roughness;
+    // The material's number keys that do not animate (material_parser.cpp's
+    // table: ior, clearcoat, ...), each with the value the scene gives, laid
+    // over the file's material in the order given.
+    std::vector<std::pair<float Material::*, float>> constants;
     std::optional<Map> normal_map, occlusion_map, metal_rough_map, emissive_map;
 
     // The paths of every map the material reads.

@@ -116,7 +116,7 @@ void Field::expect_map() const {
     if (!node_.IsMap()) fail("must be a mapping of keys to values, got " + scalar_for_message());
 }
 
-void Field::check_keys(std::initializer_list<const char*> allowed) const {
+void Field::check_keys(std::span<const char* const> allowed) const {
     expect_map();
     std::set<std::string> seen;
     for (auto it = node_.begin(); it != node_.end(); ++it) {

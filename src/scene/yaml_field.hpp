@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -46,7 +47,10 @@ class Field {
 
     // Mapping access. Every key of the mapping must be in `allowed`.
     void expect_map() const;
-    void check_keys(std::initializer_list<const char*> allowed) const;
+    void check_keys(std::initializer_list<const char*> allowed) const {
+        check_keys(std::span<const char* const>(allowed.begin(), allowed.size()));
+    }
+    void check_keys(std::span<const char* const> allowed) const;
     bool has(const std::string& key) const;
     Field operator[](const std::string& key) const;  // key must exist (see has)
     Field require(const std::string& key) const;     // fails at this mapping if missing

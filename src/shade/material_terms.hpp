@@ -53,7 +53,7 @@ template <bool Single>
         put<Single>(s.shininess, mask, m.shininess, first);
     }
     if (style.model == ShadingModel::pbr) {
-        PbrLanes& p = lanes.pbr;
+        pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
         put<Single>(p.metallic, mask, m.metallic, first);
         put<Single>(p.roughness, mask, m.roughness, first);
         put<Single>(p.occlusion, mask, 1.0f, first);
@@ -62,8 +62,8 @@ template <bool Single>
             put<Single>(p.f0[a], mask, std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight,
                         first);
         put<Single>(p.f90, mask, m.specular_weight, first);
-        put<Single>(p.clearcoat, mask, m.clearcoat, first);
-        put<Single>(p.clearcoat_roughness, mask, m.clearcoat_roughness, first);
+        put<Single>(p.coat, mask, m.clearcoat, first);
+        put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
     }
     for (int a = 0; a < 3; ++a)
         put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
@@ -99,7 +99,8 @@ void apply_base_color_maps(LaneMaterials material, Lookup&& lookup, SurfaceLanes
 // KHR_materials_specular (A weight, RGB colour) and clearcoat (R strength,
 // G roughness), each multiplying its factor.
 template <typename Lookup>
-void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, PbrLanes& p) {
+void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup,
+                         pbr::SurfaceTerms<simd::vf>& p) {
     lookup(slot_of(material, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
         p.roughness[i] *= t.g;
         p.metallic[i] *= t.b;
@@ -125,9 +126,9 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Pbr
         p.f90[i] = m.specular_weight * weight[i];
     }
     lookup(slot_of(material, &Material::clearcoat_map),
-           [&](int i, const glm::vec4& t) { p.clearcoat[i] *= t.r; });
+           [&](int i, const glm::vec4& t) { p.coat[i] *= t.r; });
     lookup(slot_of(material, &Material::clearcoat_roughness_map),
-           [&](int i, const glm::vec4& t) { p.clearcoat_roughness[i] *= t.g; });
+           [&](int i, const glm::vec4& t) { p.coat_roughness[i] *= t.g; });
 }
 
 // kNormalMaps: the base's and the coat's normal maps, lane by lane.

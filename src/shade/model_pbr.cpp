@@ -144,17 +144,8 @@ void shade_pbr(const SurfaceLanes& in, const ShadingContext& context, ShadedLane
     simd::vi active;
     for (int i = 0; i < simd::kLanes; ++i) active[i] = i < in.count ? -1 : 0;
     const SurfaceBatch& s = in.surface;
-    const PbrLanes& l = in.pbr;
-    const pbr::SurfaceTerms<simd::vf> terms = {
-        {in.albedo[0], in.albedo[1], in.albedo[2]},
-        l.metallic,
-        l.roughness,
-        l.occlusion,
-        {l.f0[0], l.f0[1], l.f0[2]},
-        l.f90,
-        l.clearcoat,
-        l.clearcoat_roughness,
-        {l.coat_normal[0], l.coat_normal[1], l.coat_normal[2]}};
+    pbr::SurfaceTerms<simd::vf> terms = in.pbr;
+    terms.base = {in.albedo[0], in.albedo[1], in.albedo[2]};
     const Vec3<simd::vf> color =
         shade_points<simd::vf>({s.px, s.py, s.pz}, {s.nx, s.ny, s.nz}, active,
                                s.receives_shadow > simd::splat(0.0f), terms, context);

@@ -28,20 +28,6 @@ struct SurfaceLanes;
 struct ShadedLanes;
 struct ShadingContext;
 
-// The `pbr` model's terms of each lane, filled only for it
-// (render/shade_batch.cpp), textures applied.
-struct PbrLanes {
-    simd::vf metallic, roughness;
-    simd::vf occlusion;  // of indirect light: 1 none, 0 all
-    // The dielectric's reflectance at normal incidence (from the ior, times
-    // KHR_materials_specular's colour and weight) and at grazing (the weight).
-    simd::vf f0[3], f90;
-    simd::vf clearcoat, clearcoat_roughness;
-    // The coat's normal: the surface's before its normal map (the coat is
-    // smooth lacquer over the relief), on the viewer's side, any length.
-    simd::vf coat_normal[3];
-};
-
 // The environment at one frame: the prefiltered maps with the scene's keyed
 // intensity and rotation about +Y.
 struct EnvironmentLighting {

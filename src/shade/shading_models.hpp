@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "shade/brdf.hpp"
 #include "shade/lighting.hpp"
 #include "shade/lighting_batch.hpp"
 #include "shade/model_pbr.hpp"
@@ -26,7 +27,9 @@ struct SurfaceLanes {
     simd::vf depth;      // linear view depth
     // Gouraud: the vertex lighting interpolated, diffuse and specular RGB.
     simd::vf vertex_diffuse[3], vertex_specular[3];
-    PbrLanes pbr;  // the `pbr` model only
+    // The `pbr` model's terms, textures applied; `base` is left to the
+    // model, which takes it from `albedo`.
+    pbr::SurfaceTerms<simd::vf> pbr;
 
     glm::vec3 albedo_at(int lane) const {
         return {albedo[0][lane], albedo[1][lane], albedo[2][lane]};
