@@ -95,7 +95,7 @@ struct RowChunk {
     int px0, py, count;   // first pixel (in the tile), row, pixels in the chunk
     uint32_t id[kLanes];  // per pixel: a triangle id, kNoTriangle or kMixedPixel
     vf color[4];          // RGBA of the pixels written here
-    vf coverage;          // how much of the background each hides (ShadeBatch::coverage)
+    vf coverage;          // how much of the background each hides (ShadeResult::coverage)
     vf depth;
     // For a G-buffer at the pixels (ambient occlusion without outlines):
     // the surface at each pixel's centre.

@@ -23,11 +23,11 @@
 
 namespace facet {
 
-// `specialised`: plain batches (triangles of one mesh part with a
-// material of constants, under a Phong, Blinn-Phong or unlit style without
-// layers) take a path of their own, which writes the same bits as the
+// `specialised`: plain batches (none of their draws' features drawn by
+// their style, a Phong, Blinn-Phong or unlit one without layers) take the
+// surface path's plain instantiation, which writes the same bits as the
 // general one (render/shade_batch.cpp); `general_only`: every batch takes
-// the general path, for tests and the bench to compare.
+// the general instantiation, for tests and the bench to compare.
 enum class ShadingPaths { specialised, general_only };
 
 struct ShadeInputs {
