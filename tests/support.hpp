@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "core/error.hpp"
+#include "core/memory.hpp"
 
 namespace facet::test {
 
@@ -112,17 +113,7 @@ inline RunResult run_facet(const std::string& args) {
 }
 
 // Whether this build (and so the facet it runs) has AddressSanitizer.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr bool kAddressSanitizer = true;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr bool kAddressSanitizer = true;
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
-#else
-constexpr bool kAddressSanitizer = false;
-#endif
+using facet::kAddressSanitizer;
 
 // Runs `facet ARGS` as run_facet does, but killed after `seconds` of wall
 // time (a blocked read uses no CPU) and limited to `megabytes` of address

@@ -144,7 +144,11 @@ void write_mesh(const Mesh& mesh, const std::vector<std::string>& textures, Byte
         out.text(textures[i]);
     }
     out.u32(static_cast<uint32_t>(mesh.warnings.size()));
-    for (const Warning& w : mesh.warnings) out.text(w.where.file), out.text(w.message);
+    for (const Warning& w : mesh.warnings) {
+        out.text(w.where.file), out.u32(static_cast<uint32_t>(w.where.line));
+        out.u32(static_cast<uint32_t>(w.where.column)), out.text(w.where.origin);
+        out.text(w.key), out.text(w.message);
+    }
 }
 
 Mesh read_mesh(ByteReader& in, std::vector<std::string>& textures) {
@@ -167,7 +171,11 @@ Mesh read_mesh(ByteReader& in, std::vector<std::string>& textures) {
         textures.push_back(in.text());
     }
     mesh.warnings.resize(in.u32());
-    for (Warning& w : mesh.warnings) w.where.file = in.text(), w.message = in.text();
+    for (Warning& w : mesh.warnings) {
+        w.where.file = in.text(), w.where.line = static_cast<int>(in.u32());
+        w.where.column = static_cast<int>(in.u32()), w.where.origin = in.text();
+        w.key = in.text(), w.message = in.text();
+    }
     return mesh;
 }
 

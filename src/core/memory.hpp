@@ -14,6 +14,21 @@ namespace facet {
 
 uint64_t memory_available();
 
+// Whether this build has AddressSanitizer, which reserves terabytes of
+// address space up front: no address-space limit (RLIMIT_AS, ulimit -v)
+// can be set for it or its children.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 // Named parts of an estimate, for messages: {"frame buffers", bytes}, ...
 using MemoryParts = std::vector<std::pair<std::string, uint64_t>>;
 
