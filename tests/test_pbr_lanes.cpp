@@ -132,8 +132,8 @@ ShadowMap half_shadowed_map(const glm::vec3& to_light) {
 TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit", "[shade][pbr]") {
     // The one-point instantiation covers what brdf_cosine alone does not:
     // KHR_materials_specular's f0 and f90, the clear coat and its normal,
-    // occlusion, point and spot lights with ranges, shadows, ambient light
-    // and the environment's split sum, rotated and scaled.
+    // the sheen (on lanes 1, 4 and 7), occlusion, point and spot lights with ranges, shadows,
+    // ambient light and the environment's split sum, rotated and scaled.
     const std::array<LanePoint, simd::kLanes> points = lane_points();
     const glm::vec3 eye(0.5f, 2.0f, 4.0f);
     SurfaceLanes in;
@@ -148,7 +148,9 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
             in.albedo[c][i] = points[i].base[c];
             in.pbr.f0[c][i] = 0.02f + 0.01f * static_cast<float>(i + c);
             in.pbr.coat_normal[c][i] = points[(i + 3) % simd::kLanes].n[c];
+            in.pbr.sheen_color[c][i] = i % 3 == 1 ? 0.3f + 0.2f * static_cast<float>(c) : 0.0f;
         }
+        in.pbr.sheen_roughness[i] = 0.1f + 0.12f * static_cast<float>(i);
         in.pbr.metallic[i] = points[i].metallic;
         in.pbr.roughness[i] = points[i].roughness;
         in.pbr.occlusion[i] = 1.0f - 0.07f * static_cast<float>(i);
@@ -187,7 +189,9 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
             terms.base[c] = in.albedo[c][i];
             terms.f0[c] = in.pbr.f0[c][i];
             terms.coat_normal[c] = in.pbr.coat_normal[c][i];
+            terms.sheen_color[c] = in.pbr.sheen_color[c][i];
         }
+        terms.sheen_roughness = in.pbr.sheen_roughness[i];
         terms.metallic = in.pbr.metallic[i];
         terms.roughness = in.pbr.roughness[i];
         terms.occlusion = in.pbr.occlusion[i];

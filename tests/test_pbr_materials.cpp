@@ -1,6 +1,6 @@
 // The `pbr` model's material inputs as the mesh files give them
 // (docs/pbr.md, "Material keys", "From files"): glTF's metallic-roughness
-// factors and maps, KHR_materials_ior, _specular and _clearcoat, the
+// factors and maps, KHR_materials_ior, _specular, _clearcoat and _sheen, the
 // extensions facet leaves out, and MTL's PBR extension. Maps that hold
 // numbers (normal, occlusion, metal-rough, ...) must read their bytes as
 // byte / 255, not through the sRGB curve colour maps go through. Every file
@@ -275,6 +275,51 @@ TEST_CASE("KHR_materials_clearcoat gives the coat and its maps, and its normal m
     }
 }
 
+TEST_CASE("KHR_materials_sheen gives the sheen and its maps, and a black colour turns it off",
+          "[pbr][gltf]") {
+    TempDir dir("pbr-gltf");
+    const json sheen = {{"sheenColorFactor", {0.9, 0.2, 0.1}},
+                        {"sheenRoughnessFactor", 0.6},
+                        {"sheenColorTexture", {{"index", 0}}},
+                        {"sheenRoughnessTexture", {{"index", 1}}}};
+    const Mesh mesh = load_quad(dir, {{"extensions", {{"KHR_materials_sheen", sheen}}}});
+    INFO(all_warnings(mesh));
+    CHECK(mesh.warnings.empty());
+    const Material& m = mesh.materials[0];
+    CHECK(m.sheen_color == glm::vec3(0.9f, 0.2f, 0.1f));
+    CHECK(m.sheen_roughness == Approx(0.6f));
+    require_read_as_colour(m.sheen_color_map);
+    require_read_as_data(m.sheen_roughness_map);
+    CHECK((m.features() & kPhysicalMaps) != 0);
+    // A black colour (the default) is no sheen: its maps are not read.
+    json black = sheen;
+    black.erase("sheenColorFactor");
+    const Mesh off = load_quad(dir, {{"extensions", {{"KHR_materials_sheen", black}}}}, "off.gltf");
+    CHECK(off.materials[0].sheen_color == glm::vec3(0.0f));
+    CHECK_FALSE(off.materials[0].sheen_color_map);
+    CHECK_FALSE(off.materials[0].sheen_roughness_map);
+    CHECK(off.materials[0].features() ==
+          load_quad(dir, json::object(), "plain.gltf").materials[0].features());
+    struct Bad {
+        json sheen;
+        std::string says;
+    };
+    for (const Bad& bad :
+         {Bad{{{"sheenRoughnessFactor", 1.5}}, "sheenRoughnessFactor must be from 0 to 1"},
+          Bad{{{"sheenColorFactor", {0.5, 2, 0}}},
+              "sheenColorFactor must hold numbers from 0 to 1"},
+          Bad{{{"sheenColorFactor", {0.5, 0.5}}},
+              "KHR_materials_sheen.sheenColorFactor must be a list of 3 numbers"}}) {
+        INFO(bad.says);
+        Gltf g;
+        quad_with_materials(
+            g, json::array(
+                   {{{"name", "velvet"}, {"extensions", {{"KHR_materials_sheen", bad.sheen}}}}}));
+        const std::string path = g.write(dir.file("bad-sheen.gltf"));
+        require_input_error([&] { load_gltf(path); }, bad.says);
+    }
+}
+
 // A black, rough base under a smooth coat, lit from the camera's direction:
 // the coat's mirror highlight fills the middle of the quad. A coat normal
 // map tilted by 25 degrees turns it away (the light no longer reflects into
@@ -335,7 +380,6 @@ TEST_CASE("material extensions facet does not draw warn, naming what is lost", "
     const std::vector<Lost> lost = {
         {"KHR_materials_transmission", "look opaque"},
         {"KHR_materials_volume", "thickness and tint"},
-        {"KHR_materials_sheen", "sheen of cloth"},
         {"KHR_materials_iridescence", "thin-film colours"},
         {"KHR_materials_anisotropy", "highlights are round"},
         {"KHR_materials_dispersion", "spread of colours"},
@@ -344,9 +388,9 @@ TEST_CASE("material extensions facet does not draw warn, naming what is lost", "
     Gltf g;
     quad_with_materials(g, json::array({json::object()}));
     for (const Lost& l : lost) g.doc["extensionsUsed"].push_back(l.extension);
-    // The three it draws (style pbr) say nothing.
-    for (const char* drawn :
-         {"KHR_materials_ior", "KHR_materials_specular", "KHR_materials_clearcoat"})
+    // The ones it draws (style pbr) say nothing.
+    for (const char* drawn : {"KHR_materials_ior", "KHR_materials_specular",
+                              "KHR_materials_clearcoat", "KHR_materials_sheen"})
         g.doc["extensionsUsed"].push_back(drawn);
     const std::string path = g.write(dir.file("extensions.gltf"));
     const Mesh mesh = load_gltf(path);
@@ -360,6 +404,7 @@ TEST_CASE("material extensions facet does not draw warn, naming what is lost", "
     }
     CHECK_FALSE(warns(mesh, "KHR_materials_ior"));
     CHECK_FALSE(warns(mesh, "KHR_materials_clearcoat"));
+    CHECK_FALSE(warns(mesh, "KHR_materials_sheen"));
 }
 
 TEST_CASE("glTF material fields of the wrong JSON type are refused by their path", "[pbr][gltf]") {

@@ -204,6 +204,22 @@ TEST_CASE("uv_scale and wrap apply to every map, the file's specular and coat ma
 
 // --- Errors -------------------------------------------------------------------
 
+TEST_CASE("scene sheen_color and sheen_roughness set the sheen, over a file's too",
+          "[pbr][scene]") {
+    TempDir dir("pbr-scene");
+    const SceneDesc scene = load(
+        write_text(dir.file("velvet.yaml"),
+                   cube_scene("pbr", "{ sheen_color: [0.8, 0.1, 0.2], sheen_roughness: 0.7 }")));
+    const World world = build_world(scene);
+    const Material& m = drawn_material(world, 0);
+    CHECK(m.sheen_color == glm::vec3(0.8f, 0.1f, 0.2f));
+    CHECK(m.sheen_roughness == Approx(0.7f));
+    // '#rrggbb' is sRGB, like every colour key.
+    const SceneDesc hex =
+        load(write_text(dir.file("hex.yaml"), cube_scene("pbr", "{ sheen_color: '#ffffff' }")));
+    CHECK(drawn_material(build_world(hex), 0).sheen_color == glm::vec3(1.0f));
+}
+
 TEST_CASE("bad pbr keys are errors naming the file, line, column and key", "[pbr][scene]") {
     struct ErrorCase {
         const char* name;
@@ -218,6 +234,10 @@ TEST_CASE("bad pbr keys are errors naming the file, line, column and key", "[pbr
          "objects.0.material.normal_scale", "2 }", "give `normal_map:` too"},
         {"metallic above 1", cube + "    material: { metallic: 2 }\n",
          "objects.0.material.metallic", "2 }", "between 0 and 1"},
+        {"sheen_roughness above 1", cube + "    material: { sheen_roughness: 3 }\n",
+         "objects.0.material.sheen_roughness", "3 }", "between 0 and 1"},
+        {"sheen_color of two numbers", cube + "    material: { sheen_color: [1, 0] }\n",
+         "objects.0.material.sheen_color", "[1, 0]", "3"},
         {"roughness keyed above 1",
          cube + "    material: { roughness: { keys: { 1: 0.5, 9: 1.5 } } }\n",
          "objects.0.material.roughness.keys.9", "1.5", "between 0 and 1"},

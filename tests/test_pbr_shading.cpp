@@ -164,6 +164,42 @@ TEST_CASE("pbr: a clear coat keeps a white sphere in a white environment at 1", 
     }
 }
 
+TEST_CASE("pbr: a sheen keeps a white sphere in a white environment at 1", "[render][pbr]") {
+    // The sheen takes from the base what it reflects (docs/pbr.md, "The sheen").
+    for (const float sheen_roughness : {0.3f, 0.8f}) {
+        const facet::FrameImages images = render_sphere(
+            "{ color: [1, 1, 1], metallic: 0, roughness: 0.5, sheen_color: [0.8, 0.8, 0.8], "
+            "sheen_roughness: " +
+                number(sheen_roughness) + " }",
+            "environment: { color: [1, 1, 1] }");
+        for (const float angle : {0.0f, 45.0f, 60.0f}) {
+            INFO("sheen roughness " << sheen_roughness << ", angle " << angle);
+            const glm::vec4 c = pixel_at(images, images.color, sphere_point(angle));
+            for (int a = 0; a < 3; ++a) CHECK(c[a] == Approx(1.0).margin(0.03));
+        }
+    }
+}
+
+TEST_CASE("pbr: a red sheen over a dark base lights the rim red, the centre little",
+          "[render][pbr]") {
+    // Velvet: a dark base whose fibres catch the light at grazing angles.
+    const std::string light = "[{ type: directional, direction: [0, 0, -1], intensity: 2 }]";
+    const std::string base = "color: [0.02, 0.02, 0.02], metallic: 0, roughness: 1";
+    const facet::FrameImages velvet =
+        render_sphere("{ " + base + ", sheen_color: [1, 0, 0], sheen_roughness: 0.5 }",
+                      "environment: { color: [0, 0, 0] }", light);
+    const facet::FrameImages bare =
+        render_sphere("{ " + base + " }", "environment: { color: [0, 0, 0] }", light);
+    const glm::vec4 rim = pixel_at(velvet, velvet.color, sphere_point(62.0f));
+    const glm::vec4 centre = pixel_at(velvet, velvet.color, sphere_point(0.0f));
+    const glm::vec4 bare_rim = pixel_at(bare, bare.color, sphere_point(62.0f));
+    INFO("rim " << rim.r << " " << rim.g << " " << rim.b << ", centre " << centre.r);
+    CHECK(rim.r > 4.0f * bare_rim.r);  // the sheen shows
+    CHECK(rim.r > 3.0f * rim.g);       // in its colour
+    CHECK(rim.g < bare_rim.g);         // and the base under it keeps less
+    CHECK(rim.r > 1.5f * centre.r);    // most at grazing
+}
+
 TEST_CASE(
     "pbr: the environment as background fills what nothing covers, and a shadow "
     "catcher darkens it",

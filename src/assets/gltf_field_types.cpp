@@ -240,12 +240,7 @@ class FieldTypes {
             number_if_present(*specular, "specularFactor", p);
             texture_info(*specular, "specularTexture", p);
             texture_info(*specular, "specularColorTexture", p);
-            const auto color = specular->find("specularColorFactor");
-            if (color != specular->end() &&
-                !(color->is_array() && color->size() == 3 &&
-                  std::all_of(color->begin(), color->end(),
-                              [](const json& c) { return c.is_number(); })))
-                wrong(p + ".specularColorFactor", "a list of 3 numbers");
+            color_if_present(*specular, "specularColorFactor", p);
         }
         if (const json* coat = object_if_present(extensions, "KHR_materials_clearcoat", at)) {
             const std::string p = at + ".KHR_materials_clearcoat";
@@ -255,6 +250,22 @@ class FieldTypes {
             texture_info(*coat, "clearcoatRoughnessTexture", p);
             texture_info(*coat, "clearcoatNormalTexture", p, "scale");
         }
+        if (const json* sheen = object_if_present(extensions, "KHR_materials_sheen", at)) {
+            const std::string p = at + ".KHR_materials_sheen";
+            color_if_present(*sheen, "sheenColorFactor", p);
+            number_if_present(*sheen, "sheenRoughnessFactor", p);
+            texture_info(*sheen, "sheenColorTexture", p);
+            texture_info(*sheen, "sheenRoughnessTexture", p);
+        }
+    }
+
+    // An RGB factor: a list of 3 numbers.
+    void color_if_present(const json& object, const char* key, const std::string& at) {
+        const auto color = object.find(key);
+        if (color != object.end() && !(color->is_array() && color->size() == 3 &&
+                                       std::all_of(color->begin(), color->end(),
+                                                   [](const json& c) { return c.is_number(); })))
+            wrong(at + "." + key, "a list of 3 numbers");
     }
 
     const std::string& path_;

@@ -276,6 +276,22 @@ float extension_number(const tinygltf::Value& extension, const char* key, float 
     return static_cast<float>(v);
 }
 
+// An extension's RGB factor (its fields' types are checked before, in
+// gltf_field_types.cpp), each number from 0 to `high`.
+glm::vec3 extension_color(const tinygltf::Value& extension, const char* key, glm::vec3 fallback,
+                          double high, const std::string& path, const std::string& what) {
+    if (!extension.Has(key)) return fallback;
+    const tinygltf::Value& c = extension.Get(key);
+    glm::vec3 color;
+    for (int a = 0; a < 3; ++a) {
+        const double v = c.Get(a).GetNumberAsDouble();
+        if (!(v >= 0 && v <= high))
+            bad(path, what + ": " + key + " must hold numbers from 0 to " + bound_text(high));
+        color[a] = static_cast<float>(v);
+    }
+    return color;
+}
+
 // A normal or occlusion textureInfo as the plain one slot_of reads (the
 // scale and strength are read apart).
 template <typename Info>
@@ -341,7 +357,21 @@ void warn_coat_normal_coordinates(Material& mat, const std::string& path, const 
     mat.clearcoat_normal_map = {};
 }
 
-// KHR_materials_ior, KHR_materials_specular and KHR_materials_clearcoat.
+// KHR_materials_sheen: colour (sRGB map) and roughness (the A of a data map).
+void read_sheen(const tinygltf::Value& e, TextureCache& cache, const std::string& path,
+                const std::string& what, Warnings& warnings, Material& mat) {
+    mat.sheen_color = extension_color(e, "sheenColorFactor", glm::vec3(0), 1.0, path, what);
+    mat.sheen_roughness = extension_number(e, "sheenRoughnessFactor", 0.0f, 0.0, 1.0, path, what);
+    if (mat.sheen_color == glm::vec3(0)) return;  // the layer is off: its maps show nothing
+    mat.sheen_color_map =
+        slot_of(texture_info_of(e, "sheenColorTexture"), cache, path, what + " sheenColorTexture",
+                warnings, "drawn with its sheenColorFactor alone");
+    mat.sheen_roughness_map = slot_of(
+        texture_info_of(e, "sheenRoughnessTexture"), cache, path, what + " sheenRoughnessTexture",
+        warnings, "drawn with its sheenRoughnessFactor alone", TexelMeaning::data);
+}
+
+// KHR_materials_ior, _specular, _clearcoat and _sheen.
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
                            Material& mat) {
@@ -353,15 +383,8 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
     if (const auto it = m.extensions.find("KHR_materials_specular"); it != m.extensions.end()) {
         const tinygltf::Value& e = it->second;
         mat.specular_weight = extension_number(e, "specularFactor", 1.0f, 0.0, 1.0, path, what);
-        if (e.Has("specularColorFactor")) {
-            const tinygltf::Value& c = e.Get("specularColorFactor");
-            for (int a = 0; a < 3; ++a) {
-                const double v = c.Get(a).GetNumberAsDouble();
-                if (!(v >= 0 && v <= 1e3))
-                    bad(path, what + ": specularColorFactor must hold numbers from 0 to 1000");
-                mat.specular_color[a] = static_cast<float>(v);
-            }
-        }
+        mat.specular_color =
+            extension_color(e, "specularColorFactor", mat.specular_color, 1e3, path, what);
         mat.specular_weight_map =
             slot_of(texture_info_of(e, "specularTexture"), cache, path, what + " specularTexture",
                     warnings, "drawn with its specularFactor alone", TexelMeaning::data);
@@ -387,6 +410,8 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         mat.clearcoat_normal_scale = coat_normal_scale(e, path, what);
         warn_coat_normal_coordinates(mat, path, what, warnings);
     }
+    if (const auto it = m.extensions.find("KHR_materials_sheen"); it != m.extensions.end())
+        read_sheen(it->second, cache, path, what, warnings, mat);
 }
 
 // A Phong reading of metal/roughness: smoother surfaces get tighter,

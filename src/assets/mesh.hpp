@@ -35,11 +35,12 @@ constexpr float kDefaultSpecular = 0.4f;
 // Blinn-Phong or unlit style without layers, takes the path compiled
 // without any of them.
 enum MaterialFeature : uint32_t {
-    kBaseColorMap = 1u << 0,   // the base colour map multiplies the albedo
-    kVertexColors = 1u << 1,   // the part's vertex colours multiply it (a part's, not a material's)
-    kPhysicalMaps = 1u << 2,   // the `pbr` model's metal-rough, occlusion, specular and coat maps
-    kNormalMaps = 1u << 3,     // the `pbr` model's normal maps (the base's, the coat's)
-    kEmission = 1u << 4,       // unlit, or emission added to what the model made
+    kBaseColorMap = 1u << 0,  // the base colour map multiplies the albedo
+    kVertexColors = 1u << 1,  // the part's vertex colours multiply it (a part's, not a material's)
+    kPhysicalMaps =
+        1u << 2,            // the `pbr` model's metal-rough, occlusion, specular, coat, sheen maps
+    kNormalMaps = 1u << 3,  // the `pbr` model's normal maps (the base's, the coat's)
+    kEmission = 1u << 4,    // unlit, or emission added to what the model made
     kShadowCatcher = 1u << 5,  // shows only the shadows on it
     kFade = 1u << 6,           // fades into the background with distance
 };
@@ -108,6 +109,12 @@ struct Material {
     // normal before normal_map: smooth lacquer over the base's relief.
     TextureSlot clearcoat_normal_map;
     float clearcoat_normal_scale = 1.0f;
+    // KHR_materials_sheen: the back-scattering of cloth's fibres, of this
+    // linear colour (times the colour map's RGB; black: none) and roughness
+    // (times the roughness map's A), over the base and under the coat.
+    glm::vec3 sheen_color = {0, 0, 0};
+    float sheen_roughness = 0.0f;
+    TextureSlot sheen_color_map, sheen_roughness_map;
 
     // The map whose texture coordinates the tangent frames follow: the
     // base's normal map, else the coat's (glTF gives both one tangent frame).
@@ -117,11 +124,11 @@ struct Material {
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 10> texture_slots() {
-        return {&base_color_map,      &normal_map,    &occlusion_map,
-                &metal_rough_map,     &emissive_map,  &specular_weight_map,
-                &specular_color_map,  &clearcoat_map, &clearcoat_roughness_map,
-                &clearcoat_normal_map};
+    std::array<TextureSlot*, 12> texture_slots() {
+        return {&base_color_map,       &normal_map,      &occlusion_map,
+                &metal_rough_map,      &emissive_map,    &specular_weight_map,
+                &specular_color_map,   &clearcoat_map,   &clearcoat_roughness_map,
+                &clearcoat_normal_map, &sheen_color_map, &sheen_roughness_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -132,7 +139,7 @@ struct Material {
         uint32_t f = 0;
         if (base_color_map) f |= kBaseColorMap;
         if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
-            clearcoat_map || clearcoat_roughness_map)
+            clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map)
             f |= kPhysicalMaps;
         if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;

@@ -49,6 +49,7 @@ void resolve_physical_terms(const MaterialDesc& desc, TextureFiles& textures, Te
     if (desc.metallic) m.metallic = desc.metallic->value;
     if (desc.roughness) m.roughness = desc.roughness->value;
     for (const auto& [field, value] : desc.constants) m.*field = value;
+    for (const auto& [field, value] : desc.colors) m.*field = value;
     if (desc.normal_map) m.normal_map = scene_map(*desc.normal_map, true, textures, budget);
     if (desc.occlusion_map)
         m.occlusion_map = scene_map(*desc.occlusion_map, true, textures, budget);
@@ -375,16 +376,17 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     // Metal and roughness factors alone are read as a Phong highlight
     // (docs/scene-format.md, "glTF files"); maps and coats are lost.
     const bool maps = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
-        return m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f;
+        return m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f ||
+               m.sheen_color != glm::vec3(0);
     });
     if (!maps) return;
     const ObjectDesc& obj = scene.objects[object];
     warnings.push_back({obj.where, "objects." + std::to_string(object),
                         "'" + obj.name +
-                            "' has normal, occlusion, metal-rough or clearcoat maps that only "
-                            "`shading: pbr` draws: under " +
+                            "' has normal, occlusion, metal-rough maps, a clearcoat or a sheen "
+                            "that only `shading: pbr` draws: under " +
                             shading_model_name(style.shading) +
-                            " its relief, occlusion, metal and coat are lost"});
+                            " its relief, occlusion, metal, coat and sheen are lost"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

@@ -28,6 +28,16 @@ constexpr NumberKey kNumberKeys[] = {
     {"ior", &Material::ior, 1, 10},
     {"clearcoat", &Material::clearcoat, 0, 1},
     {"clearcoat_roughness", &Material::clearcoat_roughness, 0, 1},
+    {"sheen_roughness", &Material::sheen_roughness, 0, 1},
+};
+
+// The same for colours (linear RGB, each channel from 0 to 1).
+struct ColorKey {
+    const char* name;
+    glm::vec3 Material::*field;
+};
+constexpr ColorKey kColorKeys[] = {
+    {"sheen_color", &Material::sheen_color},
 };
 
 // The keys of the `pbr` model (docs/pbr.md, "Material keys").
@@ -38,6 +48,8 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
         if (f.has(key.name))
             m.constants.push_back(
                 {key.field, static_cast<float>(f[key.name].number(key.low, key.high))});
+    for (const ColorKey& key : kColorKeys)
+        if (f.has(key.name)) m.colors.push_back({key.field, f[key.name].color3()});
     auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
         if (f.has(key)) out = map_of(f[key], base_dir);
     };
@@ -59,6 +71,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
         "emissive",   "unlit",         "shadow_catcher",  "fade",        "metallic", "roughness",
         "normal_map", "occlusion_map", "metal_rough_map", "emissive_map"};
     for (const NumberKey& key : kNumberKeys) keys.push_back(key.name);
+    for (const ColorKey& key : kColorKeys) keys.push_back(key.name);
     f.check_keys(keys);
     if (f.has("color")) m.color = f["color"].animated_color3();
     // Seed 001 names the Phong coefficients ka, kd and ks; either name works, not both.

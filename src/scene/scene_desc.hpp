@@ -199,6 +199,7 @@ struct MaterialDesc {
     // table: ior, clearcoat, ...), each with the value the scene gives, laid
     // over the file's material in the order given.
     std::vector<std::pair<float Material::*, float>> constants;
+    std::vector<std::pair<glm::vec3 Material::*, glm::vec3>> colors;  // the same for colours
     std::optional<Map> normal_map, occlusion_map, metal_rough_map, emissive_map;
 
     // The paths of every map the material reads.

@@ -10,6 +10,7 @@ namespace facet::pbr {
 namespace {
 
 constexpr int kLast = DfgTable::kSize - 1;
+constexpr double kPiDouble = 3.14159265358979323846;
 
 // The grid's perceptual roughness at row j (DfgTable's comment).
 double node_roughness(int j) {
@@ -57,6 +58,42 @@ DfgTerms integrate_dfg_node(double n_dot_v, double alpha) {
     return {static_cast<float>(scale), static_cast<float>(bias)};
 }
 
+// The sheen's directional albedo at one node: the lobe with a white colour
+// (sheen_brdf_cosine) summed over light directions at the midpoints of a
+// kSheenSteps x kSheenSteps grid of n.l in (0, 1) and azimuth in (0, pi)
+// (the lobe is symmetric about the plane of n and v), each cell of solid
+// angle d(n.l) d(phi), the sum doubled for the other half. Eight lights
+// at a time; `cos_phi` and `sin_phi` hold the azimuths' cosines and sines.
+constexpr int kSheenSteps = 48;
+constexpr int kSheenGroups = kSheenSteps / simd::kLanes;
+
+float integrate_sheen_node(float n_dot_v, float roughness, const simd::vf (&cos_phi)[kSheenGroups],
+                           const simd::vf (&sin_phi)[kSheenGroups]) {
+    using simd::vf;
+    const vf alpha = simd::splat(alpha_from_roughness(roughness));
+    const SheenMasking<vf> masking = sheen_masking(alpha);
+    const vf lambda_v = sheen_lambda(masking, simd::splat(n_dot_v));
+    const float sin_v = std::sqrt(std::max(0.0f, 1.0f - n_dot_v * n_dot_v));
+    const lanes::Vec3<vf> n = {simd::splat(0.0f), simd::splat(0.0f), simd::splat(1.0f)};
+    const lanes::Vec3<vf> v = {simd::splat(sin_v), simd::splat(0.0f), simd::splat(n_dot_v)};
+    double sum = 0.0;
+    for (int a = 0; a < kSheenSteps; ++a) {
+        const float n_dot_l = (static_cast<float>(a) + 0.5f) / kSheenSteps;
+        const float sin_l = std::sqrt(1.0f - n_dot_l * n_dot_l);
+        vf row = simd::splat(0.0f);
+        for (int b = 0; b < kSheenGroups; ++b) {
+            const lanes::Vec3<vf> l = {sin_l * cos_phi[b], sin_l * sin_phi[b],
+                                       simd::splat(n_dot_l)};
+            const HalfVector<vf> h = half_vector(n, v, l);
+            row += sheen_brdf_cosine(h.n_cross_h_squared, simd::splat(n_dot_l),
+                                     simd::splat(n_dot_v), lambda_v, alpha, masking);
+        }
+        for (int lane = 0; lane < simd::kLanes; ++lane) sum += row[lane];
+    }
+    const double cell = (1.0 / kSheenSteps) * (kPiDouble / kSheenSteps);
+    return static_cast<float>(std::min(1.0, 2.0 * cell * sum));
+}
+
 }  // namespace
 
 DfgTerms DfgTable::lookup(float n_dot_v, float roughness) const {
@@ -64,7 +101,17 @@ DfgTerms DfgTable::lookup(float n_dot_v, float roughness) const {
     return {lanes.scale[0], lanes.bias[0]};
 }
 
-DfgTable::Lanes DfgTable::lookup(simd::vf n_dot_v, simd::vf roughness) const {
+namespace {
+
+// Where points fall on DfgTable's grid: each lane's node below and left,
+// and its fractions of the way to the next node along n.v (tx) and
+// roughness (ty).
+struct GridPoint {
+    simd::vi i, j;
+    simd::vf tx, ty;
+};
+
+GridPoint grid_point(simd::vf n_dot_v, simd::vf roughness) {
     using simd::splat;
     using simd::vf;
     using simd::vi;
@@ -79,24 +126,37 @@ DfgTable::Lanes DfgTable::lookup(simd::vf n_dot_v, simd::vf roughness) const {
     const vi highest = simd::splat_i(kLast - 1);
     i = i < highest ? i : highest;
     j = j < highest ? j : highest;
-    const vf tx = x - __builtin_convertvector(i, vf), ty = y - __builtin_convertvector(j, vf);
-    // The four nodes round each point, read one lane at a time.
-    vf scale[4], bias[4];
+    return {i, j, x - __builtin_convertvector(i, vf), y - __builtin_convertvector(j, vf)};
+}
+
+// A value of the grid's nodes (`value(node index)`), bilinearly
+// interpolated between the four nodes round each point, read one lane at
+// a time.
+template <typename Value>
+simd::vf blend_nodes(const GridPoint& g, Value&& value) {
+    constexpr int kSize = DfgTable::kSize;
+    simd::vf corner[4];
     for (int lane = 0; lane < simd::kLanes; ++lane) {
-        const DfgTerms* low = &terms[static_cast<size_t>(j[lane] * kSize + i[lane])];
-        const DfgTerms* high = low + kSize;
-        const DfgTerms* nodes[4] = {low, low + 1, high, high + 1};
-        for (int k = 0; k < 4; ++k) {
-            scale[k][lane] = nodes[k]->scale;
-            bias[k][lane] = nodes[k]->bias;
-        }
+        const size_t low = static_cast<size_t>(g.j[lane] * kSize + g.i[lane]);
+        const size_t nodes[4] = {low, low + 1, low + kSize, low + kSize + 1};
+        for (int k = 0; k < 4; ++k) corner[k][lane] = value(nodes[k]);
     }
-    const auto blend = [&](const vf(&a)[4]) {
-        const vf low = a[0] + (a[1] - a[0]) * tx;
-        const vf high = a[2] + (a[3] - a[2]) * tx;
-        return low + (high - low) * ty;
-    };
-    return {blend(scale), blend(bias)};
+    const simd::vf low = corner[0] + (corner[1] - corner[0]) * g.tx;
+    const simd::vf high = corner[2] + (corner[3] - corner[2]) * g.tx;
+    return low + (high - low) * g.ty;
+}
+
+}  // namespace
+
+DfgTable::Lanes DfgTable::lookup(simd::vf n_dot_v, simd::vf roughness) const {
+    const GridPoint g = grid_point(n_dot_v, roughness);
+    return {blend_nodes(g, [&](size_t node) { return terms[node].scale; }),
+            blend_nodes(g, [&](size_t node) { return terms[node].bias; })};
+}
+
+simd::vf SheenTable::lookup(simd::vf n_dot_v, simd::vf sheen_roughness) const {
+    return blend_nodes(grid_point(n_dot_v, sheen_roughness),
+                       [&](size_t node) { return albedo[node]; });
 }
 
 DfgTable compute_dfg_table() {
@@ -117,12 +177,36 @@ const DfgTable& dfg_table() {
     return table;
 }
 
+SheenTable compute_sheen_table() {
+    simd::vf cos_phi[kSheenGroups], sin_phi[kSheenGroups];
+    for (int b = 0; b < kSheenSteps; ++b) {
+        const double turns = (b + 0.5) / (2.0 * kSheenSteps);
+        cos_phi[b / simd::kLanes][b % simd::kLanes] = static_cast<float>(cos_turns(turns));
+        sin_phi[b / simd::kLanes][b % simd::kLanes] = static_cast<float>(sin_turns(turns));
+    }
+    SheenTable table;
+    for (int j = 0; j < DfgTable::kSize; ++j)
+        for (int i = 0; i < DfgTable::kSize; ++i) {
+            const double n_dot_v =
+                std::max(static_cast<double>(i) / kLast, static_cast<double>(kMinNdotV));
+            table.albedo[j * DfgTable::kSize + i] =
+                integrate_sheen_node(static_cast<float>(n_dot_v),
+                                     static_cast<float>(node_roughness(j)), cos_phi, sin_phi);
+        }
+    return table;
+}
+
+const SheenTable& sheen_table() {
+    static const SheenTable table = compute_sheen_table();
+    return table;
+}
+
 SurfaceTerms<float> surface_terms(const Material& material) {
     const float f0 = f0_from_ior(material.ior);
     const lanes::Vec3<float> base = {material.base_color.x, material.base_color.y,
                                      material.base_color.z};
-    return {base, material.metallic, material.roughness, 1.0f, {f0, f0, f0}, 1.0f, 0.0f,
-            0.0f, {0.0f, 1.0f, 0.0f}};
+    return {base, material.metallic,  material.roughness, 1.0f, {f0, f0, f0}, 1.0f, 0.0f,
+            0.0f, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f};
 }
 
 }  // namespace facet::pbr

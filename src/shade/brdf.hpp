@@ -13,7 +13,9 @@
 //
 // Each specular lobe can be scaled by 1 + f0 * (1/E - 1), E the lobe's
 // directional albedo from a table computed once (compute_dfg_table), so
-// that a white rough metal reflects all the light it receives.
+// that a white rough metal reflects all the light it receives. A sheen
+// (KHR_materials_sheen) lies over that, and a clear coat
+// (KHR_materials_clearcoat) over everything.
 //
 // Per shading point, once:
 //   const PbrPoint<T> p = prepare_point(n, v, terms, MultipleScattering::compensated, table);
@@ -232,6 +234,98 @@ DfgTable compute_dfg_table();
 // static const: thread-safe, never modified).
 const DfgTable& dfg_table();
 
+// --- KHR_materials_sheen: the lobe of cloth's fibres ---
+
+// The "Charlie" distribution of Conty Estevez & Kulla 2017 ("Production
+// Friendly Microfacet Sheen BRDF"), as KHR_materials_sheen gives it:
+//   D(h) = (2 + 1/alpha) sin(theta_h)^(1/alpha) / (2 pi)
+// with alpha = sheen roughness^2 and sin^2 theta_h = |n x h|^2
+// (HalfVector), so sin^(1/alpha) = (|n x h|^2)^(1/(2 alpha)). Most of its
+// mass lies where h is along the surface: light grazing the fibres.
+template <typename T>
+[[gnu::always_inline]] inline T charlie_distribution(T n_cross_h_squared, T alpha) {
+    const T inverse = 1.0f / alpha;
+    return (2.0f + inverse) *
+           lanes::power_unit(lanes::min_of(n_cross_h_squared, lanes::splat<T>(1.0f)),
+                             0.5f * inverse) *
+           (0.5f / kPi);
+}
+
+// The same paper's fit of the sheen's masking: l(x) = a / (1 + b x^c) +
+// d x + e, its five coefficients interpolated between their values at
+// alpha = 1 and alpha = 0 by (1 - alpha)^2, then
+//   Lambda(cos) = exp(l(cos))                 for cos < 0.5
+//               = exp(2 l(0.5) - l(1 - cos))  otherwise.
+template <typename T>
+struct SheenMasking {
+    T a, b, c, d, e;
+    T l_half;  // l(0.5)
+};
+
+template <typename T>
+[[gnu::always_inline]] inline T sheen_l(const SheenMasking<T>& m, T x) {
+    return m.a / (1.0f + m.b * lanes::power_unit(x, m.c)) + m.d * x + m.e;
+}
+
+template <typename T>
+[[gnu::always_inline]] inline SheenMasking<T> sheen_masking(T alpha) {
+    const T t = (1.0f - alpha) * (1.0f - alpha);
+    const auto mix = [&](float at_rough, float at_smooth) {
+        return at_rough + (at_smooth - at_rough) * t;
+    };
+    SheenMasking<T> m = {mix(21.5473f, 25.3245f),   mix(3.82987f, 3.32435f),
+                         mix(0.19823f, 0.16801f),   mix(-1.97760f, -1.27393f),
+                         mix(-4.32054f, -4.85967f), lanes::splat<T>(0.0f)};
+    m.l_half = sheen_l(m, lanes::splat<T>(0.5f));
+    return m;
+}
+
+// Lambda at a cosine in (0, 1]. exp(y) is 2^(y log2 e); y stays below 21.
+template <typename T>
+[[gnu::always_inline]] inline T sheen_lambda(const SheenMasking<T>& m, T cosine) {
+    const lanes::Mask<T> low = cosine < lanes::splat<T>(0.5f);
+    const T l = sheen_l(m, lanes::select(low, cosine, 1.0f - cosine));
+    const T y = lanes::select(low, l, 2.0f * m.l_half - l);
+    return lanes::exp2(y * 1.44269504f);
+}
+
+// The sheen lobe with a white colour, times n.l, for n.l > 0 (the caller
+// checks): D V (n.l) with the paper's visibility
+//   V = 1 / ((1 + Lambda(n.v) + Lambda(n.l)) 4 (n.v) (n.l))
+// so n.l cancels. `lambda_v` is Lambda(n.v), worked out once.
+template <typename T>
+[[gnu::always_inline]] inline T sheen_brdf_cosine(T n_cross_h_squared, T n_dot_l, T n_dot_v,
+                                                  T lambda_v, T alpha,
+                                                  const SheenMasking<T>& masking) {
+    const T lambda_l = sheen_lambda(masking, n_dot_l);
+    return charlie_distribution(n_cross_h_squared, alpha) /
+           ((1.0f + lambda_v + lambda_l) * (4.0f * n_dot_v));
+}
+
+// The sheen lobe's directional albedo E_s with a white colour (the
+// integral of sheen_brdf_cosine over the light's hemisphere), on
+// DfgTable's grid of (n.v, roughness), the roughness read as the sheen's:
+// KHR_materials_sheen's E(x) of its albedo scaling. A table of its own, so
+// that scenes without a sheen do not compute it.
+struct SheenTable {
+    std::array<float, DfgTable::kSize * DfgTable::kSize> albedo;  // albedo[j * kSize + i]
+
+    // Bilinear, clamped as DfgTable::lookup; the scalar form is lane 0.
+    simd::vf lookup(simd::vf n_dot_v, simd::vf sheen_roughness) const;
+    float lookup(float n_dot_v, float sheen_roughness) const {
+        return lookup(simd::splat(n_dot_v), simd::splat(sheen_roughness))[0];
+    }
+};
+
+// Each node a midpoint sum over a grid of light directions (n.l and the
+// azimuth), the lobe evaluated by the eight-lane code that renders:
+// IEEE-exact operations only, the same bits on every run and machine.
+SheenTable compute_sheen_table();
+
+// The table, computed on first use (the first sheen a frame shades) and
+// then shared, as dfg_table().
+const SheenTable& sheen_table();
+
 // Whether the specular lobes get the energy compensation below. `ignored`
 // is the specification's single-scattering BRDF exactly.
 enum class MultipleScattering { ignored, compensated };
@@ -253,6 +347,9 @@ struct SurfaceTerms {
     // The coat's normal: the surface's before its normal map (the coat is
     // smooth lacquer over the relief), on the viewer's side, any length.
     lanes::Vec3<T> coat_normal;
+    // KHR_materials_sheen's colour and roughness: no sheen where the colour is black.
+    lanes::Vec3<T> sheen_color;
+    T sheen_roughness;
 };
 
 // Everything at a point that does not depend on the light: worked out once,
@@ -279,7 +376,34 @@ struct PbrPoint {
     lanes::Vec3<T> metal_compensation, dielectric_compensation;
     // smith_root(n.v, alpha) of each lobe.
     T view_root, coat_view_root;
+    // The sheen (worked out only where a lane has one: any_sheen): its
+    // colour, roughness and alpha, Lambda(n.v), its albedo E(n.v) with a
+    // white colour, and what it leaves the layers below towards the view,
+    // 1 - max(colour) E(n.v).
+    bool any_sheen;
+    lanes::Vec3<T> sheen_color;
+    T sheen_max, sheen_roughness, sheen_alpha, sheen_lambda_v, sheen_albedo_v, sheen_keeps_v;
+    SheenMasking<T> sheen_masking;
+    const SheenTable* sheen_table;  // for the sheen's albedo towards each light (any_sheen)
 };
+
+// The sheen's part of prepare_point.
+template <typename T>
+[[gnu::always_inline]] inline void prepare_sheen(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    using lanes::clamp01, lanes::max_of, lanes::splat;
+    for (int c = 0; c < 3; ++c) p.sheen_color[c] = clamp01(s.sheen_color[c]);
+    p.sheen_max = max_of(p.sheen_color[0], max_of(p.sheen_color[1], p.sheen_color[2]));
+    p.any_sheen = lanes::any(p.sheen_max > splat<T>(0.0f));
+    p.sheen_keeps_v = splat<T>(1.0f);
+    if (!p.any_sheen) return;
+    p.sheen_roughness = clamp01(s.sheen_roughness);
+    p.sheen_alpha = alpha_from_roughness(p.sheen_roughness);
+    p.sheen_masking = sheen_masking(p.sheen_alpha);
+    p.sheen_lambda_v = sheen_lambda(p.sheen_masking, p.n_dot_v);
+    p.sheen_table = &sheen_table();
+    p.sheen_albedo_v = p.sheen_table->lookup(p.n_dot_v, p.sheen_roughness);
+    p.sheen_keeps_v = 1.0f - p.sheen_max * p.sheen_albedo_v;
+}
 
 // The point for unit n and v and the surface's terms.
 template <typename T>
@@ -323,6 +447,7 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     }
     p.view_root = smith_root(p.n_dot_v, p.alpha);
     p.coat_view_root = p.any_coat ? smith_root(p.coat_n_dot_v, p.coat_alpha) : p.view_root;
+    prepare_sheen(s, p);
     return p;
 }
 
@@ -335,6 +460,25 @@ template <typename T>
     return 1.0f - p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
 }
 
+// The sheen over the base, for one light (KHR_materials_sheen, "albedo
+// scaling"): the base keeps 1 - max(colour) max(E(n.v), E(n.l)) of its
+// light, and the sheen lobe, times its colour, adds to it. Lanes without
+// a sheen keep their bits.
+template <typename T>
+[[gnu::always_inline]] inline void add_sheen(const PbrPoint<T>& p, const HalfVector<T>& h,
+                                             T n_dot_l, lanes::Mask<T> lit,
+                                             lanes::Vec3<T>& result) {
+    using lanes::select, lanes::splat;
+    const lanes::Mask<T> sheened = lit & (p.sheen_max > splat<T>(0.0f));
+    const T cosine = lanes::max_of(n_dot_l, splat<T>(kMinNdotV));
+    const T keeps = lanes::min_of(
+        p.sheen_keeps_v, 1.0f - p.sheen_max * p.sheen_table->lookup(cosine, p.sheen_roughness));
+    const T lobe = sheen_brdf_cosine(h.n_cross_h_squared, cosine, p.n_dot_v, p.sheen_lambda_v,
+                                     p.sheen_alpha, p.sheen_masking);
+    for (int c = 0; c < 3; ++c)
+        result[c] = select(sheened, result[c] * keeps + p.sheen_color[c] * lobe, result[c]);
+}
+
 // The glTF BRDF times the cosine, f(v, l) (n.l), for one light direction l
 // (unit, towards the light), in 1/sr: times the irradiance a light gives on
 // a plane facing it it is the radiance reflected towards v. Zero where the
@@ -342,8 +486,9 @@ template <typename T>
 //   (1 - metallic) * mix(base/pi, specular, F_dielectric)
 //   + metallic * F_metal * specular
 // with each specular lobe times its compensation, KHR_materials_specular's
-// f0 and f90 for the dielectric, and the coat over both:
-//   base * (1 - coat * E_coat) + coat * F_coat * specular_coat.
+// f0 and f90 for the dielectric, the sheen over them (add_sheen), and the
+// coat over all:
+//   below * (1 - coat * E_coat) + coat * F_coat * specular_coat.
 template <typename T>
 lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
     using lanes::select, lanes::splat;
@@ -365,6 +510,7 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
             const T sum = ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
             result[c] = select(lit, sum, zero);
         }
+        if (p.any_sheen) add_sheen(p, h, n_dot_l, lit, result);
     }
     if (!p.any_coat) return result;
     const T transmission = coat_transmission(p);
@@ -405,6 +551,12 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
             (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) * p.base[c] * diffuse[c] +
             dielectric_lobe * specular[c];
         result[c] = (1.0f - p.metallic) * dielectric + p.metallic * metal_lobe * specular[c];
+        // The sheen's lobe is broad: it reads the diffuse radiance.
+        if (p.any_sheen)
+            result[c] = select(
+                p.sheen_max > splat<T>(0.0f),
+                result[c] * p.sheen_keeps_v + p.sheen_color[c] * p.sheen_albedo_v * diffuse[c],
+                result[c]);
         if (p.any_coat)
             result[c] = select(coated, result[c] * transmission + coat_albedo * coat_specular[c],
                                result[c]);

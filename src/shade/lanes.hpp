@@ -41,6 +41,22 @@ template <typename T>
     return simd::vsqrt(x);
 }
 
+// x^s for x in (0, 1] and s >= 0, and 2^y for y in [-126, 127]: the
+// polynomials of core/simd_math.hpp (vpow_unit, vexp2). One point is lane 0
+// of eight, so both forms give the same bits.
+[[gnu::always_inline]] inline simd::vf power_unit(simd::vf x, simd::vf s) {
+    return simd::vpow_unit(x, s);
+}
+[[gnu::always_inline]] inline float power_unit(float x, float s) {
+    return simd::vpow_unit(simd::splat(x), simd::splat(s))[0];
+}
+[[gnu::always_inline]] inline simd::vf exp2(simd::vf y) {
+    return simd::vexp2(y);
+}
+[[gnu::always_inline]] inline float exp2(float y) {
+    return simd::vexp2(simd::splat(y))[0];
+}
+
 // A mask with every lane set to `value`.
 template <typename T>
 [[gnu::always_inline]] inline Mask<T> splat_mask(bool value) {

@@ -64,6 +64,8 @@ template <bool Single>
         put<Single>(p.f90, mask, m.specular_weight, first);
         put<Single>(p.coat, mask, m.clearcoat, first);
         put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
+        for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
+        put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
     }
     for (int a = 0; a < 3; ++a)
         put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
@@ -96,8 +98,9 @@ void apply_base_color_maps(LaneMaterials material, Lookup&& lookup, SurfaceLanes
 
 // kPhysicalMaps: the `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness
 // (B metal, G roughness), occlusion (R, blended by its strength),
-// KHR_materials_specular (A weight, RGB colour) and clearcoat (R strength,
-// G roughness), each multiplying its factor.
+// KHR_materials_specular (A weight, RGB colour), clearcoat (R strength,
+// G roughness) and sheen (RGB colour, A roughness), each multiplying its
+// factor.
 template <typename Lookup>
 void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup,
                          pbr::SurfaceTerms<simd::vf>& p) {
@@ -129,6 +132,11 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup,
            [&](int i, const glm::vec4& t) { p.coat[i] *= t.r; });
     lookup(slot_of(material, &Material::clearcoat_roughness_map),
            [&](int i, const glm::vec4& t) { p.coat_roughness[i] *= t.g; });
+    lookup(slot_of(material, &Material::sheen_color_map), [&](int i, const glm::vec4& t) {
+        for (int a = 0; a < 3; ++a) p.sheen_color[a][i] *= t[a];
+    });
+    lookup(slot_of(material, &Material::sheen_roughness_map),
+           [&](int i, const glm::vec4& t) { p.sheen_roughness[i] *= t.a; });
 }
 
 // kNormalMaps: the base's and the coat's normal maps, lane by lane.
