@@ -30,6 +30,8 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_materials_specular", "the dielectric's reflectance and its tint (style pbr)"},
         {"KHR_materials_clearcoat", "a clear lacquer over the material (style pbr)"},
         {"KHR_materials_sheen", "the sheen of cloth and velvet (style pbr)"},
+        {"KHR_materials_pbrSpecularGlossiness",
+         "the older specular-glossiness material, drawn as the dielectric it describes"},
         {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
         {"EXT_texture_webp", "WebP textures, decoded by libwebp"},
         {"EXT_texture_avif", "AVIF textures, decoded by libavif"},

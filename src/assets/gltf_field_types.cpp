@@ -250,6 +250,15 @@ class FieldTypes {
             texture_info(*coat, "clearcoatRoughnessTexture", p);
             texture_info(*coat, "clearcoatNormalTexture", p, "scale");
         }
+        if (const json* gloss =
+                object_if_present(extensions, "KHR_materials_pbrSpecularGlossiness", at)) {
+            const std::string p = at + ".KHR_materials_pbrSpecularGlossiness";
+            color_if_present(*gloss, "diffuseFactor", p, 4);
+            color_if_present(*gloss, "specularFactor", p);
+            number_if_present(*gloss, "glossinessFactor", p);
+            texture_info(*gloss, "diffuseTexture", p);
+            texture_info(*gloss, "specularGlossinessTexture", p);
+        }
         if (const json* sheen = object_if_present(extensions, "KHR_materials_sheen", at)) {
             const std::string p = at + ".KHR_materials_sheen";
             color_if_present(*sheen, "sheenColorFactor", p);
@@ -259,13 +268,14 @@ class FieldTypes {
         }
     }
 
-    // An RGB factor: a list of 3 numbers.
-    void color_if_present(const json& object, const char* key, const std::string& at) {
+    // An RGB (or, with `count` 4, RGBA) factor: a list of numbers.
+    void color_if_present(const json& object, const char* key, const std::string& at,
+                          size_t count = 3) {
         const auto color = object.find(key);
-        if (color != object.end() && !(color->is_array() && color->size() == 3 &&
+        if (color != object.end() && !(color->is_array() && color->size() == count &&
                                        std::all_of(color->begin(), color->end(),
                                                    [](const json& c) { return c.is_number(); })))
-            wrong(at + "." + key, "a list of 3 numbers");
+            wrong(at + "." + key, "a list of " + std::to_string(count) + " numbers");
     }
 
     const std::string& path_;

@@ -305,19 +305,79 @@ tinygltf::TextureInfo plain_info(const Info& info) {
 
 // glTF's metallic-roughness terms (§3.9.2) and its normal and occlusion
 // maps (§3.9.3, §3.9.4), read as data.
+// A Phong reading of metal/roughness: smoother surfaces get tighter,
+// stronger highlights (documented in docs/scene-format.md).
+void phong_from_roughness(double roughness_factor, Material& mat) {
+    const float roughness = static_cast<float>(std::clamp(roughness_factor, 0.05, 1.0));
+    mat.shininess =
+        std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
+    mat.shininess = std::max(mat.shininess, 1.0f);
+    mat.specular = 0.15f + 0.6f * (1.0f - roughness);
+}
+
+// The core material's pbrMetallicRoughness: base colour, metal and roughness.
 void read_metal_rough(const tinygltf::Material& m, TextureCache& cache, const std::string& path,
                       const std::string& what, Warnings& warnings, Material& mat) {
     const auto& pbr = m.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() >= 3)
+        mat.color = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
+    mat.base_color_map =
+        slot_of(pbr.baseColorTexture, cache, path, what + " baseColorTexture", warnings);
+    phong_from_roughness(pbr.roughnessFactor, mat);
     if (!(pbr.metallicFactor >= 0 && pbr.metallicFactor <= 1))
         bad(path, what + ": metallicFactor must be from 0 to 1");
     if (!(pbr.roughnessFactor >= 0 && pbr.roughnessFactor <= 1))
         bad(path, what + ": roughnessFactor must be from 0 to 1");
     mat.metallic = static_cast<float>(pbr.metallicFactor);
     mat.roughness = static_cast<float>(pbr.roughnessFactor);
-    const TexelMeaning data = TexelMeaning::data;
     mat.metal_rough_map =
         slot_of(pbr.metallicRoughnessTexture, cache, path, what + " metallicRoughnessTexture",
-                warnings, "drawn with its factors alone", data);
+                warnings, "drawn with its factors alone", TexelMeaning::data);
+}
+
+// KHR_materials_pbrSpecularGlossiness (archived), in place of
+// pbrMetallicRoughness, which such a file gives only as a fallback: the
+// dielectric it describes (Material::specular_glossiness_map says how).
+// The `pbr` model's f0 is f0(ior) * specular_color, 0.04 * specular_color
+// at the default ior of 1.5, so specular_color is s / 0.04.
+void read_specular_glossiness(const tinygltf::Value& e, TextureCache& cache,
+                              const std::string& path, const std::string& what, Warnings& warnings,
+                              Material& mat) {
+    if (e.Has("diffuseFactor")) {
+        const tinygltf::Value& d = e.Get("diffuseFactor");
+        for (int a = 0; a < 4; ++a) {
+            const double v = d.Get(a).GetNumberAsDouble();
+            if (!(v >= 0 && v <= 1))
+                bad(path, what + ": diffuseFactor must hold numbers from 0 to 1");
+            if (a < 3) mat.color[a] = static_cast<float>(v);
+        }
+        mat.alpha = static_cast<float>(d.Get(3).GetNumberAsDouble());
+    } else {
+        mat.color = glm::vec3(1.0f), mat.alpha = 1.0f;
+    }
+    mat.base_color_map = slot_of(texture_info_of(e, "diffuseTexture"), cache, path,
+                                 what + " diffuseTexture", warnings);
+    mat.specular_factor = extension_color(e, "specularFactor", glm::vec3(1.0f), 1.0, path, what);
+    mat.glossiness_factor = extension_number(e, "glossinessFactor", 1.0f, 0.0, 1.0, path, what);
+    mat.specular_glossiness_map = slot_of(texture_info_of(e, "specularGlossinessTexture"), cache,
+                                          path, what + " specularGlossinessTexture", warnings,
+                                          "drawn with its specularFactor and glossinessFactor");
+    mat.metallic = 0.0f;
+    mat.ior = 1.5f;
+    mat.specular_weight = 1.0f;
+    mat.specular_color = mat.specular_factor / 0.04f;
+    mat.roughness = 1.0f - mat.glossiness_factor;
+    phong_from_roughness(mat.roughness, mat);
+    if (mat.specular_glossiness_map) return;  // the map's step applies the factors per texel
+    const glm::vec3& s = mat.specular_factor;
+    mat.color *= 1.0f - std::max({s.x, s.y, s.z});
+}
+
+// The maps every material has: normals and occlusion.
+void read_normal_and_occlusion(const tinygltf::Material& m, TextureCache& cache,
+                               const std::string& path, const std::string& what, Warnings& warnings,
+                               Material& mat) {
+    const TexelMeaning data = TexelMeaning::data;
     mat.normal_map = slot_of(plain_info(m.normalTexture), cache, path, what + " normalTexture",
                              warnings, "drawn with the mesh's normals", data);
     if (!std::isfinite(m.normalTexture.scale))
@@ -414,16 +474,6 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         read_sheen(it->second, cache, path, what, warnings, mat);
 }
 
-// A Phong reading of metal/roughness: smoother surfaces get tighter,
-// stronger highlights (documented in docs/scene-format.md).
-void phong_from_roughness(double roughness_factor, Material& mat) {
-    const float roughness = static_cast<float>(std::clamp(roughness_factor, 0.05, 1.0));
-    mat.shininess =
-        std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
-    mat.shininess = std::max(mat.shininess, 1.0f);
-    mat.specular = 0.15f + 0.6f * (1.0f - roughness);
-}
-
 void read_alpha(const tinygltf::Material& m, const std::string& path, Material& mat) {
     const auto& pbr = m.pbrMetallicRoughness;
     if (pbr.baseColorFactor.size() >= 4)
@@ -445,12 +495,6 @@ Material read_material(const tinygltf::Material& m, size_t index, TextureCache& 
     mat.name = m.name;
     const std::string what =
         "material " + (m.name.empty() ? std::to_string(index) : "'" + m.name + "'");
-    const auto& pbr = m.pbrMetallicRoughness;
-    if (pbr.baseColorFactor.size() >= 3)
-        mat.color = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
-    mat.base_color_map =
-        slot_of(pbr.baseColorTexture, cache, path, what + " baseColorTexture", warnings);
-    phong_from_roughness(pbr.roughnessFactor, mat);
     mat.double_sided = m.doubleSided;
     mat.emissive = emission(m, path);
     // A map under a zero factor shows nothing: it is not decoded. Without
@@ -463,7 +507,12 @@ Material read_material(const tinygltf::Material& m, size_t index, TextureCache& 
     }
     read_alpha(m, path, mat);
     mat.unlit = m.extensions.count("KHR_materials_unlit") > 0;
-    read_metal_rough(m, cache, path, what, warnings, mat);
+    const auto spec_gloss = m.extensions.find("KHR_materials_pbrSpecularGlossiness");
+    if (spec_gloss != m.extensions.end())
+        read_specular_glossiness(spec_gloss->second, cache, path, what, warnings, mat);
+    else
+        read_metal_rough(m, cache, path, what, warnings, mat);
+    read_normal_and_occlusion(m, cache, path, what, warnings, mat);
     read_layer_extensions(m, cache, path, what, warnings, mat);
     return mat;
 }

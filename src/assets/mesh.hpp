@@ -115,6 +115,15 @@ struct Material {
     glm::vec3 sheen_color = {0, 0, 0};
     float sheen_roughness = 0.0f;
     TextureSlot sheen_color_map, sheen_roughness_map;
+    // KHR_materials_pbrSpecularGlossiness (archived), drawn as the
+    // dielectric it is: diffuse colour c, specular colour s (its f0) and
+    // glossiness g give base c (1 - max(s)), f0 s and roughness 1 - g. A
+    // file without this map has them folded into color, specular_color
+    // and roughness when read; with it, RGB (sRGB) times specular_factor is
+    // s and A times glossiness_factor is g, texel by texel.
+    TextureSlot specular_glossiness_map;
+    glm::vec3 specular_factor = {1, 1, 1};
+    float glossiness_factor = 1.0f;
 
     // The map whose texture coordinates the tangent frames follow: the
     // base's normal map, else the coat's (glTF gives both one tangent frame).
@@ -124,11 +133,12 @@ struct Material {
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 12> texture_slots() {
-        return {&base_color_map,       &normal_map,      &occlusion_map,
-                &metal_rough_map,      &emissive_map,    &specular_weight_map,
-                &specular_color_map,   &clearcoat_map,   &clearcoat_roughness_map,
-                &clearcoat_normal_map, &sheen_color_map, &sheen_roughness_map};
+    std::array<TextureSlot*, 13> texture_slots() {
+        return {&base_color_map,         &normal_map,      &occlusion_map,
+                &metal_rough_map,        &emissive_map,    &specular_weight_map,
+                &specular_color_map,     &clearcoat_map,   &clearcoat_roughness_map,
+                &clearcoat_normal_map,   &sheen_color_map, &sheen_roughness_map,
+                &specular_glossiness_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -139,7 +149,8 @@ struct Material {
         uint32_t f = 0;
         if (base_color_map) f |= kBaseColorMap;
         if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
-            clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map)
+            clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map ||
+            specular_glossiness_map)
             f |= kPhysicalMaps;
         if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;

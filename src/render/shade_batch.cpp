@@ -545,7 +545,7 @@ template <bool Plain>
     if (!Plain && (features & kBaseColorMap)) apply_base_color_maps(b.material, lookup, b.lanes);
     if (!Plain && (features & kVertexColors)) apply_vertex_colors(in, b);
     if (!Plain && (features & kPhysicalMaps))
-        apply_physical_maps(b.material, b.count, lookup, b.lanes.pbr);
+        apply_physical_maps(b.material, b.count, lookup, b.lanes);
     if (!Plain && (features & kNormalMaps)) apply_normal_maps(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
                                  &in.frame.environment};

@@ -96,14 +96,34 @@ void apply_base_color_maps(LaneMaterials material, Lookup&& lookup, SurfaceLanes
     });
 }
 
+// KHR_materials_pbrSpecularGlossiness's map, texel by texel: specular
+// colour s = RGB * specular_factor is the dielectric's f0 (f90 stays 1),
+// glossiness g = A * glossiness_factor makes roughness 1 - g, and the
+// diffuse colour keeps 1 - max(s) (the archived specification's
+// c_diff = diffuse (1 - max(s))).
+template <typename Lookup>
+void apply_specular_glossiness_map(LaneMaterials material, Lookup&& lookup, SurfaceLanes& lanes) {
+    pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
+    lookup(slot_of(material, &Material::specular_glossiness_map), [&](int i, const glm::vec4& t) {
+        const Material& m = *material[i];
+        float largest = 0.0f;
+        for (int a = 0; a < 3; ++a) {
+            p.f0[a][i] = m.specular_factor[a] * t[a];
+            largest = std::max(largest, p.f0[a][i]);
+        }
+        for (int a = 0; a < 3; ++a) lanes.albedo[a][i] *= 1.0f - largest;
+        p.roughness[i] = 1.0f - m.glossiness_factor * t.a;
+    });
+}
+
 // kPhysicalMaps: the `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness
 // (B metal, G roughness), occlusion (R, blended by its strength),
 // KHR_materials_specular (A weight, RGB colour), clearcoat (R strength,
 // G roughness) and sheen (RGB colour, A roughness), each multiplying its
-// factor.
+// factor, and the specular-glossiness map.
 template <typename Lookup>
-void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup,
-                         pbr::SurfaceTerms<simd::vf>& p) {
+void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, SurfaceLanes& lanes) {
+    pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
     lookup(slot_of(material, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
         p.roughness[i] *= t.g;
         p.metallic[i] *= t.b;
@@ -137,6 +157,7 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup,
     });
     lookup(slot_of(material, &Material::sheen_roughness_map),
            [&](int i, const glm::vec4& t) { p.sheen_roughness[i] *= t.a; });
+    apply_specular_glossiness_map(material, lookup, lanes);
 }
 
 // kNormalMaps: the base's and the coat's normal maps, lane by lane.
