@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "pbr_lane_support.hpp"
 #include "shade/brdf.hpp"
 
 using namespace facet;
@@ -72,10 +73,6 @@ double lambda_formula(double cosine, double alpha) {
                  d = mix(-1.97760, -1.27393), e = mix(-4.32054, -4.85967);
     const auto l = [&](double x) { return a / (1.0 + b * std::pow(x, c)) + d * x + e; };
     return cosine < 0.5 ? std::exp(l(cosine)) : std::exp(2.0 * l(0.5) - l(1.0 - cosine));
-}
-
-bool same_bits(float a, float b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
 }
 
 }  // namespace
@@ -174,8 +171,8 @@ TEST_CASE("sheen: white furnace: a sheen over a white base never reflects more t
 TEST_CASE("sheen: a lane without a sheen keeps its bits, and one with it is the one-point result",
           "[shade][sheen]") {
     // Eight lanes, the odd ones with a sheen; views from head-on to grazing.
-    std::array<pbr::SurfaceTerms<float>, simd::kLanes> points;
-    std::array<lanes::Vec3<float>, simd::kLanes> views;
+    test::PointTerms points;
+    test::PointViews views;
     for (int i = 0; i < simd::kLanes; ++i) {
         const float sheen = i % 2 ? 0.2f + 0.1f * static_cast<float>(i) : 0.0f;
         points[i] = terms_with_sheen(0.3f + 0.05f * static_cast<float>(i), 0.4f,
@@ -184,57 +181,11 @@ TEST_CASE("sheen: a lane without a sheen keeps its bits, and one with it is the 
         const float mu = 1.0f - 0.12f * static_cast<float>(i);
         views[i] = {std::sqrt(1.0f - mu * mu), 0.0f, mu};
     }
-    pbr::SurfaceTerms<simd::vf> lanes_terms;
-    lanes::Vec3<simd::vf> n, v;
-    const auto set = [](simd::vf& to, int lane, float value) { to[lane] = value; };
-    for (int i = 0; i < simd::kLanes; ++i) {
-        const pbr::SurfaceTerms<float>& t = points[i];
-        for (int a = 0; a < 3; ++a) {
-            set(lanes_terms.base[a], i, t.base[a]);
-            set(lanes_terms.f0[a], i, t.f0[a]);
-            set(lanes_terms.coat_normal[a], i, t.coat_normal[a]);
-            set(lanes_terms.sheen_color[a], i, t.sheen_color[a]);
-            set(n[a], i, a == 2 ? 1.0f : 0.0f);
-            set(v[a], i, views[i][a]);
-        }
-        set(lanes_terms.metallic, i, t.metallic);
-        set(lanes_terms.roughness, i, t.roughness);
-        set(lanes_terms.occlusion, i, t.occlusion);
-        set(lanes_terms.f90, i, t.f90);
-        set(lanes_terms.coat, i, t.coat);
-        set(lanes_terms.coat_roughness, i, t.coat_roughness);
-        set(lanes_terms.sheen_roughness, i, t.sheen_roughness);
-    }
-    const auto compensated = pbr::MultipleScattering::compensated;
-    const pbr::PbrPoint<simd::vf> p =
-        pbr::prepare_point(n, v, lanes_terms, compensated, pbr::dfg_table());
-    const lanes::Vec3<float> l = {0.6f, 0.3f, std::sqrt(1.0f - 0.45f)};
-    const lanes::Vec3<simd::vf> l8 = {simd::splat(l[0]), simd::splat(l[1]), simd::splat(l[2])};
-    const lanes::Vec3<simd::vf> lit = pbr::brdf_cosine(p, l8);
-    const lanes::Vec3<float> grey = {0.4f, 0.5f, 0.6f};
-    const lanes::Vec3<simd::vf> grey8 = {simd::splat(0.4f), simd::splat(0.5f), simd::splat(0.6f)};
-    const lanes::Vec3<simd::vf> env = pbr::environment_response(p, grey8, grey8, grey8);
-    for (int i = 0; i < simd::kLanes; ++i) {
-        INFO("lane " << i);
-        const pbr::PbrPoint<float> one = pbr::prepare_point(
-            lanes::Vec3<float>{0, 0, 1}, views[i], points[i], compensated, pbr::dfg_table());
-        pbr::SurfaceTerms<float> without = points[i];
-        without.sheen_color = {0.0f, 0.0f, 0.0f};
-        const pbr::PbrPoint<float> bare = pbr::prepare_point(
-            lanes::Vec3<float>{0, 0, 1}, views[i], without, compensated, pbr::dfg_table());
-        const lanes::Vec3<float> lit_one = pbr::brdf_cosine(one, l);
-        const lanes::Vec3<float> lit_bare = pbr::brdf_cosine(bare, l);
-        const lanes::Vec3<float> env_one = pbr::environment_response(one, grey, grey, grey);
-        const lanes::Vec3<float> env_bare = pbr::environment_response(bare, grey, grey, grey);
-        for (int c = 0; c < 3; ++c) {
-            CHECK(same_bits(lit[c][i], lit_one[c]));
-            CHECK(same_bits(env[c][i], env_one[c]));
-            if (i % 2 == 0) {
-                CHECK(same_bits(lit_one[c], lit_bare[c]));
-                CHECK(same_bits(env_one[c], env_bare[c]));
-            } else {
-                CHECK(lit_one[c] != lit_bare[c]);  // the sheen shows
-            }
-        }
-    }
+    test::check_layer_lanes(
+        points, views,
+        [](pbr::SurfaceTerms<float> t) {
+            t.sheen_color = {0.0f, 0.0f, 0.0f};
+            return t;
+        },
+        [](int i) { return i % 2 == 1; });
 }

@@ -259,6 +259,14 @@ class FieldTypes {
             texture_info(*gloss, "diffuseTexture", p);
             texture_info(*gloss, "specularGlossinessTexture", p);
         }
+        if (const json* film = object_if_present(extensions, "KHR_materials_iridescence", at)) {
+            const std::string p = at + ".KHR_materials_iridescence";
+            for (const char* key : {"iridescenceFactor", "iridescenceIor",
+                                    "iridescenceThicknessMinimum", "iridescenceThicknessMaximum"})
+                number_if_present(*film, key, p);
+            texture_info(*film, "iridescenceTexture", p);
+            texture_info(*film, "iridescenceThicknessTexture", p);
+        }
         if (const json* sheen = object_if_present(extensions, "KHR_materials_sheen", at)) {
             const std::string p = at + ".KHR_materials_sheen";
             color_if_present(*sheen, "sheenColorFactor", p);

@@ -431,7 +431,28 @@ void read_sheen(const tinygltf::Value& e, TextureCache& cache, const std::string
         warnings, "drawn with its sheenRoughnessFactor alone", TexelMeaning::data);
 }
 
-// KHR_materials_ior, _specular, _clearcoat and _sheen.
+// KHR_materials_iridescence: strength (R of a data map), the film's index,
+// and its thickness range in nm (G of a data map picks within it; without
+// the map the maximum).
+void read_iridescence(const tinygltf::Value& e, TextureCache& cache, const std::string& path,
+                      const std::string& what, Warnings& warnings, Material& mat) {
+    mat.iridescence = extension_number(e, "iridescenceFactor", 0.0f, 0.0, 1.0, path, what);
+    mat.iridescence_ior = extension_number(e, "iridescenceIor", 1.3f, 1.0, 10.0, path, what);
+    mat.iridescence_thickness_min =
+        extension_number(e, "iridescenceThicknessMinimum", 100.0f, 0.0, 1e5, path, what);
+    mat.iridescence_thickness_max =
+        extension_number(e, "iridescenceThicknessMaximum", 400.0f, 0.0, 1e5, path, what);
+    if (mat.iridescence == 0.0f) return;  // no film: its maps show nothing
+    mat.iridescence_map =
+        slot_of(texture_info_of(e, "iridescenceTexture"), cache, path, what + " iridescenceTexture",
+                warnings, "drawn with its iridescenceFactor alone", TexelMeaning::data);
+    mat.iridescence_thickness_map =
+        slot_of(texture_info_of(e, "iridescenceThicknessTexture"), cache, path,
+                what + " iridescenceThicknessTexture", warnings,
+                "drawn at its iridescenceThicknessMaximum alone", TexelMeaning::data);
+}
+
+// KHR_materials_ior, _specular, _clearcoat, _sheen and _iridescence.
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
                            Material& mat) {
@@ -472,6 +493,8 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
     }
     if (const auto it = m.extensions.find("KHR_materials_sheen"); it != m.extensions.end())
         read_sheen(it->second, cache, path, what, warnings, mat);
+    if (const auto it = m.extensions.find("KHR_materials_iridescence"); it != m.extensions.end())
+        read_iridescence(it->second, cache, path, what, warnings, mat);
 }
 
 void read_alpha(const tinygltf::Material& m, const std::string& path, Material& mat) {

@@ -124,6 +124,14 @@ struct Material {
     TextureSlot specular_glossiness_map;
     glm::vec3 specular_factor = {1, 1, 1};
     float glossiness_factor = 1.0f;
+    // KHR_materials_iridescence: a thin film of this strength (times the
+    // map's R; 0: none) and index of refraction, whose thickness in nm is
+    // the maximum, or with the thickness map from the minimum (G = 0) to
+    // the maximum (G = 1).
+    float iridescence = 0.0f;
+    float iridescence_ior = 1.3f;
+    float iridescence_thickness_min = 100.0f, iridescence_thickness_max = 400.0f;
+    TextureSlot iridescence_map, iridescence_thickness_map;
 
     // The map whose texture coordinates the tangent frames follow: the
     // base's normal map, else the coat's (glTF gives both one tangent frame).
@@ -133,12 +141,12 @@ struct Material {
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 13> texture_slots() {
-        return {&base_color_map,         &normal_map,      &occlusion_map,
-                &metal_rough_map,        &emissive_map,    &specular_weight_map,
-                &specular_color_map,     &clearcoat_map,   &clearcoat_roughness_map,
-                &clearcoat_normal_map,   &sheen_color_map, &sheen_roughness_map,
-                &specular_glossiness_map};
+    std::array<TextureSlot*, 15> texture_slots() {
+        return {&base_color_map,          &normal_map,      &occlusion_map,
+                &metal_rough_map,         &emissive_map,    &specular_weight_map,
+                &specular_color_map,      &clearcoat_map,   &clearcoat_roughness_map,
+                &clearcoat_normal_map,    &sheen_color_map, &sheen_roughness_map,
+                &specular_glossiness_map, &iridescence_map, &iridescence_thickness_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -150,7 +158,7 @@ struct Material {
         if (base_color_map) f |= kBaseColorMap;
         if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
             clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map ||
-            specular_glossiness_map)
+            specular_glossiness_map || iridescence_map || iridescence_thickness_map)
             f |= kPhysicalMaps;
         if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;

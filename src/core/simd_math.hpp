@@ -195,6 +195,21 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
     return p * (vf)scale_bits;
 }
 
+// cos(x) for |x| up to about 1e4 (the thin film's phases, shade/thin_film.hpp):
+// x moved by whole turns to [-pi, pi], then the Taylor series of cos to
+// x^20/20!, whose truncation error at pi is below 4e-9. The reduction
+// costs about |x| * 6e-8 of absolute error.
+[[gnu::always_inline]] inline vf vcos(vf x) {
+    const vf turns = x * 0.159154943f;  // 1 / (2 pi)
+    const vf whole = __builtin_convertvector(floor_to_int(turns + 0.5f), vf);
+    const vf r = (turns - whole) * 6.28318531f;
+    const vf r2 = r * r;
+    vf sum = splat(1.0f);
+    for (int k = 10; k >= 1; --k)  // Horner, from x^20/20! down
+        sum = 1.0f - r2 * (1.0f / static_cast<float>((2 * k - 1) * (2 * k))) * sum;
+    return sum;
+}
+
 // x^s for x in (0, 1] and s >= 0, as a highlight needs.
 [[gnu::always_inline]] inline vf vpow_unit(vf x, vf s) {
     x = vmax(x, splat(1e-30f));

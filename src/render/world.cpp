@@ -377,16 +377,16 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     // (docs/scene-format.md, "glTF files"); maps and coats are lost.
     const bool maps = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
         return m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f ||
-               m.sheen_color != glm::vec3(0);
+               m.sheen_color != glm::vec3(0) || m.iridescence > 0.0f;
     });
     if (!maps) return;
     const ObjectDesc& obj = scene.objects[object];
     warnings.push_back({obj.where, "objects." + std::to_string(object),
                         "'" + obj.name +
-                            "' has normal, occlusion, metal-rough maps, a clearcoat or a sheen "
-                            "that only `shading: pbr` draws: under " +
+                            "' has normal, occlusion, metal-rough maps, a clearcoat, a sheen or "
+                            "a thin film that only `shading: pbr` draws: under " +
                             shading_model_name(style.shading) +
-                            " its relief, occlusion, metal, coat and sheen are lost"});
+                            " its relief, occlusion, metal, coat, sheen and film are lost"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

@@ -29,6 +29,9 @@ constexpr NumberKey kNumberKeys[] = {
     {"clearcoat", &Material::clearcoat, 0, 1},
     {"clearcoat_roughness", &Material::clearcoat_roughness, 0, 1},
     {"sheen_roughness", &Material::sheen_roughness, 0, 1},
+    {"iridescence", &Material::iridescence, 0, 1},
+    {"iridescence_ior", &Material::iridescence_ior, 1, 10},
+    {"iridescence_thickness", &Material::iridescence_thickness_max, 0, 5000},
 };
 
 // The same for colours (linear RGB, each channel from 0 to 1).

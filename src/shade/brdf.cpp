@@ -206,7 +206,7 @@ SurfaceTerms<float> surface_terms(const Material& material) {
     const lanes::Vec3<float> base = {material.base_color.x, material.base_color.y,
                                      material.base_color.z};
     return {base, material.metallic,  material.roughness, 1.0f, {f0, f0, f0}, 1.0f, 0.0f,
-            0.0f, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f};
+            0.0f, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f, 0.0f,         1.3f, 400.0f};
 }
 
 }  // namespace facet::pbr

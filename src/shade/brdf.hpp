@@ -40,7 +40,9 @@
 
 #include "core/simd_math.hpp"
 
+#include "shade/fresnel.hpp"
 #include "shade/lanes.hpp"
+#include "shade/thin_film.hpp"
 
 namespace facet::pbr {
 
@@ -71,32 +73,6 @@ template <typename T>
     const T low = splat<T>(kMinRoughness), one = splat<T>(1.0f);
     const T r = select(roughness < low, low, select(one < roughness, one, roughness));
     return r * r;
-}
-
-// Reflectance at normal incidence of a dielectric of index `ior` in air:
-// ((ior - 1) / (ior + 1))^2, from Fresnel's equations at normal incidence
-// (glTF Appendix B.3.4, fresnel_mix). 1.5 gives 0.04.
-inline float f0_from_ior(float ior) {
-    const float r = (ior - 1.0f) / (ior + 1.0f);
-    return r * r;
-}
-
-// Schlick 1994's weight (1 - v.h)^5, the part of F that depends on the
-// angle. v.h is clamped to [0, 1].
-template <typename T>
-[[gnu::always_inline]] inline T schlick_weight(T v_dot_h) {
-    const T m = 1.0f - lanes::clamp01(v_dot_h);
-    const T m2 = m * m;
-    return m2 * m2 * m;
-}
-
-// Schlick 1994's Fresnel F = F0 + (F90 - F0)(1 - v.h)^5, as glTF Appendix
-// B.3.4 writes it for conductor_fresnel and fresnel_mix (F90 = 1) and
-// KHR_materials_specular (F90 its weight). `weight` is schlick_weight(v.h),
-// computed once for all channels.
-template <typename T>
-[[gnu::always_inline]] inline T schlick_fresnel(T f0, T weight, T f90 = lanes::splat<T>(1.0f)) {
-    return f0 + (f90 - f0) * weight;
 }
 
 // The half vector h = normalise(l + v) as the BRDF uses it. All three
@@ -350,6 +326,9 @@ struct SurfaceTerms {
     // KHR_materials_sheen's colour and roughness: no sheen where the colour is black.
     lanes::Vec3<T> sheen_color;
     T sheen_roughness;
+    // KHR_materials_iridescence: the thin film's strength (0: none), index
+    // of refraction and thickness in nm.
+    T iridescence, iridescence_ior, iridescence_thickness;
 };
 
 // Everything at a point that does not depend on the light: worked out once,
@@ -385,6 +364,9 @@ struct PbrPoint {
     T sheen_max, sheen_roughness, sheen_alpha, sheen_lambda_v, sheen_albedo_v, sheen_keeps_v;
     SheenMasking<T> sheen_masking;
     const SheenTable* sheen_table;  // for the sheen's albedo towards each light (any_sheen)
+    // The thin film (any_iridescence): strength, index and thickness.
+    bool any_iridescence;
+    T iridescence, iridescence_ior, iridescence_thickness;
 };
 
 // The sheen's part of prepare_point.
@@ -448,6 +430,10 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     p.view_root = smith_root(p.n_dot_v, p.alpha);
     p.coat_view_root = p.any_coat ? smith_root(p.coat_n_dot_v, p.coat_alpha) : p.view_root;
     prepare_sheen(s, p);
+    p.iridescence = clamp01(s.iridescence);
+    p.any_iridescence = lanes::any(p.iridescence > splat<T>(0.0f));
+    p.iridescence_ior = s.iridescence_ior;
+    p.iridescence_thickness = lanes::max_of(s.iridescence_thickness, splat<T>(0.0f));
     return p;
 }
 
@@ -458,6 +444,24 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
 template <typename T>
 [[gnu::always_inline]] inline T coat_transmission(const PbrPoint<T>& p) {
     return 1.0f - p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
+}
+
+// KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
+// film's over the lobe's own reflectance (thin_film_fresnel), by the
+// film's strength k: F = F_base + k (F_film - F_base), at the cosine
+// `cosine` (v.h for a light, n.v for the environment).
+template <typename T>
+[[gnu::always_inline]] inline void add_thin_film(const PbrPoint<T>& p, T cosine,
+                                                 lanes::Vec3<T>& dielectric_f,
+                                                 lanes::Vec3<T>& metal_f) {
+    const lanes::Vec3<T> film_d =
+        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.f0);
+    const lanes::Vec3<T> film_m =
+        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.base);
+    for (int c = 0; c < 3; ++c) {
+        dielectric_f[c] = dielectric_f[c] + p.iridescence * (film_d[c] - dielectric_f[c]);
+        metal_f[c] = metal_f[c] + p.iridescence * (film_m[c] - metal_f[c]);
+    }
 }
 
 // The sheen over the base, for one light (KHR_materials_sheen, "albedo
@@ -500,13 +504,19 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
         const HalfVector<T> h = half_vector(p.n, p.v, l);
         const T specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.view_root, p.alpha);
         const T w = schlick_weight(h.v_dot_h);
+        lanes::Vec3<T> dielectric_f, metal_f;
+        for (int c = 0; c < 3; ++c) {
+            dielectric_f[c] = schlick_fresnel(p.f0[c], w, p.f90);
+            metal_f[c] = schlick_fresnel(p.base[c], w);
+        }
+        if (p.any_iridescence) add_thin_film(p, h.v_dot_h, dielectric_f, metal_f);
         for (int c = 0; c < 3; ++c) {
             // fresnel_mix: the diffuse base under a specular layer, weighted by F.
-            const T fd = schlick_fresnel(p.f0[c], w, p.f90);
+            const T fd = dielectric_f[c];
             const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.base[c] +
                                  fd * specular * p.dielectric_compensation[c];
             // conductor_fresnel: the specular lobe tinted by the metal's F.
-            const T metal = schlick_fresnel(p.base[c], w) * specular * p.metal_compensation[c];
+            const T metal = metal_f[c] * specular * p.metal_compensation[c];
             const T sum = ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
             result[c] = select(lit, sum, zero);
         }
@@ -543,10 +553,14 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
     const T transmission = coat_transmission(p);
     const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
     lanes::Vec3<T> result;
+    // The split sum's f0 of each lobe; a thin film moves it towards the
+    // film's reflectance at n.v.
+    lanes::Vec3<T> dielectric_f0 = p.f0, metal_f0 = p.base;
+    if (p.any_iridescence) add_thin_film(p, p.n_dot_v, dielectric_f0, metal_f0);
     for (int c = 0; c < 3; ++c) {
         const T dielectric_lobe =
-            (p.f0[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
-        const T metal_lobe = (p.base[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
+            (dielectric_f0[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
+        const T metal_lobe = (metal_f0[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
         const T dielectric =
             (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) * p.base[c] * diffuse[c] +
             dielectric_lobe * specular[c];

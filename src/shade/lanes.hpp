@@ -57,6 +57,14 @@ template <typename T>
     return simd::vexp2(simd::splat(y))[0];
 }
 
+// cos(x), simd::vcos's polynomial (lane 0 of it for one point).
+[[gnu::always_inline]] inline simd::vf cosine(simd::vf x) {
+    return simd::vcos(x);
+}
+[[gnu::always_inline]] inline float cosine(float x) {
+    return simd::vcos(simd::splat(x))[0];
+}
+
 // A mask with every lane set to `value`.
 template <typename T>
 [[gnu::always_inline]] inline Mask<T> splat_mask(bool value) {

@@ -66,6 +66,9 @@ template <bool Single>
         put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
         for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
         put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
+        put<Single>(p.iridescence, mask, m.iridescence, first);
+        put<Single>(p.iridescence_ior, mask, m.iridescence_ior, first);
+        put<Single>(p.iridescence_thickness, mask, m.iridescence_thickness_max, first);
     }
     for (int a = 0; a < 3; ++a)
         put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
@@ -119,8 +122,9 @@ void apply_specular_glossiness_map(LaneMaterials material, Lookup&& lookup, Surf
 // kPhysicalMaps: the `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness
 // (B metal, G roughness), occlusion (R, blended by its strength),
 // KHR_materials_specular (A weight, RGB colour), clearcoat (R strength,
-// G roughness) and sheen (RGB colour, A roughness), each multiplying its
-// factor, and the specular-glossiness map.
+// G roughness), sheen (RGB colour, A roughness) and iridescence (R
+// strength; G thickness from the minimum to the maximum), each multiplying
+// its factor, and the specular-glossiness map.
 template <typename Lookup>
 void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, SurfaceLanes& lanes) {
     pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
@@ -158,6 +162,14 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Sur
     lookup(slot_of(material, &Material::sheen_roughness_map),
            [&](int i, const glm::vec4& t) { p.sheen_roughness[i] *= t.a; });
     apply_specular_glossiness_map(material, lookup, lanes);
+    lookup(slot_of(material, &Material::iridescence_map),
+           [&](int i, const glm::vec4& t) { p.iridescence[i] *= t.r; });
+    lookup(slot_of(material, &Material::iridescence_thickness_map), [&](int i, const glm::vec4& t) {
+        const Material& m = *material[i];
+        p.iridescence_thickness[i] =
+            m.iridescence_thickness_min +
+            (m.iridescence_thickness_max - m.iridescence_thickness_min) * t.g;
+    });
 }
 
 // kNormalMaps: the base's and the coat's normal maps, lane by lane.
