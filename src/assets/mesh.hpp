@@ -43,8 +43,9 @@ enum MaterialFeature : uint32_t {
     kEmission = 1u << 4,    // unlit, or emission added to what the model made
     kShadowCatcher = 1u << 5,  // shows only the shadows on it
     kFade = 1u << 6,           // fades into the background with distance
+    kExtraLobes = 1u << 7,     // the `pbr` model's sheen or thin film (iridescence)
 };
-constexpr int kMaterialFeatureCount = 7;
+constexpr int kMaterialFeatureCount = 8;
 
 struct Material {
     std::string name;
@@ -164,6 +165,7 @@ struct Material {
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;
         if (shadow_catcher) f |= kShadowCatcher;
         if (fade_end > fade_start) f |= kFade;
+        if (sheen_color != glm::vec3(0) || iridescence > 0.0f) f |= kExtraLobes;
         return f;
     }
 };

@@ -540,6 +540,7 @@ template <bool Plain>
     ModelNeeds needs = in.frame.style_needs[style_index];
     needs.normal = needs.normal || request.want_normal;
     if constexpr (Plain) needs.vertex_light = false;  // the plain models light no vertices
+    needs.extra_lobes = !Plain && (features & kExtraLobes);
     gather_vertices<Plain>(in, style, style_index, needs, groups, group_count, sample, b);
     const TextureLookups lookup{in, b};
     if (!Plain && (features & kBaseColorMap)) apply_base_color_maps(b.material, lookup, b.lanes);

@@ -449,19 +449,26 @@ template <typename T>
 // KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
 // film's over the lobe's own reflectance (thin_film_fresnel), by the
 // film's strength k: F = F_base + k (F_film - F_base), at the cosine
-// `cosine` (v.h for a light, n.v for the environment).
+// `cosine` (v.h for a light, n.v for the environment). Out of line, as
+// with_sheen: few points have a film, and inlined its code crowded the
+// registers of the common path; values in and out, so that the common
+// path's terms stay in registers.
 template <typename T>
-[[gnu::always_inline]] inline void add_thin_film(const PbrPoint<T>& p, T cosine,
-                                                 lanes::Vec3<T>& dielectric_f,
-                                                 lanes::Vec3<T>& metal_f) {
+struct LobeFresnel {
+    lanes::Vec3<T> dielectric, metal;
+};
+
+template <typename T>
+[[gnu::noinline]] LobeFresnel<T> with_thin_film(const PbrPoint<T>& p, T cosine, LobeFresnel<T> f) {
     const lanes::Vec3<T> film_d =
         thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.f0);
     const lanes::Vec3<T> film_m =
         thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.base);
     for (int c = 0; c < 3; ++c) {
-        dielectric_f[c] = dielectric_f[c] + p.iridescence * (film_d[c] - dielectric_f[c]);
-        metal_f[c] = metal_f[c] + p.iridescence * (film_m[c] - metal_f[c]);
+        f.dielectric[c] = f.dielectric[c] + p.iridescence * (film_d[c] - f.dielectric[c]);
+        f.metal[c] = f.metal[c] + p.iridescence * (film_m[c] - f.metal[c]);
     }
+    return f;
 }
 
 // The sheen over the base, for one light (KHR_materials_sheen, "albedo
@@ -469,9 +476,8 @@ template <typename T>
 // light, and the sheen lobe, times its colour, adds to it. Lanes without
 // a sheen keep their bits.
 template <typename T>
-[[gnu::always_inline]] inline void add_sheen(const PbrPoint<T>& p, const HalfVector<T>& h,
-                                             T n_dot_l, lanes::Mask<T> lit,
-                                             lanes::Vec3<T>& result) {
+[[gnu::noinline]] lanes::Vec3<T> with_sheen(const PbrPoint<T>& p, const HalfVector<T>& h, T n_dot_l,
+                                            lanes::Mask<T> lit, lanes::Vec3<T> result) {
     using lanes::select, lanes::splat;
     const lanes::Mask<T> sheened = lit & (p.sheen_max > splat<T>(0.0f));
     const T cosine = lanes::max_of(n_dot_l, splat<T>(kMinNdotV));
@@ -481,6 +487,22 @@ template <typename T>
                                      p.sheen_alpha, p.sheen_masking);
     for (int c = 0; c < 3; ++c)
         result[c] = select(sheened, result[c] * keeps + p.sheen_color[c] * lobe, result[c]);
+    return result;
+}
+
+// The sheen over the base's response to an environment: the base keeps
+// 1 - max(colour) E(n.v), and the sheen adds colour E(n.v) times the
+// diffuse radiance (its lobe is broad).
+template <typename T>
+[[gnu::noinline]] lanes::Vec3<T> with_sheen_environment(const PbrPoint<T>& p,
+                                                        const lanes::Vec3<T>& diffuse,
+                                                        lanes::Vec3<T> result) {
+    const lanes::Mask<T> sheened = p.sheen_max > lanes::splat<T>(0.0f);
+    for (int c = 0; c < 3; ++c)
+        result[c] = lanes::select(
+            sheened, result[c] * p.sheen_keeps_v + p.sheen_color[c] * p.sheen_albedo_v * diffuse[c],
+            result[c]);
+    return result;
 }
 
 // The glTF BRDF times the cosine, f(v, l) (n.l), for one light direction l
@@ -490,7 +512,7 @@ template <typename T>
 //   (1 - metallic) * mix(base/pi, specular, F_dielectric)
 //   + metallic * F_metal * specular
 // with each specular lobe times its compensation, KHR_materials_specular's
-// f0 and f90 for the dielectric, the sheen over them (add_sheen), and the
+// f0 and f90 for the dielectric, the sheen over them (with_sheen), and the
 // coat over all:
 //   below * (1 - coat * E_coat) + coat * F_coat * specular_coat.
 template <typename T>
@@ -504,23 +526,23 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
         const HalfVector<T> h = half_vector(p.n, p.v, l);
         const T specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.view_root, p.alpha);
         const T w = schlick_weight(h.v_dot_h);
-        lanes::Vec3<T> dielectric_f, metal_f;
+        LobeFresnel<T> f;
         for (int c = 0; c < 3; ++c) {
-            dielectric_f[c] = schlick_fresnel(p.f0[c], w, p.f90);
-            metal_f[c] = schlick_fresnel(p.base[c], w);
+            f.dielectric[c] = schlick_fresnel(p.f0[c], w, p.f90);
+            f.metal[c] = schlick_fresnel(p.base[c], w);
         }
-        if (p.any_iridescence) add_thin_film(p, h.v_dot_h, dielectric_f, metal_f);
+        if (p.any_iridescence) f = with_thin_film(p, h.v_dot_h, f);
         for (int c = 0; c < 3; ++c) {
             // fresnel_mix: the diffuse base under a specular layer, weighted by F.
-            const T fd = dielectric_f[c];
+            const T fd = f.dielectric[c];
             const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.base[c] +
                                  fd * specular * p.dielectric_compensation[c];
             // conductor_fresnel: the specular lobe tinted by the metal's F.
-            const T metal = metal_f[c] * specular * p.metal_compensation[c];
+            const T metal = f.metal[c] * specular * p.metal_compensation[c];
             const T sum = ((1.0f - p.metallic) * dielectric + p.metallic * metal) * n_dot_l;
             result[c] = select(lit, sum, zero);
         }
-        if (p.any_sheen) add_sheen(p, h, n_dot_l, lit, result);
+        if (p.any_sheen) result = with_sheen(p, h, n_dot_l, lit, result);
     }
     if (!p.any_coat) return result;
     const T transmission = coat_transmission(p);
@@ -552,29 +574,25 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
     const T coat_albedo = p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
     const T transmission = coat_transmission(p);
     const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
-    lanes::Vec3<T> result;
     // The split sum's f0 of each lobe; a thin film moves it towards the
     // film's reflectance at n.v.
-    lanes::Vec3<T> dielectric_f0 = p.f0, metal_f0 = p.base;
-    if (p.any_iridescence) add_thin_film(p, p.n_dot_v, dielectric_f0, metal_f0);
+    LobeFresnel<T> f0 = {p.f0, p.base};
+    if (p.any_iridescence) f0 = with_thin_film(p, p.n_dot_v, f0);
+    lanes::Vec3<T> result;
     for (int c = 0; c < 3; ++c) {
         const T dielectric_lobe =
-            (dielectric_f0[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
-        const T metal_lobe = (metal_f0[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
+            (f0.dielectric[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
+        const T metal_lobe = (f0.metal[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
         const T dielectric =
             (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) * p.base[c] * diffuse[c] +
             dielectric_lobe * specular[c];
         result[c] = (1.0f - p.metallic) * dielectric + p.metallic * metal_lobe * specular[c];
-        // The sheen's lobe is broad: it reads the diffuse radiance.
-        if (p.any_sheen)
-            result[c] = select(
-                p.sheen_max > splat<T>(0.0f),
-                result[c] * p.sheen_keeps_v + p.sheen_color[c] * p.sheen_albedo_v * diffuse[c],
-                result[c]);
-        if (p.any_coat)
+    }
+    if (p.any_sheen) result = with_sheen_environment(p, diffuse, result);
+    if (p.any_coat)
+        for (int c = 0; c < 3; ++c)
             result[c] = select(coated, result[c] * transmission + coat_albedo * coat_specular[c],
                                result[c]);
-    }
     return result;
 }
 

@@ -36,6 +36,17 @@ template <bool Single>
         v = mask ? simd::splat(value) : v;
 }
 
+// The sheen's and the thin film's constants (kExtraLobes).
+template <bool Single>
+[[gnu::always_inline]] inline void put_extra_lobes(const Material& m, simd::vi mask, bool first,
+                                                   pbr::SurfaceTerms<simd::vf>& p) {
+    for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
+    put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
+    put<Single>(p.iridescence, mask, m.iridescence, first);
+    put<Single>(p.iridescence_ior, mask, m.iridescence_ior, first);
+    put<Single>(p.iridescence_thickness, mask, m.iridescence_thickness_max, first);
+}
+
 // The constants of material `m` that `style`'s model reads, into the lanes
 // of `mask`: the albedo (the style's own colour first), the Phong terms,
 // and the `pbr` model's terms, the dielectric's reflectances from its ior
@@ -64,11 +75,8 @@ template <bool Single>
         put<Single>(p.f90, mask, m.specular_weight, first);
         put<Single>(p.coat, mask, m.clearcoat, first);
         put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
-        for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
-        put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
-        put<Single>(p.iridescence, mask, m.iridescence, first);
-        put<Single>(p.iridescence_ior, mask, m.iridescence_ior, first);
-        put<Single>(p.iridescence_thickness, mask, m.iridescence_thickness_max, first);
+        // Without kExtraLobes in the batch every group's are zero: the first puts them.
+        if (needs.extra_lobes || first) put_extra_lobes<Single>(m, mask, first, p);
     }
     for (int a = 0; a < 3; ++a)
         put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],

@@ -102,7 +102,7 @@ ModelNeeds needs_of(ShadingModel m) {
 
 uint32_t drawn_features(const StyleState& style, uint32_t features) {
     if (style.base_color) features &= ~(kBaseColorMap | kVertexColors);
-    if (style.model != ShadingModel::pbr) features &= ~(kPhysicalMaps | kNormalMaps);
+    if (style.model != ShadingModel::pbr) features &= ~(kPhysicalMaps | kNormalMaps | kExtraLobes);
     // The unlit, normal and depth models show no emission: views stay measurements.
     if (!needs_of(style.model).position) features &= ~kEmission;
     return features;

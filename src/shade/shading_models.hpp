@@ -68,6 +68,9 @@ struct ModelNeeds {
     bool normal;        // the normal on the viewer's side
     bool light_terms;   // the material's Phong terms and the lights
     bool vertex_light;  // Gouraud's light from the vertices
+    // Per batch: its `pbr` materials have a sheen or a thin film
+    // (kExtraLobes); without, their terms are zero for the whole batch.
+    bool extra_lobes = false;
 };
 ModelNeeds needs_of(ShadingModel model);
 
