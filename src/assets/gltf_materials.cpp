@@ -256,6 +256,16 @@ tinygltf::TextureInfo texture_info_of(const tinygltf::Value& extension, const ch
     return info;
 }
 
+// An extension's map: its textureInfo at `key`, named in messages as the
+// material's `key`.
+TextureSlot extension_map(const tinygltf::Value& extension, const char* key, TextureCache& cache,
+                          const std::string& path, const std::string& what, Warnings& warnings,
+                          const std::string& without = "drawn without it",
+                          TexelMeaning meaning = TexelMeaning::colour) {
+    return slot_of(texture_info_of(extension, key), cache, path, what + " " + key, warnings,
+                   without, meaning);
+}
+
 // A bound as a message writes it: 1, 10, 0.5 (std::to_string gives
 // "10.000000", and cutting that short gave "10.").
 std::string bound_text(double v) {
@@ -355,13 +365,12 @@ void read_specular_glossiness(const tinygltf::Value& e, TextureCache& cache,
     } else {
         mat.color = glm::vec3(1.0f), mat.alpha = 1.0f;
     }
-    mat.base_color_map = slot_of(texture_info_of(e, "diffuseTexture"), cache, path,
-                                 what + " diffuseTexture", warnings);
+    mat.base_color_map = extension_map(e, "diffuseTexture", cache, path, what, warnings);
     mat.specular_factor = extension_color(e, "specularFactor", glm::vec3(1.0f), 1.0, path, what);
     mat.glossiness_factor = extension_number(e, "glossinessFactor", 1.0f, 0.0, 1.0, path, what);
-    mat.specular_glossiness_map = slot_of(texture_info_of(e, "specularGlossinessTexture"), cache,
-                                          path, what + " specularGlossinessTexture", warnings,
-                                          "drawn with its specularFactor and glossinessFactor");
+    mat.specular_glossiness_map =
+        extension_map(e, "specularGlossinessTexture", cache, path, what, warnings,
+                      "drawn with its specularFactor and glossinessFactor");
     mat.metallic = 0.0f;
     mat.ior = 1.5f;
     mat.specular_weight = 1.0f;
@@ -423,12 +432,11 @@ void read_sheen(const tinygltf::Value& e, TextureCache& cache, const std::string
     mat.sheen_color = extension_color(e, "sheenColorFactor", glm::vec3(0), 1.0, path, what);
     mat.sheen_roughness = extension_number(e, "sheenRoughnessFactor", 0.0f, 0.0, 1.0, path, what);
     if (mat.sheen_color == glm::vec3(0)) return;  // the layer is off: its maps show nothing
-    mat.sheen_color_map =
-        slot_of(texture_info_of(e, "sheenColorTexture"), cache, path, what + " sheenColorTexture",
-                warnings, "drawn with its sheenColorFactor alone");
-    mat.sheen_roughness_map = slot_of(
-        texture_info_of(e, "sheenRoughnessTexture"), cache, path, what + " sheenRoughnessTexture",
-        warnings, "drawn with its sheenRoughnessFactor alone", TexelMeaning::data);
+    mat.sheen_color_map = extension_map(e, "sheenColorTexture", cache, path, what, warnings,
+                                        "drawn with its sheenColorFactor alone");
+    mat.sheen_roughness_map =
+        extension_map(e, "sheenRoughnessTexture", cache, path, what, warnings,
+                      "drawn with its sheenRoughnessFactor alone", TexelMeaning::data);
 }
 
 // KHR_materials_iridescence: strength (R of a data map), the film's index,
@@ -444,12 +452,11 @@ void read_iridescence(const tinygltf::Value& e, TextureCache& cache, const std::
         extension_number(e, "iridescenceThicknessMaximum", 400.0f, 0.0, 1e5, path, what);
     if (mat.iridescence == 0.0f) return;  // no film: its maps show nothing
     mat.iridescence_map =
-        slot_of(texture_info_of(e, "iridescenceTexture"), cache, path, what + " iridescenceTexture",
-                warnings, "drawn with its iridescenceFactor alone", TexelMeaning::data);
+        extension_map(e, "iridescenceTexture", cache, path, what, warnings,
+                      "drawn with its iridescenceFactor alone", TexelMeaning::data);
     mat.iridescence_thickness_map =
-        slot_of(texture_info_of(e, "iridescenceThicknessTexture"), cache, path,
-                what + " iridescenceThicknessTexture", warnings,
-                "drawn at its iridescenceThicknessMaximum alone", TexelMeaning::data);
+        extension_map(e, "iridescenceThicknessTexture", cache, path, what, warnings,
+                      "drawn at its iridescenceThicknessMaximum alone", TexelMeaning::data);
 }
 
 // KHR_materials_ior, _specular, _clearcoat, _sheen and _iridescence.
@@ -467,11 +474,11 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         mat.specular_color =
             extension_color(e, "specularColorFactor", mat.specular_color, 1e3, path, what);
         mat.specular_weight_map =
-            slot_of(texture_info_of(e, "specularTexture"), cache, path, what + " specularTexture",
-                    warnings, "drawn with its specularFactor alone", TexelMeaning::data);
-        mat.specular_color_map = slot_of(texture_info_of(e, "specularColorTexture"), cache, path,
-                                         what + " specularColorTexture", warnings,
-                                         "drawn with its specularColorFactor alone");
+            extension_map(e, "specularTexture", cache, path, what, warnings,
+                          "drawn with its specularFactor alone", TexelMeaning::data);
+        mat.specular_color_map =
+            extension_map(e, "specularColorTexture", cache, path, what, warnings,
+                          "drawn with its specularColorFactor alone");
     }
     if (const auto it = m.extensions.find("KHR_materials_clearcoat"); it != m.extensions.end()) {
         const tinygltf::Value& e = it->second;
@@ -479,15 +486,14 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         mat.clearcoat_roughness =
             extension_number(e, "clearcoatRoughnessFactor", 0.0f, 0.0, 1.0, path, what);
         mat.clearcoat_map =
-            slot_of(texture_info_of(e, "clearcoatTexture"), cache, path, what + " clearcoatTexture",
-                    warnings, "drawn with its clearcoatFactor alone", TexelMeaning::data);
+            extension_map(e, "clearcoatTexture", cache, path, what, warnings,
+                          "drawn with its clearcoatFactor alone", TexelMeaning::data);
         mat.clearcoat_roughness_map =
-            slot_of(texture_info_of(e, "clearcoatRoughnessTexture"), cache, path,
-                    what + " clearcoatRoughnessTexture", warnings,
-                    "drawn with its clearcoatRoughnessFactor alone", TexelMeaning::data);
-        mat.clearcoat_normal_map = slot_of(texture_info_of(e, "clearcoatNormalTexture"), cache,
-                                           path, what + " clearcoatNormalTexture", warnings,
-                                           "drawn with a smooth coat", TexelMeaning::data);
+            extension_map(e, "clearcoatRoughnessTexture", cache, path, what, warnings,
+                          "drawn with its clearcoatRoughnessFactor alone", TexelMeaning::data);
+        mat.clearcoat_normal_map =
+            extension_map(e, "clearcoatNormalTexture", cache, path, what, warnings,
+                          "drawn with a smooth coat", TexelMeaning::data);
         mat.clearcoat_normal_scale = coat_normal_scale(e, path, what);
         warn_coat_normal_coordinates(mat, path, what, warnings);
     }
