@@ -14,6 +14,7 @@
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
 #include "render/principal_directions.hpp"
+#include "shade/shading_models.hpp"
 #include "shapes/primitives.hpp"
 
 namespace facet {
@@ -374,19 +375,20 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     const StyleDesc& style = object_style(scene, scene.objects[object]);
     if (style.shading == ShadingModel::pbr) return;
     // Metal and roughness factors alone are read as a Phong highlight
-    // (docs/scene-format.md, "glTF files"); maps and coats are lost.
-    const bool maps = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
-        return m.normal_map || m.occlusion_map || m.metal_rough_map || m.clearcoat > 0.0f ||
-               m.sheen_color != glm::vec3(0) || m.iridescence > 0.0f;
+    // (docs/scene-format.md, "glTF files"); the features only pbr draws
+    // (its maps, sheen and thin film) and coats are lost.
+    const bool lost = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
+        return (m.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
     });
-    if (!maps) return;
+    if (!lost) return;
     const ObjectDesc& obj = scene.objects[object];
     warnings.push_back({obj.where, "objects." + std::to_string(object),
                         "'" + obj.name +
-                            "' has normal, occlusion, metal-rough maps, a clearcoat, a sheen or "
-                            "a thin film that only `shading: pbr` draws: under " +
+                            "' has physically based maps, a clear coat, a sheen or a thin film "
+                            "that only `shading: pbr` draws: under " +
                             shading_model_name(style.shading) +
-                            " its relief, occlusion, metal, coat, sheen and film are lost"});
+                            " its relief, occlusion, metal, specular colour, coat, sheen and "
+                            "film are lost"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

@@ -331,6 +331,12 @@ struct SurfaceTerms {
     T iridescence, iridescence_ior, iridescence_thickness;
 };
 
+// Each lobe's Fresnel term, or its f0: the dielectric's and the metal's.
+template <typename T>
+struct LobeFresnel {
+    lanes::Vec3<T> dielectric, metal;
+};
+
 // Everything at a point that does not depend on the light: worked out once,
 // then used for every light and the environment.
 template <typename T>
@@ -367,7 +373,32 @@ struct PbrPoint {
     // The thin film (any_iridescence): strength, index and thickness.
     bool any_iridescence;
     T iridescence, iridescence_ior, iridescence_thickness;
+    // The split sum's f0 of each lobe: the surface's, moved by a thin film
+    // towards the film's reflectance at n.v (the environment reads it for
+    // every light from every direction, so it is worked out here, once).
+    LobeFresnel<T> environment_f0;
 };
+
+// KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
+// film's over the lobe's own reflectance (thin_film_fresnel), by the
+// film's strength k: F = F_base + k (F_film - F_base), at the cosine
+// `cosine` (v.h for a light, n.v for the environment). Out of line, as
+// with_sheen: few points have a film, and inlined its code crowded the
+// registers of the common path; values in and out, so that the common
+// path's terms stay in registers.
+
+template <typename T>
+[[gnu::noinline]] LobeFresnel<T> with_thin_film(const PbrPoint<T>& p, T cosine, LobeFresnel<T> f) {
+    const lanes::Vec3<T> film_d =
+        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.f0);
+    const lanes::Vec3<T> film_m =
+        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.base);
+    for (int c = 0; c < 3; ++c) {
+        f.dielectric[c] = f.dielectric[c] + p.iridescence * (film_d[c] - f.dielectric[c]);
+        f.metal[c] = f.metal[c] + p.iridescence * (film_m[c] - f.metal[c]);
+    }
+    return f;
+}
 
 // The sheen's part of prepare_point.
 template <typename T>
@@ -434,6 +465,8 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     p.any_iridescence = lanes::any(p.iridescence > splat<T>(0.0f));
     p.iridescence_ior = s.iridescence_ior;
     p.iridescence_thickness = lanes::max_of(s.iridescence_thickness, splat<T>(0.0f));
+    p.environment_f0 = {p.f0, p.base};
+    if (p.any_iridescence) p.environment_f0 = with_thin_film(p, p.n_dot_v, p.environment_f0);
     return p;
 }
 
@@ -444,31 +477,6 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
 template <typename T>
 [[gnu::always_inline]] inline T coat_transmission(const PbrPoint<T>& p) {
     return 1.0f - p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
-}
-
-// KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
-// film's over the lobe's own reflectance (thin_film_fresnel), by the
-// film's strength k: F = F_base + k (F_film - F_base), at the cosine
-// `cosine` (v.h for a light, n.v for the environment). Out of line, as
-// with_sheen: few points have a film, and inlined its code crowded the
-// registers of the common path; values in and out, so that the common
-// path's terms stay in registers.
-template <typename T>
-struct LobeFresnel {
-    lanes::Vec3<T> dielectric, metal;
-};
-
-template <typename T>
-[[gnu::noinline]] LobeFresnel<T> with_thin_film(const PbrPoint<T>& p, T cosine, LobeFresnel<T> f) {
-    const lanes::Vec3<T> film_d =
-        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.f0);
-    const lanes::Vec3<T> film_m =
-        thin_film_fresnel(cosine, p.iridescence_ior, p.iridescence_thickness, p.base);
-    for (int c = 0; c < 3; ++c) {
-        f.dielectric[c] = f.dielectric[c] + p.iridescence * (film_d[c] - f.dielectric[c]);
-        f.metal[c] = f.metal[c] + p.iridescence * (film_m[c] - f.metal[c]);
-    }
-    return f;
 }
 
 // The sheen over the base, for one light (KHR_materials_sheen, "albedo
@@ -574,10 +582,7 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
     const T coat_albedo = p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
     const T transmission = coat_transmission(p);
     const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
-    // The split sum's f0 of each lobe; a thin film moves it towards the
-    // film's reflectance at n.v.
-    LobeFresnel<T> f0 = {p.f0, p.base};
-    if (p.any_iridescence) f0 = with_thin_film(p, p.n_dot_v, f0);
+    const LobeFresnel<T>& f0 = p.environment_f0;
     lanes::Vec3<T> result;
     for (int c = 0; c < 3; ++c) {
         const T dielectric_lobe =

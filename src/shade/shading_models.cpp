@@ -1,6 +1,5 @@
 #include "shade/shading_models.hpp"
 
-#include "assets/mesh.hpp"
 #include "shade/gooch_style.hpp"
 #include "shade/layers.hpp"
 #include "shade/light_sample.hpp"
@@ -102,7 +101,7 @@ ModelNeeds needs_of(ShadingModel m) {
 
 uint32_t drawn_features(const StyleState& style, uint32_t features) {
     if (style.base_color) features &= ~(kBaseColorMap | kVertexColors);
-    if (style.model != ShadingModel::pbr) features &= ~(kPhysicalMaps | kNormalMaps | kExtraLobes);
+    if (style.model != ShadingModel::pbr) features &= ~kPbrOnlyFeatures;
     // The unlit, normal and depth models show no emission: views stay measurements.
     if (!needs_of(style.model).position) features &= ~kEmission;
     return features;

@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "assets/mesh.hpp"
 #include "shade/brdf.hpp"
 #include "shade/lighting.hpp"
 #include "shade/lighting_batch.hpp"
@@ -73,6 +74,9 @@ struct ModelNeeds {
     bool extra_lobes = false;
 };
 ModelNeeds needs_of(ShadingModel model);
+
+// The features only the `pbr` model draws: its maps and its extra lobes.
+constexpr uint32_t kPbrOnlyFeatures = kPhysicalMaps | kNormalMaps | kExtraLobes;
 
 // Of a material's and mesh part's features (MaterialFeature,
 // assets/mesh.hpp), those `style` draws: its own base colour replaces the
