@@ -400,7 +400,11 @@ template <typename T>
     return f;
 }
 
-// The sheen's part of prepare_point.
+// The sheen's part of prepare_point: whether a lane has one, inline; its
+// terms out of line, as the lobe's own code (few points have a sheen).
+template <typename T>
+[[gnu::noinline]] void prepare_sheen_terms(const SurfaceTerms<T>& s, PbrPoint<T>& p);
+
 template <typename T>
 [[gnu::always_inline]] inline void prepare_sheen(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
     using lanes::clamp01, lanes::max_of, lanes::splat;
@@ -408,7 +412,12 @@ template <typename T>
     p.sheen_max = max_of(p.sheen_color[0], max_of(p.sheen_color[1], p.sheen_color[2]));
     p.any_sheen = lanes::any(p.sheen_max > splat<T>(0.0f));
     p.sheen_keeps_v = splat<T>(1.0f);
-    if (!p.any_sheen) return;
+    if (p.any_sheen) prepare_sheen_terms(s, p);
+}
+
+template <typename T>
+[[gnu::noinline]] void prepare_sheen_terms(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    using lanes::clamp01;
     p.sheen_roughness = clamp01(s.sheen_roughness);
     p.sheen_alpha = alpha_from_roughness(p.sheen_roughness);
     p.sheen_masking = sheen_masking(p.sheen_alpha);
