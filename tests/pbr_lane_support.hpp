@@ -1,9 +1,9 @@
 #pragma once
 // The lane checks of the `pbr` model's layers (tests/test_pbr_sheen.cpp,
-// tests/test_pbr_iridescence.cpp): eight one-point surfaces put into the
-// lanes of one batch, and the check that each lane of brdf_cosine and
-// environment_response is its one-point result to the bit, and that a
-// lane without the layer keeps the bits it has without the layer's code.
+// tests/test_pbr_iridescence.cpp, tests/test_pbr_anisotropy.cpp): eight one-point surfaces put into
+// the lanes of one batch, and the check that each lane of brdf_cosine and environment_response is
+// its one-point result to the bit, and that a lane without the layer keeps the bits it has without
+// the layer's code.
 #include <array>
 #include <cstring>
 #include <functional>
@@ -26,6 +26,7 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
             out.f0[a][i] = t.f0[a];
             out.coat_normal[a][i] = t.coat_normal[a];
             out.sheen_color[a][i] = t.sheen_color[a];
+            out.anisotropy_direction[a][i] = t.anisotropy_direction[a];
         }
         out.metallic[i] = t.metallic, out.roughness[i] = t.roughness;
         out.occlusion[i] = t.occlusion, out.f90[i] = t.f90;
@@ -33,8 +34,25 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
         out.sheen_roughness[i] = t.sheen_roughness;
         out.iridescence[i] = t.iridescence, out.iridescence_ior[i] = t.iridescence_ior;
         out.iridescence_thickness[i] = t.iridescence_thickness;
+        out.anisotropy[i] = t.anisotropy;
     }
     return out;
+}
+
+// Eight varied surfaces (metals every third lane, dielectrics between,
+// roughness rising) seen from head-on to grazing, and `add_layer(i, t)`
+// gives lane i its layer.
+inline void varied_lanes(PointTerms& points, PointViews& views,
+                         const std::function<void(int, pbr::SurfaceTerms<float>&)>& add_layer) {
+    for (int i = 0; i < simd::kLanes; ++i) {
+        const float f = static_cast<float>(i);
+        points[i] =
+            pbr::surface_terms({glm::vec3(0.4f + 0.05f * f, 0.3f, 0.2f), i % 3 == 0 ? 1.0f : 0.0f,
+                                0.2f + 0.08f * f, pbr::kDefaultIor});
+        add_layer(i, points[i]);
+        const float mu = 1.0f - 0.11f * f;
+        views[i] = {std::sqrt(1.0f - mu * mu), 0.0f, mu};
+    }
 }
 
 // Lanes with normal +Z; `without` removes the layer from a point's terms,

@@ -197,7 +197,7 @@ TEST_CASE(
     g.doc["materials"] = {{{"name", "used"}}, {{"name", "unused"}}};
     g.one_node_scene(
         {{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}, {"material", 0}});
-    g.doc["extensionsUsed"] = {"KHR_materials_variants", "KHR_materials_anisotropy",
+    g.doc["extensionsUsed"] = {"KHR_materials_variants", "KHR_materials_dispersion",
                                "EXT_texture_webp"};
     g.doc["extensionsRequired"] = {"KHR_materials_variants"};
     const std::string file = g.write(dir.file("needs.gltf"));
@@ -218,16 +218,16 @@ TEST_CASE(
                Contains("requires the glTF extension KHR_materials_variants"));
     CHECK(j["triangles"] == 1);
     CHECK(j["extensions"]["used"] ==
-          json::array({"KHR_materials_variants", "KHR_materials_anisotropy", "EXT_texture_webp"}));
+          json::array({"KHR_materials_variants", "KHR_materials_dispersion", "EXT_texture_webp"}));
     CHECK(j["extensions"]["required"] == json::array({"KHR_materials_variants"}));
     CHECK(j["extensions"]["ignored"] ==
-          json::array({"KHR_materials_variants", "KHR_materials_anisotropy"}));
+          json::array({"KHR_materials_variants", "KHR_materials_dispersion"}));
     // Only the material a part uses; no unused "default".
     REQUIRE(j["materials"].size() == 1);
     CHECK(j["materials"][0]["name"] == "used");
     const RunResult text = run_facet("info '" + file + "'");
     CHECK(text.exit_code == 2);
-    CHECK_THAT(text.output, Contains("not read KHR_materials_variants, KHR_materials_anisotropy") &&
+    CHECK_THAT(text.output, Contains("not read KHR_materials_variants, KHR_materials_dispersion") &&
                                 Contains(refusal));
 }
 

@@ -110,18 +110,12 @@ TEST_CASE("iridescence: strength 0 keeps the bits, and a lane with a film is the
     // from head-on to grazing.
     test::PointTerms points;
     test::PointViews views;
-    for (int i = 0; i < simd::kLanes; ++i) {
+    test::varied_lanes(points, views, [](int i, pbr::SurfaceTerms<float>& t) {
         const float f = static_cast<float>(i);
-        pbr::SurfaceTerms<float> t =
-            pbr::surface_terms({glm::vec3(0.4f + 0.05f * f, 0.3f, 0.2f), i % 3 == 0 ? 1.0f : 0.0f,
-                                0.2f + 0.08f * f, pbr::kDefaultIor});
         t.iridescence = i % 2 ? 0.5f + 0.05f * f : 0.0f;
         t.iridescence_ior = 1.2f + 0.1f * f;
         t.iridescence_thickness = 150.0f + 60.0f * f;
-        points[i] = t;
-        const float mu = 1.0f - 0.11f * f;
-        views[i] = {std::sqrt(1.0f - mu * mu), 0.0f, mu};
-    }
+    });
     test::check_layer_lanes(
         points, views,
         [](pbr::SurfaceTerms<float> t) {

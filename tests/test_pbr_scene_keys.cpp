@@ -290,7 +290,7 @@ TEST_CASE("a scene map or environment file that cannot be read names its key", "
 
 // --- Warnings -------------------------------------------------------------------
 
-TEST_CASE("pbr maps, a sheen or a film under blinn-phong warn that they are lost",
+TEST_CASE("pbr maps, a sheen, a film or an anisotropy under blinn-phong warn that they are lost",
           "[pbr][warnings]") {
     TempDir dir("pbr-scene");
     write_bytes(dir.file("bump.png"), flat_png(kMidByte));
@@ -309,12 +309,13 @@ TEST_CASE("pbr maps, a sheen or a film under blinn-phong warn that they are lost
     const World factors = build_world(load(write_text(
         dir.file("factors.yaml"), cube_scene("blinn-phong", "{ metallic: 1, roughness: 0.2 }"))));
     CHECK_FALSE(warned(factors.warnings, "objects.0", "only `shading: pbr` draws"));
-    // A sheen and a thin film are lost the same way.
-    for (const char* lobe : {"{ sheen_color: [0.8, 0.1, 0.1] }", "{ iridescence: 0.6 }"}) {
+    // A sheen, a thin film and an anisotropy are lost the same way.
+    for (const char* lobe : {"{ sheen_color: [0.8, 0.1, 0.1] }", "{ iridescence: 0.6 }",
+                             "{ anisotropy: 0.5, anisotropy_rotation: 45 }"}) {
         INFO(lobe);
         const World lost =
             build_world(load(write_text(dir.file("lobe.yaml"), cube_scene("blinn-phong", lobe))));
-        CHECK(warned(lost.warnings, "objects.0", "sheen and film are lost"));
+        CHECK(warned(lost.warnings, "objects.0", "sheen, film and anisotropy are lost"));
     }
 }
 

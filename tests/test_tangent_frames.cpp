@@ -346,7 +346,7 @@ TEST_CASE("A normal map the materials add gets tangents on a copy of the mesh", 
     REQUIRE(warnings.size() == 1);
     CHECK(warnings[0].where.file == "pair.obj");
     CHECK(warnings[0].message.find("part 1 (material 'bare')") != std::string::npos);
-    CHECK(warnings[0].message.find("drawn without the normal map") != std::string::npos);
+    CHECK(warnings[0].message.find("drawn without its normal maps and anisotropy") != std::string::npos);
 
     Warnings again;
     CHECK(with_normal_map_tangents(with, mapped, again) == with);

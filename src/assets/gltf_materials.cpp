@@ -459,7 +459,20 @@ void read_iridescence(const tinygltf::Value& e, TextureCache& cache, const std::
                       "drawn at its iridescenceThicknessMaximum alone", TexelMeaning::data);
 }
 
-// KHR_materials_ior, _specular, _clearcoat, _sheen and _iridescence.
+// KHR_materials_anisotropy: strength, rotation (radians) and a data map
+// (RG direction, B strength).
+void read_anisotropy(const tinygltf::Value& e, TextureCache& cache, const std::string& path,
+                     const std::string& what, Warnings& warnings, Material& mat) {
+    mat.anisotropy = extension_number(e, "anisotropyStrength", 0.0f, 0.0, 1.0, path, what);
+    mat.anisotropy_rotation =
+        extension_number(e, "anisotropyRotation", 0.0f, -1e6, 1e6, path, what);
+    if (mat.anisotropy == 0.0f) return;  // isotropic: the map shows nothing
+    mat.anisotropy_map =
+        extension_map(e, "anisotropyTexture", cache, path, what, warnings,
+                      "drawn along its anisotropyRotation alone", TexelMeaning::data);
+}
+
+// KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence and _anisotropy.
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
                            Material& mat) {
@@ -501,6 +514,8 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         read_sheen(it->second, cache, path, what, warnings, mat);
     if (const auto it = m.extensions.find("KHR_materials_iridescence"); it != m.extensions.end())
         read_iridescence(it->second, cache, path, what, warnings, mat);
+    if (const auto it = m.extensions.find("KHR_materials_anisotropy"); it != m.extensions.end())
+        read_anisotropy(it->second, cache, path, what, warnings, mat);
 }
 
 void read_alpha(const tinygltf::Material& m, const std::string& path, Material& mat) {

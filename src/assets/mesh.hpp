@@ -6,6 +6,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -43,7 +44,7 @@ enum MaterialFeature : uint32_t {
     kEmission = 1u << 4,    // unlit, or emission added to what the model made
     kShadowCatcher = 1u << 5,  // shows only the shadows on it
     kFade = 1u << 6,           // fades into the background with distance
-    kExtraLobes = 1u << 7,     // the `pbr` model's sheen or thin film (iridescence)
+    kExtraLobes = 1u << 7,     // the `pbr` model's sheen, thin film or anisotropy
 };
 constexpr int kMaterialFeatureCount = 8;
 
@@ -133,21 +134,35 @@ struct Material {
     float iridescence_ior = 1.3f;
     float iridescence_thickness_min = 100.0f, iridescence_thickness_max = 400.0f;
     TextureSlot iridescence_map, iridescence_thickness_map;
+    // KHR_materials_anisotropy: the specular lobe stretched along a
+    // direction of the tangent plane, of this strength (times the map's B;
+    // 0: none). The direction is the tangent turned by `anisotropy_rotation`
+    // (radians, counter-clockwise towards the bitangent), or the map's RG
+    // (a direction in [-1, 1]^2 of the tangent frame) turned by it.
+    float anisotropy = 0.0f;
+    float anisotropy_rotation = 0.0f;
+    TextureSlot anisotropy_map;
 
-    // The map whose texture coordinates the tangent frames follow: the
-    // base's normal map, else the coat's (glTF gives both one tangent frame).
-    const TextureSlot& tangent_space_map() const {
-        return normal_map ? normal_map : clearcoat_normal_map;
+    // The texture coordinate set the tangent frames follow, or none when
+    // nothing needs them: the base's normal map's, else the coat's (glTF
+    // gives both one tangent frame), else the anisotropy map's, else set 0
+    // for an anisotropy without a map.
+    std::optional<int> tangent_uv_set() const {
+        for (const TextureSlot* map : {&normal_map, &clearcoat_normal_map, &anisotropy_map})
+            if (*map) return map->uv_set;
+        if (anisotropy > 0.0f) return 0;
+        return std::nullopt;
     }
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 15> texture_slots() {
+    std::array<TextureSlot*, 16> texture_slots() {
         return {&base_color_map,          &normal_map,      &occlusion_map,
                 &metal_rough_map,         &emissive_map,    &specular_weight_map,
                 &specular_color_map,      &clearcoat_map,   &clearcoat_roughness_map,
                 &clearcoat_normal_map,    &sheen_color_map, &sheen_roughness_map,
-                &specular_glossiness_map, &iridescence_map, &iridescence_thickness_map};
+                &specular_glossiness_map, &iridescence_map, &iridescence_thickness_map,
+                &anisotropy_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -165,7 +180,8 @@ struct Material {
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;
         if (shadow_catcher) f |= kShadowCatcher;
         if (fade_end > fade_start) f |= kFade;
-        if (sheen_color != glm::vec3(0) || iridescence > 0.0f) f |= kExtraLobes;
+        if (sheen_color != glm::vec3(0) || iridescence > 0.0f || anisotropy > 0.0f)
+            f |= kExtraLobes;
         return f;
     }
 };

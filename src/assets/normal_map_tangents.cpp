@@ -1,5 +1,5 @@
 // Tangent frames for the parts whose material has a normal map (the base's
-// or the clear coat's).
+// or the clear coat's) or an anisotropy.
 #include "assets/normal_map_tangents.hpp"
 
 #include "assets/gltf_pose.hpp"
@@ -12,17 +12,17 @@ Warning lost_normal_map(const Mesh& mesh, size_t part, const Material& material)
     return file_warning(mesh.source,
                         "part " + std::to_string(part) + " (material '" + material.name +
                             "') has no texture coordinates (set " +
-                            std::to_string(material.tangent_space_map().uv_set) +
-                            ") for its normal map, so it is drawn without the normal map");
+                            std::to_string(*material.tangent_uv_set()) +
+                            ") for its tangent frames, so it is drawn without its normal maps "
+                            "and anisotropy");
 }
 
 }  // namespace
 
 TangentNeed tangent_need(const MeshPart& part, const Material& material) {
-    if (!material.tangent_space_map() || !part.tangents.empty()) return TangentNeed::none;
-    return tangent_uvs(part, material.tangent_space_map().uv_set).empty()
-               ? TangentNeed::no_coordinates
-               : TangentNeed::missing;
+    if (!material.tangent_uv_set() || !part.tangents.empty()) return TangentNeed::none;
+    return tangent_uvs(part, *material.tangent_uv_set()).empty() ? TangentNeed::no_coordinates
+                                                                 : TangentNeed::missing;
 }
 
 void add_normal_map_tangents(Mesh& mesh, const std::vector<Material>& materials, Warnings& warnings,
@@ -37,11 +37,11 @@ void add_normal_map_tangents(Mesh& mesh, const std::vector<Material>& materials,
             warnings.push_back(lost_normal_map(mesh, p, material));
         if (need != TangentNeed::missing) continue;
         if (keep_vertices) {
-            add_tangent_frames_in_place(part, material.tangent_space_map().uv_set);
+            add_tangent_frames_in_place(part, *material.tangent_uv_set());
             continue;
         }
         std::vector<uint32_t> source_vertex;
-        add_tangent_frames(part, material.tangent_space_map().uv_set, &source_vertex);
+        add_tangent_frames(part, *material.tangent_uv_set(), &source_vertex);
         if (!mesh.rig) continue;
         if (!rig) {
             rig = std::make_shared<MeshRig>(*mesh.rig);

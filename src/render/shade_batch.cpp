@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/color.hpp"
+#include "core/exact_trig.hpp"
 #include "raster/surface_sample.hpp"
 #include "render/hatch_charts.hpp"
 #include "render/normal_map_lookup.hpp"
@@ -378,6 +379,49 @@ void apply_normal_maps(const ShadeInputs& in, Batch& b) {
         });
 }
 
+// kExtraLobes' anisotropy: each lane's direction, the tangent turned by
+// the material's rotation, or its map's RG direction turned by it, in the
+// tangent frame the vertices carry; the map's B scales the strength.
+// Lanes without a frame (their part had no texture coordinates to make
+// one, which loading warned of) are drawn isotropic. Before the normal
+// maps: the frame is the vertices', as the normal map's is.
+void apply_anisotropy(const ShadeInputs& in, const TextureLookups& lookup, Batch& b) {
+    pbr::SurfaceTerms<vf>& p = b.lanes.pbr;
+    glm::vec3 texel[kLanes];
+    lookup(slot_of(b.material, &Material::anisotropy_map),
+           [&](int i, const glm::vec4& t) { texel[i] = glm::vec3(t); });
+    const Material* turned = nullptr;  // the material `turn` is for
+    glm::vec2 turn(1.0f, 0.0f);        // cos and sin of its rotation
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        if (!(m.anisotropy > 0.0f)) continue;
+        if (!has_tangent_frames(in.world, in.vertices, b.setup[i]->source_triangle)) {
+            p.anisotropy[i] = 0.0f;
+            continue;
+        }
+        if (&m != turned) {
+            const double turns = static_cast<double>(m.anisotropy_rotation) / (2.0 * pbr::kPi);
+            turn = {static_cast<float>(cos_turns(turns)), static_cast<float>(sin_turns(turns))};
+            turned = &m;
+        }
+        glm::vec2 d(1.0f, 0.0f);
+        if (m.anisotropy_map) {
+            const glm::vec3 t = texel_in_mesh_frame(texel[i], m.anisotropy_map.transform);
+            d = {2.0f * t.x - 1.0f, 2.0f * t.y - 1.0f};
+            p.anisotropy[i] *= t.z;
+        }
+        const glm::vec2 in_frame(turn.x * d.x - turn.y * d.y, turn.y * d.x + turn.x * d.y);
+        const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
+        const vf(&normal)[3] = b.result.normal;
+        const glm::vec3 shown(normal[0][i], normal[1][i], normal[2][i]);
+        const glm::vec3 front =
+            normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
+        const glm::vec3 direction =
+            anisotropy_direction(in.world, in.vertices, in_frame, pixel, front);
+        for (int a = 0; a < 3; ++a) p.anisotropy_direction[a][i] = direction[a];
+    }
+}
+
 // kVertexColors: they multiply the albedo, lane by lane.
 void apply_vertex_colors(const ShadeInputs& in, Batch& b) {
     for (int i = 0; i < b.count; ++i) {
@@ -547,6 +591,7 @@ template <bool Plain>
     if (!Plain && (features & kVertexColors)) apply_vertex_colors(in, b);
     if (!Plain && (features & kPhysicalMaps))
         apply_physical_maps(b.material, b.count, lookup, b.lanes);
+    if (!Plain && (features & kExtraLobes)) apply_anisotropy(in, lookup, b);
     if (!Plain && (features & kNormalMaps)) apply_normal_maps(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
                                  &in.frame.environment};

@@ -265,9 +265,9 @@ void append_part(World& world, const MeshPart& part, uint32_t object, uint32_t m
     d.material = material_base + part.material;
     d.has_uvs = !part.uvs.empty() || !part.uvs1.empty();
     d.has_colors = !part.colors.empty();
-    // Only the normal-mapped draws' frames are kept: the stages pay for
-    // tangents only where a shader reads them.
-    d.has_tangents = world.materials[d.material].tangent_space_map() && !part.tangents.empty();
+    // Only the frames of normal-mapped and anisotropic draws are kept: the
+    // stages pay for tangents only where a shader reads them.
+    d.has_tangents = world.materials[d.material].tangent_uv_set() && !part.tangents.empty();
     const uint32_t draw_index = static_cast<uint32_t>(world.draws.size());
     world.positions.insert(world.positions.end(), part.positions.begin(), part.positions.end());
     world.normals.insert(world.normals.end(), part.normals.begin(), part.normals.end());
@@ -376,7 +376,7 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     if (style.shading == ShadingModel::pbr) return;
     // Metal and roughness factors alone are read as a Phong highlight
     // (docs/scene-format.md, "glTF files"); the features only pbr draws
-    // (its maps, sheen and thin film) and coats are lost.
+    // (its maps, sheen, thin film and anisotropy) and coats are lost.
     const bool lost = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
         return (m.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
     });
@@ -384,11 +384,11 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     const ObjectDesc& obj = scene.objects[object];
     warnings.push_back({obj.where, "objects." + std::to_string(object),
                         "'" + obj.name +
-                            "' has physically based maps, a clear coat, a sheen or a thin film "
-                            "that only `shading: pbr` draws: under " +
+                            "' has physically based maps, a clear coat, a sheen, a thin film or "
+                            "an anisotropy that only `shading: pbr` draws: under " +
                             shading_model_name(style.shading) +
-                            " its relief, occlusion, metal, specular colour, coat, sheen and "
-                            "film are lost"});
+                            " its relief, occlusion, metal, specular colour, coat, sheen, "
+                            "film and anisotropy are lost"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

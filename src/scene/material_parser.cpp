@@ -32,6 +32,7 @@ constexpr NumberKey kNumberKeys[] = {
     {"iridescence", &Material::iridescence, 0, 1},
     {"iridescence_ior", &Material::iridescence_ior, 1, 10},
     {"iridescence_thickness", &Material::iridescence_thickness_max, 0, 5000},
+    {"anisotropy", &Material::anisotropy, 0, 1},
 };
 
 // The same for colours (linear RGB, each channel from 0 to 1).
@@ -53,6 +54,11 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
                 {key.field, static_cast<float>(f[key.name].number(key.low, key.high))});
     for (const ColorKey& key : kColorKeys)
         if (f.has(key.name)) m.colors.push_back({key.field, f[key.name].color3()});
+    // Degrees, as every angle of a scene; Material keeps glTF's radians.
+    if (f.has("anisotropy_rotation"))
+        m.constants.push_back({&Material::anisotropy_rotation,
+                               static_cast<float>(f["anisotropy_rotation"].number(-360, 360) *
+                                                  (3.14159265358979323846 / 180.0))});
     auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
         if (f.has(key)) out = map_of(f[key], base_dir);
     };
@@ -68,11 +74,29 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
 
 MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     MaterialDesc m;
-    std::vector<const char*> keys = {
-        "color",      "ambient",       "diffuse",         "specular",    "ka",       "kd",
-        "ks",         "shininess",     "texture",         "wrap",        "uv_scale", "double_sided",
-        "emissive",   "unlit",         "shadow_catcher",  "fade",        "metallic", "roughness",
-        "normal_map", "occlusion_map", "metal_rough_map", "emissive_map"};
+    std::vector<const char*> keys = {"color",
+                                     "ambient",
+                                     "diffuse",
+                                     "specular",
+                                     "ka",
+                                     "kd",
+                                     "ks",
+                                     "shininess",
+                                     "texture",
+                                     "wrap",
+                                     "uv_scale",
+                                     "double_sided",
+                                     "emissive",
+                                     "unlit",
+                                     "shadow_catcher",
+                                     "fade",
+                                     "metallic",
+                                     "roughness",
+                                     "normal_map",
+                                     "occlusion_map",
+                                     "metal_rough_map",
+                                     "emissive_map",
+                                     "anisotropy_rotation"};
     for (const NumberKey& key : kNumberKeys) keys.push_back(key.name);
     for (const ColorKey& key : kColorKeys) keys.push_back(key.name);
     f.check_keys(keys);

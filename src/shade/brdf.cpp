@@ -203,10 +203,17 @@ const SheenTable& sheen_table() {
 
 SurfaceTerms<float> surface_terms(const Material& material) {
     const float f0 = f0_from_ior(material.ior);
-    const lanes::Vec3<float> base = {material.base_color.x, material.base_color.y,
-                                     material.base_color.z};
-    return {base, material.metallic,  material.roughness, 1.0f, {f0, f0, f0}, 1.0f, 0.0f,
-            0.0f, {0.0f, 1.0f, 0.0f}, {0.0f, 0.0f, 0.0f}, 0.0f, 0.0f,         1.3f, 400.0f};
+    SurfaceTerms<float> terms{};
+    terms.base = {material.base_color.x, material.base_color.y, material.base_color.z};
+    terms.metallic = material.metallic;
+    terms.roughness = material.roughness;
+    terms.occlusion = 1.0f;
+    terms.f0 = {f0, f0, f0};
+    terms.f90 = 1.0f;
+    terms.coat_normal = {0.0f, 1.0f, 0.0f};
+    terms.iridescence_ior = 1.3f;
+    terms.iridescence_thickness = 400.0f;
+    return terms;
 }
 
 }  // namespace facet::pbr

@@ -329,6 +329,11 @@ struct SurfaceTerms {
     // KHR_materials_iridescence: the thin film's strength (0: none), index
     // of refraction and thickness in nm.
     T iridescence, iridescence_ior, iridescence_thickness;
+    // KHR_materials_anisotropy: the strength (0: none) and the direction
+    // along which the lobe is rougher, in the tangent plane (any length;
+    // made perpendicular to the shading normal here).
+    T anisotropy;
+    lanes::Vec3<T> anisotropy_direction;
 };
 
 // Each lobe's Fresnel term, or its f0: the dielectric's and the metal's.
@@ -377,6 +382,15 @@ struct PbrPoint {
     // towards the film's reflectance at n.v (the environment reads it for
     // every light from every direction, so it is worked out here, once).
     LobeFresnel<T> environment_f0;
+    // The anisotropy (any_anisotropy): its strength (0 where the lane has
+    // none), its unit tangent t (rougher) and bitangent b = n x t, alpha
+    // along t, and the view's root of the anisotropic Smith term.
+    bool any_anisotropy;
+    T anisotropy, anisotropy_alpha_t, anisotropy_view_root;
+    lanes::Vec3<T> anisotropy_t, anisotropy_b;
+    // The normal the environment's specular lobe reflects the view about:
+    // n, or the anisotropy's bent normal.
+    lanes::Vec3<T> reflection_normal;
 };
 
 // KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
@@ -427,6 +441,81 @@ template <typename T>
     p.sheen_keeps_v = 1.0f - p.sheen_max * p.sheen_albedo_v;
 }
 
+// --- KHR_materials_anisotropy: the lobe of brushed metal ---
+
+// The anisotropy's part of prepare_point, out of line as the sheen's. Its
+// frame: t the direction made perpendicular to n, b = n x t (a direction
+// along n leaves the lane isotropic). Its widths (the extension's
+// specification): alpha_t = mix(alpha, 1, strength^2) along t, alpha_b =
+// alpha along b. For the environment, the bent normal of the
+// specification's sample implementation: the normal of the plane through
+// b that faces v, n_a = (b x v) x b, mixed with n by
+// (1 - strength (1 - roughness))^4, so that a strong anisotropy on a
+// smooth surface reflects the environment stretched along b's plane.
+template <typename T>
+[[gnu::noinline]] void prepare_anisotropy_terms(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    using lanes::select, lanes::splat;
+    const lanes::Vec3<T>& n = p.n;
+    const lanes::Vec3<T>& d = s.anisotropy_direction;
+    const T along = lanes::dot(n, d);
+    const lanes::Vec3<T> in_plane = {d[0] - n[0] * along, d[1] - n[1] * along, d[2] - n[2] * along};
+    const lanes::Mask<T> framed = lanes::dot(in_plane, in_plane) > splat<T>(1e-12f);
+    const lanes::Vec3<T> zero = {splat<T>(0.0f), splat<T>(0.0f), splat<T>(0.0f)};
+    const T strength = select(framed, lanes::clamp01(s.anisotropy), splat<T>(0.0f));
+    const lanes::Mask<T> anisotropic = strength > splat<T>(0.0f);
+    p.anisotropy = strength;
+    p.anisotropy_t = lanes::normalise_or(in_plane, zero);
+    p.anisotropy_b = lanes::cross(n, p.anisotropy_t);
+    p.anisotropy_alpha_t = p.alpha + (1.0f - p.alpha) * (strength * strength);
+    const T tv = p.anisotropy_alpha_t * lanes::dot(p.anisotropy_t, p.v);
+    const T bv = p.alpha * lanes::dot(p.anisotropy_b, p.v);
+    p.anisotropy_view_root = lanes::square_root(tv * tv + bv * bv + p.n_dot_v * p.n_dot_v);
+    const lanes::Vec3<T>& b = p.anisotropy_b;
+    const lanes::Vec3<T> facing = lanes::cross(lanes::cross(b, p.v), b);
+    const T bend = 1.0f - strength * (1.0f - p.roughness);
+    const T keep = (bend * bend) * (bend * bend);
+    const lanes::Vec3<T> bent = lanes::normalise_or<T>(
+        {facing[0] + keep * (n[0] - facing[0]), facing[1] + keep * (n[1] - facing[1]),
+         facing[2] + keep * (n[2] - facing[2])},
+        n);
+    for (int c = 0; c < 3; ++c) p.reflection_normal[c] = select(anisotropic, bent[c], n[c]);
+}
+
+// The anisotropic GGX lobe without its Fresnel factor (the extension's
+// specification; Burley 2012, Appendix B.2; Heitz 2014 for the
+// height-correlated Smith term), for unit l with n.l > 0:
+//   D = 1 / (pi a_t a_b ((t.h / a_t)^2 + (b.h / a_b)^2 + (n.h)^2)^2)
+//   V = 1 / (2 (n.l |(a_t t.v, a_b b.v, n.v)| + n.v |(a_t t.l, a_b b.l, n.l)|))
+// D written as the specification does, a^2 w^2 w^2 / pi with a^2 = a_t a_b
+// and w^2 = a^2 / |(a_b t.h, a_t b.h, a^2 n.h)|^2. Lanes without an
+// anisotropy keep `isotropic`, to the bit.
+template <typename T>
+[[gnu::noinline]] T with_anisotropy(const PbrPoint<T>& p, const lanes::Vec3<T>& l, T n_dot_l,
+                                    T isotropic) {
+    using lanes::select, lanes::splat;
+    const lanes::Vec3<T> sum = {l[0] + p.v[0], l[1] + p.v[1], l[2] + p.v[2]};
+    const lanes::Vec3<T> h = lanes::normalise_or(sum, p.n);
+    const T at = p.anisotropy_alpha_t, ab = p.alpha;
+    const T n_dot_h = lanes::dot(p.n, h);
+    const T a2 = at * ab;
+    const T ft = ab * lanes::dot(p.anisotropy_t, h), fb = at * lanes::dot(p.anisotropy_b, h),
+            fn = a2 * n_dot_h;
+    const T w2 = a2 / (ft * ft + fb * fb + fn * fn);
+    const T distribution =
+        select(n_dot_h > splat<T>(0.0f), a2 * w2 * w2 * (1.0f / kPi), splat<T>(0.0f));
+    const T tl = at * lanes::dot(p.anisotropy_t, l), bl = ab * lanes::dot(p.anisotropy_b, l);
+    const T light_root = lanes::square_root(tl * tl + bl * bl + n_dot_l * n_dot_l);
+    const T visibility = 0.5f / (n_dot_l * p.anisotropy_view_root + p.n_dot_v * light_root);
+    return select(p.anisotropy > splat<T>(0.0f), distribution * visibility, isotropic);
+}
+
+template <typename T>
+[[gnu::always_inline]] inline void prepare_anisotropy(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    p.reflection_normal = p.n;
+    p.any_anisotropy = lanes::any(s.anisotropy > lanes::splat<T>(0.0f));
+    if (p.any_anisotropy) prepare_anisotropy_terms(s, p);
+}
+
 // The point for unit n and v and the surface's terms.
 template <typename T>
 PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
@@ -470,6 +559,7 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     p.view_root = smith_root(p.n_dot_v, p.alpha);
     p.coat_view_root = p.any_coat ? smith_root(p.coat_n_dot_v, p.coat_alpha) : p.view_root;
     prepare_sheen(s, p);
+    prepare_anisotropy(s, p);
     p.iridescence = clamp01(s.iridescence);
     p.any_iridescence = lanes::any(p.iridescence > splat<T>(0.0f));
     p.iridescence_ior = s.iridescence_ior;
@@ -541,7 +631,8 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
     lanes::Vec3<T> result = {zero, zero, zero};
     if (lanes::any(lit)) {
         const HalfVector<T> h = half_vector(p.n, p.v, l);
-        const T specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.view_root, p.alpha);
+        T specular = specular_brdf(h, n_dot_l, p.n_dot_v, p.view_root, p.alpha);
+        if (p.any_anisotropy) specular = with_anisotropy(p, l, n_dot_l, specular);
         const T w = schlick_weight(h.v_dot_h);
         LobeFresnel<T> f;
         for (int c = 0; c < 3; ++c) {

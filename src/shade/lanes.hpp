@@ -130,6 +130,12 @@ template <typename T>
             select(ok, v[2] * inverse, fallback[2])};
 }
 
+// a x b.
+template <typename T>
+[[gnu::always_inline]] inline Vec3<T> cross(const Vec3<T>& a, const Vec3<T>& b) {
+    return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+}
+
 // 2 (n.v) n - v: v mirrored about n.
 template <typename T>
 [[gnu::always_inline]] inline Vec3<T> reflect(const Vec3<T>& n, const Vec3<T>& v) {

@@ -36,10 +36,14 @@ template <bool Single>
         v = mask ? simd::splat(value) : v;
 }
 
-// The sheen's and the thin film's constants (kExtraLobes).
+// The sheen's, the thin film's and the anisotropy's constants
+// (kExtraLobes); the anisotropy's direction is the shading stage's, from
+// the tangent frame (render/shade_batch.cpp), and starts at zero.
 template <bool Single>
 [[gnu::always_inline]] inline void put_extra_lobes(const Material& m, simd::vi mask, bool first,
                                                    pbr::SurfaceTerms<simd::vf>& p) {
+    put<Single>(p.anisotropy, mask, m.anisotropy, first);
+    for (simd::vf& axis : p.anisotropy_direction) put<Single>(axis, mask, 0.0f, first);
     for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
     put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
     put<Single>(p.iridescence, mask, m.iridescence, first);

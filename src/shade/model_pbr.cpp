@@ -80,8 +80,8 @@ template <typename T>
 Vec3<T> environment_light(const pbr::PbrPoint<T>& p, const EnvironmentLighting& environment) {
     const pbr::PrefilteredEnvironment& map = *environment.map;
     const Vec3<T> diffuse = map_diffuse(map, to_map(environment, p.n));
-    const Vec3<T> specular =
-        map_specular(map, to_map(environment, lanes::reflect(p.n, p.v)), p.roughness);
+    const Vec3<T> specular = map_specular(
+        map, to_map(environment, lanes::reflect(p.reflection_normal, p.v)), p.roughness);
     Vec3<T> coat = {splat<T>(0.0f), splat<T>(0.0f), splat<T>(0.0f)};
     if (p.any_coat)
         coat =

@@ -69,7 +69,7 @@ struct ModelNeeds {
     bool normal;        // the normal on the viewer's side
     bool light_terms;   // the material's Phong terms and the lights
     bool vertex_light;  // Gouraud's light from the vertices
-    // Per batch: its `pbr` materials have a sheen or a thin film
+    // Per batch: its `pbr` materials have a sheen, a thin film or an anisotropy
     // (kExtraLobes); without, their terms are zero for the whole batch.
     bool extra_lobes = false;
 };
