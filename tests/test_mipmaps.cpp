@@ -61,7 +61,7 @@ TEST_CASE("trilinear sampling picks and blends levels by lod", "[texture][mipmap
     CHECK(t.sample(centre_of_texel_0, 0.5f).r == Approx(0.25f).margin(0.002));
 }
 
-// Shading finds eight lanes' texture coordinates and levels at once
+// Shading finds eight lanes' texture coordinates and footprints at once
 // (shade/texture_lod.hpp, UvTransform's lane form); each lane must get the
 // bits the one-point forms give, so that a pixel looks the same in any lane.
 TEST_CASE("texture lookups over eight lanes give each lane's own bits", "[texture][lod]") {
@@ -95,12 +95,14 @@ TEST_CASE("texture lookups over eight lanes give each lane's own bits", "[textur
             one.bary = {1.0f - s.b1[i] - s.b2[i], s.b1[i], s.b2[i]};
             one.ddx = {0.0f, s.ddx1[i], s.ddx2[i]};
             one.ddy = {0.0f, s.ddy1[i], s.ddy2[i]};
-            const facet::TextureLookup want =
+            const facet::TextureFootprint want =
                 facet::texture_lookup(corner[0], corner[1], corner[2], one, texels);
-            REQUIRE(lanes.u[i] == want.uv.x);
-            REQUIRE(lanes.v[i] == want.uv.y);
-            REQUIRE(lanes.lod[i] == want.lod);
-            (want.lod == 0.0f ? magnified : minified) += 1;
+            const facet::TextureFootprint got = lanes.at(i);
+            REQUIRE(got.uv == want.uv);
+            REQUIRE(got.major_axis == want.major_axis);
+            REQUIRE(got.major == want.major);
+            REQUIRE(got.minor == want.minor);
+            (want.major <= 1.0f ? magnified : minified) += 1;
         }
     }
     CHECK(magnified > 100);

@@ -128,7 +128,7 @@ TEST_CASE("surface reconstruction: back faces are marked", "[stages][raster]") {
     for (const auto& [p, s] : b) CHECK(s.back_facing);
 }
 
-TEST_CASE("texture level of detail: log2 of texels per pixel, 0 when magnified",
+TEST_CASE("texture footprint: texels per pixel step along the longer and shorter axes",
           "[stages][texture]") {
     SurfaceSample s{};
     s.bary = {0.5f, 0.25f, 0.25f};
@@ -136,22 +136,24 @@ TEST_CASE("texture level of detail: log2 of texels per pixel, 0 when magnified",
     // u = b1, v = b2: one pixel step in x moves u by 1/64 of the texture.
     s.ddx = {-1.0f / 64, 1.0f / 64, 0};
     s.ddy = {-1.0f / 128, 0, 1.0f / 128};
-    TextureLookup t = texture_lookup(uv0, uv1, uv2, s, glm::vec2(256));
+    TextureFootprint t = texture_lookup(uv0, uv1, uv2, s, glm::vec2(256));
     CHECK(t.uv.x == Approx(0.25f));
     CHECK(t.uv.y == Approx(0.25f));
-    CHECK(t.lod == Approx(2.0f));  // 256 / 64 = 4 texels per step along x, the longer axis
+    CHECK(t.major == Approx(4.0f));  // 256 / 64 texels per step along x, the longer axis
+    CHECK(t.minor == Approx(2.0f));  // 256 / 128 along y
+    CHECK(t.major_axis.x == Approx(1.0f / 64));
+    CHECK(t.major_axis.y == 0.0f);
     // Scaled coordinates (a texture repeated 4 times) cover 4x as many texels.
     t = texture_lookup(uv0 * 4.0f, uv1 * 4.0f, uv2 * 4.0f, s, glm::vec2(256));
-    CHECK(t.lod == Approx(4.0f));
+    CHECK(t.major == Approx(16.0f));
     CHECK(t.uv.x == Approx(1.0f));
-    // A texture smaller than the pixel steps: magnified, level 0.
-    t = texture_lookup(uv0, uv1, uv2, s, glm::vec2(16));
-    CHECK(t.lod == 0.0f);
-    // Anisotropic footprint: the longer step decides.
+    // A footprint along y alone: y is the longer axis.
     s.ddx = {0, 0, 0};
     s.ddy = {-1.0f / 8, 0, 1.0f / 8};
     t = texture_lookup(uv0, uv1, uv2, s, glm::vec2(256));
-    CHECK(t.lod == Approx(5.0f));  // 256 / 8 = 32 texels
+    CHECK(t.major == Approx(32.0f));  // 256 / 8 texels
+    CHECK(t.minor == 0.0f);
+    CHECK(t.major_axis.y == Approx(1.0f / 8));
 }
 
 TEST_CASE("frame inputs: styles per object, animated materials, depth range", "[stages]") {

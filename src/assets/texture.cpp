@@ -284,6 +284,26 @@ glm::vec4 Texture::sample(glm::vec2 uv, float lod) const {
     return fine + (coarse - fine) * t;
 }
 
+glm::vec4 Texture::sample(const TextureFootprint& f) const {
+    const float trilinear_lod = f.major > 1.0f ? std::log2(f.major) : 0.0f;
+    if (sampler.max_anisotropy <= 1 || !(f.major > 1.0f) || !(f.major > f.minor))
+        return sample(f.uv, trilinear_lod);
+    const float ratio = f.minor > 0.0f ? std::ceil(f.major / f.minor) : 0.0f;
+    const int probes = ratio > 0.0f && ratio < static_cast<float>(sampler.max_anisotropy)
+                           ? static_cast<int>(ratio)
+                           : sampler.max_anisotropy;
+    if (probes <= 1) return sample(f.uv, trilinear_lod);
+    const float n = static_cast<float>(probes);
+    const float width = std::max(f.major / n, f.minor);
+    const float lod = width > 1.0f ? std::log2(width) : 0.0f;
+    glm::vec4 sum(0.0f);
+    for (int i = 0; i < probes; ++i) {
+        const float along = (static_cast<float>(i) + 0.5f) / n - 0.5f;
+        sum += sample(f.uv + f.major_axis * along, lod);
+    }
+    return sum * (1.0f / n);
+}
+
 UvTransform UvTransform::from_trs(glm::dvec2 offset, double rotation, glm::dvec2 scale) {
     const double c = std::cos(rotation), s = std::sin(rotation);
     UvTransform t;

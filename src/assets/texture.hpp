@@ -35,6 +35,22 @@ struct Sampler {
     Filter min = Filter::linear;  // within a level, when minifying
     bool mipmaps = true;          // minifying reads the mip chain
     Filter mip = Filter::linear;  // between two levels of the chain
+    // A footprint longer one way than the other (a surface seen at a
+    // slant) is read by up to this many lookups along its longer axis, at
+    // the level of its shorter one, as GPUs' anisotropic filtering does
+    // (EXT_texture_filter_anisotropic); 1 reads it by its longer axis alone
+    // (trilinear), which blurs it.
+    int max_anisotropy = 16;
+};
+
+// A pixel's footprint in a texture: where its centre falls, and its steps
+// along the two screen axes turned into the texture, as the lengths of the
+// longer and the shorter (in texels) and the longer one as a step of
+// texture coordinates (shade/texture_lod.hpp computes it).
+struct TextureFootprint {
+    glm::vec2 uv;
+    glm::vec2 major_axis;  // texture coordinates per pixel along the longer step
+    float major = 0.0f, minor = 0.0f;
 };
 
 // One level: exactly one of the two vectors holds its width x height texels,
@@ -108,6 +124,13 @@ struct Texture {
     // step covers. 0 or less magnifies level 0; above it minifies, by
     // default trilinearly, each step up halving the resolution.
     glm::vec4 sample(glm::vec2 uv, float lod) const;
+
+    // Lookup of a pixel's footprint as the sampler says. With
+    // max_anisotropy 1, or a footprint no longer than wide, it is
+    // sample(uv, log2 major); else N = min(ceil(major / minor),
+    // max_anisotropy) lookups at level log2(max(major / N, minor)), spread
+    // evenly along the longer axis, averaged.
+    glm::vec4 sample(const TextureFootprint& footprint) const;
 
   private:
     // Level 0 given; the mipmaps are added here.

@@ -61,10 +61,10 @@ glm::vec3 normal_from_map(const World& world, const TransformedVertices& vertice
                           const glm::vec3& front) {
     const glm::vec4 tangent = interpolated_tangent(world, vertices, pixel);
     const std::array<glm::vec2, 3> uv = world.corner_uvs(pixel.triangle, slot);
-    const TextureLookup t = texture_lookup(uv[0], uv[1], uv[2], pixel,
-                                           glm::vec2(slot.texture->width, slot.texture->height));
+    const TextureFootprint footprint = texture_lookup(
+        uv[0], uv[1], uv[2], pixel, glm::vec2(slot.texture->width, slot.texture->height));
     const glm::vec3 texel =
-        texel_in_mesh_frame(glm::vec3(slot.texture->sample(t.uv, t.lod)), slot.transform);
+        texel_in_mesh_frame(glm::vec3(slot.texture->sample(footprint)), slot.transform);
     return mapped_normal(front, tangent, pixel.back_facing, texel, scale);
 }
 

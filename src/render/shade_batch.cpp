@@ -347,7 +347,7 @@ struct TextureLookups {
                 texture_lookups(corner_uv_lanes(in.world, b, *slot, mine), footprint,
                                 glm::vec2(texture.width, texture.height));
             for (int i = 0; i < b.count; ++i)
-                if ((mine >> i) & 1) use(i, texture.sample(glm::vec2(t.u[i], t.v[i]), t.lod[i]));
+                if ((mine >> i) & 1) use(i, texture.sample(t.at(i)));
             todo &= ~mine;
         }
     }

@@ -64,8 +64,8 @@ void resolve_physical_terms(const MaterialDesc& desc, TextureFiles& textures, Te
     }
 }
 
-Material resolve_material(const Material& base, const MaterialDesc& desc, TextureFiles& textures,
-                          TextureBudget& budget) {
+Material resolve_material(const Material& base, const MaterialDesc& desc, int max_anisotropy,
+                          TextureFiles& textures, TextureBudget& budget) {
     Material m = base;
     // Animated values start at their first key; frames update them.
     if (desc.color) m.color = desc.color->value;
@@ -84,14 +84,15 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, Textur
     // uv_scale multiplies the coordinates the file's mapping gives, and
     // wrap replaces its samplers', for every map alike: the file's
     // specular and clearcoat maps too, or they would slide off the others.
+    // The output's texture filter applies to every map too.
     for (TextureSlot* slot : m.texture_slots()) {
         if (!*slot) continue;
         if (desc.uv_scale) slot->transform = slot->transform.scaled(glm::dvec2(*desc.uv_scale));
-        if (desc.wrap) {
-            auto copy = std::make_shared<Texture>(*slot->texture);
-            copy->sampler.wrap_s = copy->sampler.wrap_t = *desc.wrap;
-            slot->texture = copy;
-        }
+        if (!desc.wrap && slot->texture->sampler.max_anisotropy == max_anisotropy) continue;
+        auto copy = std::make_shared<Texture>(*slot->texture);
+        if (desc.wrap) copy->sampler.wrap_s = copy->sampler.wrap_t = *desc.wrap;
+        copy->sampler.max_anisotropy = max_anisotropy;
+        slot->texture = copy;
     }
     return m;
 }
@@ -437,7 +438,9 @@ World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMes
 
         const uint32_t material_base = static_cast<uint32_t>(world.materials.size());
         for (const Material& m : mesh->materials) {
-            world.materials.push_back(resolve_material(m, obj.material, textures, texture_budget));
+            world.materials.push_back(resolve_material(m, obj.material,
+                                                       max_anisotropy(scene.output.texture_filter),
+                                                       textures, texture_budget));
             world.material_object.push_back(o);
         }
         warn_unlit_physical_terms(scene, o,

@@ -43,6 +43,16 @@ struct ExrCompressionChoice {
     ExrCompression of(Pass p) const { return per_pass[static_cast<size_t>(p)].value_or(all); }
 };
 
+// How material textures are read (`output.texture_filter`): by the
+// pixel's footprint with up to 16 lookups along its longer axis, or
+// trilinearly by its longer axis alone (faster, blurred at a slant).
+enum class TextureFilter { anisotropic, trilinear };
+
+// The Sampler::max_anisotropy a filter gives every material texture.
+constexpr int max_anisotropy(TextureFilter filter) {
+    return filter == TextureFilter::anisotropic ? 16 : 1;
+}
+
 struct OutputDesc {
     int width = 1280;
     int height = 720;
@@ -69,7 +79,8 @@ struct OutputDesc {
         return k;
     }
     DisplayTransform display;  // exposure and tone curve: PNG, video, sheets (not EXR)
-    int png_compression = 1;   // zlib level 0..9; 1 is fast, 9 small
+    TextureFilter texture_filter = TextureFilter::anisotropic;
+    int png_compression = 1;  // zlib level 0..9; 1 is fast, 9 small
     ExrCompressionChoice exr_compression;
     // File names relative to the output folder (docs/output-naming.md);
     // unset: {scene}/{pass}.{frame}.{ext}, with {camera}/ after {scene} when

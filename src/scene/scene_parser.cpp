@@ -97,7 +97,7 @@ OutputDesc parse_output(const Field& f) {
     out.where = f.where();
     f.check_keys({"size", "frames", "fps", "passes", "formats", "background", "samples",
                   "png_compression", "depth_range", "path", "normals", "exr", "exposure", "tonemap",
-                  "exr_compression"});
+                  "exr_compression", "texture_filter"});
     if (f.has("path")) {
         out.path = f["path"].text();
         out.path_at = f["path"].where();
@@ -126,6 +126,10 @@ OutputDesc parse_output(const Field& f) {
         for (auto& fmt : formats) (fmt == "png" ? out.write_png : out.write_exr) = true;
     }
     check_pass_formats(f, out);
+    if (f.has("texture_filter"))
+        out.texture_filter = f["texture_filter"].choice({"anisotropic", "trilinear"}) == "trilinear"
+                                 ? TextureFilter::trilinear
+                                 : TextureFilter::anisotropic;
     if (f.has("normals"))
         out.normals_in_camera_space = f["normals"].choice({"world", "camera"}) == "camera";
     if (f.has("exr"))
