@@ -102,20 +102,20 @@ TEST_CASE("a required glTF extension facet lacks is an error that names it, a us
     TempDir dir("gltf-ext");
     Gltf g;
     g.one_node_scene({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
-    g.doc["extensionsUsed"] = {"KHR_materials_variants", "KHR_texture_basisu",
+    g.doc["extensionsUsed"] = {"KHR_animation_pointer", "KHR_texture_basisu",
                                "KHR_lights_punctual"};
     const facet::Mesh mesh = facet::load_gltf(g.write(dir.file("used.gltf")));
     // The lights are read; KHR_texture_basisu loses nothing where no
     // texture has a KTX2 image (tests/test_gltf_images.cpp has those).
     REQUIRE(mesh.warnings.size() == 1);
     CHECK_THAT(mesh.warnings[0].describe(),
-               Contains("uses the glTF extension KHR_materials_variants, which facet ignores: "
-                        "only the default material of each part is used"));
+               Contains("uses the glTF extension KHR_animation_pointer, which facet ignores: "
+                        "its animations of materials, lights and cameras do not play"));
 
-    g.doc["extensionsRequired"] = {"KHR_materials_variants"};
+    g.doc["extensionsRequired"] = {"KHR_animation_pointer"};
     const std::string required = g.write(dir.file("required.gltf"));
     require_input_error([&] { facet::load_gltf(required); },
-                        "required.gltf: requires the glTF extension KHR_materials_variants, which "
+                        "required.gltf: requires the glTF extension KHR_animation_pointer, which "
                         "facet does not support");
 
     // KHR_mesh_quantization and KHR_texture_transform are read: no error.
@@ -132,8 +132,8 @@ TEST_CASE("a .glb that needs an unsupported extension names it, not a buffer err
     TempDir dir("gltf-ext");
     Gltf g;
     g.one_node_scene({{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}});
-    g.doc["extensionsUsed"] = {"KHR_materials_variants"};
-    g.doc["extensionsRequired"] = {"KHR_materials_variants"};
+    g.doc["extensionsUsed"] = {"KHR_animation_pointer"};
+    g.doc["extensionsRequired"] = {"KHR_animation_pointer"};
     json doc = g.doc;
     doc["buffers"] = {{{"byteLength", g.bin.size()}}, {{"byteLength", 4096}}};
     doc["bufferViews"][0]["buffer"] = 1;
@@ -156,5 +156,5 @@ TEST_CASE("a .glb that needs an unsupported extension names it, not a buffer err
     glb.insert(glb.end(), bin.begin(), bin.end());
     const std::string path = write_bytes(dir.file("packed.glb"), glb);
     require_input_error([&] { facet::load_gltf(path); },
-                        "packed.glb: requires the glTF extension KHR_materials_variants");
+                        "packed.glb: requires the glTF extension KHR_animation_pointer");
 }

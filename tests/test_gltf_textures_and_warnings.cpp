@@ -197,12 +197,12 @@ TEST_CASE(
     g.doc["materials"] = {{{"name", "used"}}, {{"name", "unused"}}};
     g.one_node_scene(
         {{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}, {"material", 0}});
-    g.doc["extensionsUsed"] = {"KHR_materials_variants", "KHR_materials_dispersion",
+    g.doc["extensionsUsed"] = {"KHR_animation_pointer", "KHR_materials_dispersion",
                                "EXT_texture_webp"};
-    g.doc["extensionsRequired"] = {"KHR_materials_variants"};
+    g.doc["extensionsRequired"] = {"KHR_animation_pointer"};
     const std::string file = g.write(dir.file("needs.gltf"));
     require_input_error([&] { load_gltf(file); },
-                        "requires the glTF extension KHR_materials_variants");
+                        "requires the glTF extension KHR_animation_pointer");
     const RunResult render =
         run_facet("render '" + file + "' -f 1 --size 32x24 -o '" + dir.file("out") + "'");
     CHECK(render.exit_code == 2);
@@ -215,19 +215,19 @@ TEST_CASE(
     const json j = json::parse(info.output);
     CHECK(j["renders"] == false);
     CHECK_THAT(j["render_errors"].dump(),
-               Contains("requires the glTF extension KHR_materials_variants"));
+               Contains("requires the glTF extension KHR_animation_pointer"));
     CHECK(j["triangles"] == 1);
     CHECK(j["extensions"]["used"] ==
-          json::array({"KHR_materials_variants", "KHR_materials_dispersion", "EXT_texture_webp"}));
-    CHECK(j["extensions"]["required"] == json::array({"KHR_materials_variants"}));
+          json::array({"KHR_animation_pointer", "KHR_materials_dispersion", "EXT_texture_webp"}));
+    CHECK(j["extensions"]["required"] == json::array({"KHR_animation_pointer"}));
     CHECK(j["extensions"]["ignored"] ==
-          json::array({"KHR_materials_variants", "KHR_materials_dispersion"}));
+          json::array({"KHR_animation_pointer", "KHR_materials_dispersion"}));
     // Only the material a part uses; no unused "default".
     REQUIRE(j["materials"].size() == 1);
     CHECK(j["materials"][0]["name"] == "used");
     const RunResult text = run_facet("info '" + file + "'");
     CHECK(text.exit_code == 2);
-    CHECK_THAT(text.output, Contains("not read KHR_materials_variants, KHR_materials_dispersion") &&
+    CHECK_THAT(text.output, Contains("not read KHR_animation_pointer, KHR_materials_dispersion") &&
                                 Contains(refusal));
 }
 

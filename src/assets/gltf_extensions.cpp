@@ -38,6 +38,8 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"EXT_texture_webp", "WebP textures, decoded by libwebp"},
         {"EXT_texture_avif", "AVIF textures, decoded by libavif"},
         {"EXT_mesh_gpu_instancing", "copies of a mesh, each with its own transform"},
+        {"KHR_materials_variants",
+         "a product's colourways, listed by `facet info` and chosen by `variant:` or --variant"},
     };
     return supported;
 }
@@ -46,7 +48,7 @@ const std::map<std::string, std::string>& supported_extensions() {
 std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
-        {"KHR_materials_variants", "only the default material of each part is used"},
+        {"KHR_animation_pointer", "its animations of materials, lights and cameras do not play"},
         {"KHR_materials_transmission",
          "light through thin glass and plastic is not drawn: they look opaque"},
         {"KHR_materials_volume", "the thickness and tint of transmitting volumes are lost"},

@@ -39,8 +39,13 @@ class FieldTypes {
                 object_if_present(primitive, "attributes", p);
                 index_if_present(primitive, "indices", p);
                 index_if_present(primitive, "material", p);
+                if (const json* extensions = object_if_present(primitive, "extensions", p))
+                    if (const json* variants = object_if_present(
+                            *extensions, "KHR_materials_variants", p + ".extensions"))
+                        variant_mappings(*variants, p + ".extensions.KHR_materials_variants");
             });
         });
+        variant_names(doc);
         for_each_item(doc, "materials", "", [&](const json& material, const std::string& at) {
             if (const json* pbr = object_if_present(material, "pbrMetallicRoughness", at)) {
                 const std::string p = at + ".pbrMetallicRoughness";
@@ -144,6 +149,34 @@ class FieldTypes {
             if (!p->contains("bufferView")) wrong(at + "." + part + ".bufferView", "present");
             index_if_present(*p, "bufferView", at + "." + part);
         }
+    }
+
+    // KHR_materials_variants at the file's root: a list of variants, each
+    // with a name.
+    void variant_names(const json& doc) {
+        const auto extensions = doc.find("extensions");
+        if (extensions == doc.end()) return;
+        if (!extensions->is_object()) wrong("extensions", "an object");
+        const json* root = object_if_present(*extensions, "KHR_materials_variants", "extensions");
+        if (!root) return;
+        const std::string at = "extensions.KHR_materials_variants";
+        if (!root->contains("variants")) wrong(at + ".variants", "present");
+        for_each_item(*root, "variants", at, [&](const json& variant, const std::string& v) {
+            const auto name = variant.find("name");
+            if (name == variant.end() || !name->is_string()) wrong(v + ".name", "a string");
+        });
+    }
+
+    // A primitive's KHR_materials_variants: mappings, each of a material to
+    // a list of variants.
+    void variant_mappings(const json& extension, const std::string& at) {
+        if (!extension.contains("mappings")) wrong(at + ".mappings", "present");
+        for_each_item(extension, "mappings", at, [&](const json& mapping, const std::string& m) {
+            for (const char* key : {"material", "variants"})
+                if (!mapping.contains(key)) wrong(m + "." + key, "present");
+            index_if_present(mapping, "material", m);
+            index_list_if_present(mapping, "variants", m);
+        });
     }
 
   private:

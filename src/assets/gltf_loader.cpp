@@ -32,6 +32,7 @@
 #include "assets/gltf_pose.hpp"
 #include "assets/gltf_primitives.hpp"
 #include "assets/gltf_rig_loader.hpp"
+#include "assets/gltf_variants.hpp"
 #include "assets/mesh.hpp"
 #include "assets/mesh_format.hpp"
 #include "core/error.hpp"
@@ -574,6 +575,7 @@ Mesh load_gltf(const MeshFile& file, const AssetContext& context) {
     }
     mesh.materials = gltf_detail::read_materials(model, path, read.unread, context.textures,
                                                  basisu_required, mesh.warnings);
+    mesh.variants = gltf_detail::read_variant_names(model, path, &mesh.warnings);
     // Threads for the normals of a big file's primitives; a small file's
     // would cost more to start than they save.
     constexpr size_t kParallelBytes = size_t(4) << 20;

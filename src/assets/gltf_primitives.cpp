@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "assets/gltf_variants.hpp"
 #include "assets/tangent_frames.hpp"
 
 namespace facet::gltf_detail {
@@ -218,6 +219,7 @@ std::optional<MeshSpacePrimitive> read_primitive(const tinygltf::Model& model,
             bad(path, what + " refers to missing material " + std::to_string(prim.material));
         p.material = static_cast<uint32_t>(prim.material);
     }
+    p.variant_materials = read_variant_materials(model, prim, p.material, path, what);
     p.indices = read_triangles(model, prim, mode, count, path, what);
     if (p.indices.empty()) return std::nullopt;
     return p;
@@ -228,6 +230,7 @@ MeshPart place_primitive(const MeshSpacePrimitive& primitive, const glm::mat4& w
                          std::vector<uint32_t>* source_vertex, ThreadPool* pool) {
     MeshPart part;
     part.material = primitive.material;
+    part.variant_materials = primitive.variant_materials;
     part.positions.reserve(primitive.positions.size());
     for (const glm::vec3& p : primitive.positions)
         part.positions.push_back(glm::vec3(world * glm::vec4(p, 1)));

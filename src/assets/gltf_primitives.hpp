@@ -24,10 +24,11 @@ struct MeshSpacePrimitive {
     // +1 or -1; empty when the file has none, or has no normals (§3.7.2.1:
     // its tangents are then ignored).
     std::vector<glm::vec4> tangents;
-    std::vector<glm::vec2> uvs, uvs1;  // TEXCOORD_0 and TEXCOORD_1, or empty
-    std::vector<glm::vec3> colors;     // COLOR_0's RGB, or empty
-    std::vector<uint32_t> indices;     // a triangle list
-    uint32_t material = 0;             // the file's index, or the default material
+    std::vector<glm::vec2> uvs, uvs1;         // TEXCOORD_0 and TEXCOORD_1, or empty
+    std::vector<glm::vec3> colors;            // COLOR_0's RGB, or empty
+    std::vector<uint32_t> indices;            // a triangle list
+    uint32_t material = 0;                    // the file's index, or the default material
+    std::vector<uint32_t> variant_materials;  // as MeshPart's (KHR_materials_variants)
 };
 
 // The primitive's attributes, checked; nullopt (with a warning) for points,

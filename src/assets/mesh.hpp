@@ -207,6 +207,10 @@ struct MeshPart {
         colors;  // one per position (linear RGB, multiplies the material's), or empty
     std::vector<uint32_t> indices;  // three per triangle
     uint32_t material = 0;
+    // KHR_materials_variants: empty, or one per Mesh::variants, the material
+    // the part is drawn in under that variant (`material` where the file
+    // maps none to it).
+    std::vector<uint32_t> variant_materials;
     size_t triangle_count() const { return indices.size() / 3; }
 };
 
@@ -254,6 +258,9 @@ struct Mesh {
     std::shared_ptr<const MeshRig> rig;
     std::vector<GltfCamera> cameras;  // a glTF file's, for `facet info`
     std::vector<GltfLight> lights;    // a glTF file's KHR_lights_punctual lights
+    // A glTF file's KHR_materials_variants, in its order: the names of a
+    // product's colourways, which MeshPart::variant_materials map.
+    std::vector<std::string> variants;
     // A glTF file's extension lists, and those of them facet does not read.
     struct Extensions {
         std::vector<std::string> used, required, ignored;
@@ -361,5 +368,12 @@ inline uint64_t planned_part_bytes(uint64_t vertices, uint64_t indices) {
 // Checks indices against vertex counts and drops degenerate index triples;
 // throws if an index is out of range.
 void validate_part(const MeshPart& part, const std::string& source);
+
+// `mesh` with each part in its material under the variant named `variant`
+// (KHR_materials_variants): the mesh itself when it declares no variant of
+// that name (its parts keep their default materials, as the specification
+// says) or when the variant changes no part's material, else a copy.
+std::shared_ptr<const Mesh> with_variant(std::shared_ptr<const Mesh> mesh,
+                                         const std::string& variant);
 
 }  // namespace facet

@@ -347,6 +347,23 @@ void validate_part(const MeshPart& part, const std::string& source) {
     }
 }
 
+std::shared_ptr<const Mesh> with_variant(std::shared_ptr<const Mesh> mesh,
+                                         const std::string& variant) {
+    const auto named = std::find(mesh->variants.begin(), mesh->variants.end(), variant);
+    if (named == mesh->variants.end()) return mesh;
+    const size_t index = static_cast<size_t>(named - mesh->variants.begin());
+    auto drawn = [&](const MeshPart& part) {
+        return index < part.variant_materials.size() ? part.variant_materials[index]
+                                                     : part.material;
+    };
+    if (std::all_of(mesh->parts.begin(), mesh->parts.end(),
+                    [&](const MeshPart& part) { return drawn(part) == part.material; }))
+        return mesh;
+    auto chosen = std::make_shared<Mesh>(*mesh);
+    for (MeshPart& part : chosen->parts) part.material = drawn(part);
+    return chosen;
+}
+
 namespace {
 
 // The loader the file's format calls for.

@@ -80,6 +80,9 @@ SceneOptions scene_options(const RenderArgs& args) {
     if (args.allow_asset_paths_outside)
         options.overrides.push_back(
             {"assets.allow_paths_outside", "true", "command line --allow-asset-paths-outside"});
+    if (!args.variant.empty())
+        options.overrides.push_back(
+            {"variant", yaml_quoted(args.variant), "command line --variant " + args.variant});
     for (const auto& d : args.defines) options.overrides.push_back(parse_define(d));
     return options;
 }
@@ -104,15 +107,29 @@ void refuse_warnings(bool strict, const Warnings& warnings) {
 World check_render_inputs(const RenderCheck& check) {
     Warnings warnings = check.scene.warnings;
     warnings.insert(warnings.end(), check.extra.begin(), check.extra.end());
-    // What was found so far is reported even when a later check fails.
-    if (check.collected) *check.collected = warnings;
+    // What earlier checks of the command collected (other variants' runs)
+    // is said once; what this one found so far is kept even when a later
+    // step fails.
+    Warnings said_before;
+    if (check.collected) said_before = *check.collected;
+    auto is_new = [&](const Warning& w) {
+        return std::none_of(said_before.begin(), said_before.end(),
+                            [&](const Warning& s) { return s.describe() == w.describe(); });
+    };
+    auto collect = [&] {
+        if (!check.collected) return;
+        *check.collected = said_before;
+        std::copy_if(warnings.begin(), warnings.end(), std::back_inserter(*check.collected),
+                     is_new);
+    };
+    collect();
     check_outputs(check.scene, check.options);  // before the slow part: loading meshes
     World world = build_world(check.scene, check.options.threads, check.model_mesh);
     warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
-    if (check.collected) *check.collected = warnings;
+    collect();
     if (check.print)
         for (const Warning& w : warnings)
-            std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
+            if (is_new(w)) std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
     refuse_warnings(check.args.strict, warnings);
     const unsigned threads = check.options.threads == 0 ? available_cores() : check.options.threads;
     check_render_memory(check.scene, world, threads);
@@ -121,12 +138,19 @@ World check_render_inputs(const RenderCheck& check) {
 
 namespace {
 
-int dry_run(const RenderArgs& args, const SceneDesc& scene, const RenderOptions& options) {
-    const std::vector<std::string> files = planned_files(scene, options);
-    for (const std::string& file : files) std::printf("%s\n", file.c_str());
+int dry_run(const RenderArgs& args, const std::vector<SceneDesc>& runs,
+            const RenderOptions& options) {
+    size_t images = 0;  // files but the manifests
+    for (const SceneDesc& run : runs) {
+        const std::vector<std::string> files = planned_files(run, options);
+        for (const std::string& file : files) std::printf("%s\n", file.c_str());
+        images += files.size() - 1;
+    }
+    const std::string manifests =
+        runs.size() == 1 ? "the manifest" : count_of(runs.size(), "manifest", "manifests");
     if (!args.quiet)
-        std::fprintf(stderr, "dry run: %s and the manifest would be written; nothing was\n",
-                     count_of(files.size() - 1, "file", "files").c_str());
+        std::fprintf(stderr, "dry run: %s and %s would be written; nothing was\n",
+                     count_of(images, "file", "files").c_str(), manifests.c_str());
     return 0;
 }
 
@@ -225,12 +249,49 @@ int compare_with_reference(const RenderArgs& args, const SceneDesc& scene,
     return compare_render_output(comparison, thresholds, result.output_dir, rendered);
 }
 
+// Refuses what takes one run's images when the run is one per variant.
+void check_single_run(const RenderArgs& args, bool compare, size_t runs) {
+    if (runs < 2 || (!compare && args.video.empty())) return;
+    fail_input(command_line(compare ? "--reference" : "--video"), "",
+               "takes one run's images, and " + std::to_string(runs) +
+                   " variants each render their own: give --variant NAME");
+}
+
+// One run of the command (one variant's, when there are several): its
+// inputs checked, its frames rendered and written. Its warnings are added
+// to `said`, and those there already are not printed again; `last`: the
+// meshes read for it are let go.
+RenderResult render_run(const RenderArgs& args, const SceneDesc& scene, RenderOptions options,
+                        LoadedMeshes& meshes, const Warnings& extra, Warnings& said, bool last) {
+    const World world =
+        check_render_inputs({args, scene, options, &meshes, extra, !args.quiet, &said});
+    if (last) meshes.clear();  // the world holds what it uses
+    ProgressReporter progress(stderr, args.quiet);
+    const std::string what =
+        "'" + scene.name + "'" + (scene.variant.empty() ? "" : " (" + scene.variant + ")");
+    options.on_plan = [&](size_t to_render, size_t skipped) {
+        if (skipped > 0 && !args.quiet)
+            std::fprintf(stderr, "facet: %s already written (files match their recorded hashes)\n",
+                         count_of(skipped, "image is", "images are").c_str());
+        progress.start(to_render, what + " to " + args.out);
+    };
+    RenderResult result = render_scene(
+        scene, world, options, [&](const FrameProgress& p) { progress.frame_done(p); },
+        [&](const FrameWritten& w) { progress.frame_written(w); });
+    progress.finish();
+    if (!args.quiet && !args.video_only)
+        std::printf("wrote %s to %s (manifest: %s)\n",
+                    count_of(result.files_written, "file", "files").c_str(),
+                    result.output_dir.c_str(), result.manifest_path.c_str());
+    return result;
+}
+
 int render_command(const RenderArgs& args) {
     // Installed first, so an interrupt while loading also ends cleanly.
     catch_interrupts();
     SceneOptions scene_opts = scene_options(args);
-    LoadedMeshes model_mesh;  // a model's turntable: the mesh its survey read
-    SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
+    LoadedMeshes meshes;  // a model's turntable: the mesh its survey read
+    SceneDesc scene = load_scene_or_model(args, scene_opts, &meshes);
     std::vector<int> frames = resolve_frames(args.frames, scene.output);
     const bool compare = !args.comparison.ref.empty();
     Warnings own_warnings;  // this command's, beside the scene's and the world's
@@ -256,31 +317,22 @@ int render_command(const RenderArgs& args) {
     RenderOptions options = render_options(args, scene_opts, frames, part);
     check_video_arguments(args, scene, compare, frames.empty() ? scene.output.frames : frames,
                           own_warnings);
+    const std::vector<SceneDesc> runs = variant_runs(scene, args.threads, meshes);
+    options.several_variants = runs.size() > 1;
+    check_single_run(args, compare, runs.size());
     // --video-only: the frames go to a hidden folder beside the movie,
     // removed when the movie is written (or the run fails).
     const TemporaryFolder frames_folder(hidden_frames_folder(args));
     if (args.video_only) options.out_dir = frames_folder.path;
-    if (args.dry_run) return dry_run(args, scene, options);
-    World world = check_render_inputs(
-        {args, scene, options, &model_mesh, std::move(own_warnings), !args.quiet});
-    model_mesh.clear();  // the world holds what it uses
-    ProgressReporter progress(stderr, args.quiet);
-    options.on_plan = [&](size_t to_render, size_t skipped) {
-        if (skipped > 0 && !args.quiet)
-            std::fprintf(stderr, "facet: %s already written (files match their recorded hashes)\n",
-                         count_of(skipped, "image is", "images are").c_str());
-        progress.start(to_render, "'" + scene.name + "' to " + args.out);
-    };
-    RenderResult result = render_scene(
-        scene, world, options, [&](const FrameProgress& p) { progress.frame_done(p); },
-        [&](const FrameWritten& w) { progress.frame_written(w); });
-    progress.finish();
-    if (!args.quiet && !args.video_only)
-        std::printf("wrote %s to %s (manifest: %s)\n",
-                    count_of(result.files_written, "file", "files").c_str(),
-                    result.output_dir.c_str(), result.manifest_path.c_str());
-    if (!args.video.empty()) make_movie(args, scene, options, result, frames);
-    if (compare) return compare_with_reference(args, scene, options, thresholds, result, frames);
+    if (args.dry_run) return dry_run(args, runs, options);
+    Warnings said;
+    RenderResult result;
+    for (size_t r = 0; r < runs.size(); ++r)
+        result =
+            render_run(args, runs[r], options, meshes, own_warnings, said, r + 1 == runs.size());
+    if (!args.video.empty()) make_movie(args, runs.front(), options, result, frames);
+    if (compare)
+        return compare_with_reference(args, runs.front(), options, thresholds, result, frames);
     return 0;
 }
 
@@ -293,20 +345,22 @@ void print_validation(const SceneDesc& scene, const World& world, const RenderOp
             : std::to_string(frames.front()) +
                   (frames.size() > 1 ? ".." + std::to_string(frames.back()) : "") +
                   " of the scene's " + scene.output.frames_text;
-    std::printf("%s: ok: %s, %s, %s, style '%s' (%s), %dx%d, frames %s (%s)\n", scene.path.c_str(),
-                count_of(scene.objects.size(), "object", "objects").c_str(),
+    const std::string variant = scene.variant.empty() ? "" : ", variant '" + scene.variant + "'";
+    std::printf("%s: ok: %s, %s, %s, style '%s' (%s)%s, %dx%d, frames %s (%s)\n",
+                scene.path.c_str(), count_of(scene.objects.size(), "object", "objects").c_str(),
                 count_of(world.triangle_count(), "triangle", "triangles").c_str(),
                 count_of(scene.lights.size(), "light", "lights").c_str(), scene.style.name.c_str(),
-                shading_model_name(scene.style.shading), scene.output.width, scene.output.height,
-                asked.c_str(), count_of(frames.size(), "frame", "frames").c_str());
+                shading_model_name(scene.style.shading), variant.c_str(), scene.output.width,
+                scene.output.height, asked.c_str(),
+                count_of(frames.size(), "frame", "frames").c_str());
 }
 
 int validate_command(const RenderArgs& args) {
     Warnings warnings;
     try {
         SceneOptions scene_opts = scene_options(args);
-        LoadedMeshes model_mesh;
-        SceneDesc scene = load_scene_or_model(args, scene_opts, &model_mesh);
+        LoadedMeshes meshes;
+        SceneDesc scene = load_scene_or_model(args, scene_opts, &meshes);
         RenderOptions options;
         options.frames = resolve_frames(args.frames, scene.output);
         options.cameras = camera_names(args.cameras);
@@ -316,21 +370,26 @@ int validate_command(const RenderArgs& args) {
         // validating a scene must not depend on what some earlier run left in out/.
         options.overwrite = !args.output_given;
         options.threads = args.threads;
-        const World world = check_render_inputs(
-            {args, scene, options, &model_mesh, {}, !args.json && !args.quiet, &warnings});
+        const std::vector<SceneDesc> runs = variant_runs(scene, args.threads, meshes);
+        options.several_variants = runs.size() > 1;
+        ValidateFacts facts;
+        for (const SceneDesc& run : runs) {
+            const World world = check_render_inputs(
+                {args, run, options, &meshes, {}, !args.json && !args.quiet, &warnings});
+            if (!run.variant.empty()) facts.variants.push_back(run.variant);
+            facts.triangles = world.triangle_count();
+            if (!args.json && !args.quiet) print_validation(run, world, options);
+        }
         if (args.json) {
-            ValidateFacts facts{scene.path,
-                                scene.style.name,
-                                shading_model_name(scene.style.shading),
-                                scene.objects.size(),
-                                world.triangle_count(),
-                                scene.lights.size(),
-                                scene.output.width,
-                                scene.output.height,
-                                options.frames.empty() ? scene.output.frames : options.frames};
+            facts.scene = scene.path;
+            facts.style = scene.style.name;
+            facts.shading = shading_model_name(scene.style.shading);
+            facts.objects = scene.objects.size();
+            facts.lights = scene.lights.size();
+            facts.width = scene.output.width;
+            facts.height = scene.output.height;
+            facts.frames = options.frames.empty() ? scene.output.frames : options.frames;
             std::printf("%s", validate_json(facts, warnings).c_str());
-        } else if (!args.quiet) {
-            print_validation(scene, world, options);
         }
     } catch (const Error& e) {
         if (!args.json) throw;
@@ -380,6 +439,22 @@ void add_asset_paths_flag(CLI::App* cmd, bool& allow) {
                   "Let meshes name files outside their own folder (trusted assets only)");
 }
 
+void add_variant_option(CLI::App* cmd, std::string& variant) {
+    cmd->add_option_function<std::string>(
+           "--variant",
+           [&variant](const std::string& value) {
+               // An empty value is no choice; taking it as "not given" would
+               // hide a script's missing variable behind the default materials.
+               if (value.empty())
+                   fail_input(command_line("--variant ''"), "",
+                              "expected a variant's name or all, got an empty value");
+               variant = value;
+           },
+           "The models' variant (a glTF colourway, KHR_materials_variants) to draw, or 'all' "
+           "for a run of each into a folder of its own; -D variant=NAME")
+        ->type_name("NAME|all");
+}
+
 void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     cmd->add_option("scene", args.scene, "Scene file (YAML)")->required();
     cmd->add_option("--size", args.size, "Image size WIDTHxHEIGHT, e.g. 1280x720");
@@ -392,6 +467,7 @@ void add_scene_options(CLI::App* cmd, RenderArgs& args) {
     add_frame_options(cmd, args.frames);
     cmd->add_option("--camera", args.cameras,
                     "Camera(s) to render by name, comma-separated, or 'all'");
+    add_variant_option(cmd, args.variant);
     add_quiet_flag(cmd, args.quiet);
     add_asset_paths_flag(cmd, args.allow_asset_paths_outside);
 }

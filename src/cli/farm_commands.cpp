@@ -180,6 +180,7 @@ std::vector<std::string> render_words(const FarmArgs& args, bool absolute_paths)
     std::error_code ec;
     add("--style", fs::is_regular_file(r.style, ec) ? path(r.style) : r.style);
     add("--camera", r.cameras);
+    add("--variant", r.variant);
     for (const std::string& d : r.defines) add("-D", d);
     if (r.threads > 0)
         add("--threads", std::to_string(r.threads));

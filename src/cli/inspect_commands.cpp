@@ -66,6 +66,29 @@ std::vector<const Material*> used_materials(const Mesh& mesh) {
     return out;
 }
 
+// A material of the file, by its index and its name.
+struct NamedMaterial {
+    size_t index;
+    std::string name;
+};
+
+// Each variant of the file with the materials its parts are drawn in under
+// it, in the file's order (by index too: files often give several one name).
+std::vector<std::pair<std::string, std::vector<NamedMaterial>>> variant_materials(
+    const Mesh& file) {
+    std::vector<std::pair<std::string, std::vector<NamedMaterial>>> variants;
+    if (file.variants.empty()) return variants;
+    const auto mesh = std::make_shared<const Mesh>(file);
+    for (const std::string& name : mesh->variants) {
+        const std::shared_ptr<const Mesh> drawn = with_variant(mesh, name);
+        std::vector<NamedMaterial> materials;
+        for (const Material* m : used_materials(*drawn))
+            materials.push_back({static_cast<size_t>(m - drawn->materials.data()), m->name});
+        variants.push_back({name, materials});
+    }
+    return variants;
+}
+
 MeshFacts mesh_facts(const Mesh& mesh) {
     MeshFacts f;
     for (const MeshPart& part : mesh.parts) {
@@ -103,6 +126,13 @@ void print_mesh_json(const std::string& path, const Mesh& mesh) {
                                   {"double_sided", m->double_sided},
                                   {"emissive", {m->emissive.r, m->emissive.g, m->emissive.b}},
                                   {"unlit", m->unlit}});
+    j["variants"] = Json::array();
+    for (const auto& [name, materials] : variant_materials(mesh)) {
+        Json drawn = Json::array();
+        for (const NamedMaterial& m : materials)
+            drawn.push_back({{"index", m.index}, {"name", m.name}});
+        j["variants"].push_back({{"name", name}, {"materials", drawn}});
+    }
     j["extensions"] = {{"used", mesh.extensions.used},
                        {"required", mesh.extensions.required},
                        {"ignored", mesh.extensions.ignored}};
@@ -176,6 +206,15 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
         for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
         return text.empty() ? std::string("none") : text;
     };
+    std::printf("variants:   %zu%s\n", mesh.variants.size(),
+                mesh.variants.empty() ? "" : " (render one with --variant NAME, each with all)");
+    for (const auto& [name, materials] : variant_materials(mesh)) {
+        std::vector<std::string> drawn;
+        for (const NamedMaterial& m : materials)
+            drawn.push_back((m.name.empty() ? "(unnamed)" : m.name) + " (material " +
+                            std::to_string(m.index) + ")");
+        std::printf("  - %s: %s\n", name.c_str(), list(drawn).c_str());
+    }
     if (!mesh.extensions.used.empty() || !mesh.extensions.required.empty()) {
         std::printf("extensions: used %s\n", list(mesh.extensions.used).c_str());
         std::printf("            required %s\n", list(mesh.extensions.required).c_str());
@@ -288,6 +327,7 @@ std::string validate_json(const ValidateFacts& f, const Warnings& warnings) {
               {"lights", f.lights},   {"style", f.style},
               {"shading", f.shading}, {"size", {f.width, f.height}},
               {"frames", f.frames}};
+    if (!f.variants.empty()) j["variants"] = f.variants;
     j["warnings"] = warnings_json(warnings);
     return j.dump(2) + "\n";
 }

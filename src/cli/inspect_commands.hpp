@@ -21,6 +21,7 @@ struct ValidateFacts {
     size_t objects = 0, triangles = 0, lights = 0;
     int width = 0, height = 0;
     std::vector<int> frames;
+    std::vector<std::string> variants;  // checked, one run each; none without `variant:`
 };
 std::string validate_json(const ValidateFacts& facts, const Warnings& warnings);
 std::string validate_error_json(const Error& error, const Warnings& warnings);

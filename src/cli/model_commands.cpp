@@ -149,6 +149,7 @@ CLI::App* add_scene_command(CLI::App& app, SceneFileArgs& args) {
     cmd->add_option("--style", model.style, "Style preset name or file");
     cmd->add_option("--passes", model.passes, "Passes to write, comma-separated");
     cmd->add_option("--formats", model.formats, "File formats: png, exr or png,exr");
+    add_variant_option(cmd, model.variant);
     add_define_option(cmd, model.defines);
     cmd->get_option("-D")->description(
         "Set a value the file has, key.path=value, written in with the option as its comment "

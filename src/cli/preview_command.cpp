@@ -36,6 +36,9 @@ int preview_command(const RenderArgs& args) {
     if (cameras.size() > 1 || args.cameras == "all")
         fail_input(command_line("--camera " + args.cameras), "",
                    "the preview shows one camera at a time (the panel switches): give one name");
+    if (args.variant == kAllVariants)
+        fail_input(command_line("--variant all"), "",
+                   "the preview shows one variant at a time: give one name");
     if (!cameras.empty()) {
         options.camera = cameras.front();
         // A name the scene lacks is refused as render refuses it. A scene

@@ -43,6 +43,7 @@ struct RenderArgs {
     unsigned threads = 0;
     std::string style;
     std::string cameras;  // comma-separated names, or "all"
+    std::string variant;  // --variant NAME|all: the scene key `variant:`
     std::vector<std::string> defines;
     bool quiet = false;
     bool allow_asset_paths_outside = false;
@@ -64,13 +65,16 @@ struct RenderArgs {
 SceneOptions scene_options(const RenderArgs& args);
 
 // The scene and the options that change what is rendered: --size,
-// --passes, --formats, --style, -D, the frame options, --camera, -q,
-// --allow-asset-paths-outside.
+// --passes, --formats, --style, -D, the frame options, --camera,
+// --variant, -q, --allow-asset-paths-outside.
 void add_scene_options(CLI::App* command, RenderArgs& args);
 
 // --camera A,B: the names as given ("all" is one of them, for
 // select_cameras); none when the option was not given.
 std::vector<std::string> camera_names(const std::string& cameras);
+
+// --variant NAME|all: the scene key `variant:` (an empty value is refused).
+void add_variant_option(CLI::App* command, std::string& variant);
 
 // --allow-asset-paths-outside: paths named inside meshes (mtllib, map_Kd,
 // glTF URIs) stay inside the mesh's folder unless this is given
@@ -90,7 +94,9 @@ void refuse_warnings(bool strict, const Warnings& warnings);
 // all call it, so that they refuse the same inputs. The warnings are the
 // scene's, the world's and `extra` (the command's own: a farm task with no
 // chunk, a movie of unevenly spaced frames); they are appended to
-// `collected` when given, printed when `print`, and an error with --strict.
+// `collected` when given (those it holds already, from another variant's
+// run, once: and not printed again), printed when `print`, and an error
+// with --strict.
 struct RenderCheck {
     const RenderArgs& args;
     const SceneDesc& scene;

@@ -48,6 +48,12 @@ struct OutputLayout {
     std::string manifest_dir;
 };
 
+// The fields one of the run's files is named from.
+OutputNameFields file_fields(const SceneDesc& scene, const std::string& camera,
+                             const std::string& pass, int frame, const std::string& ext) {
+    return {scene.name, camera, pass, frame, ext, scene.variant};
+}
+
 struct EncodeJob {
     int frame;
     std::string camera;
@@ -83,6 +89,7 @@ Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
         m.scene_sha256 = scene.sha256;  // of the bytes that were read, not read again
     }
     m.style = scene.style.name;
+    m.variant = scene.variant;
     m.width = scene.output.width;
     m.height = scene.output.height;
     m.fps = scene.output.fps;
@@ -235,7 +242,7 @@ class Encoder {
         auto write = [&](const std::string& pass, const std::string& format,
                          const std::vector<uint8_t>& bytes) {
             const std::string name =
-                expand(layout_.names, {scene_.name, job.camera, pass, job.frame, format});
+                expand(layout_.names, file_fields(scene_, job.camera, pass, job.frame, format));
             const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
             prepare_folder(file.parent_path().string());
             files.write(file.string(), bytes);
@@ -314,11 +321,69 @@ std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std
 
 namespace {
 
+// Whether output.path names {variant}: a run of each variant when the
+// scene chooses none, as {camera} is for cameras.
+bool template_names_variant(const SceneDesc& scene) {
+    return scene.output.path && scene.output.path->find("{variant}") != std::string::npos;
+}
+
+// Every variant, each to name a folder (`at` is where `all` was asked for).
+const std::vector<std::string>& all_variants(const std::vector<std::string>& declared,
+                                             const SourceLocation& at, const std::string& key) {
+    for (const std::string& name : declared)
+        if (const auto problem = line_breaking_character(name))
+            fail_input(at, key,
+                       "the variant '" + text_for_message(name) + "' holds " + *problem +
+                           ", which no folder name may hold; choose the others by name");
+    return declared;
+}
+
+}  // namespace
+
+std::vector<std::string> select_variants(const SceneDesc& scene,
+                                         const std::vector<std::string>& declared) {
+    if (scene.variant.empty()) {
+        if (!template_names_variant(scene)) return {};
+        if (declared.empty())
+            fail_input(scene.output.path_at, "output.path",
+                       "{variant} names a variant, and no model in the scene declares variants "
+                       "(KHR_materials_variants)");
+        return all_variants(declared, scene.output.path_at, "output.path");
+    }
+    check_variant(scene, declared, false);
+    if (scene.variant != kAllVariants) return {scene.variant};
+    return all_variants(declared, scene.variant_at, "variant");
+}
+
+std::vector<SceneDesc> variant_runs(const SceneDesc& scene, unsigned load_threads,
+                                    LoadedMeshes& loaded) {
+    if (scene.variant.empty() && !template_names_variant(scene)) return {scene};
+    std::vector<SceneDesc> runs;
+    for (const std::string& name :
+         select_variants(scene, scene_variants(scene, load_threads, loaded))) {
+        runs.push_back(scene);
+        runs.back().variant = name;
+    }
+    return runs;
+}
+
+namespace {
+
+// The template of a run without output.path: a folder per camera when it
+// renders several, inside a folder per variant when it is one of several
+// variants' runs.
+std::string default_output_template(bool several_cameras, bool several_variants) {
+    if (several_variants)
+        return several_cameras ? kMultiVariantCameraOutputTemplate : kMultiVariantOutputTemplate;
+    return several_cameras ? kMultiCameraOutputTemplate : kDefaultOutputTemplate;
+}
+
 OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cameras,
-                          const std::vector<int>& frames, const std::string& root) {
+                          const std::vector<int>& frames, const std::string& root,
+                          bool several_variants) {
     const OutputDesc& out = scene.output;
     std::string text =
-        out.path.value_or(cameras.size() > 1 ? kMultiCameraOutputTemplate : kDefaultOutputTemplate);
+        out.path.value_or(default_output_template(cameras.size() > 1, several_variants));
     OutputLayout layout;
     layout.root = root;
     layout.template_text = text;
@@ -332,9 +397,22 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
     }
     try {
         layout.names = parse_output_template(text);
-        check_unique_outputs(layout.names, scene.name, camera_names, passes, exts, frames);
+        if (several_variants &&
+            !manifest_directory_names_variant(layout.names, cameras.size() == 1))
+            throw Error(ExitCode::invalid_input,
+                        "output template '" + text +
+                            "': each variant's run has a manifest of its own, so {variant} must "
+                            "name a folder before any other placeholder but {scene}, as in "
+                            "{scene}/{variant}/{pass}.{frame}.{ext}");
+        if (scene.variant.empty() && layout.names.uses(Placeholder::variant))
+            throw Error(ExitCode::invalid_input,
+                        "output template '" + text +
+                            "': {variant} names a variant, and the run draws none (give "
+                            "--variant NAME or all, or `variant:`)");
+        check_unique_outputs(layout.names, scene.name, camera_names, passes, exts, frames,
+                             scene.variant);
         layout.manifest_dir = manifest_directory(
-            layout.names, {scene.name, camera_names.front(), "", 0, ""}, cameras.size() == 1);
+            layout.names, file_fields(scene, camera_names.front(), "", 0, ""), cameras.size() == 1);
     } catch (const Error& e) {
         if (out.path) fail_input(out.path_at, "output.path", e.what());
         throw;
@@ -361,7 +439,8 @@ std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout&
                                      const std::string& camera) {
     std::vector<std::string> names;
     for (const PassFile& file : frame_files(scene.output))
-        names.push_back(expand(layout.names, {scene.name, camera, file.pass, frame, file.format}));
+        names.push_back(
+            expand(layout.names, file_fields(scene, camera, file.pass, frame, file.format)));
     return names;
 }
 
@@ -369,8 +448,8 @@ std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout&
 
 void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout =
-        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
+    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
+                                             options.out_dir, options.several_variants);
     const std::string output_dir =
         (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
     check_manifest_claims(
@@ -381,8 +460,8 @@ std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptio
     check_outputs(scene, options);
     const std::vector<int>& frames = run_frames(scene, options);
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout =
-        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
+    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
+                                             options.out_dir, options.several_variants);
     std::vector<std::string> files;
     for (int frame : frames)
         for (size_t camera : cameras)
@@ -463,8 +542,8 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
                           const std::function<void(const FrameWritten&)>& on_written) {
     const std::vector<int>& frames = run_frames(scene, options);
     const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout =
-        plan_outputs(scene, cameras, named_frames(scene, options), options.out_dir);
+    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
+                                             options.out_dir, options.several_variants);
     RenderResult result;
     result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
     const LedgerRequest request =

@@ -45,6 +45,10 @@ struct RenderOptions {
     // refused (exit code 2) unless this is set; then a new manifest starts.
     bool overwrite = false;
     std::optional<RunPart> part;
+    // The run is one of several, one per variant (variant_runs): without
+    // an output.path its files go to a folder of the variant's name, and an
+    // output.path must name {variant} in its manifest's folder.
+    bool several_variants = false;
     // Images whose files are all on disk with the SHA-256 a manifest or a
     // journal of the same settings records for them are not rendered again.
     bool skip_existing = false;
@@ -81,6 +85,22 @@ struct RenderResult {
 // The indices into scene.cameras that a run renders (see RenderOptions::cameras).
 // Throws facet::Error (invalid_input) for an unknown name.
 std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std::string>& names);
+
+// The variants a run of the scene renders, each a run of its own with a
+// manifest of its own: every one the scene's models declare (`declared`,
+// from scene_variants) for `variant: all`, or when output.path names
+// {variant} and the scene chooses none; the scene's `variant:` alone; none
+// when it chooses none. Throws facet::Error (invalid_input) as
+// check_variant does, and for a variant name that cannot name a folder.
+std::vector<std::string> select_variants(const SceneDesc& scene,
+                                         const std::vector<std::string>& declared);
+
+// The scene as each run renders it: a copy with `variant` set to each of
+// select_variants' names, or the scene itself when the choice is none or
+// one. The scene's mesh files are read into `loaded` (for build_world) to
+// learn their variants when the scene chooses any.
+std::vector<SceneDesc> variant_runs(const SceneDesc& scene, unsigned load_threads,
+                                    LoadedMeshes& loaded);
 
 // Checks the camera choice, the output names (template syntax, two images
 // to one file) and that an existing manifest in the output folder has the

@@ -243,6 +243,7 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         entry = "";
         m.scene = j.at("scene").get<std::string>();
         m.style = j.at("style").get<std::string>();
+        m.variant = j.value("variant", "");
         m.width = whole<int>(j.at("size").at(0), "size");
         m.height = whole<int>(j.at("size").at(1), "size");
         m.output_template = j.value("output_template", "");
@@ -323,6 +324,7 @@ std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
     };
     if (a.scene != b.scene) return differ("scene", a.scene, b.scene);
     if (a.style != b.style) return differ("style", a.style, b.style);
+    if (a.variant != b.variant) return differ("variant", a.variant, b.variant);
     if (a.width != b.width || a.height != b.height)
         return differ("size", std::to_string(a.width) + "x" + std::to_string(a.height),
                       std::to_string(b.width) + "x" + std::to_string(b.height));
@@ -340,11 +342,13 @@ std::string manifest_settings_difference(const Manifest& a, const Manifest& b) {
         return a.model ? "facet's turntable scene changed since the manifest was written"
                        : "the scene file changed since the manifest was written";
     // The overrides as a set: order does not matter, the last value of a key
-    // wins, and settings that change no pixel are left out.
+    // wins, and settings that change no pixel are left out, as is the
+    // variant, compared above as the one drawn (`all` is each in turn).
     auto overrides = [](const Manifest& m) {
         std::map<std::string, std::string> effective;
         for (const ManifestOverride& o : m.overrides)
-            if (o.key != "assets.allow_paths_outside") effective[o.key] = o.value;
+            if (o.key != "assets.allow_paths_outside" && o.key != "variant")
+                effective[o.key] = o.value;
         std::string text;
         for (const auto& [key, value] : effective)
             text += (text.empty() ? "" : " ") + key + "=" + value;
@@ -374,6 +378,7 @@ std::string manifest_json(Manifest manifest, bool indented) {
     j["scene_sha256"] = manifest.scene_sha256;
     if (manifest.model) j["model"] = model_json(*manifest.model);
     j["style"] = manifest.style;
+    if (!manifest.variant.empty()) j["variant"] = manifest.variant;
     j["size"] = {manifest.width, manifest.height};
     j["fps"] = manifest.fps;
     j["display"] = {{"exposure", manifest.display.exposure},

@@ -82,6 +82,9 @@ struct Manifest {
     std::string scene_sha256;
     std::optional<ManifestModel> model;  // set when the scene was built around a model
     std::string style;
+    // The KHR_materials_variants variant the models were drawn in ("" for
+    // their default materials): a run of `variant: all` is one per variant.
+    std::string variant;
     int width = 0, height = 0;
     double fps = 24;           // the scene's, for movies made from the files
     DisplayTransform display;  // the scene's exposure and tone curve, for movies from EXR
@@ -105,8 +108,8 @@ std::string partial_manifest_name(int first, int last);
 bool is_partial_manifest_name(const std::string& file_name);
 
 // What must be equal for two runs to share a manifest: scene (path and
-// content, and a model's content), style, size, output template and overrides (as a set, without
-// ones that change no pixel). "" when they are; else the first
+// content, and a model's content), style, variant, size, output template
+// and overrides (as a set, without ones that change no pixel). "" when they are; else the first
 // difference, e.g. "style: 'toon' there, 'wireframe' now".
 std::string manifest_settings_difference(const Manifest& existing, const Manifest& run);
 

@@ -14,8 +14,8 @@ namespace facet {
 namespace {
 
 constexpr Placeholder kAllPlaceholders[] = {Placeholder::scene, Placeholder::camera,
-                                            Placeholder::pass, Placeholder::frame,
-                                            Placeholder::ext};
+                                            Placeholder::pass,  Placeholder::frame,
+                                            Placeholder::ext,   Placeholder::variant};
 
 // Wider frame numbers than this are not padding but a typo.
 constexpr int kMaxFramePadding = 9;
@@ -153,6 +153,8 @@ const std::string& field_value(Placeholder placeholder, const OutputNameFields& 
             return fields.pass;
         case Placeholder::ext:
             return fields.ext;
+        case Placeholder::variant:
+            return fields.variant;
         case Placeholder::frame:
             break;
     }
@@ -193,7 +195,7 @@ void check_expanded_path(const std::string& path, const std::string& text) {
                                    (slash == std::string::npos ? path.size() : slash) - start);
         if (component.empty() || component == "." || component == "..")
             fail(text, "expands to '" + path + "', which has an empty, '.' or '..' path " +
-                           "component; check the scene, camera and pass names");
+                           "component; check the scene, camera, pass and variant names");
         if (slash == std::string::npos) return;
         start = slash + 1;
     }
@@ -219,6 +221,8 @@ const char* placeholder_name(Placeholder placeholder) {
             return "frame";
         case Placeholder::ext:
             return "ext";
+        case Placeholder::variant:
+            return "variant";
     }
     return "?";
 }
@@ -292,11 +296,12 @@ std::string expand(const OutputTemplate& output_template, const OutputNameFields
 void check_unique_outputs(const OutputTemplate& output_template, const std::string& scene,
                           const std::vector<std::string>& cameras,
                           const std::vector<std::string>& passes,
-                          const std::vector<std::string>& exts, const std::vector<int>& frames) {
+                          const std::vector<std::string>& exts, const std::vector<int>& frames,
+                          const std::string& variant) {
     if (cameras.empty() || passes.empty() || exts.empty() || frames.empty()) return;
     const std::string& text = output_template.text;
 
-    OutputNameFields fixed{scene, cameras.front(), "", 0, ""};
+    OutputNameFields fixed{scene, cameras.front(), "", 0, "", variant};
     std::string manifest_dir = manifest_directory(output_template, fixed, cameras.size() == 1);
     std::string manifest_path =
         manifest_dir.empty() ? kManifestName : manifest_dir + "/" + kManifestName;
@@ -325,8 +330,8 @@ void check_unique_outputs(const OutputTemplate& output_template, const std::stri
     first_writer.reserve(total);
     for (size_t index = 0; index < total; ++index) {
         Combination c = combination_at(index);
-        OutputNameFields fields{scene, cameras[c.camera], passes[c.pass], frames[c.frame],
-                                exts[c.ext]};
+        OutputNameFields fields{scene,           cameras[c.camera], passes[c.pass],
+                                frames[c.frame], exts[c.ext],       variant};
         std::string path = expand(output_template, fields);
         if (path == manifest_path)
             fail(text, "writes '" + path + "' for " + describe_at(c) +
@@ -362,18 +367,42 @@ void check_unique_outputs(const OutputTemplate& output_template, const std::stri
     }
 }
 
-std::string manifest_directory(const OutputTemplate& output_template, const OutputNameFields& fixed,
-                               bool single_camera) {
+namespace {
+
+// The components of manifest_directory's folder, in order.
+std::vector<Component> manifest_components(const OutputTemplate& output_template,
+                                           bool single_camera) {
     std::vector<Component> components = split_components(output_template);
     components.pop_back();  // the file name
-    std::string directory;
+    std::vector<Component> fixed;
     for (const Component& component : components) {
         bool fixed_for_run = std::all_of(component.begin(), component.end(), [&](auto* segment) {
             if (segment->kind == TemplateSegment::Kind::literal) return true;
             if (segment->placeholder == Placeholder::scene) return true;
+            if (segment->placeholder == Placeholder::variant) return true;
             return segment->placeholder == Placeholder::camera && single_camera;
         });
         if (!fixed_for_run) break;
+        fixed.push_back(component);
+    }
+    return fixed;
+}
+
+}  // namespace
+
+bool manifest_directory_names_variant(const OutputTemplate& output_template, bool single_camera) {
+    for (const Component& component : manifest_components(output_template, single_camera))
+        for (const TemplateSegment* segment : component)
+            if (segment->kind == TemplateSegment::Kind::placeholder &&
+                segment->placeholder == Placeholder::variant)
+                return true;
+    return false;
+}
+
+std::string manifest_directory(const OutputTemplate& output_template, const OutputNameFields& fixed,
+                               bool single_camera) {
+    std::string directory;
+    for (const Component& component : manifest_components(output_template, single_camera)) {
         if (!directory.empty()) directory += '/';
         for (const TemplateSegment* segment : component)
             append_segment(directory, *segment, fixed, output_template.text);

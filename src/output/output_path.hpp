@@ -11,11 +11,16 @@ namespace facet {
 inline constexpr const char* kDefaultOutputTemplate = "{scene}/{pass}.{frame}.{ext}";
 // The default when one run renders several cameras: a folder per camera.
 inline constexpr const char* kMultiCameraOutputTemplate = "{scene}/{camera}/{pass}.{frame}.{ext}";
+// The defaults for one of several variants' runs (`variant: all`): a folder
+// per variant, each with its run's manifest, and in it one per camera.
+inline constexpr const char* kMultiVariantOutputTemplate = "{scene}/{variant}/{pass}.{frame}.{ext}";
+inline constexpr const char* kMultiVariantCameraOutputTemplate =
+    "{scene}/{variant}/{camera}/{pass}.{frame}.{ext}";
 
 // Zero padding of {frame} when the template gives no width.
 inline constexpr int kDefaultFramePadding = 4;
 
-enum class Placeholder { scene, camera, pass, frame, ext };
+enum class Placeholder { scene, camera, pass, frame, ext, variant };
 
 // "scene", "camera", ... as written between braces.
 const char* placeholder_name(Placeholder placeholder);
@@ -45,7 +50,8 @@ struct OutputNameFields {
     std::string camera;  // camera name
     std::string pass;    // color, depth, ...
     int frame = 0;
-    std::string ext;  // png, exr
+    std::string ext;      // png, exr
+    std::string variant;  // the run's KHR_materials_variants variant ("" for none)
 };
 
 // Parses and checks a template. Throws facet::Error (invalid_input) naming the
@@ -64,21 +70,28 @@ std::string expand(const OutputTemplate& output_template, const OutputNameFields
 // combinations that expand to the same file, or one that would overwrite
 // manifest.json. Run it before rendering anything. Each combination is
 // expanded once and looked up in a hash set, so long frame lists are cheap.
+// `variant` is the run's, as OutputNameFields::variant.
 void check_unique_outputs(const OutputTemplate& output_template, const std::string& scene,
                           const std::vector<std::string>& cameras,
                           const std::vector<std::string>& passes,
-                          const std::vector<std::string>& exts, const std::vector<int>& frames);
+                          const std::vector<std::string>& exts, const std::vector<int>& frames,
+                          const std::string& variant = "");
 
 // Where manifest.json goes, relative to the output folder ("" is the output
 // folder itself): the leading directory components of the template that hold
-// only literals and {scene}, and {camera} too when `single_camera` says one
-// camera is rendered. Those components are expanded from `fixed` (scene and
-// camera); the file name component never counts.
+// only literals, {scene} and {variant} (a run renders one), and {camera} too
+// when `single_camera` says one camera is rendered. Those components are
+// expanded from `fixed` (scene, variant and camera); the file name component
+// never counts.
 //   {scene}/{pass}.{frame}.{ext}                       -> "<scene>"
 //   renders/{scene}/{camera}/f####.{ext}, one camera   -> "renders/<scene>/<camera>"
 //   {pass}/{frame}.{ext}                               -> ""
 std::string manifest_directory(const OutputTemplate& output_template, const OutputNameFields& fixed,
                                bool single_camera);
+
+// Whether manifest_directory's folder names the variant: runs of several
+// variants need it, for each has a manifest of its own.
+bool manifest_directory_names_variant(const OutputTemplate& output_template, bool single_camera);
 
 // `output_path` (relative to the output folder, as from expand) made relative
 // to `manifest_dir` (as from manifest_directory), for the manifest's `path`

@@ -307,23 +307,35 @@ std::shared_ptr<const Mesh> read_mesh(const std::string& path, const AssetContex
     return found->second.mesh;
 }
 
+// The mesh file object `o` names; errors point at its `mesh:` key.
+std::shared_ptr<const Mesh> object_file_mesh(const SceneDesc& scene, uint32_t o,
+                                             const AssetContext& assets,
+                                             const LoadedMeshes* loaded) {
+    const ObjectDesc& obj = scene.objects[o];
+    try {
+        return read_mesh(obj.mesh, assets, loaded);
+    } catch (const Error& e) {
+        fail_input(obj.mesh_at, "objects." + std::to_string(o) + ".mesh", e.what());
+    }
+}
+
 // The mesh object `o` shows: its file (read once per path, its warnings
 // kept), its cloth's rest pose, or its primitive. Errors point at its key.
 std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
                                         const AssetContext& assets, MeshesByPath& meshes,
                                         const LoadedMeshes* loaded, World& world) {
     const ObjectDesc& obj = scene.objects[o];
+    if (!obj.mesh.empty()) {
+        auto& slot = meshes[obj.mesh];
+        if (!slot) {
+            slot = object_file_mesh(scene, o, assets, loaded);
+            world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
+                                  slot->warnings.end());
+        }
+        return slot;
+    }
     const std::string key = "objects." + std::to_string(o);
     try {
-        if (!obj.mesh.empty()) {
-            auto& slot = meshes[obj.mesh];
-            if (!slot) {
-                slot = read_mesh(obj.mesh, assets, loaded);
-                world.warnings.insert(world.warnings.end(), slot->warnings.begin(),
-                                      slot->warnings.end());
-            }
-            return slot;
-        }
         if (obj.cloth) {
             std::shared_ptr<const ClothModel> model = build_scene_cloth(obj, scene.output);
             if (obj.visible)
@@ -332,10 +344,26 @@ std::shared_ptr<const Mesh> object_mesh(const SceneDesc& scene, uint32_t o,
         }
         return std::make_shared<Mesh>(make_primitive(obj.primitive->spec));
     } catch (const Error& e) {
-        if (!obj.mesh.empty()) fail_input(obj.mesh_at, key + ".mesh", e.what());
         if (obj.cloth) fail_input(obj.cloth->where, key + ".cloth", e.what());
         fail_input(obj.primitive->where, key + ".primitive", e.what());
     }
+}
+
+// The variants of `mesh` added to `names`, each name once.
+void add_variant_names(const Mesh& mesh, std::vector<std::string>& names) {
+    for (const std::string& name : mesh.variants)
+        if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
+}
+
+// What reading the scene's meshes may touch: their folders, the scene's
+// file size limit, and `budget` for their textures.
+AssetContext scene_assets(const SceneDesc& scene, TextureBudget& budget, unsigned load_threads) {
+    AssetContext assets;
+    assets.paths.allow_outside = scene.assets.allow_paths_outside;
+    assets.paths.max_file_bytes = scene.assets.max_file_bytes;
+    assets.textures = &budget;
+    assets.threads = load_threads;
+    return assets;
 }
 
 // The style that draws each object: its own, else the scene's.
@@ -414,20 +442,41 @@ std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material
 
 }  // namespace
 
+std::vector<std::string> scene_variants(const SceneDesc& scene, unsigned load_threads,
+                                        LoadedMeshes& loaded) {
+    TextureBudget texture_budget(scene.assets.texture_budget_bytes);
+    const AssetContext assets = scene_assets(scene, texture_budget, load_threads);
+    std::vector<std::string> names;
+    for (uint32_t o = 0; o < scene.objects.size(); ++o) {
+        const std::string& path = scene.objects[o].mesh;
+        if (path.empty()) continue;
+        if (!loaded.count(path)) {
+            // What its textures take, for build_world's budget to take too.
+            const size_t charged_before = texture_budget.charges().size();
+            LoadedMesh read{object_file_mesh(scene, o, assets, nullptr), {}};
+            const std::vector<TextureBudget::Charge> charges = texture_budget.charges();
+            read.texture_charges.assign(
+                charges.begin() + static_cast<std::ptrdiff_t>(charged_before), charges.end());
+            loaded[path] = std::move(read);
+        }
+        add_variant_names(*loaded[path].mesh, names);
+    }
+    return names;
+}
+
 World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMeshes* loaded) {
     World world;
     const WorldExtras extras = extras_of(scene);
     MeshesByPath meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
-    AssetContext assets;
-    assets.paths.allow_outside = scene.assets.allow_paths_outside;
-    assets.paths.max_file_bytes = scene.assets.max_file_bytes;
-    assets.textures = &texture_budget;
-    assets.threads = load_threads;
+    const AssetContext assets = scene_assets(scene, texture_budget, load_threads);
+    std::vector<std::string> variants;  // that the scene's models declare
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];
         std::shared_ptr<const Mesh> mesh = object_mesh(scene, o, assets, meshes, loaded, world);
+        add_variant_names(*mesh, variants);
+        mesh = with_variant(std::move(mesh), scene.variant);
         world.object_bounds.push_back(mesh->bounds());
         if (obj.file_lights)
             for (const GltfLight& light : mesh->lights)
@@ -462,6 +511,7 @@ World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMes
         }
         for (const MeshPart& part : mesh->parts) append_part(world, part, o, material_base, extras);
     }
+    check_variant(scene, variants, true);
     world.file_cameras = load_file_cameras(scene, assets, world.warnings);
     world.environment = scene_environment(scene, world.warnings);
     if (world.positions.size() >= 0xffffffffu)

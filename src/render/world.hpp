@@ -123,12 +123,20 @@ struct World {
     const std::vector<glm::vec2>& uv_set(const TextureSlot& slot) const;
 };
 
-// Loads every mesh and texture the scene names. Errors name the scene file
-// location of the object that refers to the bad file. `load_threads` may
-// read one big mesh file (AssetContext::threads; 0: one per core), so that
-// `render --threads N` governs loading too. A mesh in `loaded` is taken
-// as it is instead of its file being read.
+// Loads every mesh and texture the scene names, each model's parts in
+// their materials under the scene's `variant:` (which must be one a model
+// declares: check_variant). Errors name the scene file location of the
+// object that refers to the bad file. `load_threads` may read one big mesh
+// file (AssetContext::threads; 0: one per core), so that `render --threads
+// N` governs loading too. A mesh in `loaded` is taken as it is instead of
+// its file being read.
 World build_world(const SceneDesc& scene, unsigned load_threads = 0,
                   const LoadedMeshes* loaded = nullptr);
+
+// The variants the scene's models declare (KHR_materials_variants), each
+// name once, in the order of the objects and of each file's list. The
+// mesh files not in `loaded` are read into it, for build_world to take.
+std::vector<std::string> scene_variants(const SceneDesc& scene, unsigned load_threads,
+                                        LoadedMeshes& loaded);
 
 }  // namespace facet

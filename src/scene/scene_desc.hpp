@@ -336,11 +336,26 @@ struct SceneDesc {
     // The scene's `environment:`; without one, a `pbr` style is lit by the
     // studio and the other styles by their lights alone.
     std::optional<EnvironmentDesc> environment;
+    // `variant:` (KHR_materials_variants): the colourway the models are
+    // drawn in, `all` for a run of each (job/render_job.hpp,
+    // variant_runs), "" for their default materials.
+    std::string variant;
+    SourceLocation variant_at;
     // Values read but without effect, with where they are (printed by the CLI).
     Warnings warnings;
     // Set when facet made the scene rather than reading it from `path`.
     std::optional<BuiltScene> built;
 };
+
+// `variant:` means "all", a run of each variant.
+inline constexpr const char* kAllVariants = "all";
+
+// Throws invalid_input at the scene's `variant:` (or the option that set
+// it) when it names a variant none of `declared` (the variants the scene's
+// models declare) is, listing them; and for `all` when `one_at_a_time`
+// (a command that renders one variant, such as preview).
+void check_variant(const SceneDesc& scene, const std::vector<std::string>& declared,
+                   bool one_at_a_time);
 
 // One `-D key.path=value` (or a command-line option turned into one).
 struct Override {

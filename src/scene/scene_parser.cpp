@@ -681,8 +681,13 @@ SceneDesc scene_from_document(const std::shared_ptr<YamlDocument>& doc, const st
     scene.directory = fs::path(path).parent_path().string();
     if (scene.directory.empty()) scene.directory = ".";
 
-    root.check_keys(
-        {"output", "style", "camera", "cameras", "lights", "objects", "assets", "environment"});
+    root.check_keys({"output", "style", "camera", "cameras", "lights", "objects", "assets",
+                     "environment", "variant"});
+    if (root.has("variant")) {
+        scene.variant = root["variant"].text();
+        scene.variant_at = root["variant"].where();
+        if (scene.variant.empty()) root["variant"].fail("names no variant; give a name or all");
+    }
     if (root.has("output")) scene.output = parse_output(root["output"]);
     if (root.has("environment"))
         scene.environment = parse_environment(root["environment"], scene.directory);
@@ -753,6 +758,30 @@ SceneDesc scene_from_document(const std::shared_ptr<YamlDocument>& doc, const st
 }
 
 }  // namespace
+
+void check_variant(const SceneDesc& scene, const std::vector<std::string>& declared,
+                   bool one_at_a_time) {
+    if (scene.variant.empty()) return;
+    const bool all = scene.variant == kAllVariants;
+    const bool known = std::find(declared.begin(), declared.end(), scene.variant) != declared.end();
+    // `all` is every variant, even where a model names one so.
+    if (known && !all) return;
+    if (declared.empty())
+        fail_input(scene.variant_at, "variant",
+                   "no model in the scene declares variants (KHR_materials_variants): each is "
+                   "drawn in its default materials without `variant:`");
+    std::string list;
+    for (const std::string& name : declared) list += (list.empty() ? "" : ", ") + name;
+    if (!all)
+        fail_input(scene.variant_at, "variant",
+                   "no model in the scene declares the variant '" + scene.variant +
+                       "' (variants: " + list + ", or all)");
+    if (one_at_a_time)
+        fail_input(scene.variant_at, "variant",
+                   "all: this command draws one variant at a time (render and validate take "
+                   "all); give one of: " +
+                       list);
+}
 
 SceneInputKind scene_input_kind(const std::string& path) {
     if (has_yaml_name(path)) return SceneInputKind::scene;

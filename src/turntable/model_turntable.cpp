@@ -101,8 +101,10 @@ TurntableFile turntable_scene_file(const TurntableRequest& request, const std::s
     // Every value is checked first as -D would check it, so that an error
     // names the option that gave it.
     std::vector<Override> unused;
-    read_scene(turntable_scene_yaml(survey, reference, {}, unused), text_name(request.model),
-               as_file, request.scene_options, overrides);
+    const SceneDesc checked =
+        read_scene(turntable_scene_yaml(survey, reference, {}, unused), text_name(request.model),
+                   as_file, request.scene_options, overrides);
+    check_variant(checked, survey.mesh->variants, false);
     const std::string text = turntable_scene_yaml(survey, reference, overrides, unused);
     if (!unused.empty())
         fail_input({"", 0, 0, unused.front().origin}, unused.front().path,

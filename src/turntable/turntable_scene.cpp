@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "core/plain_text.hpp"
 #include "turntable/yaml_writer.hpp"
 
 namespace facet {
@@ -176,6 +177,20 @@ void write_ground(YamlWriter& w, double size) {
     w.end_item();
 }
 
+// The model's variants (KHR_materials_variants), listed when it has any;
+// the key that chooses them is written when --variant or -D gives it.
+void write_variant(YamlWriter& w, const ModelSurvey& s) {
+    if (s.mesh && !s.mesh->variants.empty()) {
+        std::string names;
+        for (const std::string& name : s.mesh->variants)
+            names += (names.empty() ? "" : ", ") + text_for_message(name);
+        w.comment("");
+        w.comment("The model's variants: " + names + ". `variant: NAME` draws one (--variant");
+        w.comment("NAME); `variant: all` renders each into a folder of its own.");
+    }
+    w.optional_value("variant");
+}
+
 }  // namespace
 
 const char* ground_kind_name(GroundKind kind) {
@@ -259,6 +274,7 @@ std::string turntable_scene_yaml(const ModelSurvey& survey, const std::string& m
     write_model(w, survey, mesh_reference);
     write_ground(w, size);
     w.end_list();
+    write_variant(w, survey);
     // Limits on the files the model names (--allow-asset-paths-outside).
     if (w.has_override_under("assets")) {
         w.comment("");
