@@ -27,6 +27,7 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
             out.coat_normal[a][i] = t.coat_normal[a];
             out.sheen_color[a][i] = t.sheen_color[a];
             out.anisotropy_direction[a][i] = t.anisotropy_direction[a];
+            out.diffuse_transmission_color[a][i] = t.diffuse_transmission_color[a];
         }
         out.metallic[i] = t.metallic, out.roughness[i] = t.roughness;
         out.occlusion[i] = t.occlusion, out.f90[i] = t.f90;
@@ -35,6 +36,7 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
         out.iridescence[i] = t.iridescence, out.iridescence_ior[i] = t.iridescence_ior;
         out.iridescence_thickness[i] = t.iridescence_thickness;
         out.anisotropy[i] = t.anisotropy;
+        out.diffuse_transmission[i] = t.diffuse_transmission;
     }
     return out;
 }

@@ -296,7 +296,10 @@ TEST_CASE("a sampler wraps each axis its own way", "[gltf][texture]") {
     }
 }
 
-TEST_CASE("glTF samplers are read per axis, with their filters", "[gltf][texture]") {
+TEST_CASE(
+    "glTF samplers are read per axis, with their filters, NEAREST mipmaps as the magnification "
+    "filter",
+    "[gltf][texture]") {
     TempDir dir("gltf-sampler");
     for (auto [wrap_s, wrap_t, s, t] : std::vector<std::tuple<int, int, Wrap, Wrap>>{
              {33648, 33071, Wrap::mirror, Wrap::clamp},
@@ -316,6 +319,24 @@ TEST_CASE("glTF samplers are read per axis, with their filters", "[gltf][texture
         CHECK(sampler.mipmaps);
         CHECK(sampler.mip == Filter::linear);
     }
+    // NEAREST within the mipmaps follows the magnification filter: kept for
+    // pixel art (magFilter NEAREST, above), linear otherwise, so an
+    // exporter's default does not point-sample minified pixels.
+    for (const json& mag : {json(9729), json()})
+        for (const int min : {9984, 9986}) {
+            Gltf g;
+            palette_texture(g);
+            json sampler = {{"minFilter", min}};
+            if (!mag.is_null()) sampler["magFilter"] = mag;
+            g.doc["samplers"] = {sampler};
+            quad_mesh(g, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
+            const Mesh mesh = load_gltf(g.write(dir.file("mipmap-nearest.gltf")));
+            const Sampler& read = mesh.materials[0].base_color_map.texture->sampler;
+            INFO("magFilter " << mag.dump() << ", minFilter " << min);
+            CHECK(read.min == Filter::linear);
+            CHECK(read.mip == (min == 9984 ? Filter::nearest : Filter::linear));
+            CHECK(read.mipmaps);
+        }
     Gltf g;
     palette_texture(g);
     g.doc["samplers"] = {{{"wrapS", 12345}}};

@@ -79,8 +79,10 @@ TEST_CASE("pbr lanes: each lane of the model is brdf.hpp's f(v, l) (n.l) times p
         in.pbr.iridescence[i] = 0.0f;
         in.pbr.iridescence_ior[i] = 1.3f;
         in.pbr.iridescence_thickness[i] = 400.0f;
-        in.pbr.anisotropy[i] = 0.0f;  // nor an anisotropy
-        for (int c = 0; c < 3; ++c) in.pbr.anisotropy_direction[c][i] = 0.0f;
+        in.pbr.anisotropy[i] = 0.0f;  // nor an anisotropy, nor a diffuse transmission
+        in.pbr.diffuse_transmission[i] = 0.0f;
+        for (int c = 0; c < 3; ++c)
+            in.pbr.anisotropy_direction[c][i] = in.pbr.diffuse_transmission_color[c][i] = 0.0f;
     }
     in.surface.receives_shadow = splat(0.0f);
     ShadeLight light;
@@ -140,6 +142,7 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
     // The one-point instantiation covers what brdf_cosine alone does not:
     // KHR_materials_specular's f0 and f90, the clear coat and its normal,
     // the sheen (on lanes 1, 4 and 7), the thin film (2 and 5), the anisotropy (3 and 7),
+    // a diffuse transmission (1 and 5),
     // occlusion, point and spot lights
     // with ranges, shadows, ambient light and the environment's split sum, rotated and scaled.
     const std::array<LanePoint, simd::kLanes> points = lane_points();
@@ -163,6 +166,9 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
         in.pbr.iridescence_ior[i] = 1.3f + 0.05f * static_cast<float>(i);
         in.pbr.iridescence_thickness[i] = 200.0f + 50.0f * static_cast<float>(i);
         in.pbr.anisotropy[i] = i % 4 == 3 ? 0.3f + 0.1f * static_cast<float>(i) : 0.0f;
+        in.pbr.diffuse_transmission[i] = i % 4 == 1 ? 0.2f + 0.1f * static_cast<float>(i) : 0.0f;
+        for (int c = 0; c < 3; ++c)
+            in.pbr.diffuse_transmission_color[c][i] = 0.9f - 0.2f * static_cast<float>(c);
         for (int c = 0; c < 3; ++c)
             in.pbr.anisotropy_direction[c][i] = c == 0 ? 1.0f : 0.2f * static_cast<float>(c + i);
         in.pbr.metallic[i] = points[i].metallic;
@@ -210,6 +216,9 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
         terms.iridescence_ior = in.pbr.iridescence_ior[i];
         terms.iridescence_thickness = in.pbr.iridescence_thickness[i];
         terms.anisotropy = in.pbr.anisotropy[i];
+        terms.diffuse_transmission = in.pbr.diffuse_transmission[i];
+        for (int c = 0; c < 3; ++c)
+            terms.diffuse_transmission_color[c] = in.pbr.diffuse_transmission_color[c][i];
         for (int c = 0; c < 3; ++c)
             terms.anisotropy_direction[c] = in.pbr.anisotropy_direction[c][i];
         terms.metallic = in.pbr.metallic[i];

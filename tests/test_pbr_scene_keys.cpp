@@ -290,8 +290,10 @@ TEST_CASE("a scene map or environment file that cannot be read names its key", "
 
 // --- Warnings -------------------------------------------------------------------
 
-TEST_CASE("pbr maps, a sheen, a film or an anisotropy under blinn-phong warn that they are lost",
-          "[pbr][warnings]") {
+TEST_CASE(
+    "pbr maps, a sheen, a film, an anisotropy or a diffuse transmission under blinn-phong warn "
+    "that they are lost",
+    "[pbr][warnings]") {
     TempDir dir("pbr-scene");
     write_bytes(dir.file("bump.png"), flat_png(kMidByte));
     const std::string material = "{ normal_map: bump.png, occlusion_map: bump.png }";
@@ -310,12 +312,14 @@ TEST_CASE("pbr maps, a sheen, a film or an anisotropy under blinn-phong warn tha
         dir.file("factors.yaml"), cube_scene("blinn-phong", "{ metallic: 1, roughness: 0.2 }"))));
     CHECK_FALSE(warned(factors.warnings, "objects.0", "only `shading: pbr` draws"));
     // A sheen, a thin film and an anisotropy are lost the same way.
-    for (const char* lobe : {"{ sheen_color: [0.8, 0.1, 0.1] }", "{ iridescence: 0.6 }",
-                             "{ anisotropy: 0.5, anisotropy_rotation: 45 }"}) {
+    for (const char* lobe :
+         {"{ sheen_color: [0.8, 0.1, 0.1] }", "{ iridescence: 0.6 }",
+          "{ anisotropy: 0.5, anisotropy_rotation: 45 }",
+          "{ diffuse_transmission: 0.5, diffuse_transmission_color: [1, 0.5, 0] }"}) {
         INFO(lobe);
         const World lost =
             build_world(load(write_text(dir.file("lobe.yaml"), cube_scene("blinn-phong", lobe))));
-        CHECK(warned(lost.warnings, "objects.0", "sheen, film and anisotropy are lost"));
+        CHECK(warned(lost.warnings, "objects.0", "film, anisotropy and light through it are lost"));
     }
 }
 

@@ -32,6 +32,8 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_materials_sheen", "the sheen of cloth and velvet (style pbr)"},
         {"KHR_materials_iridescence", "the colours of thin films (style pbr)"},
         {"KHR_materials_anisotropy", "highlights stretched along brushed metal (style pbr)"},
+        {"KHR_materials_diffuse_transmission",
+         "light through lampshades, leaves and paper (style pbr)"},
         {"KHR_materials_pbrSpecularGlossiness",
          "the older specular-glossiness material, drawn as the dielectric it describes"},
         {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
@@ -53,7 +55,6 @@ std::string what_is_lost(const std::string& extension) {
          "light through thin glass and plastic is not drawn: they look opaque"},
         {"KHR_materials_volume", "the thickness and tint of transmitting volumes are lost"},
         {"KHR_materials_dispersion", "the spread of colours through refraction is lost"},
-        {"KHR_materials_diffuse_transmission", "light through thin leaves and paper is lost"},
     };
     const auto it = effects.find(extension);
     return it == effects.end() ? "what it adds is not drawn" : it->second;

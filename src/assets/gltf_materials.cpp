@@ -46,14 +46,20 @@ Sampler sampler_of(const tinygltf::Model& model, int index, const std::string& p
         case kLinear:
             s.min = Filter::linear, s.mipmaps = false;
             break;
+        // NEAREST within the mipmaps is an exporter's default (OpenGL's
+        // minFilter default, COLLADA2GLTF's output), not an author's choice:
+        // taken at its word it point-samples every minified pixel into
+        // stair steps. Unless the file magnifies by NEAREST too (pixel art),
+        // the levels are read linearly, as Blender's importer and VTK read
+        // them and as GPUs filter under anisotropic filtering.
         case kNearestMipmapNearest:
-            s.min = Filter::nearest, s.mip = Filter::nearest;
+            s.min = s.mag, s.mip = Filter::nearest;
             break;
         case kLinearMipmapNearest:
             s.min = Filter::linear, s.mip = Filter::nearest;
             break;
         case kNearestMipmapLinear:
-            s.min = Filter::nearest, s.mip = Filter::linear;
+            s.min = s.mag, s.mip = Filter::linear;
             break;
         case kLinearMipmapLinear:
         default:
@@ -472,7 +478,26 @@ void read_anisotropy(const tinygltf::Value& e, TextureCache& cache, const std::s
                       "drawn along its anisotropyRotation alone", TexelMeaning::data);
 }
 
-// KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence and _anisotropy.
+// KHR_materials_diffuse_transmission: strength (A of a data map) and
+// colour (sRGB map).
+void read_diffuse_transmission(const tinygltf::Value& e, TextureCache& cache,
+                               const std::string& path, const std::string& what, Warnings& warnings,
+                               Material& mat) {
+    mat.diffuse_transmission =
+        extension_number(e, "diffuseTransmissionFactor", 0.0f, 0.0, 1.0, path, what);
+    mat.diffuse_transmission_color =
+        extension_color(e, "diffuseTransmissionColorFactor", glm::vec3(1.0f), 1.0, path, what);
+    if (mat.diffuse_transmission == 0.0f) return;  // nothing passes: the maps show nothing
+    mat.diffuse_transmission_map =
+        extension_map(e, "diffuseTransmissionTexture", cache, path, what, warnings,
+                      "drawn with its diffuseTransmissionFactor alone", TexelMeaning::data);
+    mat.diffuse_transmission_color_map =
+        extension_map(e, "diffuseTransmissionColorTexture", cache, path, what, warnings,
+                      "drawn with its diffuseTransmissionColorFactor alone");
+}
+
+// KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence, _anisotropy and
+// _diffuse_transmission.
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
                            Material& mat) {
@@ -516,6 +541,9 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
         read_iridescence(it->second, cache, path, what, warnings, mat);
     if (const auto it = m.extensions.find("KHR_materials_anisotropy"); it != m.extensions.end())
         read_anisotropy(it->second, cache, path, what, warnings, mat);
+    if (const auto it = m.extensions.find("KHR_materials_diffuse_transmission");
+        it != m.extensions.end())
+        read_diffuse_transmission(it->second, cache, path, what, warnings, mat);
 }
 
 void read_alpha(const tinygltf::Material& m, const std::string& path, Material& mat) {

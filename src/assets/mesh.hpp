@@ -44,7 +44,7 @@ enum MaterialFeature : uint32_t {
     kEmission = 1u << 4,    // unlit, or emission added to what the model made
     kShadowCatcher = 1u << 5,  // shows only the shadows on it
     kFade = 1u << 6,           // fades into the background with distance
-    kExtraLobes = 1u << 7,     // the `pbr` model's sheen, thin film or anisotropy
+    kExtraLobes = 1u << 7,     // `pbr`'s sheen, thin film, anisotropy or diffuse transmission
 };
 constexpr int kMaterialFeatureCount = 8;
 
@@ -142,6 +142,13 @@ struct Material {
     float anisotropy = 0.0f;
     float anisotropy_rotation = 0.0f;
     TextureSlot anisotropy_map;
+    // KHR_materials_diffuse_transmission: the share of the dielectric's
+    // diffuse light that passes through the surface (times the map's A; 0:
+    // none), lighting it from behind as a lampshade or a leaf is, in this
+    // linear colour (times the colour map's RGB).
+    float diffuse_transmission = 0.0f;
+    glm::vec3 diffuse_transmission_color = {1, 1, 1};
+    TextureSlot diffuse_transmission_map, diffuse_transmission_color_map;
 
     // The texture coordinate set the tangent frames follow, or none when
     // nothing needs them: the base's normal map's, else the coat's (glTF
@@ -156,13 +163,25 @@ struct Material {
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 16> texture_slots() {
-        return {&base_color_map,          &normal_map,      &occlusion_map,
-                &metal_rough_map,         &emissive_map,    &specular_weight_map,
-                &specular_color_map,      &clearcoat_map,   &clearcoat_roughness_map,
-                &clearcoat_normal_map,    &sheen_color_map, &sheen_roughness_map,
-                &specular_glossiness_map, &iridescence_map, &iridescence_thickness_map,
-                &anisotropy_map};
+    std::array<TextureSlot*, 18> texture_slots() {
+        return {&base_color_map,
+                &normal_map,
+                &occlusion_map,
+                &metal_rough_map,
+                &emissive_map,
+                &specular_weight_map,
+                &specular_color_map,
+                &clearcoat_map,
+                &clearcoat_roughness_map,
+                &clearcoat_normal_map,
+                &sheen_color_map,
+                &sheen_roughness_map,
+                &specular_glossiness_map,
+                &iridescence_map,
+                &iridescence_thickness_map,
+                &anisotropy_map,
+                &diffuse_transmission_map,
+                &diffuse_transmission_color_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -174,13 +193,15 @@ struct Material {
         if (base_color_map) f |= kBaseColorMap;
         if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
             clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map ||
-            specular_glossiness_map || iridescence_map || iridescence_thickness_map)
+            specular_glossiness_map || iridescence_map || iridescence_thickness_map ||
+            diffuse_transmission_map || diffuse_transmission_color_map)
             f |= kPhysicalMaps;
         if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;
         if (shadow_catcher) f |= kShadowCatcher;
         if (fade_end > fade_start) f |= kFade;
-        if (sheen_color != glm::vec3(0) || iridescence > 0.0f || anisotropy > 0.0f)
+        if (sheen_color != glm::vec3(0) || iridescence > 0.0f || anisotropy > 0.0f ||
+            diffuse_transmission > 0.0f)
             f |= kExtraLobes;
         return f;
     }

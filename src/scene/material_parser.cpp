@@ -33,6 +33,7 @@ constexpr NumberKey kNumberKeys[] = {
     {"iridescence_ior", &Material::iridescence_ior, 1, 10},
     {"iridescence_thickness", &Material::iridescence_thickness_max, 0, 5000},
     {"anisotropy", &Material::anisotropy, 0, 1},
+    {"diffuse_transmission", &Material::diffuse_transmission, 0, 1},
 };
 
 // The same for colours (linear RGB, each channel from 0 to 1).
@@ -42,6 +43,7 @@ struct ColorKey {
 };
 constexpr ColorKey kColorKeys[] = {
     {"sheen_color", &Material::sheen_color},
+    {"diffuse_transmission_color", &Material::diffuse_transmission_color},
 };
 
 // The keys of the `pbr` model (docs/pbr.md, "Material keys").

@@ -334,6 +334,10 @@ struct SurfaceTerms {
     // made perpendicular to the shading normal here).
     T anisotropy;
     lanes::Vec3<T> anisotropy_direction;
+    // KHR_materials_diffuse_transmission: the share of the dielectric's
+    // diffuse light that passes through (0: none) and its colour.
+    T diffuse_transmission;
+    lanes::Vec3<T> diffuse_transmission_color;
 };
 
 // Each lobe's Fresnel term, or its f0: the dielectric's and the metal's.
@@ -391,6 +395,12 @@ struct PbrPoint {
     // The normal the environment's specular lobe reflects the view about:
     // n, or the anisotropy's bent normal.
     lanes::Vec3<T> reflection_normal;
+    // The dielectric's diffuse albedo, the base colour less what a diffuse
+    // transmission (any_diffuse_transmission) passes through: base (1 - t).
+    lanes::Vec3<T> diffuse_albedo;
+    bool any_diffuse_transmission;
+    T diffuse_transmission;
+    lanes::Vec3<T> diffuse_transmission_color;
 };
 
 // KHR_materials_iridescence: each lobe's Fresnel moves towards the thin
@@ -516,6 +526,29 @@ template <typename T>
     if (p.any_anisotropy) prepare_anisotropy_terms(s, p);
 }
 
+// --- KHR_materials_diffuse_transmission: light through lampshades and leaves ---
+
+// Its part of prepare_point, out of line as the other layers'.
+template <typename T>
+[[gnu::noinline]] void prepare_diffuse_transmission_terms(const SurfaceTerms<T>& s,
+                                                          PbrPoint<T>& p) {
+    const lanes::Mask<T> through = p.diffuse_transmission > lanes::splat<T>(0.0f);
+    for (int c = 0; c < 3; ++c) {
+        p.diffuse_transmission_color[c] = lanes::clamp01(s.diffuse_transmission_color[c]);
+        p.diffuse_albedo[c] =
+            lanes::select(through, p.base[c] * (1.0f - p.diffuse_transmission), p.base[c]);
+    }
+}
+
+template <typename T>
+[[gnu::always_inline]] inline void prepare_diffuse_transmission(const SurfaceTerms<T>& s,
+                                                                PbrPoint<T>& p) {
+    p.diffuse_albedo = p.base;
+    p.diffuse_transmission = lanes::clamp01(s.diffuse_transmission);
+    p.any_diffuse_transmission = lanes::any(p.diffuse_transmission > lanes::splat<T>(0.0f));
+    if (p.any_diffuse_transmission) prepare_diffuse_transmission_terms(s, p);
+}
+
 // The point for unit n and v and the surface's terms.
 template <typename T>
 PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
@@ -560,6 +593,7 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     p.coat_view_root = p.any_coat ? smith_root(p.coat_n_dot_v, p.coat_alpha) : p.view_root;
     prepare_sheen(s, p);
     prepare_anisotropy(s, p);
+    prepare_diffuse_transmission(s, p);
     p.iridescence = clamp01(s.iridescence);
     p.any_iridescence = lanes::any(p.iridescence > splat<T>(0.0f));
     p.iridescence_ior = s.iridescence_ior;
@@ -612,6 +646,54 @@ template <typename T>
     return result;
 }
 
+// A light behind the surface (n.l < 0) through a diffuse transmission
+// (KHR_materials_diffuse_transmission): the dielectric's diffuse share t
+// passes as a Lambertian BTDF of its colour c_t, weighted as the reflected
+// diffuse is by what the specular layer leaves, with F at the light
+// mirrored to the viewer's side, l' = l - 2 (n.l) n:
+//   (1 - metallic) (1 - F(v.h')) t c_t / pi |n.l|
+// Lanes without one, or lit from the front, keep their bits.
+template <typename T>
+[[gnu::noinline]] lanes::Vec3<T> with_diffuse_transmission(const PbrPoint<T>& p,
+                                                           const lanes::Vec3<T>& l, T n_dot_l,
+                                                           lanes::Vec3<T> result) {
+    using lanes::select, lanes::splat;
+    const T zero = splat<T>(0.0f);
+    const lanes::Mask<T> behind = (n_dot_l < zero) & (p.diffuse_transmission > zero);
+    if (!lanes::any(behind)) return result;
+    const T twice = 2.0f * n_dot_l;
+    const lanes::Vec3<T> mirrored = {l[0] - twice * p.n[0], l[1] - twice * p.n[1],
+                                     l[2] - twice * p.n[2]};
+    const T w = schlick_weight(half_vector(p.n, p.v, mirrored).v_dot_h);
+    const T share = (1.0f - p.metallic) * p.diffuse_transmission * (1.0f / kPi) * (zero - n_dot_l);
+    for (int c = 0; c < 3; ++c) {
+        const T through =
+            (1.0f - schlick_fresnel(p.f0[c], w, p.f90)) * share * p.diffuse_transmission_color[c];
+        result[c] = select(behind, result[c] + through, result[c]);
+    }
+    return result;
+}
+
+// The same for light from every direction: the diffuse radiance arriving
+// from behind, `back` (E(-n)/pi), passes through by t c_t, weighted as the
+// reflected diffuse by what the dielectric's lobe leaves.
+template <typename T>
+[[gnu::noinline]] lanes::Vec3<T> with_diffuse_transmission_environment(const PbrPoint<T>& p,
+                                                                       const lanes::Vec3<T>& back,
+                                                                       lanes::Vec3<T> result) {
+    using lanes::select, lanes::splat;
+    const lanes::Mask<T> through = p.diffuse_transmission > splat<T>(0.0f);
+    const LobeFresnel<T>& f0 = p.environment_f0;
+    for (int c = 0; c < 3; ++c) {
+        const T lobe =
+            (f0.dielectric[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
+        const T passed = (1.0f - p.metallic) * (1.0f - lanes::min_of(lobe, splat<T>(1.0f))) *
+                         p.diffuse_transmission * p.diffuse_transmission_color[c] * back[c];
+        result[c] = select(through, result[c] + passed, result[c]);
+    }
+    return result;
+}
+
 // The glTF BRDF times the cosine, f(v, l) (n.l), for one light direction l
 // (unit, towards the light), in 1/sr: times the irradiance a light gives on
 // a plane facing it it is the radiance reflected towards v. Zero where the
@@ -643,7 +725,7 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
         for (int c = 0; c < 3; ++c) {
             // fresnel_mix: the diffuse base under a specular layer, weighted by F.
             const T fd = f.dielectric[c];
-            const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.base[c] +
+            const T dielectric = (1.0f - fd) * (1.0f / kPi) * p.diffuse_albedo[c] +
                                  fd * specular * p.dielectric_compensation[c];
             // conductor_fresnel: the specular lobe tinted by the metal's F.
             const T metal = f.metal[c] * specular * p.metal_compensation[c];
@@ -652,6 +734,7 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
         }
         if (p.any_sheen) result = with_sheen(p, h, n_dot_l, lit, result);
     }
+    if (p.any_diffuse_transmission) result = with_diffuse_transmission(p, l, n_dot_l, result);
     if (!p.any_coat) return result;
     const T transmission = coat_transmission(p);
     const T coat_n_dot_l = lanes::dot(p.coat_n, l);
@@ -674,10 +757,12 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
 // Metal and dielectric lobes are weighted by their directional albedo
 // f0 * scale + f90 * bias (Karis 2013) and compensated, the dielectric's
 // diffuse by what its lobe leaves (Fdez-Aguera 2019), then the coat over both.
+// `back` is the diffuse radiance from behind, for a diffuse transmission.
 template <typename T>
 lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& diffuse,
                                     const lanes::Vec3<T>& specular,
-                                    const lanes::Vec3<T>& coat_specular) {
+                                    const lanes::Vec3<T>& coat_specular,
+                                    const lanes::Vec3<T>& back) {
     using lanes::select, lanes::splat;
     const T coat_albedo = p.coat * (kCoatF0 * p.coat_dfg_scale + p.coat_dfg_bias);
     const T transmission = coat_transmission(p);
@@ -688,17 +773,27 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
         const T dielectric_lobe =
             (f0.dielectric[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
         const T metal_lobe = (f0.metal[c] * p.dfg_scale + p.dfg_bias) * p.metal_compensation[c];
-        const T dielectric =
-            (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) * p.base[c] * diffuse[c] +
-            dielectric_lobe * specular[c];
+        const T dielectric = (1.0f - lanes::min_of(dielectric_lobe, splat<T>(1.0f))) *
+                                 p.diffuse_albedo[c] * diffuse[c] +
+                             dielectric_lobe * specular[c];
         result[c] = (1.0f - p.metallic) * dielectric + p.metallic * metal_lobe * specular[c];
     }
     if (p.any_sheen) result = with_sheen_environment(p, diffuse, result);
+    if (p.any_diffuse_transmission) result = with_diffuse_transmission_environment(p, back, result);
     if (p.any_coat)
         for (int c = 0; c < 3; ++c)
             result[c] = select(coated, result[c] * transmission + coat_albedo * coat_specular[c],
                                result[c]);
     return result;
+}
+
+// An environment alike from every side (a uniform one, an ambient light):
+// as much diffuse radiance from behind as in front.
+template <typename T>
+lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& diffuse,
+                                    const lanes::Vec3<T>& specular,
+                                    const lanes::Vec3<T>& coat_specular) {
+    return environment_response(p, diffuse, specular, coat_specular, diffuse);
 }
 
 // The glTF metallic-roughness inputs at one point, for one-off use and tests.

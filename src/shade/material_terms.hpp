@@ -43,6 +43,9 @@ template <bool Single>
 [[gnu::always_inline]] inline void put_extra_lobes(const Material& m, simd::vi mask, bool first,
                                                    pbr::SurfaceTerms<simd::vf>& p) {
     put<Single>(p.anisotropy, mask, m.anisotropy, first);
+    put<Single>(p.diffuse_transmission, mask, m.diffuse_transmission, first);
+    for (int a = 0; a < 3; ++a)
+        put<Single>(p.diffuse_transmission_color[a], mask, m.diffuse_transmission_color[a], first);
     for (simd::vf& axis : p.anisotropy_direction) put<Single>(axis, mask, 0.0f, first);
     for (int a = 0; a < 3; ++a) put<Single>(p.sheen_color[a], mask, m.sheen_color[a], first);
     put<Single>(p.sheen_roughness, mask, m.sheen_roughness, first);
@@ -135,8 +138,9 @@ void apply_specular_glossiness_map(LaneMaterials material, Lookup&& lookup, Surf
 // (B metal, G roughness), occlusion (R, blended by its strength),
 // KHR_materials_specular (A weight, RGB colour), clearcoat (R strength,
 // G roughness), sheen (RGB colour, A roughness) and iridescence (R
-// strength; G thickness from the minimum to the maximum), each multiplying
-// its factor, and the specular-glossiness map.
+// strength; G thickness from the minimum to the maximum) and diffuse
+// transmission (A strength, RGB colour), each multiplying its factor, and
+// the specular-glossiness map.
 template <typename Lookup>
 void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, SurfaceLanes& lanes) {
     pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
@@ -176,6 +180,12 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Sur
     apply_specular_glossiness_map(material, lookup, lanes);
     lookup(slot_of(material, &Material::iridescence_map),
            [&](int i, const glm::vec4& t) { p.iridescence[i] *= t.r; });
+    lookup(slot_of(material, &Material::diffuse_transmission_map),
+           [&](int i, const glm::vec4& t) { p.diffuse_transmission[i] *= t.a; });
+    lookup(slot_of(material, &Material::diffuse_transmission_color_map),
+           [&](int i, const glm::vec4& t) {
+               for (int a = 0; a < 3; ++a) p.diffuse_transmission_color[a][i] *= t[a];
+           });
     lookup(slot_of(material, &Material::iridescence_thickness_map), [&](int i, const glm::vec4& t) {
         const Material& m = *material[i];
         p.iridescence_thickness[i] =

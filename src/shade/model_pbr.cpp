@@ -65,10 +65,20 @@ Vec3<T> direct_light(const pbr::PbrPoint<T>& p, const Vec3<T>& position, lanes::
         }
         IncomingLight<T> in = incoming_light<T>(light, position);
         const Vec3<T>& l = in.to_light;
-        lanes::Mask<T> arrives = in.usable & active & (lanes::dot(p.n, l) > zero);
+        const T n_dot_l = lanes::dot(p.n, l);
+        lanes::Mask<T> arrives = in.usable & active & (n_dot_l > zero);
         if (p.any_coat) arrives |= in.usable & active & (lanes::dot(p.coat_n, l) > zero);
+        // A diffuse transmission lets light in from behind too; its shadow
+        // is looked up on that side.
+        Vec3<T> facing = p.n;
+        if (p.any_diffuse_transmission) {
+            arrives |= in.usable & active & (p.diffuse_transmission > zero);
+            const lanes::Mask<T> behind = n_dot_l < zero;
+            for (int c = 0; c < 3; ++c) facing[c] = select(behind, zero - p.n[c], p.n[c]);
+        }
         if (!lanes::any(arrives)) continue;
-        if (light.shadow) apply_shadow(*light.shadow, position, p.n, arrives & receives_shadow, in);
+        if (light.shadow)
+            apply_shadow(*light.shadow, position, facing, arrives & receives_shadow, in);
         const Vec3<T> response = pbr::brdf_cosine(p, l);
         for (int c = 0; c < 3; ++c)
             sum[c] = select(arrives, sum[c] + kPi * in.radiance[c] * response[c], sum[c]);
@@ -86,7 +96,10 @@ Vec3<T> environment_light(const pbr::PbrPoint<T>& p, const EnvironmentLighting& 
     if (p.any_coat)
         coat =
             map_specular(map, to_map(environment, lanes::reflect(p.coat_n, p.v)), p.coat_roughness);
-    return pbr::environment_response(p, diffuse, specular, coat);
+    Vec3<T> back = diffuse;
+    if (p.any_diffuse_transmission)
+        back = map_diffuse(map, to_map(environment, Vec3<T>{-p.n[0], -p.n[1], -p.n[2]}));
+    return pbr::environment_response(p, diffuse, specular, coat, back);
 }
 
 template <typename T>
