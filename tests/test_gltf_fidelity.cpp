@@ -328,7 +328,7 @@ TEST_CASE(
             palette_texture(g);
             json sampler = {{"minFilter", min}};
             if (!mag.is_null()) sampler["magFilter"] = mag;
-            g.doc["samplers"] = {sampler};
+            g.doc["samplers"] = json::array({sampler});
             quad_mesh(g, {{"pbrMetallicRoughness", {{"baseColorTexture", {{"index", 0}}}}}});
             const Mesh mesh = load_gltf(g.write(dir.file("mipmap-nearest.gltf")));
             const Sampler& read = mesh.materials[0].base_color_map.texture->sampler;
