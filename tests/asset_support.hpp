@@ -5,6 +5,7 @@
 // small PNG and glTF files the tests feed to the loaders.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -182,6 +183,20 @@ inline Topology require_closed_and_oriented(const Mesh& mesh, float eps = 1e-5f)
         REQUIRE(back->second == 1);
     }
     return {welded.size(), directed.size() / 2, faces};
+}
+
+// Every warning of the mesh, one a line, for INFO.
+inline std::string all_warnings(const Mesh& mesh) {
+    std::string all;
+    for (const Warning& w : mesh.warnings) all += w.describe() + "\n";
+    return all;
+}
+
+// Whether a warning of the mesh says `part`.
+inline bool warns(const Mesh& mesh, const std::string& part) {
+    return std::any_of(mesh.warnings.begin(), mesh.warnings.end(), [&](const Warning& w) {
+        return w.describe().find(part) != std::string::npos;
+    });
 }
 
 // --- PNG files --------------------------------------------------------------

@@ -41,6 +41,28 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
     return out;
 }
 
+// Lane i of `lanes`, as one point's terms: lanes_of's inverse.
+inline pbr::SurfaceTerms<float> lane_terms(const pbr::SurfaceTerms<simd::vf>& lanes, int i) {
+    pbr::SurfaceTerms<float> t;
+    for (int a = 0; a < 3; ++a) {
+        t.base[a] = lanes.base[a][i];
+        t.f0[a] = lanes.f0[a][i];
+        t.coat_normal[a] = lanes.coat_normal[a][i];
+        t.sheen_color[a] = lanes.sheen_color[a][i];
+        t.anisotropy_direction[a] = lanes.anisotropy_direction[a][i];
+        t.diffuse_transmission_color[a] = lanes.diffuse_transmission_color[a][i];
+    }
+    t.metallic = lanes.metallic[i], t.roughness = lanes.roughness[i];
+    t.occlusion = lanes.occlusion[i], t.f90 = lanes.f90[i];
+    t.coat = lanes.coat[i], t.coat_roughness = lanes.coat_roughness[i];
+    t.sheen_roughness = lanes.sheen_roughness[i];
+    t.iridescence = lanes.iridescence[i], t.iridescence_ior = lanes.iridescence_ior[i];
+    t.iridescence_thickness = lanes.iridescence_thickness[i];
+    t.anisotropy = lanes.anisotropy[i];
+    t.diffuse_transmission = lanes.diffuse_transmission[i];
+    return t;
+}
+
 // Eight varied surfaces (metals every third lane, dielectrics between,
 // roughness rising) seen from head-on to grazing, and `add_layer(i, t)`
 // gives lane i its layer.

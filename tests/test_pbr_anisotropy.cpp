@@ -1,4 +1,4 @@
-// KHR_materials_anisotropy in the `pbr` model (shade/brdf.hpp,
+// KHR_materials_anisotropy in the `pbr` model (shade/brdf_layers.hpp,
 // docs/pbr.md, "Anisotropy"): the lobe against its closed form written
 // here in another algebraic form, in double; its distribution's
 // normalisation; a white furnace; a strength of 0 keeping the bits; the
@@ -305,11 +305,25 @@ TEST_CASE("anisotropy: KHR_materials_anisotropy is read with its map as data", "
     CHECK(mesh.warnings.empty());
     const Material& m = mesh.materials[0];
     CHECK(m.anisotropy == Approx(0.6f));
-    CHECK(m.anisotropy_rotation == Approx(1.25f));
+    CHECK(m.anisotropy_cos == Approx(std::cos(1.25)).margin(1e-6));
+    CHECK(m.anisotropy_sin == Approx(std::sin(1.25)).margin(1e-6));
     REQUIRE(m.anisotropy_map.texture);
     CHECK(m.anisotropy_map.texture->format() == Texture::Format::data8);
     CHECK((m.features() & kExtraLobes) != 0);
     CHECK(m.tangent_uv_set() == 0);
+    // A map on another texture set than the normal map's, whose tangent
+    // frames it would be read in, is dropped with a warning.
+    json other_set = brushed;
+    other_set["anisotropyTexture"] = {{"index", 0}, {"texCoord", 1}};
+    g.doc["materials"] = json::array({{{"normalTexture", {{"index", 0}}},
+                                       {"extensions", {{"KHR_materials_anisotropy", other_set}}}}});
+    const Mesh dropped = load_gltf(g.write(dir.file("other-set.gltf")));
+    INFO(all_warnings(dropped));
+    CHECK_FALSE(dropped.materials[0].anisotropy_map);
+    CHECK(dropped.materials[0].anisotropy == Approx(0.6f));
+    CHECK(warns(dropped,
+                "anisotropyTexture reads TEXCOORD_1 but the tangent frames follow the "
+                "normal map's TEXCOORD_0: drawn along its anisotropyRotation alone"));
     // A strength above 1 is refused by its path.
     json bad = brushed;
     bad["anisotropyStrength"] = 1.5;

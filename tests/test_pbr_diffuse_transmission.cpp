@@ -1,4 +1,4 @@
-// KHR_materials_diffuse_transmission in the `pbr` model (shade/brdf.hpp,
+// KHR_materials_diffuse_transmission in the `pbr` model (shade/brdf_layers.hpp,
 // docs/pbr.md, "Diffuse transmission"): a light behind the surface against
 // the extension's formula written out here, the front's diffuse less the
 // share that passes, energy kept, a strength of 0 keeping the bits, a

@@ -14,6 +14,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "pbr_lane_support.hpp"
 #include "shade/brdf.hpp"
 #include "shade/environment_map.hpp"
 #include "shade/shading_models.hpp"
@@ -204,29 +205,8 @@ TEST_CASE("pbr lanes: every term of a lane is the one-point model's, to the bit"
     for (int i = 0; i < simd::kLanes; ++i) {
         const glm::vec3 position(in.surface.px[i], in.surface.py[i], in.surface.pz[i]);
         const glm::vec3 normal(in.surface.nx[i], in.surface.ny[i], in.surface.nz[i]);
-        pbr::SurfaceTerms<float> terms;
-        for (int c = 0; c < 3; ++c) {
-            terms.base[c] = in.albedo[c][i];
-            terms.f0[c] = in.pbr.f0[c][i];
-            terms.coat_normal[c] = in.pbr.coat_normal[c][i];
-            terms.sheen_color[c] = in.pbr.sheen_color[c][i];
-        }
-        terms.sheen_roughness = in.pbr.sheen_roughness[i];
-        terms.iridescence = in.pbr.iridescence[i];
-        terms.iridescence_ior = in.pbr.iridescence_ior[i];
-        terms.iridescence_thickness = in.pbr.iridescence_thickness[i];
-        terms.anisotropy = in.pbr.anisotropy[i];
-        terms.diffuse_transmission = in.pbr.diffuse_transmission[i];
-        for (int c = 0; c < 3; ++c)
-            terms.diffuse_transmission_color[c] = in.pbr.diffuse_transmission_color[c][i];
-        for (int c = 0; c < 3; ++c)
-            terms.anisotropy_direction[c] = in.pbr.anisotropy_direction[c][i];
-        terms.metallic = in.pbr.metallic[i];
-        terms.roughness = in.pbr.roughness[i];
-        terms.occlusion = in.pbr.occlusion[i];
-        terms.f90 = in.pbr.f90[i];
-        terms.coat = in.pbr.coat[i];
-        terms.coat_roughness = in.pbr.coat_roughness[i];
+        pbr::SurfaceTerms<float> terms = test::lane_terms(in.pbr, i);
+        for (int c = 0; c < 3; ++c) terms.base[c] = in.albedo[c][i];  // the model's base
         const glm::vec3 expected =
             shade_pbr_point(position, normal, in.surface.receives_shadow[i] > 0.0f, terms, context);
         if (shadow_visibility(shadow, position, normal) < 1.0f) ++shadowed;

@@ -75,19 +75,6 @@ void require_read_as_colour(const TextureSlot& slot) {
     for (int a = 0; a < 3; ++a) CHECK(t[a] == Approx(as_srgb_colour(kMidByte)).margin(1e-4));
 }
 
-// Every warning of the mesh, one a line, for INFO.
-std::string all_warnings(const Mesh& mesh) {
-    std::string all;
-    for (const Warning& w : mesh.warnings) all += w.describe() + "\n";
-    return all;
-}
-
-bool warns(const Mesh& mesh, const std::string& part) {
-    return std::any_of(mesh.warnings.begin(), mesh.warnings.end(), [&](const Warning& w) {
-        return w.describe().find(part) != std::string::npos;
-    });
-}
-
 // A quad whose material 0 is `material`, written to `name` in `dir` and loaded.
 Mesh load_quad(const TempDir& dir, const json& material, const std::string& name = "m.gltf") {
     Gltf g;

@@ -470,12 +470,22 @@ void read_iridescence(const tinygltf::Value& e, TextureCache& cache, const std::
 void read_anisotropy(const tinygltf::Value& e, TextureCache& cache, const std::string& path,
                      const std::string& what, Warnings& warnings, Material& mat) {
     mat.anisotropy = extension_number(e, "anisotropyStrength", 0.0f, 0.0, 1.0, path, what);
-    mat.anisotropy_rotation =
-        extension_number(e, "anisotropyRotation", 0.0f, -1e6, 1e6, path, what);
+    mat.set_anisotropy_rotation(
+        extension_number(e, "anisotropyRotation", 0.0f, -1e6, 1e6, path, what));
     if (mat.anisotropy == 0.0f) return;  // isotropic: the map shows nothing
     mat.anisotropy_map =
         extension_map(e, "anisotropyTexture", cache, path, what, warnings,
                       "drawn along its anisotropyRotation alone", TexelMeaning::data);
+    // Its directions are read in the tangent frames, which follow the
+    // normal maps' coordinates (Material::tangent_uv_set).
+    const int frames = *mat.tangent_uv_set();
+    if (!mat.anisotropy_map || mat.anisotropy_map.uv_set == frames) return;
+    warnings.push_back(file_warning(
+        path, what + " anisotropyTexture reads TEXCOORD_" +
+                  std::to_string(mat.anisotropy_map.uv_set) +
+                  " but the tangent frames follow the normal map's TEXCOORD_" +
+                  std::to_string(frames) + ": drawn along its anisotropyRotation alone"));
+    mat.anisotropy_map = {};
 }
 
 // KHR_materials_diffuse_transmission: strength (A of a data map) and

@@ -18,6 +18,7 @@
 #include "assets/mesh_rig.hpp"
 #include "assets/texture.hpp"
 #include "core/diagnostics.hpp"
+#include "core/exact_trig.hpp"
 #include "core/input_file.hpp"
 
 namespace facet {
@@ -136,12 +137,24 @@ struct Material {
     TextureSlot iridescence_map, iridescence_thickness_map;
     // KHR_materials_anisotropy: the specular lobe stretched along a
     // direction of the tangent plane, of this strength (times the map's B;
-    // 0: none). The direction is the tangent turned by `anisotropy_rotation`
-    // (radians, counter-clockwise towards the bitangent), or the map's RG
-    // (a direction in [-1, 1]^2 of the tangent frame) turned by it.
+    // 0: none). The direction is the tangent turned by the rotation
+    // (counter-clockwise towards the bitangent), or the map's RG (a
+    // direction in [-1, 1]^2 of the tangent frame) turned by it. The
+    // rotation is kept as its cosine and sine (set_anisotropy_rotation),
+    // worked out once when read rather than per pixel.
     float anisotropy = 0.0f;
-    float anisotropy_rotation = 0.0f;
+    float anisotropy_cos = 1.0f, anisotropy_sin = 0.0f;
     TextureSlot anisotropy_map;
+    // The cosine and sine of a rotation of `radians`, from exact series
+    // (core/exact_trig.hpp), so that they do not depend on the CPU.
+    static glm::vec2 rotation_cos_sin(double radians) {
+        const double turns = radians / (2.0 * 3.14159265358979323846);
+        return {static_cast<float>(cos_turns(turns)), static_cast<float>(sin_turns(turns))};
+    }
+    void set_anisotropy_rotation(double radians) {
+        const glm::vec2 cs = rotation_cos_sin(radians);
+        anisotropy_cos = cs.x, anisotropy_sin = cs.y;
+    }
     // KHR_materials_diffuse_transmission: the share of the dielectric's
     // diffuse light that passes through the surface (times the map's A; 0:
     // none), lighting it from behind as a lampshade or a leaf is, in this

@@ -172,7 +172,7 @@ typedef uint16_t vh __attribute__((vector_size(16)));  // eight halves' bits
 }
 
 // 2^y for y in [-126, 127]; smaller y gives about 1e-38. The lighting's
-// powers need y <= 0, the sheen's masking (shade/brdf.hpp) up to about 30.
+// powers need y <= 0, the sheen's masking (shade/brdf_terms.hpp) up to about 30.
 [[gnu::always_inline]] inline vf vexp2(vf y) {
     y = vmax(y, splat(-126.0f));
     const vi whole = floor_to_int(y);

@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "core/color.hpp"
-#include "core/exact_trig.hpp"
 #include "raster/surface_sample.hpp"
 #include "render/hatch_charts.hpp"
 #include "render/normal_map_lookup.hpp"
@@ -353,6 +352,14 @@ struct TextureLookups {
     }
 };
 
+// The lane's interpolated vertex normal on its triangle's front side, unit:
+// the normal the tangent frames are built about.
+glm::vec3 front_normal(const Batch& b, int i, const SurfaceSample& pixel) {
+    const vf(&normal)[3] = b.result.normal;
+    const glm::vec3 shown(normal[0][i], normal[1][i], normal[2][i]);
+    return normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
+}
+
 // kNormalMaps: the maps' normals in the tangent frame the vertices carry
 // (shade/normal_map.hpp). The G-buffer's normal (outlines, occlusion, the
 // normal pass) turns with the base's.
@@ -362,10 +369,7 @@ void apply_normal_maps(const ShadeInputs& in, Batch& b) {
         if (!draws_normal_map(in.world, in.vertices, map, b.setup[i]->source_triangle))
             return std::nullopt;
         const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
-        const glm::vec3 shown(normal[0][i], normal[1][i], normal[2][i]);
-        const glm::vec3 front =
-            normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
-        return normal_from_map(in.world, in.vertices, map, scale, pixel, front);
+        return normal_from_map(in.world, in.vertices, map, scale, pixel, front_normal(b, i, pixel));
     };
     SurfaceBatch& s = b.lanes.surface;
     facet::apply_normal_maps(
@@ -379,47 +383,21 @@ void apply_normal_maps(const ShadeInputs& in, Batch& b) {
         });
 }
 
-// kExtraLobes' anisotropy: each lane's direction, the tangent turned by
-// the material's rotation, or its map's RG direction turned by it, in the
-// tangent frame the vertices carry; the map's B scales the strength.
-// Lanes without a frame (their part had no texture coordinates to make
-// one, which loading warned of) are drawn isotropic. Before the normal
-// maps: the frame is the vertices', as the normal map's is.
+// kExtraLobes' anisotropy (shade/material_terms.hpp): its direction in
+// the tangent frame the vertices carry, as the normal map's, so it is
+// worked out before the normal maps turn the normal.
 void apply_anisotropy(const ShadeInputs& in, const TextureLookups& lookup, Batch& b) {
-    pbr::SurfaceTerms<vf>& p = b.lanes.pbr;
-    glm::vec3 texel[kLanes];
-    lookup(slot_of(b.material, &Material::anisotropy_map),
-           [&](int i, const glm::vec4& t) { texel[i] = glm::vec3(t); });
-    const Material* turned = nullptr;  // the material `turn` is for
-    glm::vec2 turn(1.0f, 0.0f);        // cos and sin of its rotation
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        if (!(m.anisotropy > 0.0f)) continue;
-        if (!has_tangent_frames(in.world, in.vertices, b.setup[i]->source_triangle)) {
-            p.anisotropy[i] = 0.0f;
-            continue;
-        }
-        if (&m != turned) {
-            const double turns = static_cast<double>(m.anisotropy_rotation) / (2.0 * pbr::kPi);
-            turn = {static_cast<float>(cos_turns(turns)), static_cast<float>(sin_turns(turns))};
-            turned = &m;
-        }
-        glm::vec2 d(1.0f, 0.0f);
-        if (m.anisotropy_map) {
-            const glm::vec3 t = texel_in_mesh_frame(texel[i], m.anisotropy_map.transform);
-            d = {2.0f * t.x - 1.0f, 2.0f * t.y - 1.0f};
-            p.anisotropy[i] *= t.z;
-        }
-        const glm::vec2 in_frame(turn.x * d.x - turn.y * d.y, turn.y * d.x + turn.x * d.y);
+    const auto to_mesh_frame = [](const glm::vec3& texel, const TextureSlot& slot) {
+        return texel_in_mesh_frame(texel, slot.transform);
+    };
+    const auto to_world = [&](int i, const glm::vec2& in_frame) -> std::optional<glm::vec3> {
+        if (!has_tangent_frames(in.world, in.vertices, b.setup[i]->source_triangle))
+            return std::nullopt;
         const SurfaceSample pixel = pixel_sample(b, i, in.samples_per_side);
-        const vf(&normal)[3] = b.result.normal;
-        const glm::vec3 shown(normal[0][i], normal[1][i], normal[2][i]);
-        const glm::vec3 front =
-            normalise_or(pixel.back_facing ? -shown : shown, glm::vec3(0, 1, 0));
-        const glm::vec3 direction =
-            anisotropy_direction(in.world, in.vertices, in_frame, pixel, front);
-        for (int a = 0; a < 3; ++a) p.anisotropy_direction[a][i] = direction[a];
-    }
+        return anisotropy_direction(in.world, in.vertices, in_frame, pixel,
+                                    front_normal(b, i, pixel));
+    };
+    facet::apply_anisotropy(b.material, b.count, lookup, to_mesh_frame, to_world, b.lanes);
 }
 
 // kVertexColors: they multiply the albedo, lane by lane.

@@ -56,11 +56,13 @@ void parse_physical_terms(const Field& f, const std::string& base_dir, MaterialD
                 {key.field, static_cast<float>(f[key.name].number(key.low, key.high))});
     for (const ColorKey& key : kColorKeys)
         if (f.has(key.name)) m.colors.push_back({key.field, f[key.name].color3()});
-    // Degrees, as every angle of a scene; Material keeps glTF's radians.
-    if (f.has("anisotropy_rotation"))
-        m.constants.push_back({&Material::anisotropy_rotation,
-                               static_cast<float>(f["anisotropy_rotation"].number(-360, 360) *
-                                                  (3.14159265358979323846 / 180.0))});
+    // Degrees, as every angle of a scene; Material keeps its cosine and sine.
+    if (f.has("anisotropy_rotation")) {
+        const glm::vec2 cs = Material::rotation_cos_sin(f["anisotropy_rotation"].number(-360, 360) *
+                                                        (3.14159265358979323846 / 180.0));
+        m.constants.push_back({&Material::anisotropy_cos, cs.x});
+        m.constants.push_back({&Material::anisotropy_sin, cs.y});
+    }
     auto map = [&](const char* key, std::optional<MaterialDesc::Map>& out) {
         if (f.has(key)) out = map_of(f[key], base_dir);
     };

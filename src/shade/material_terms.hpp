@@ -11,6 +11,7 @@
 // read from scenes and files by scene/material_parser.cpp and
 // assets/gltf_materials.cpp (docs/architecture.md, "Adding a material key").
 #include <algorithm>
+#include <optional>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -192,6 +193,40 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Sur
             m.iridescence_thickness_min +
             (m.iridescence_thickness_max - m.iridescence_thickness_min) * t.g;
     });
+}
+
+// kExtraLobes' anisotropy, lane by lane: the direction in the tangent
+// frame is the tangent, or the map's RG direction (B scales the strength),
+// turned by the material's rotation. `to_mesh_frame(texel, slot)` turns a
+// texel's direction from the map's coordinates into the mesh's;
+// `to_world(lane, direction)` takes the frame's direction into world space,
+// or gives nothing where the lane's part has no tangent frame (loading
+// warned of it), which is then drawn isotropic.
+template <typename Lookup, typename ToMeshFrame, typename ToWorld>
+void apply_anisotropy(LaneMaterials material, int count, Lookup&& lookup,
+                      ToMeshFrame&& to_mesh_frame, ToWorld&& to_world, SurfaceLanes& lanes) {
+    pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
+    glm::vec3 texel[simd::kLanes];
+    lookup(slot_of(material, &Material::anisotropy_map),
+           [&](int i, const glm::vec4& t) { texel[i] = glm::vec3(t); });
+    for (int i = 0; i < count; ++i) {
+        const Material& m = *material[i];
+        if (!(m.anisotropy > 0.0f)) continue;
+        glm::vec2 d(1.0f, 0.0f);
+        if (m.anisotropy_map) {
+            const glm::vec3 t = to_mesh_frame(texel[i], m.anisotropy_map);
+            d = {2.0f * t.x - 1.0f, 2.0f * t.y - 1.0f};
+            p.anisotropy[i] *= t.z;
+        }
+        const glm::vec2 turned(m.anisotropy_cos * d.x - m.anisotropy_sin * d.y,
+                               m.anisotropy_sin * d.x + m.anisotropy_cos * d.y);
+        const std::optional<glm::vec3> direction = to_world(i, turned);
+        if (!direction) {
+            p.anisotropy[i] = 0.0f;
+            continue;
+        }
+        for (int a = 0; a < 3; ++a) p.anisotropy_direction[a][i] = (*direction)[a];
+    }
 }
 
 // kNormalMaps: the base's and the coat's normal maps, lane by lane.

@@ -21,7 +21,7 @@ namespace facet {
 namespace pbr {
 class PrefilteredEnvironment;  // shade/environment_map.hpp
 template <typename T>
-struct SurfaceTerms;  // shade/brdf.hpp
+struct SurfaceTerms;  // shade/brdf_terms.hpp
 }  // namespace pbr
 
 struct SurfaceLanes;
