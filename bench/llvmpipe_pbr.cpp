@@ -23,13 +23,17 @@ namespace {
 // shadow map on 1.
 constexpr int kDfgUnit = 2;
 constexpr int kEnvironmentUnit = 3;
+constexpr int kSheenUnit = 4;
 
 // The surface at a fragment and the BRDF under one light: point_at and
 // light_response of src/shade/model_pbr.cpp with brdf.hpp's formulas
 // (docs/pbr.md), in the same order of operations. No clear coat and no
 // maps: the set-up refuses materials with them. DfgTable::lookup reads the
 // table's four nodes round (n.v, roughness) with texelFetch and blends
-// them as facet does, inputs clamped to the grid.
+// them as facet does, inputs clamped to the grid; SheenTable::lookup the
+// same from its own table. The sheen (brdf_layers.hpp's with_sheen and
+// with_sheen_environment) is compiled in only when a material has one,
+// as a GL programmer would.
 const char* kSurfaceGlsl = R"(
 const float kPi = 3.14159265358979323846;
 const float kMinRoughness = 0.045;
@@ -40,29 +44,79 @@ uniform vec2 u_metallic_roughness;
 uniform vec3 u_f0;  // the dielectric's: from the ior and KHR_materials_specular
 uniform float u_f90;
 uniform sampler2D u_dfg;  // (scale, bias): column n.v, row roughness
+#ifdef SHEEN
+uniform vec3 u_sheen_color;
+uniform float u_sheen_roughness;
+uniform sampler2D u_sheen;  // E_s: column n.v, row sheen roughness
+#endif
 
 struct Surface {
     vec3 position, n, v, base, f0;
     float n_dot_v, metallic, roughness, alpha, f90;
     vec2 dfg;  // scale, bias
     vec3 metal_compensation, dielectric_compensation;
+#ifdef SHEEN
+    vec3 sheen_color;
+    float sheen_max, sheen_roughness, sheen_alpha, lambda_v, albedo_v, keeps_v;
+    float a, b, c, d, e, l_half;  // the masking fit's coefficients, and l(0.5)
+#endif
 };
 
-vec2 dfg_lookup(float n_dot_v, float roughness) {
+vec2 table_lookup(sampler2D table, float n_dot_v, float roughness) {
     float x = clamp(n_dot_v, 0.0, 1.0) * float(kDfgLast);
     float y = (clamp(roughness, kMinRoughness, 1.0) - kMinRoughness) / (1.0 - kMinRoughness) *
               float(kDfgLast);
     int i = min(int(x), kDfgLast - 1);
     int j = min(int(y), kDfgLast - 1);
     float tx = x - float(i), ty = y - float(j);
-    vec2 t00 = texelFetch(u_dfg, ivec2(i, j), 0).rg;
-    vec2 t10 = texelFetch(u_dfg, ivec2(i + 1, j), 0).rg;
-    vec2 t01 = texelFetch(u_dfg, ivec2(i, j + 1), 0).rg;
-    vec2 t11 = texelFetch(u_dfg, ivec2(i + 1, j + 1), 0).rg;
+    vec2 t00 = texelFetch(table, ivec2(i, j), 0).rg;
+    vec2 t10 = texelFetch(table, ivec2(i + 1, j), 0).rg;
+    vec2 t01 = texelFetch(table, ivec2(i, j + 1), 0).rg;
+    vec2 t11 = texelFetch(table, ivec2(i + 1, j + 1), 0).rg;
     vec2 low = t00 + (t10 - t00) * tx;
     vec2 high = t01 + (t11 - t01) * tx;
     return low + (high - low) * ty;
 }
+
+#ifdef SHEEN
+// The Charlie distribution, its masking fit and Lambda (brdf_terms.hpp).
+float sheen_l(Surface s, float x) {
+    return s.a / (1.0 + s.b * pow(x, s.c)) + s.d * x + s.e;
+}
+float sheen_lambda(Surface s, float cosine) {
+    return cosine < 0.5 ? exp(sheen_l(s, cosine)) : exp(2.0 * s.l_half - sheen_l(s, 1.0 - cosine));
+}
+void prepare_sheen(inout Surface s) {
+    s.sheen_color = clamp(u_sheen_color, 0.0, 1.0);
+    s.sheen_max = max(s.sheen_color.r, max(s.sheen_color.g, s.sheen_color.b));
+    s.keeps_v = 1.0;
+    if (!(s.sheen_max > 0.0)) return;
+    s.sheen_roughness = clamp(u_sheen_roughness, 0.0, 1.0);
+    float r = clamp(s.sheen_roughness, kMinRoughness, 1.0);
+    s.sheen_alpha = r * r;
+    float t = (1.0 - s.sheen_alpha) * (1.0 - s.sheen_alpha);
+    s.a = mix(21.5473, 25.3245, t);
+    s.b = mix(3.82987, 3.32435, t);
+    s.c = mix(0.19823, 0.16801, t);
+    s.d = mix(-1.97760, -1.27393, t);
+    s.e = mix(-4.32054, -4.85967, t);
+    s.l_half = sheen_l(s, 0.5);
+    s.lambda_v = sheen_lambda(s, s.n_dot_v);
+    s.albedo_v = table_lookup(u_sheen, s.n_dot_v, s.sheen_roughness).r;
+    s.keeps_v = 1.0 - s.sheen_max * s.albedo_v;
+}
+// The base keeps 1 - max(colour) max(E(n.v), E(n.l)); the lobe adds.
+vec3 with_sheen(Surface s, float n_cross_h2, float n_dot_l, vec3 result) {
+    if (!(s.sheen_max > 0.0)) return result;
+    float cosine = max(n_dot_l, kMinNdotV);
+    float keeps = min(s.keeps_v, 1.0 - s.sheen_max *
+                                           table_lookup(u_sheen, cosine, s.sheen_roughness).r);
+    float inverse = 1.0 / s.sheen_alpha;
+    float charlie = (2.0 + inverse) * pow(min(n_cross_h2, 1.0), 0.5 * inverse) * (0.5 / kPi);
+    float lobe = charlie / ((1.0 + s.lambda_v + sheen_lambda(s, cosine)) * (4.0 * s.n_dot_v));
+    return result * keeps + s.sheen_color * lobe;
+}
+#endif
 
 Surface surface_at(vec3 position, vec3 n, vec3 base) {
     Surface s;
@@ -79,10 +133,13 @@ Surface surface_at(vec3 position, vec3 n, vec3 base) {
     s.alpha = r * r;
     s.f0 = u_f0;
     s.f90 = u_f90;
-    s.dfg = dfg_lookup(s.n_dot_v, s.roughness);
+    s.dfg = table_lookup(u_dfg, s.n_dot_v, s.roughness);
     float k = 1.0 / (s.dfg.x + s.dfg.y) - 1.0;
     s.metal_compensation = vec3(1.0) + s.base * k;
     s.dielectric_compensation = vec3(1.0) + s.f0 * k;
+#ifdef SHEEN
+    prepare_sheen(s);
+#endif
     return s;
 }
 
@@ -114,7 +171,11 @@ vec3 light_response(Surface s, vec3 l) {
     vec3 dielectric = (vec3(1.0) - fd) * (1.0 / kPi) * s.base +
                       fd * specular * s.dielectric_compensation;
     vec3 metal = (s.base + (vec3(1.0) - s.base) * w) * specular * s.metal_compensation;
-    return ((1.0 - s.metallic) * dielectric + s.metallic * metal) * n_dot_l;
+    vec3 result = ((1.0 - s.metallic) * dielectric + s.metallic * metal) * n_dot_l;
+#ifdef SHEEN
+    result = with_sheen(s, n_cross_h2, n_dot_l, result);
+#endif
+    return result;
 }
 
 // The split sum for diffuse radiance E(n)/pi and prefiltered specular
@@ -125,7 +186,11 @@ vec3 environment_response(Surface s, vec3 diffuse, vec3 specular) {
     vec3 metal_lobe = (s.base * s.dfg.x + vec3(s.dfg.y)) * s.metal_compensation;
     vec3 dielectric = (vec3(1.0) - min(dielectric_lobe, vec3(1.0))) * s.base * diffuse +
                       dielectric_lobe * specular;
-    return (1.0 - s.metallic) * dielectric + s.metallic * metal_lobe * specular;
+    vec3 result = (1.0 - s.metallic) * dielectric + s.metallic * metal_lobe * specular;
+#ifdef SHEEN
+    if (s.sheen_max > 0.0) result = result * s.keeps_v + s.sheen_color * s.albedo_v * diffuse;
+#endif
+    return result;
 }
 )";
 
@@ -314,16 +379,17 @@ int uploaded_index(const facet::SceneDesc& scene, int scene_light) {
     return index;
 }
 
-// What the port leaves out, named, for a material that has it.
+// What the port leaves out, named, for a material that has it: maps,
+// emission, alpha, and the layers other than a sheen of constants.
 void check_material(const facet::Material& m) {
-    const char* missing = m.clearcoat > 0.0f                                ? "a clear coat"
-                          : m.normal_map                                    ? "a normal map"
-                          : m.occlusion_map                                 ? "an occlusion map"
-                          : m.metal_rough_map                               ? "a metal-rough map"
-                          : m.specular_weight_map || m.specular_color_map   ? "a specular map"
-                          : m.emissive_map || m.emissive != glm::vec3(0.0f) ? "emission"
-                          : m.alpha_mode != facet::AlphaMode::opaque        ? "alpha"
-                                                                            : nullptr;
+    const char* missing = m.clearcoat > 0.0f              ? "a clear coat"
+                          : m.iridescence > 0.0f          ? "a thin film"
+                          : m.anisotropy > 0.0f           ? "an anisotropy"
+                          : m.diffuse_transmission > 0.0f ? "a diffuse transmission"
+                          : (m.features() & facet::kPhysicalMaps) || m.normal_map ? "a map"
+                          : m.emissive_map || m.emissive != glm::vec3(0.0f)       ? "emission"
+                          : m.alpha_mode != facet::AlphaMode::opaque              ? "alpha"
+                                                                                  : nullptr;
     if (missing)
         throw std::runtime_error("the llvmpipe pbr port does not draw " + std::string(missing) +
                                  " (material " + m.name + ")");
@@ -334,7 +400,11 @@ void check_material(const facet::Material& m) {
 PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World& world,
                  int shadow_light)
     : gl_(gl), scene_(scene), world_(world) {
-    for (const facet::Draw& d : world.draws) check_material(world.materials[d.material]);
+    for (const facet::Draw& d : world.draws) {
+        const facet::Material& m = world.materials[d.material];
+        check_material(m);
+        sheen_ = sheen_ || m.sheen_color != glm::vec3(0.0f);
+    }
     const facet::Tonemap tonemap = scene.output.display.tonemap;
     if (tonemap != facet::Tonemap::none && tonemap != facet::Tonemap::neutral)
         throw std::runtime_error(std::string("the llvmpipe pbr port has no tone curve ") +
@@ -348,13 +418,14 @@ PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World
     fragment_ = "#define DFG_SIZE " + std::to_string(facet::pbr::DfgTable::kSize) + "\n" +
                 "#define LEVELS " + std::to_string(facet::pbr::kEnvironmentLevels) + "\n" +
                 (world.environment ? "#define ENVIRONMENT\n" : "") +
-                (ambient ? "#define AMBIENT\n" : "") +
+                (ambient ? "#define AMBIENT\n" : "") + (sheen_ ? "#define SHEEN\n" : "") +
                 (tonemap == facet::Tonemap::neutral ? "#define NEUTRAL\n" : "") + gain +
                 kSurfaceGlsl + (world.environment ? kEnvironmentGlsl : "") +
                 (tonemap == facet::Tonemap::neutral ? kNeutralGlsl : "") +
                 direct_light_glsl(light_kinds(scene, world), uploaded_index(scene, shadow_light)) +
                 kMainGlsl;
     upload_dfg_table();
+    if (sheen_) upload_sheen_table();
     if (world.environment) upload_environment();
 }
 
@@ -373,6 +444,19 @@ void PbrPeer::upload_dfg_table() {
                  facet::pbr::DfgTable::kSize, 0, GL_RG, GL_FLOAT, scale_bias.data());
     // texelFetch does not filter, but a texture without mipmaps must not
     // ask for them to be complete.
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.ActiveTexture(GL_TEXTURE0);
+}
+
+void PbrPeer::upload_sheen_table() {
+    const facet::pbr::SheenTable& table = facet::pbr::sheen_table();
+    gl_.ActiveTexture(GL_TEXTURE0 + kSheenUnit);
+    glGenTextures(1, &sheen_texture_);
+    glBindTexture(GL_TEXTURE_2D, sheen_texture_);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_R32F, facet::pbr::DfgTable::kSize,
+                 facet::pbr::DfgTable::kSize, 0, GL_RED, GL_FLOAT, table.albedo.data());
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     gl_.ActiveTexture(GL_TEXTURE0);
@@ -414,6 +498,7 @@ void PbrPeer::prepare(GLuint program) {
     gl_.UseProgram(program);
     auto loc = [&](const char* name) { return gl_.GetUniformLocation(program, name); };
     gl_.Uniform1i(loc("u_dfg"), kDfgUnit);
+    if (sheen_) gl_.Uniform1i(loc("u_sheen"), kSheenUnit);
     if (world_.environment) {
         gl_.Uniform1i(loc("u_environment"), kEnvironmentUnit);
         gl_.Uniform1iv(loc("u_level_row"), facet::pbr::kEnvironmentLevels, level_rows_.data());
@@ -421,8 +506,9 @@ void PbrPeer::prepare(GLuint program) {
         gl_.Uniform3fv(loc("u_sh"), facet::pbr::kShCount,
                        glm::value_ptr(world_.environment->sh().coefficients[0]));
     }
-    locations_[program] = {loc("u_metallic_roughness"), loc("u_f0"), loc("u_f90"),
-                           loc("u_rotation"), loc("u_intensity")};
+    locations_[program] = {loc("u_metallic_roughness"), loc("u_f0"),        loc("u_f90"),
+                           loc("u_rotation"),           loc("u_intensity"), loc("u_sheen_color"),
+                           loc("u_sheen_roughness")};
 }
 
 void PbrPeer::set_draw(GLuint program, const facet::FrameState& state, const facet::Material& m) {
@@ -436,6 +522,12 @@ void PbrPeer::set_draw(GLuint program, const facet::FrameState& state, const fac
     gl_.Uniform1f(at.f90, m.specular_weight);
     gl_.ActiveTexture(GL_TEXTURE0 + kDfgUnit);
     glBindTexture(GL_TEXTURE_2D, dfg_texture_);
+    if (sheen_) {
+        gl_.Uniform3fv(at.sheen_color, 1, glm::value_ptr(m.sheen_color));
+        gl_.Uniform1f(at.sheen_roughness, m.sheen_roughness);
+        gl_.ActiveTexture(GL_TEXTURE0 + kSheenUnit);
+        glBindTexture(GL_TEXTURE_2D, sheen_texture_);
+    }
     if (world_.environment) {
         // As render/frame_inputs.cpp evaluates the environment's keys.
         const facet::FrameTime time{static_cast<double>(state.frame), state.time};
@@ -458,6 +550,7 @@ std::string PbrPeer::features() const {
         f += ", environment as " + std::to_string(facet::pbr::kEnvironmentLevels) +
              " float octahedral levels + SH";
     f += ", DFG table";
+    if (sheen_) f += ", sheen (Charlie, its albedo table)";
     if (scene_.output.display.tonemap == facet::Tonemap::neutral) f += ", PBR Neutral";
     return f;
 }

@@ -51,17 +51,19 @@ class PbrPeer {
 
   private:
     struct Locations {
-        GLint metallic_roughness, f0, f90, rotation, intensity;
+        GLint metallic_roughness, f0, f90, rotation, intensity, sheen_color, sheen_roughness;
     };
 
     void upload_dfg_table();
+    void upload_sheen_table();
     void upload_environment();
 
     const Gl& gl_;
     const facet::SceneDesc& scene_;
     const facet::World& world_;
     std::string fragment_;
-    GLuint dfg_texture_ = 0, environment_texture_ = 0;
+    GLuint dfg_texture_ = 0, environment_texture_ = 0, sheen_texture_ = 0;
+    bool sheen_ = false;  // a material has a sheen: the shader is compiled with it
     // Of each level of the environment in the atlas texture: its first
     // row and its size without the border.
     std::vector<GLint> level_rows_, level_sizes_;
