@@ -28,6 +28,7 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
             out.sheen_color[a][i] = t.sheen_color[a];
             out.anisotropy_direction[a][i] = t.anisotropy_direction[a];
             out.diffuse_transmission_color[a][i] = t.diffuse_transmission_color[a];
+            out.attenuation_color[a][i] = t.attenuation_color[a];
         }
         out.metallic[i] = t.metallic, out.roughness[i] = t.roughness;
         out.occlusion[i] = t.occlusion, out.f90[i] = t.f90;
@@ -37,6 +38,9 @@ inline pbr::SurfaceTerms<simd::vf> lanes_of(const PointTerms& points) {
         out.iridescence_thickness[i] = t.iridescence_thickness;
         out.anisotropy[i] = t.anisotropy;
         out.diffuse_transmission[i] = t.diffuse_transmission;
+        out.transmission[i] = t.transmission, out.ior[i] = t.ior;
+        out.thickness[i] = t.thickness, out.attenuation_distance[i] = t.attenuation_distance;
+        out.dispersion[i] = t.dispersion;
     }
     return out;
 }
@@ -51,6 +55,7 @@ inline pbr::SurfaceTerms<float> lane_terms(const pbr::SurfaceTerms<simd::vf>& la
         t.sheen_color[a] = lanes.sheen_color[a][i];
         t.anisotropy_direction[a] = lanes.anisotropy_direction[a][i];
         t.diffuse_transmission_color[a] = lanes.diffuse_transmission_color[a][i];
+        t.attenuation_color[a] = lanes.attenuation_color[a][i];
     }
     t.metallic = lanes.metallic[i], t.roughness = lanes.roughness[i];
     t.occlusion = lanes.occlusion[i], t.f90 = lanes.f90[i];
@@ -60,6 +65,9 @@ inline pbr::SurfaceTerms<float> lane_terms(const pbr::SurfaceTerms<simd::vf>& la
     t.iridescence_thickness = lanes.iridescence_thickness[i];
     t.anisotropy = lanes.anisotropy[i];
     t.diffuse_transmission = lanes.diffuse_transmission[i];
+    t.transmission = lanes.transmission[i], t.ior = lanes.ior[i];
+    t.thickness = lanes.thickness[i], t.attenuation_distance = lanes.attenuation_distance[i];
+    t.dispersion = lanes.dispersion[i];
     return t;
 }
 

@@ -197,7 +197,7 @@ TEST_CASE(
     g.doc["materials"] = {{{"name", "used"}}, {{"name", "unused"}}};
     g.one_node_scene(
         {{"attributes", {{"POSITION", g.floats(kTriangle, "VEC3")}}}, {"material", 0}});
-    g.doc["extensionsUsed"] = {"KHR_animation_pointer", "KHR_materials_dispersion",
+    g.doc["extensionsUsed"] = {"KHR_animation_pointer", "EXT_lights_image_based",
                                "EXT_texture_webp"};
     g.doc["extensionsRequired"] = {"KHR_animation_pointer"};
     const std::string file = g.write(dir.file("needs.gltf"));
@@ -218,16 +218,16 @@ TEST_CASE(
                Contains("requires the glTF extension KHR_animation_pointer"));
     CHECK(j["triangles"] == 1);
     CHECK(j["extensions"]["used"] ==
-          json::array({"KHR_animation_pointer", "KHR_materials_dispersion", "EXT_texture_webp"}));
+          json::array({"KHR_animation_pointer", "EXT_lights_image_based", "EXT_texture_webp"}));
     CHECK(j["extensions"]["required"] == json::array({"KHR_animation_pointer"}));
     CHECK(j["extensions"]["ignored"] ==
-          json::array({"KHR_animation_pointer", "KHR_materials_dispersion"}));
+          json::array({"KHR_animation_pointer", "EXT_lights_image_based"}));
     // Only the material a part uses; no unused "default".
     REQUIRE(j["materials"].size() == 1);
     CHECK(j["materials"][0]["name"] == "used");
     const RunResult text = run_facet("info '" + file + "'");
     CHECK(text.exit_code == 2);
-    CHECK_THAT(text.output, Contains("not read KHR_animation_pointer, KHR_materials_dispersion") &&
+    CHECK_THAT(text.output, Contains("not read KHR_animation_pointer, EXT_lights_image_based") &&
                                 Contains(refusal));
 }
 

@@ -2,12 +2,15 @@
 // The scene evaluated at one frame: a pure function of the scene records, the
 // objects' model-space bounds and the frame number, so any subset of frames
 // renders the same as a full run.
+#include <cmath>
 #include <optional>
 #include <span>
 #include <vector>
 
 #include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
 #include <glm/vec3.hpp>
 
 #include "assets/mesh.hpp"
@@ -38,6 +41,13 @@ struct ObjectState {
     MaterialState material;
     double animation_seconds = 0;  // time in the object's glTF animation, if it plays one
 };
+
+// How much `transform` (model -> world) scales lengths: the cube root of
+// its linear part's |determinant|, exact for a uniform scale. A volume's
+// thickness, given in the mesh's units, is this times longer in the world.
+inline float object_scale(const glm::mat4& transform) {
+    return static_cast<float>(std::cbrt(std::abs(glm::determinant(glm::mat3(transform)))));
+}
 
 struct LightState {
     LightType type = LightType::directional;

@@ -34,6 +34,12 @@ const std::map<std::string, std::string>& supported_extensions() {
         {"KHR_materials_anisotropy", "highlights stretched along brushed metal (style pbr)"},
         {"KHR_materials_diffuse_transmission",
          "light through lampshades, leaves and paper (style pbr)"},
+        {"KHR_materials_transmission",
+         "glass and clear plastic, refracting what lies behind them (style pbr)"},
+        {"KHR_materials_volume",
+         "the thickness and Beer-Lambert tint of transmitting volumes (style pbr)"},
+        {"KHR_materials_dispersion",
+         "the spread of colours through refraction, one index per channel (style pbr)"},
         {"KHR_materials_pbrSpecularGlossiness",
          "the older specular-glossiness material, drawn as the dielectric it describes"},
         {"KHR_lights_punctual", "the file's lights, for objects with `lights: true`"},
@@ -51,10 +57,6 @@ std::string what_is_lost(const std::string& extension) {
     static const std::map<std::string, std::string> effects = {
         {"KHR_texture_basisu", "its KTX2 textures are not read"},
         {"KHR_animation_pointer", "its animations of materials, lights and cameras do not play"},
-        {"KHR_materials_transmission",
-         "light through thin glass and plastic is not drawn: they look opaque"},
-        {"KHR_materials_volume", "the thickness and tint of transmitting volumes are lost"},
-        {"KHR_materials_dispersion", "the spread of colours through refraction is lost"},
     };
     const auto it = effects.find(extension);
     return it == effects.end() ? "what it adds is not drawn" : it->second;

@@ -307,6 +307,40 @@ class FieldTypes {
             texture_info(*sheen, "sheenColorTexture", p);
             texture_info(*sheen, "sheenRoughnessTexture", p);
         }
+        glass_extensions(extensions, at);
+    }
+
+    // KHR_materials_transmission, _volume and _dispersion, and the other
+    // layers read by number and map: _anisotropy, _diffuse_transmission.
+    void glass_extensions(const json& extensions, const std::string& at) {
+        struct Fields {
+            const char* extension;
+            std::initializer_list<const char*> numbers, colors, maps;
+        };
+        const Fields all[] = {
+            {"KHR_materials_transmission", {"transmissionFactor"}, {}, {"transmissionTexture"}},
+            {"KHR_materials_volume",
+             {"thicknessFactor", "attenuationDistance"},
+             {"attenuationColor"},
+             {"thicknessTexture"}},
+            {"KHR_materials_dispersion", {"dispersion"}, {}, {}},
+            {"KHR_materials_anisotropy",
+             {"anisotropyStrength", "anisotropyRotation"},
+             {},
+             {"anisotropyTexture"}},
+            {"KHR_materials_diffuse_transmission",
+             {"diffuseTransmissionFactor"},
+             {"diffuseTransmissionColorFactor"},
+             {"diffuseTransmissionTexture", "diffuseTransmissionColorTexture"}},
+        };
+        for (const Fields& f : all) {
+            const json* e = object_if_present(extensions, f.extension, at);
+            if (!e) continue;
+            const std::string p = at + "." + f.extension;
+            for (const char* key : f.numbers) number_if_present(*e, key, p);
+            for (const char* key : f.colors) color_if_present(*e, key, p);
+            for (const char* key : f.maps) texture_info(*e, key, p);
+        }
     }
 
     // An RGB (or, with `count` 4, RGBA) factor: a list of numbers.

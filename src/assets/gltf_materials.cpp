@@ -506,8 +506,38 @@ void read_diffuse_transmission(const tinygltf::Value& e, TextureCache& cache,
                       "drawn with its diffuseTransmissionColorFactor alone");
 }
 
-// KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence, _anisotropy and
-// _diffuse_transmission.
+// KHR_materials_transmission (R of a data map), _volume (thickness: G of
+// a data map; the attenuation) and _dispersion.
+void read_transmission(const tinygltf::Material& m, TextureCache& cache, const std::string& path,
+                       const std::string& what, Warnings& warnings, Material& mat) {
+    const auto transmission = m.extensions.find("KHR_materials_transmission");
+    if (transmission != m.extensions.end()) {
+        const tinygltf::Value& e = transmission->second;
+        mat.transmission = extension_number(e, "transmissionFactor", 0.0f, 0.0, 1.0, path, what);
+        if (mat.transmission > 0.0f)
+            mat.transmission_map =
+                extension_map(e, "transmissionTexture", cache, path, what, warnings,
+                              "drawn with its transmissionFactor alone", TexelMeaning::data);
+    }
+    if (const auto it = m.extensions.find("KHR_materials_volume"); it != m.extensions.end()) {
+        const tinygltf::Value& e = it->second;
+        mat.thickness = extension_number(e, "thicknessFactor", 0.0f, 0.0, 1e30, path, what);
+        mat.attenuation_color =
+            extension_color(e, "attenuationColor", glm::vec3(1.0f), 1.0, path, what);
+        constexpr float kInfinite = std::numeric_limits<float>::infinity();
+        mat.attenuation_distance =
+            extension_number(e, "attenuationDistance", kInfinite, 1e-30, 1e30, path, what);
+        if (mat.transmission > 0.0f && mat.thickness > 0.0f)
+            mat.thickness_map =
+                extension_map(e, "thicknessTexture", cache, path, what, warnings,
+                              "drawn with its thicknessFactor alone", TexelMeaning::data);
+    }
+    if (const auto it = m.extensions.find("KHR_materials_dispersion"); it != m.extensions.end())
+        mat.dispersion = extension_number(it->second, "dispersion", 0.0f, 0.0, 1e3, path, what);
+}
+
+// KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence, _anisotropy,
+// _diffuse_transmission and the glass's (read_transmission).
 void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
                            const std::string& path, const std::string& what, Warnings& warnings,
                            Material& mat) {
@@ -554,6 +584,7 @@ void read_layer_extensions(const tinygltf::Material& m, TextureCache& cache,
     if (const auto it = m.extensions.find("KHR_materials_diffuse_transmission");
         it != m.extensions.end())
         read_diffuse_transmission(it->second, cache, path, what, warnings, mat);
+    read_transmission(m, cache, path, what, warnings, mat);
 }
 
 void read_alpha(const tinygltf::Material& m, const std::string& path, Material& mat) {

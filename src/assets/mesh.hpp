@@ -45,7 +45,8 @@ enum MaterialFeature : uint32_t {
     kEmission = 1u << 4,    // unlit, or emission added to what the model made
     kShadowCatcher = 1u << 5,  // shows only the shadows on it
     kFade = 1u << 6,           // fades into the background with distance
-    kExtraLobes = 1u << 7,     // `pbr`'s sheen, thin film, anisotropy or diffuse transmission
+    // `pbr`'s sheen, thin film, anisotropy, diffuse transmission or transmission
+    kExtraLobes = 1u << 7,
 };
 constexpr int kMaterialFeatureCount = 8;
 
@@ -162,6 +163,24 @@ struct Material {
     float diffuse_transmission = 0.0f;
     glm::vec3 diffuse_transmission_color = {1, 1, 1};
     TextureSlot diffuse_transmission_map, diffuse_transmission_color_map;
+    // KHR_materials_transmission: the share of the dielectric's diffuse
+    // light replaced by light refracted through the surface (times the
+    // map's R; 0: none), glass and clear plastic. Such surfaces are drawn
+    // after the opaque ones, over what those left behind them
+    // (render/transmission_stage.hpp).
+    float transmission = 0.0f;
+    TextureSlot transmission_map;
+    // KHR_materials_volume: the thickness of the volume under the surface
+    // in the mesh's units (times the map's G; 0: a thin wall, light passes
+    // straight through), and its Beer-Lambert tint: light keeps
+    // attenuation_color after attenuation_distance (infinite: no tint).
+    float thickness = 0.0f;
+    TextureSlot thickness_map;
+    glm::vec3 attenuation_color = {1, 1, 1};
+    float attenuation_distance = std::numeric_limits<float>::infinity();
+    // KHR_materials_dispersion: the spread of the index of refraction over
+    // the spectrum, as 20 / Abbe number (0: none).
+    float dispersion = 0.0f;
 
     // The texture coordinate set the tangent frames follow, or none when
     // nothing needs them: the base's normal map's, else the coat's (glTF
@@ -176,7 +195,7 @@ struct Material {
 
     // Every texture slot, for what applies to all maps alike (a scene's
     // uv_scale and wrap, render/world.cpp). A new map adds itself here.
-    std::array<TextureSlot*, 18> texture_slots() {
+    std::array<TextureSlot*, 20> texture_slots() {
         return {&base_color_map,
                 &normal_map,
                 &occlusion_map,
@@ -194,7 +213,9 @@ struct Material {
                 &iridescence_thickness_map,
                 &anisotropy_map,
                 &diffuse_transmission_map,
-                &diffuse_transmission_color_map};
+                &diffuse_transmission_color_map,
+                &transmission_map,
+                &thickness_map};
     }
 
     // What shading must do for this material beyond its constants
@@ -207,14 +228,15 @@ struct Material {
         if (metal_rough_map || occlusion_map || specular_weight_map || specular_color_map ||
             clearcoat_map || clearcoat_roughness_map || sheen_color_map || sheen_roughness_map ||
             specular_glossiness_map || iridescence_map || iridescence_thickness_map ||
-            diffuse_transmission_map || diffuse_transmission_color_map)
+            diffuse_transmission_map || diffuse_transmission_color_map || transmission_map ||
+            thickness_map)
             f |= kPhysicalMaps;
         if (normal_map || clearcoat_normal_map) f |= kNormalMaps;
         if (unlit || emissive != glm::vec3(0)) f |= kEmission;
         if (shadow_catcher) f |= kShadowCatcher;
         if (fade_end > fade_start) f |= kFade;
         if (sheen_color != glm::vec3(0) || iridescence > 0.0f || anisotropy > 0.0f ||
-            diffuse_transmission > 0.0f)
+            diffuse_transmission > 0.0f || transmission > 0.0f)
             f |= kExtraLobes;
         return f;
     }

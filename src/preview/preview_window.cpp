@@ -550,7 +550,7 @@ class PreviewSession {
             shown_height_ = std::round(h * scale);
             window_.draw_image(shown_w, shown_height_);
         }
-        draw_error(area_w);
+        draw_error(area_w, shown_w > 0 ? shown_height_ : area_h);
         draw_status(size.y);
         if (state_.show_panel) act(draw_preview_panel(state_, size.x - panel, panel, size.y));
         slider_held_ = ImGui::IsAnyItemActive();
@@ -558,10 +558,13 @@ class PreviewSession {
     }
 
     // The error over the top of the image; the last good image stays below.
-    void draw_error(float width) {
+    // A long one (a key's list of every key it could have been) is cut at
+    // half the shown image's height: the terminal has it whole.
+    void draw_error(float width, float height) {
         if (state_.error.empty()) return;
         ImGui::SetNextWindowPos(ImVec2(0, 0));
         ImGui::SetNextWindowSize(ImVec2(width, 0));
+        ImGui::SetNextWindowSizeConstraints(ImVec2(width, 0), ImVec2(width, 0.5f * height));
         ImGui::SetNextWindowBgAlpha(0.85f);
         ImGui::Begin("##error", nullptr,
                      ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <span>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -69,8 +70,15 @@ class Rasterizer {
     // once for different tiles; it must write only pixels inside its tile.
     // `test` decides the samples of coverage-tested triangles; without one
     // they cover as any other.
+    // `tiles`, when not empty, holds a byte per tile (tile_index): only
+    // those that are not 0 are drawn.
     void draw_tiles(ThreadPool& pool, const std::function<void(const TileVisibility&)>& shade,
-                    const CoverageTest& test = {}) const;
+                    const CoverageTest& test = {}, std::span<const uint8_t> tiles = {}) const;
+
+    int tile_count() const { return tiles_x_ * tiles_y_; }
+    // The tile that holds sample (x, y), and the tile whose top-left
+    // sample is (x0, y0) (TileVisibility's).
+    int tile_index(int x, int y) const { return (y / tile_size_) * tiles_x_ + x / tile_size_; }
 
     const ShadeSetup& shade_setup(uint32_t id) const {
         return chunks_[id >> kLocalIdBits].shading[id & kLocalIdMask];

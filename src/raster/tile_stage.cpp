@@ -74,7 +74,7 @@ void rasterize(const SetupTriangle& tri, uint32_t id, int tile_x0, int tile_y0, 
 
 void Rasterizer::draw_tiles(ThreadPool& pool,
                             const std::function<void(const TileVisibility&)>& shade,
-                            const CoverageTest& test) const {
+                            const CoverageTest& test, std::span<const uint8_t> wanted) const {
     // A thread takes a few neighbouring tiles at a time: they mostly show
     // the same triangles, whose setup and vertices are then still in its
     // cache (taking tiles one by one, two threads alternate and each misses
@@ -84,7 +84,7 @@ void Rasterizer::draw_tiles(ThreadPool& pool,
     pool.parallel_for(runs, [&](size_t run) {
         const size_t last = std::min(tiles, (run + 1) * kTilesPerTask);
         for (size_t tile = run * kTilesPerTask; tile < last; ++tile)
-            draw_tile(static_cast<int>(tile), shade, test);
+            if (wanted.empty() || wanted[tile]) draw_tile(static_cast<int>(tile), shade, test);
     });
 }
 

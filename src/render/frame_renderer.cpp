@@ -5,6 +5,7 @@
 #include "render/crossing_stage.hpp"
 #include "render/environment_background_stage.hpp"
 #include "render/shade_lights.hpp"
+#include "render/transmission_stage.hpp"
 
 namespace facet {
 namespace {
@@ -49,14 +50,18 @@ FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadP
       evaluator_(scene, world, side_),
       targets_(plan_frame_targets(evaluator_.plan(), scene.output.passes)),
       pose_(scene, world),
-      shadows_(scene, world),
+      shadows_(scene, world, evaluator_.plan()),
       vertices_(world),
       // Tiles hold whole pixels of the k x k sample grid.
       rasterizer_(scene.output.width * side_, scene.output.height * side_,
                   kTileSize - kTileSize % side_),
       feature_edges_(world),
       hidden_edges_(world),
+      glass_(world, evaluator_.plan()),
       coverage_tested_(coverage_tested_triangles(world)) {
+    const std::vector<uint8_t>& glass = glass_.transmitting();
+    if (!glass.empty() && coverage_tested_.empty()) coverage_tested_.assign(glass.size(), 0);
+    for (size_t t = 0; t < glass.size(); ++t) coverage_tested_[t] |= glass[t];
     if (scene.output.writes(Pass::motion)) previous_.emplace(scene, world);
 }
 
@@ -92,6 +97,8 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     const AlphaCoverage alpha(world_, inputs.materials);
     batches_ = 0;
     plain_batches_ = 0;
+    glass_.begin_frame(rasterizer_);
+    // Stage 7: the opaque surfaces (glass waits for stage 7d).
     rasterizer_.draw_tiles(
         pool_,
         [&](const TileVisibility& tile) {
@@ -102,14 +109,22 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
             if (targets_.surface_passes)
                 write_surface_passes(tile, rasterizer_, surface_in, out.surface);
         },
-        alpha.test());
+        glass_.test(0, alpha));
     if (stopped()) return;
     if (targets_.shading == ShadeResolution::pixels && plan.occlusion)
         occlusion_.apply_to_pixels(gbuffer_, surface_share_, inputs.camera, inputs.occlusion,
                                    inputs.background, out.color,
                                    targets_.alpha ? &out.alpha : nullptr, pool_);
-    if (targets_.shading == ShadeResolution::samples) {
+    if (targets_.shading == ShadeResolution::samples)
         apply_sample_stages(inputs, vertices, edge_mask);
+    finish_colour(inputs, out);
+    if (glass_.any_in(0)) draw_glass(alpha, shade_in, surface_in, out);
+}
+
+// The samples resolved into the output's pixels, and the environment
+// composited behind: the finished colour, over which glass is drawn.
+void FrameRenderer::finish_colour(const FrameInputs& inputs, FrameImages& out) {
+    if (targets_.shading == ShadeResolution::samples) {
         ColorImage* lines = targets_.lines ? &sample_lines_ : nullptr;
         resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
                              {out.color, out.depth, targets_.alpha ? &out.alpha : nullptr,
@@ -119,6 +134,52 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     if (inputs.environment_background)
         composite_environment_background(out.color, inputs.camera, inputs.environment,
                                          inputs.environment_blur, pool_);
+}
+
+// Stage 7d, first half: the glass layers, nearest first
+// (render/transmission_stage.hpp). The first shows the nearest surface of
+// every sample, glass or not: the surface passes are its. Returns how
+// many layers have glass.
+int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInputs& surface_in,
+                              FrameImages& out) {
+    int layers = 0;
+    while (layers < kMaxGlassLayers && glass_.any_in(layers)) {
+        const int layer = ++layers;
+        rasterizer_.draw_tiles(
+            pool_,
+            [&](const TileVisibility& tile) {
+                glass_.keep_layer(layer, tile, rasterizer_);
+                if (layer == 1 && targets_.surface_passes)
+                    write_surface_passes(tile, rasterizer_, surface_in, out.surface);
+            },
+            glass_.test(layer, alpha), glass_.tiles_of(layer));
+    }
+    return layers;
+}
+
+// Stage 7d, second half: each layer shaded back to front over a backdrop
+// of the frame so far.
+void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
+                               const SurfacePassInputs& surface_in, FrameImages& out) {
+    const int layers = peel_glass(alpha, surface_in, out);
+    const ShadeTarget target = shade_target(out);
+    const FrameInputs& inputs = shade_in.frame;
+    for (int layer = layers; layer >= 1; --layer) {
+        const TransmissionBackdrop backdrop = make_backdrop(out.color, inputs.camera);
+        ShadeInputs glass_in = shade_in;
+        glass_in.backdrop = &backdrop;
+        const std::span<const uint8_t> tiles = glass_.tiles_of(layer + 1);
+        pool_.parallel_for(tiles.size(), [&](size_t tile) {
+            if (!tiles[tile]) return;
+            const TileVisibility visible =
+                glass_.layer_tile(layer, static_cast<int>(tile), rasterizer_);
+            const ShadeCounts counts = shade_glass_tile(visible, rasterizer_, glass_in, target);
+            batches_ += counts.batches;
+        });
+        // At the samples the layer is resolved again; at the pixels it
+        // was drawn over the finished colour.
+        if (targets_.shading == ShadeResolution::samples) finish_colour(inputs, out);
+    }
 }
 
 FrameRenderer::FrameLights FrameRenderer::light(const FrameInputs& inputs,

@@ -26,6 +26,7 @@
 #include "render/shade_stage.hpp"
 #include "render/shadow_stage.hpp"
 #include "render/surface_pass_stage.hpp"
+#include "render/transmission_stage.hpp"
 #include "render/vertex_stage.hpp"
 #include "render/world.hpp"
 
@@ -69,6 +70,11 @@ class FrameRenderer {
     std::span<const glm::vec4> previous_clip(int frame, size_t camera_index);
     void apply_sample_stages(const FrameInputs& inputs, const TransformedVertices& vertices,
                              std::span<const uint8_t> edge_mask);
+    void finish_colour(const FrameInputs& inputs, FrameImages& out);
+    int peel_glass(const AlphaCoverage& alpha, const SurfacePassInputs& surface_in,
+                   FrameImages& out);
+    void draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
+                    const SurfacePassInputs& surface_in, FrameImages& out);
 
     const SceneDesc& scene_;
     const World& world_;
@@ -90,7 +96,9 @@ class FrameRenderer {
     Image<float> surface_share_;  // with a G-buffer at the pixels (ShadeTarget)
     OcclusionStage occlusion_;
     OutlineStage outlines_;
-    // Per triangle: 1 for cut-out and transparent materials (render/alpha_coverage.hpp).
+    TransmissionStage glass_;
+    // Per triangle: 1 for cut-out and transparent materials
+    // (render/alpha_coverage.hpp) and for glass (TransmissionStage).
     std::vector<uint8_t> coverage_tested_;
     std::optional<PreviousFrameStage> previous_;  // for the motion pass only
     // Every sample in float, when the targets shade at the sample resolution.

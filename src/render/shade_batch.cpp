@@ -138,7 +138,9 @@ template <bool Plain, bool Single>
         if (needs.position)
             put<Single>(b.lanes.surface.receives_shadow, mask, world.receives_shadows[draw.object],
                         first);
-        put_material_terms<Single>(m, style, needs, mask, first, b.lanes);
+        const float scale =
+            needs.extra_lobes ? object_scale(in.frame.state.objects[draw.object].transform) : 1.0f;
+        put_material_terms<Single>(m, scale, style, needs, mask, first, b.lanes);
         const vi object = simd::splat_i(static_cast<int32_t>(draw.object));
         objects = (Single || first) ? object : (mask ? object : objects);
         if constexpr (Plain) continue;
@@ -572,7 +574,7 @@ template <bool Plain>
     if (!Plain && (features & kExtraLobes)) apply_anisotropy(in, lookup, b);
     if (!Plain && (features & kNormalMaps)) apply_normal_maps(in, b);
     const ShadingContext context{in.frame.camera.position, in.lights, in.frame.style_depth_range,
-                                 &in.frame.environment};
+                                 &in.frame.environment, in.backdrop};
     if (!Plain && has_layers(style)) {
         finish_layers(in, style, context, b);
     } else {

@@ -432,7 +432,77 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
         }
 }
 
+// A glass layer's pixels over what they held.
+void shade_glass_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
+                        const ShadeTarget& out, const TileFragments& f, ShadeCounts& counts) {
+    const int side = f.side;
+    const float per_sample = 1.0f / static_cast<float>(side * side);
+    const size_t pixel_count = static_cast<size_t>(f.pixels_x * f.pixels_y);
+    std::vector<glm::vec4> sums(pixel_count, glm::vec4(0));
+    std::vector<float> nearest(pixel_count, kInfinity);
+    shade_fragments(f, raster, in, out, counts,
+                    [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
+                        for (int i = 0; i < b.count; ++i) {
+                            const int at = fragment[i];
+                            const float weight = static_cast<float>(f.samples[at]) * per_sample;
+                            const glm::vec3 color(r.color[0][i], r.color[1][i], r.color[2][i]);
+                            sums[f.pixel[at]] += glm::vec4(color, 1.0f) * weight;
+                        }
+                    });
+    for (int at = 0; at < f.count; ++at) {
+        const int px = f.pixel_x[at], py = f.pixel_y[at];
+        for (int sy = py * side; sy < (py + 1) * side; ++sy)
+            for (int sx = px * side; sx < (px + 1) * side; ++sx)
+                if (tile.id[sy * kTileSize + sx] == f.id[at])
+                    nearest[f.pixel[at]] =
+                        std::min(nearest[f.pixel[at]],
+                                 sample_depth(raster, f.id[at], tile.x0 + sx, tile.y0 + sy));
+    }
+    for (int at = 0; at < f.count; ++at) {
+        if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
+        const float behind = static_cast<float>(f.empty[f.pixel[at]]) * per_sample;
+        const int x = tile.x0 / side + f.pixel_x[at], y = tile.y0 / side + f.pixel_y[at];
+        const glm::vec4 glass = sums[f.pixel[at]];
+        Rgba16F& pixel = out.pixels->at(x, y);
+        pixel = to_half(glass + to_float(pixel) * behind);
+        if (out.pixels_over_nothing) {
+            Rgba16F& alone = out.pixels_over_nothing->at(x, y);
+            alone = to_half(glass + to_float(alone) * behind);
+        }
+        out.depth.at(x, y) = std::min(out.depth.at(x, y), nearest[f.pixel[at]]);
+    }
+}
+
 }  // namespace
+
+ShadeCounts shade_glass_tile(const TileVisibility& tile, const Rasterizer& raster,
+                             const ShadeInputs& in, const ShadeTarget& out) {
+    ShadeCounts counts;
+    TileFragments f;
+    build_tile_fragments(tile, in.samples_per_side, false, f);
+    if (f.count == 0) return counts;
+    if (out.resolution == ShadeResolution::pixels) {
+        shade_glass_pixels(tile, raster, in, out, f, counts);
+        return counts;
+    }
+    const int side = f.side;
+    shade_fragments(
+        f, raster, in, out, counts,
+        [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
+            for (int i = 0; i < b.count; ++i) {
+                const int at = fragment[i];
+                const glm::vec4 color(r.color[0][i], r.color[1][i], r.color[2][i], 1.0f);
+                for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
+                    for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
+                        if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
+                        const int x = tile.x0 + sx, y = tile.y0 + sy;
+                        out.samples->at(x, y) = color;
+                        out.depth.at(x, y) = sample_depth(raster, f.id[at], x, y);
+                    }
+            }
+        });
+    return counts;
+}
 
 ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                        const ShadeTarget& out) {

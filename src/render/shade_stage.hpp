@@ -44,6 +44,9 @@ struct ShadeInputs {
     // empty without wireframes.
     std::span<const uint8_t> edge_mask;
     ShadingPaths paths = ShadingPaths::specialised;
+    // In the glass layers' pass, what transmitting surfaces see through
+    // themselves (render/transmission_stage.hpp); else null.
+    const TransmissionBackdrop* backdrop = nullptr;
 };
 
 // Where a tile's shading goes, as the frame's targets say
@@ -82,5 +85,15 @@ struct ShadeCounts {
 // tiles on several threads at once: writes only the tile's own pixels.
 ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                        const ShadeTarget& out);
+
+// Shades a tile of one glass layer (render/transmission_stage.hpp): only
+// its samples with a triangle, over what the target holds. At `pixels` a
+// pixel becomes its glass fragments' colours weighted by their samples,
+// plus what it held times the share of samples without glass (its depth
+// the nearer of the two); at `samples` each glass sample takes its
+// fragment's colour, covering the background in full. The G-buffer and
+// line samples are left as they are.
+ShadeCounts shade_glass_tile(const TileVisibility& tile, const Rasterizer& raster,
+                             const ShadeInputs& in, const ShadeTarget& out);
 
 }  // namespace facet

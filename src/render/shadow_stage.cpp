@@ -2,6 +2,8 @@
 // rendered through the raster core with the frame's object transforms.
 #include "render/shadow_stage.hpp"
 
+#include "render/transmission_stage.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -42,11 +44,18 @@ void nearest_in_blocks(const float* texels, int size, const TileVisibility& tile
 
 }  // namespace
 
-ShadowStage::ShadowStage(const SceneDesc& scene, const World& world) : world_(world) {
+ShadowStage::ShadowStage(const SceneDesc& scene, const World& world, const StylePlan& plan)
+    : world_(world) {
+    const std::vector<uint8_t> glass = transmitting_triangles(world, plan);
     for (const Draw& d : world.draws) {
         if (!world.casts_shadows[d.object]) continue;
         const uint32_t* first = world.indices.data() + 3 * static_cast<size_t>(d.first_triangle);
-        caster_indices_.insert(caster_indices_.end(), first, first + 3 * d.triangle_count);
+        const bool transmits = !glass.empty() && glass[d.first_triangle];
+        std::vector<uint32_t>& into = transmits ? glass_indices_ : caster_indices_;
+        into.insert(into.end(), first, first + 3 * d.triangle_count);
+        if (transmits)
+            glass_passes_.insert(glass_passes_.end(), d.triangle_count,
+                                 shadow_pass(world.materials[d.material]));
     }
     light_maps_.assign(scene.lights.size(), nullptr);
     size_t shadowed = 0;
@@ -121,28 +130,45 @@ void ShadowStage::draw_face(LightMap& lm, int face, const FrameState& state,
         }
     });
 
+    draw_casters(lm, face, caster_indices_, false, pool);
+    if (!glass_indices_.empty()) draw_casters(lm, face, glass_indices_, true, pool);
+}
+
+// One face of the map's opaque casters, or of its glass
+// (ShadowMap::Glass), from the clip positions draw_face left.
+void ShadowStage::draw_casters(LightMap& lm, int face, std::span<const uint32_t> indices,
+                               bool glass, ThreadPool& pool) {
+    ShadowMap& map = lm.map;
     RasterInput input;
     input.clip = clip_.data();
-    input.vertex_count = count;
-    input.indices = caster_indices_.data();
-    input.triangle_count = caster_indices_.size() / 3;
+    input.vertex_count = clip_.size();
+    input.indices = indices.data();
+    input.triangle_count = indices.size() / 3;
     input.cull_back = nullptr;  // both sides cast: open meshes and planes too
     lm.raster.set_geometry(input, pool);
 
     const int size = map.size;
-    float* texels = map.depth.data() + static_cast<size_t>(face) * size * size;
+    const size_t face_texels = static_cast<size_t>(face) * size * size;
+    float* texels = (glass ? map.glass.depth : map.depth).data() + face_texels;
+    float* passes = glass ? map.glass.passes.data() + face_texels : nullptr;
     const float infinity = std::numeric_limits<float>::infinity();
-    float* blocks = map.block_nearest.data() + static_cast<size_t>(face) * map.blocks * map.blocks;
+    float* blocks = (glass ? map.glass.block_nearest : map.block_nearest).data() +
+                    static_cast<size_t>(face) * map.blocks * map.blocks;
     // Tiles start on whole blocks, so each block is one tile's own.
     static_assert(kTileSize % kShadowBlock == 0);
     lm.raster.draw_tiles(pool, [&](const TileVisibility& tile) {
         for (int ty = 0; ty < tile.height; ++ty) {
-            float* row = texels + static_cast<size_t>(tile.y0 + ty) * size + tile.x0;
+            const size_t row = static_cast<size_t>(tile.y0 + ty) * size + tile.x0;
             for (int tx = 0; tx < tile.width; ++tx) {
                 const int at = ty * kTileSize + tx;
-                row[tx] = tile.id[at] == kNoTriangle
-                              ? infinity
-                              : shadow_depth_from_raster(map, tile.depth[at]);
+                const uint32_t id = tile.id[at];
+                texels[row + tx] =
+                    id == kNoTriangle ? infinity : shadow_depth_from_raster(map, tile.depth[at]);
+                if (passes)
+                    passes[row + tx] =
+                        id == kNoTriangle
+                            ? 1.0f
+                            : glass_passes_[lm.raster.shade_setup(id).source_triangle];
             }
         }
         nearest_in_blocks(texels, size, tile, map.blocks, blocks);
@@ -164,12 +190,18 @@ std::span<const ShadowMap* const> ShadowStage::render(const FrameState& state,
         spheres.push_back(
             transformed_box_sphere(object_bounds[d.object], state.objects[d.object].transform));
     }
-    const bool casters = !spheres.empty() && !caster_indices_.empty();
+    const bool casters = !spheres.empty() && !(caster_indices_.empty() && glass_indices_.empty());
     const Sphere casters_sphere = enclosing_sphere(spheres);
     for (LightMap& lm : light_data_) {
         light_maps_[lm.light] = nullptr;
         if (!casters) continue;
         fit(lm, state.lights[lm.light], casters_sphere);
+        if (!glass_indices_.empty()) {
+            ShadowMap::Glass& glass = lm.map.glass;
+            glass.depth.resize(lm.map.depth.size());
+            glass.passes.resize(lm.map.depth.size());
+            glass.block_nearest.resize(lm.map.block_nearest.size());
+        }
         for (int face = 0; face < lm.map.faces; ++face)
             draw_face(lm, face, state, posed.positions, pool);
         light_maps_[lm.light] = &lm.map;

@@ -13,6 +13,7 @@
 #include "anim/frame_state.hpp"
 #include "core/thread_pool.hpp"
 #include "raster/rasterizer.hpp"
+#include "render/frame_inputs.hpp"
 #include "render/pose_stage.hpp"
 #include "render/world.hpp"
 #include "shade/shadow_map.hpp"
@@ -21,7 +22,9 @@ namespace facet {
 
 class ShadowStage {
   public:
-    ShadowStage(const SceneDesc& scene, const World& world);
+    // `plan` says which objects `pbr` draws: their glass casts lighter
+    // shadows (ShadowMap::glass).
+    ShadowStage(const SceneDesc& scene, const World& world, const StylePlan& plan);
 
     // Renders this frame's maps from the frame's pose and returns, per
     // scene light, its map or null when it casts no shadows (off, an ambient
@@ -40,12 +43,17 @@ class ShadowStage {
     void fit(LightMap& lm, const LightState& light, const Sphere& casters) const;
     void draw_face(LightMap& lm, int face, const FrameState& state,
                    std::span<const glm::vec3> positions, ThreadPool& pool);
+    void draw_casters(LightMap& lm, int face, std::span<const uint32_t> indices, bool glass,
+                      ThreadPool& pool);
 
     const World& world_;
     std::vector<uint32_t> caster_indices_;  // triangles of the objects that cast shadows
-    std::vector<glm::vec4> clip_;           // per world vertex; only casters' are written
-    std::vector<glm::mat4> draw_clip_;      // per draw: model -> the face's clip space
-    std::vector<LightMap> light_data_;      // never resized after construction: lights point in
+    // Glass casters' triangles apart, and each one's ShadowMap::Glass::passes.
+    std::vector<uint32_t> glass_indices_;
+    std::vector<float> glass_passes_;
+    std::vector<glm::vec4> clip_;       // per world vertex; only casters' are written
+    std::vector<glm::mat4> draw_clip_;  // per draw: model -> the face's clip space
+    std::vector<LightMap> light_data_;  // never resized after construction: lights point in
     std::vector<const ShadowMap*> light_maps_;
 };
 

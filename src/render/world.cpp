@@ -405,8 +405,8 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     if (style.shading == ShadingModel::pbr) return;
     // Metal and roughness factors alone are read as a Phong highlight
     // (docs/scene-format.md, "glTF files"); the features only pbr draws
-    // (its maps, sheen, thin film, anisotropy and diffuse transmission) and
-    // coats are lost.
+    // (its maps, sheen, thin film, anisotropy and both transmissions) and
+    // coats are lost: glass is drawn opaque.
     const bool lost = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
         return (m.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
     });
@@ -415,11 +415,11 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
     warnings.push_back({obj.where, "objects." + std::to_string(object),
                         "'" + obj.name +
                             "' has physically based maps, a clear coat, a sheen, a thin film, "
-                            "an anisotropy or a diffuse transmission that only `shading: pbr` "
-                            "draws: under " +
+                            "an anisotropy, a diffuse transmission or glass that only "
+                            "`shading: pbr` draws: under " +
                             shading_model_name(style.shading) +
                             " its relief, occlusion, metal, specular colour, coat, sheen, "
-                            "film, anisotropy and light through it are lost"});
+                            "film, anisotropy and light through it are lost (glass is opaque)"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

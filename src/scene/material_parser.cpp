@@ -34,6 +34,10 @@ constexpr NumberKey kNumberKeys[] = {
     {"iridescence_thickness", &Material::iridescence_thickness_max, 0, 5000},
     {"anisotropy", &Material::anisotropy, 0, 1},
     {"diffuse_transmission", &Material::diffuse_transmission, 0, 1},
+    {"transmission", &Material::transmission, 0, 1},
+    {"thickness", &Material::thickness, 0, 1e6},
+    {"attenuation_distance", &Material::attenuation_distance, 1e-6, 1e9},
+    {"dispersion", &Material::dispersion, 0, 100},
 };
 
 // The same for colours (linear RGB, each channel from 0 to 1).
@@ -44,6 +48,7 @@ struct ColorKey {
 constexpr ColorKey kColorKeys[] = {
     {"sheen_color", &Material::sheen_color},
     {"diffuse_transmission_color", &Material::diffuse_transmission_color},
+    {"attenuation_color", &Material::attenuation_color},
 };
 
 // The keys of the `pbr` model (docs/pbr.md, "Material keys").

@@ -1,6 +1,7 @@
 #include "shade/brdf.hpp"
 
 #include <cstdint>
+#include <limits>
 
 #include "core/exact_trig.hpp"
 #include "shade/hammersley.hpp"
@@ -213,6 +214,9 @@ SurfaceTerms<float> surface_terms(const Material& material) {
     terms.coat_normal = {0.0f, 1.0f, 0.0f};
     terms.iridescence_ior = 1.3f;
     terms.iridescence_thickness = 400.0f;
+    terms.ior = material.ior;
+    terms.attenuation_color = {1.0f, 1.0f, 1.0f};
+    terms.attenuation_distance = std::numeric_limits<float>::infinity();
     return terms;
 }
 

@@ -88,6 +88,7 @@ PbrPoint<T> prepare_point(const lanes::Vec3<T>& n, const lanes::Vec3<T>& v,
     prepare_sheen(s, p);
     prepare_anisotropy(s, p);
     prepare_diffuse_transmission(s, p);
+    prepare_transmission(s, p);
     p.iridescence = clamp01(s.iridescence);
     p.any_iridescence = lanes::any(p.iridescence > splat<T>(0.0f));
     p.iridescence_ior = s.iridescence_ior;
@@ -147,6 +148,7 @@ lanes::Vec3<T> brdf_cosine(const PbrPoint<T>& p, const lanes::Vec3<T>& l) {
         if (p.any_sheen) result = with_sheen(p, h, n_dot_l, lit, result);
     }
     if (p.any_diffuse_transmission) result = with_diffuse_transmission(p, l, n_dot_l, result);
+    if (p.any_transmission) result = with_transmission(p, l, n_dot_l, result);
     if (!p.any_coat) return result;
     const T transmission = coat_transmission(p);
     const T coat_n_dot_l = lanes::dot(p.coat_n, l);
@@ -196,6 +198,36 @@ lanes::Vec3<T> environment_response(const PbrPoint<T>& p, const lanes::Vec3<T>& 
         for (int c = 0; c < 3; ++c)
             result[c] = select(coated, result[c] * transmission + coat_albedo * coat_specular[c],
                                result[c]);
+    return result;
+}
+
+// What the surface passes of the radiance `behind` it, seen along the
+// refracted view (KHR_materials_transmission with the split sum, as the
+// Khronos sample viewer's getIBLVolumeRefraction): the dielectric's share
+// t, tinted by the base colour and the volume (T), weighted by what its
+// specular lobe leaves,
+//   (1 - metallic) (1 - (f0 scale + f90 bias)) t T base behind
+// then under the sheen and the coat as the environment's diffuse light.
+template <typename T>
+lanes::Vec3<T> transmitted_response(const PbrPoint<T>& p, const lanes::Vec3<T>& behind) {
+    using lanes::select, lanes::splat;
+    const LobeFresnel<T>& f0 = p.environment_f0;
+    lanes::Vec3<T> result;
+    for (int c = 0; c < 3; ++c) {
+        const T lobe =
+            (f0.dielectric[c] * p.dfg_scale + p.f90 * p.dfg_bias) * p.dielectric_compensation[c];
+        result[c] = (1.0f - p.metallic) * (1.0f - lanes::min_of(lobe, splat<T>(1.0f))) *
+                    p.transmission * p.transmittance[c] * p.base[c] * behind[c];
+    }
+    if (p.any_sheen) {
+        const lanes::Mask<T> sheened = p.sheen_max > splat<T>(0.0f);
+        for (T& channel : result) channel = select(sheened, channel * p.sheen_keeps_v, channel);
+    }
+    if (p.any_coat) {
+        const lanes::Mask<T> coated = p.coat > splat<T>(0.0f);
+        const T transmission = coat_transmission(p);
+        for (T& channel : result) channel = select(coated, channel * transmission, channel);
+    }
     return result;
 }
 

@@ -157,6 +157,69 @@ template <typename T>
     if (p.any_diffuse_transmission) prepare_diffuse_transmission_terms(s, p);
 }
 
+// KHR_materials_transmission: the dielectric's base is
+//   mix(diffuse, specular BTDF * base colour, t)
+// so the diffuse terms (and a diffuse transmission's) keep 1 - t of
+// theirs. KHR_materials_volume: light crossing the volume keeps
+//   T = attenuation_color ^ (thickness / attenuation_distance)
+// (Beer-Lambert, the path taken as the thickness, as the Khronos sample
+// viewer does). The refraction's lobe is the surface's GGX, its roughness
+// scaled by clamp(2 ior - 2, 0, 1): an index of 1 bends nothing, so blurs
+// nothing (the sample viewer's applyIorToRoughness).
+template <typename T>
+[[gnu::noinline]] void prepare_transmission_terms(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    using lanes::clamp01, lanes::splat;
+    const T keep = 1.0f - p.transmission;
+    for (int c = 0; c < 3; ++c) p.diffuse_albedo[c] = p.diffuse_albedo[c] * keep;
+    p.diffuse_transmission = p.diffuse_transmission * keep;
+    // A distance of 0 is none the files or scenes give (they refuse it).
+    const T exponent = lanes::select(
+        s.attenuation_distance > splat<T>(0.0f),
+        lanes::max_of(s.thickness, splat<T>(0.0f)) / s.attenuation_distance, splat<T>(0.0f));
+    for (int c = 0; c < 3; ++c)
+        p.transmittance[c] = lanes::power_unit(clamp01(s.attenuation_color[c]), exponent);
+    p.transmission_roughness = p.roughness * clamp01(2.0f * s.ior - 2.0f);
+    p.transmission_alpha = alpha_from_roughness(p.transmission_roughness);
+    p.transmission_view_root = smith_root(p.n_dot_v, p.transmission_alpha);
+}
+
+template <typename T>
+[[gnu::always_inline]] inline void prepare_transmission(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
+    p.transmission = lanes::clamp01(s.transmission);
+    p.any_transmission = lanes::any(p.transmission > lanes::splat<T>(0.0f));
+    if (p.any_transmission) prepare_transmission_terms(s, p);
+}
+
+// A light behind the surface (n.l < 0) through the transmission: the
+// specification's specular BTDF with the light mirrored to the viewer's
+// side, l' = l - 2 (n.l) n (as the Khronos sample viewer evaluates it),
+//   (1 - metallic) t T base (1 - F(v.h')) D(h') V(n.l', n.v) |n.l|
+// with the refraction's lobe (prepare_transmission). Lanes without one,
+// or lit from the front, keep their bits.
+template <typename T>
+[[gnu::noinline]] lanes::Vec3<T> with_transmission(const PbrPoint<T>& p, const lanes::Vec3<T>& l,
+                                                   T n_dot_l, lanes::Vec3<T> result) {
+    using lanes::select, lanes::splat;
+    const T zero = splat<T>(0.0f);
+    const lanes::Mask<T> behind = (n_dot_l < zero) & (p.transmission > zero);
+    if (!lanes::any(behind)) return result;
+    const T twice = 2.0f * n_dot_l;
+    const lanes::Vec3<T> mirrored = {l[0] - twice * p.n[0], l[1] - twice * p.n[1],
+                                     l[2] - twice * p.n[2]};
+    const T cosine = zero - n_dot_l;
+    const HalfVector<T> h = half_vector(p.n, p.v, mirrored);
+    const T lobe =
+        specular_brdf(h, cosine, p.n_dot_v, p.transmission_view_root, p.transmission_alpha);
+    const T w = schlick_weight(h.v_dot_h);
+    const T share = (1.0f - p.metallic) * p.transmission * lobe * cosine;
+    for (int c = 0; c < 3; ++c) {
+        const T through =
+            (1.0f - schlick_fresnel(p.f0[c], w, p.f90)) * share * p.base[c] * p.transmittance[c];
+        result[c] = select(behind, result[c] + through, result[c]);
+    }
+    return result;
+}
+
 // The sheen over the base, for one light (KHR_materials_sheen, "albedo
 // scaling"): the base keeps 1 - max(colour) max(E(n.v), E(n.l)) of its
 // light, and the sheen lobe, times its colour, adds to it. Lanes without

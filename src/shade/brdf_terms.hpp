@@ -309,6 +309,14 @@ struct SurfaceTerms {
     // diffuse light that passes through (0: none) and its colour.
     T diffuse_transmission;
     lanes::Vec3<T> diffuse_transmission_color;
+    // KHR_materials_transmission, _volume and _dispersion: the share of the
+    // dielectric's diffuse light that refraction replaces (0: none), the
+    // index of refraction, the volume's thickness in world units (0: a
+    // thin wall), its Beer-Lambert tint (light keeps attenuation_color
+    // after attenuation_distance) and the dispersion (20 / Abbe number).
+    T transmission, ior, thickness;
+    lanes::Vec3<T> attenuation_color;
+    T attenuation_distance, dispersion;
 };
 
 // Each lobe's Fresnel term, or its f0: the dielectric's and the metal's.
@@ -372,6 +380,15 @@ struct PbrPoint {
     bool any_diffuse_transmission;
     T diffuse_transmission;
     lanes::Vec3<T> diffuse_transmission_color;
+    // The transmission (any_transmission): its share t (0 where the lane
+    // has none; the diffuse terms above keep 1 - t), what the volume leaves
+    // of light crossing its thickness (Beer-Lambert), and the refraction's
+    // lobe: its perceptual roughness and alpha (the surface's scaled by
+    // clamp(2 ior - 2, 0, 1)) and the view's Smith root.
+    bool any_transmission;
+    T transmission;
+    lanes::Vec3<T> transmittance;
+    T transmission_roughness, transmission_alpha, transmission_view_root;
 };
 
 }  // namespace facet::pbr

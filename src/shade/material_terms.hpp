@@ -37,12 +37,22 @@ template <bool Single>
         v = mask ? simd::splat(value) : v;
 }
 
-// The sheen's, the thin film's and the anisotropy's constants
-// (kExtraLobes); the anisotropy's direction is the shading stage's, from
-// the tangent frame (render/shade_batch.cpp), and starts at zero.
+// The sheen's, the thin film's, the anisotropy's and the transmissions'
+// constants (kExtraLobes); the anisotropy's direction is the shading
+// stage's, from the tangent frame (render/shade_batch.cpp), and starts at
+// zero. `object_scale` turns the volume's thickness, in the mesh's units,
+// into the world's.
 template <bool Single>
-[[gnu::always_inline]] inline void put_extra_lobes(const Material& m, simd::vi mask, bool first,
+[[gnu::always_inline]] inline void put_extra_lobes(const Material& m, float object_scale,
+                                                   simd::vi mask, bool first,
                                                    pbr::SurfaceTerms<simd::vf>& p) {
+    put<Single>(p.transmission, mask, m.transmission, first);
+    put<Single>(p.ior, mask, m.ior, first);
+    put<Single>(p.thickness, mask, m.thickness * object_scale, first);
+    for (int a = 0; a < 3; ++a)
+        put<Single>(p.attenuation_color[a], mask, m.attenuation_color[a], first);
+    put<Single>(p.attenuation_distance, mask, m.attenuation_distance * object_scale, first);
+    put<Single>(p.dispersion, mask, m.dispersion, first);
     put<Single>(p.anisotropy, mask, m.anisotropy, first);
     put<Single>(p.diffuse_transmission, mask, m.diffuse_transmission, first);
     for (int a = 0; a < 3; ++a)
@@ -61,7 +71,8 @@ template <bool Single>
 // and KHR_materials_specular (f0 = min(f0(ior) * colour, 1) * weight,
 // f90 = weight), without occlusion until its map.
 template <bool Single>
-[[gnu::always_inline]] inline void put_material_terms(const Material& m, const StyleState& style,
+[[gnu::always_inline]] inline void put_material_terms(const Material& m, float object_scale,
+                                                      const StyleState& style,
                                                       const ModelNeeds& needs, simd::vi mask,
                                                       bool first, SurfaceLanes& lanes) {
     SurfaceBatch& s = lanes.surface;
@@ -84,7 +95,7 @@ template <bool Single>
         put<Single>(p.coat, mask, m.clearcoat, first);
         put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
         // Without kExtraLobes in the batch every group's are zero: the first puts them.
-        if (needs.extra_lobes || first) put_extra_lobes<Single>(m, mask, first, p);
+        if (needs.extra_lobes || first) put_extra_lobes<Single>(m, object_scale, mask, first, p);
     }
     for (int a = 0; a < 3; ++a)
         put<Single>(lanes.albedo[a], mask, style.base_color ? (*style.base_color)[a] : m.color[a],
@@ -139,9 +150,9 @@ void apply_specular_glossiness_map(LaneMaterials material, Lookup&& lookup, Surf
 // (B metal, G roughness), occlusion (R, blended by its strength),
 // KHR_materials_specular (A weight, RGB colour), clearcoat (R strength,
 // G roughness), sheen (RGB colour, A roughness) and iridescence (R
-// strength; G thickness from the minimum to the maximum) and diffuse
-// transmission (A strength, RGB colour), each multiplying its factor, and
-// the specular-glossiness map.
+// strength; G thickness from the minimum to the maximum), diffuse
+// transmission (A strength, RGB colour), transmission (R) and the volume's
+// thickness (G), each multiplying its factor, and the specular-glossiness map.
 template <typename Lookup>
 void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, SurfaceLanes& lanes) {
     pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
@@ -187,6 +198,10 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Sur
            [&](int i, const glm::vec4& t) {
                for (int a = 0; a < 3; ++a) p.diffuse_transmission_color[a][i] *= t[a];
            });
+    lookup(slot_of(material, &Material::transmission_map),
+           [&](int i, const glm::vec4& t) { p.transmission[i] *= t.r; });
+    lookup(slot_of(material, &Material::thickness_map),
+           [&](int i, const glm::vec4& t) { p.thickness[i] *= t.g; });
     lookup(slot_of(material, &Material::iridescence_thickness_map), [&](int i, const glm::vec4& t) {
         const Material& m = *material[i];
         p.iridescence_thickness[i] =

@@ -1,10 +1,13 @@
 #include "shade/model_pbr.hpp"
 
+#include <type_traits>
+
 #include "core/exact_trig.hpp"
 #include "shade/brdf.hpp"
 #include "shade/environment_map.hpp"
 #include "shade/light_sample.hpp"
 #include "shade/shading_models.hpp"
+#include "shade/transmission_backdrop.hpp"
 
 namespace facet {
 namespace {
@@ -68,11 +71,12 @@ Vec3<T> direct_light(const pbr::PbrPoint<T>& p, const Vec3<T>& position, lanes::
         const T n_dot_l = lanes::dot(p.n, l);
         lanes::Mask<T> arrives = in.usable & active & (n_dot_l > zero);
         if (p.any_coat) arrives |= in.usable & active & (lanes::dot(p.coat_n, l) > zero);
-        // A diffuse transmission lets light in from behind too; its shadow
-        // is looked up on that side.
+        // Either transmission lets light in from behind too; its shadow is
+        // looked up on that side.
         Vec3<T> facing = p.n;
-        if (p.any_diffuse_transmission) {
-            arrives |= in.usable & active & (p.diffuse_transmission > zero);
+        if (p.any_diffuse_transmission || p.any_transmission) {
+            arrives |=
+                in.usable & active & ((p.diffuse_transmission > zero) | (p.transmission > zero));
             const lanes::Mask<T> behind = n_dot_l < zero;
             for (int c = 0; c < 3; ++c) facing[c] = select(behind, zero - p.n[c], p.n[c]);
         }
@@ -118,6 +122,52 @@ Vec3<T> indirect_light(const pbr::PbrPoint<T>& p, const EnvironmentLighting* env
     return sum;
 }
 
+// The radiance behind each point along its refracted view
+// (shade/transmission_backdrop.hpp), point by point: a backdrop is read
+// texel by texel, as textures are.
+inline RefractedView refracted_view(const pbr::PbrPoint<float>& p, const Vec3<float>& position,
+                                    const pbr::SurfaceTerms<float>& s, int) {
+    return {{position[0], position[1], position[2]},
+            {p.n[0], p.n[1], p.n[2]},
+            {p.v[0], p.v[1], p.v[2]},
+            s.ior,
+            s.thickness,
+            p.transmission_roughness,
+            s.dispersion};
+}
+inline RefractedView refracted_view(const pbr::PbrPoint<simd::vf>& p,
+                                    const Vec3<simd::vf>& position,
+                                    const pbr::SurfaceTerms<simd::vf>& s, int i) {
+    return {{position[0][i], position[1][i], position[2][i]},
+            {p.n[0][i], p.n[1][i], p.n[2][i]},
+            {p.v[0][i], p.v[1][i], p.v[2][i]},
+            s.ior[i],
+            lanes::max_of(s.thickness[i], 0.0f),
+            p.transmission_roughness[i],
+            s.dispersion[i]};
+}
+
+template <typename T>
+Vec3<T> radiance_behind(const pbr::PbrPoint<T>& p, const Vec3<T>& position,
+                        const pbr::SurfaceTerms<T>& s, lanes::Mask<T> active,
+                        const ShadingContext& context) {
+    Vec3<T> behind = {splat<T>(0.0f), splat<T>(0.0f), splat<T>(0.0f)};
+    if constexpr (std::is_same_v<T, float>) {
+        if (!(active && p.transmission > 0.0f)) return behind;
+        const glm::vec3 r = radiance_behind(refracted_view(p, position, s, 0), context.backdrop,
+                                            context.environment);
+        return {r.x, r.y, r.z};
+    } else {
+        for (int i = 0; i < simd::kLanes; ++i) {
+            if (!active[i] || !(p.transmission[i] > 0.0f)) continue;
+            const glm::vec3 r = radiance_behind(refracted_view(p, position, s, i), context.backdrop,
+                                                context.environment);
+            for (int c = 0; c < 3; ++c) behind[c][i] = r[c];
+        }
+        return behind;
+    }
+}
+
 // The model at points of position and normal (on the viewer's side, any
 // length; a zero one faces +Y).
 template <typename T>
@@ -134,7 +184,13 @@ Vec3<T> shade_points(const Vec3<T>& position, const Vec3<T>& normal, lanes::Mask
     const Vec3<T> direct =
         direct_light(p, position, active, receives_shadow, context.lights, uniform);
     const Vec3<T> indirect = indirect_light(p, context.environment, uniform);
-    return {direct[0] + indirect[0], direct[1] + indirect[1], direct[2] + indirect[2]};
+    Vec3<T> color = {direct[0] + indirect[0], direct[1] + indirect[1], direct[2] + indirect[2]};
+    if (p.any_transmission) {
+        const Vec3<T> through =
+            pbr::transmitted_response(p, radiance_behind(p, position, terms, active, context));
+        for (int c = 0; c < 3; ++c) color[c] += through[c];
+    }
+    return color;
 }
 
 }  // namespace

@@ -18,6 +18,8 @@
 
 namespace facet {
 
+struct TransmissionBackdrop;  // shade/transmission_backdrop.hpp
+
 // The points: SurfaceBatch holds position, the normal on the viewer's side
 // (any length; the face normal for flat shading), the material's terms and
 // whether shadows darken the point.
@@ -53,6 +55,9 @@ struct ShadingContext {
     std::span<const ShadeLight> lights;  // lights[0] is the stylised models' key light
     glm::vec2 depth_range;               // the depth view's near..far
     const EnvironmentLighting* environment = nullptr;  // the `pbr` model's indirect light
+    // What transmitting surfaces see through themselves; null outside the
+    // glass layers' pass (shade/transmission_backdrop.hpp).
+    const TransmissionBackdrop* backdrop = nullptr;
 };
 
 void shade_lanes(const StyleState& style, const ShadingContext& context, SurfaceLanes& in,

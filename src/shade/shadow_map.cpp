@@ -258,11 +258,11 @@ struct FilterBox {
 // from the map where the filter lies inside it, else from a copy in `edge`
 // clamped to its edges.
 [[gnu::always_inline]] inline const float* box_texels(
-    const ShadowMap& m, int face, const FilterBox& box,
+    const ShadowMap& m, const std::vector<float>& layer, int face, const FilterBox& box,
     float (&edge)[kMaxRows * kChunks * simd::kLanes], ptrdiff_t& stride) {
     const int first_u = box.first_u, first_v = box.first_v, chunks = box.chunks, rows = box.rows;
     const int size_i = m.size;
-    const float* texels = m.depth.data() + static_cast<size_t>(face) * size_i * size_i;
+    const float* texels = layer.data() + static_cast<size_t>(face) * size_i * size_i;
     if (first_u >= 0 && first_u + chunks * simd::kLanes <= size_i && first_v >= 0 &&
         first_v + rows <= size_i) {
         stride = size_i;
@@ -284,15 +284,17 @@ struct FilterBox {
 // filter compares a texel with is the receiver plane's there, which over
 // the box differs from the point's by at most (|gu| + |gv|) (half + 1); a
 // margin covers the rounding of that sum.
-[[gnu::always_inline]] inline bool surely_lit(const ShadowMap& m, int face, const FilterBox& box,
-                                              const ShadowReceiver& r, const ReceiverPlane& plane) {
-    if (m.block_nearest.empty() || box.first_u < 0 || box.first_v < 0 || box.last_u >= m.size ||
+[[gnu::always_inline]] inline bool surely_lit(const ShadowMap& m,
+                                              const std::vector<float>& block_nearest, int face,
+                                              const FilterBox& box, const ShadowReceiver& r,
+                                              const ReceiverPlane& plane) {
+    if (block_nearest.empty() || box.first_u < 0 || box.first_v < 0 || box.last_u >= m.size ||
         box.first_v + box.rows > m.size)
         return false;
     const float reach = (std::abs(plane.gu) + std::abs(plane.gv)) * (box.half + 1.0f);
     const float farthest = r.depth - plane.bias + reach;
     const float margin = 1e-4f * (std::abs(r.depth) + std::abs(plane.bias) + reach);
-    const float* blocks = m.block_nearest.data() + static_cast<size_t>(face) * m.blocks * m.blocks;
+    const float* blocks = block_nearest.data() + static_cast<size_t>(face) * m.blocks * m.blocks;
     const int last_v = box.first_v + box.rows - 1;
     for (int by = box.first_v / kShadowBlock; by <= last_v / kShadowBlock; ++by)
         for (int bx = box.first_u / kShadowBlock; bx <= box.last_u / kShadowBlock; ++bx)
@@ -300,9 +302,11 @@ struct FilterBox {
     return true;
 }
 
-// Per lane, the weight of the texels whose caster is nearer than the point.
-[[gnu::always_inline]] inline vf blocked_weight(const float* block, ptrdiff_t stride,
-                                                const FilterBox& box, const ShadowReceiver& r,
+// Per lane, the weight of the texels whose caster is nearer than the point
+// (with `passes`, each times 1 - the share its caster lets through).
+[[gnu::always_inline]] inline vf blocked_weight(const float* block, const float* passes,
+                                                ptrdiff_t stride, const FilterBox& box,
+                                                const ShadowReceiver& r,
                                                 const ReceiverPlane& plane) {
     const vf zero = simd::splat(0.0f);
     vf blocked = zero;
@@ -315,28 +319,52 @@ struct FilterBox {
             vf stored;
             std::memcpy(&stored, row + c * simd::kLanes, sizeof stored);
             const vi lit = row_depth + box.step[c] <= stored;
-            row_blocked += lit ? zero : box.weight[c];
+            vf weight = box.weight[c];
+            if (passes) {
+                vf pass;
+                std::memcpy(&pass, passes + b * stride + c * simd::kLanes, sizeof pass);
+                weight *= 1.0f - pass;
+            }
+            row_blocked += lit ? zero : weight;
         }
         blocked += box.row_weight[b] * row_blocked;
     }
     return blocked;
 }
 
-// The filtered visibility at a located receiver.
+// The filtered visibility of one layer of casters: the map's, or its glass
+// weighed by what it lets through.
+[[gnu::always_inline]] inline float layer_visibility(
+    const ShadowMap& m, const ShadowReceiver& receiver, const ReceiverPlane& plane,
+    const FilterBox& box, const std::vector<float>& depth, const std::vector<float>& block_nearest,
+    const std::vector<float>* passes) {
+    if (surely_lit(m, block_nearest, receiver.face, box, receiver, plane))
+        return 1.0f;  // as the filter would
+    float edge[kMaxRows * kChunks * simd::kLanes];
+    float pass_edge[kMaxRows * kChunks * simd::kLanes];
+    ptrdiff_t stride, pass_stride = 0;
+    const float* block = box_texels(m, depth, receiver.face, box, edge, stride);
+    const float* pass =
+        passes ? box_texels(m, *passes, receiver.face, box, pass_edge, pass_stride) : nullptr;
+    const vf blocked = blocked_weight(block, pass, stride, box, receiver, plane);
+    float sum = 0.0f;
+    for (int k = 0; k < simd::kLanes; ++k) sum += blocked[k];
+    // Exactly 1 where nothing blocks the light, so lit surfaces are untouched.
+    return std::clamp(1.0f - sum / (4.0f * box.half * box.half), 0.0f, 1.0f);
+}
+
+// The filtered visibility at a located receiver: what the opaque casters
+// leave, times what the glass leaves.
 [[gnu::always_inline]] inline float receiver_visibility(const ShadowMap& m,
                                                         const ShadowReceiver& receiver) {
     const ReceiverPlane plane = receiver_plane(m, receiver);
     FilterBox box;
     filter_box(m, receiver, plane.gu, box);
-    if (surely_lit(m, receiver.face, box, receiver, plane)) return 1.0f;  // as the filter would
-    float edge[kMaxRows * kChunks * simd::kLanes];
-    ptrdiff_t stride;
-    const float* block = box_texels(m, receiver.face, box, edge, stride);
-    const vf blocked = blocked_weight(block, stride, box, receiver, plane);
-    float sum = 0.0f;
-    for (int k = 0; k < simd::kLanes; ++k) sum += blocked[k];
-    // Exactly 1 where nothing blocks the light, so lit surfaces are untouched.
-    return std::clamp(1.0f - sum / (4.0f * box.half * box.half), 0.0f, 1.0f);
+    const float opaque =
+        layer_visibility(m, receiver, plane, box, m.depth, m.block_nearest, nullptr);
+    if (m.glass.depth.empty() || opaque == 0.0f) return opaque;
+    return opaque * layer_visibility(m, receiver, plane, box, m.glass.depth, m.glass.block_nearest,
+                                     &m.glass.passes);
 }
 
 // locate_receiver for eight points of one face (an orthographic or

@@ -59,6 +59,15 @@ struct ShadowMap {
     float near = 0.0f, far = 1.0f;  // depth range along the viewing axis
     float softness = 1.0f;          // filter radius in texels; 0 gives a bilinear-like edge
     float bias = 1.0f;              // scales the depth bias and the normal offset
+    // Glass (KHR_materials_transmission under `pbr`) casts apart from what
+    // blocks all light, laid out as `depth` and `block_nearest`: per texel
+    // the depth of the nearest transmitting caster (+infinity: none) and
+    // the share of light it lets through. The filter weighs a texel whose
+    // glass is nearer than the point by that share, so glass casts a
+    // lighter shadow. Empty when no glass casts.
+    struct Glass {
+        std::vector<float> depth, passes, block_nearest;
+    } glass;
 };
 
 // How much of the light reaches `position`, in [0, 1]: 0 in full shadow.

@@ -1,0 +1,95 @@
+#pragma once
+// Stage 7d of a frame: glass (KHR_materials_transmission under `pbr`),
+// drawn as real-time renderers draw it, over the finished opaque image.
+//
+// 1. The opaque pass leaves transmitting triangles out (they are
+//    coverage-tested, and the opaque pass's test refuses them), and notes
+//    the tiles where one would have shown.
+// 2. Depth peeling (Everitt 2001, "Interactive Order-Independent
+//    Transparency"), by triangle rather than by depth: layer k keeps, per
+//    sample, the nearest transmitting triangle that layers 1..k-1 did not
+//    keep there, so it is the k-th nearest glass surface at that sample,
+//    with the opaque surfaces still hiding glass behind them. Exact, and
+//    the same for any thread count. Up to kMaxGlassLayers layers.
+// 3. The layers are shaded back to front: each reads a mip chain of the
+//    image so far (shade/transmission_backdrop.hpp) along its refracted
+//    view, so glass seen through glass shows it.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "raster/rasterizer.hpp"
+#include "render/alpha_coverage.hpp"
+#include "render/frame_inputs.hpp"
+#include "render/world.hpp"
+#include "shade/transmission_backdrop.hpp"
+
+namespace facet {
+
+// Per triangle of the world: 1 where a transmitting material is drawn by
+// `pbr`, the one model that draws glass (the others draw it opaque, and a
+// warning says so); empty when none is.
+std::vector<uint8_t> transmitting_triangles(const World& world, const StylePlan& plan);
+
+// The share of a light's beam that glass of material `m` lets through to
+// its shadow, one number for the whole material (its maps and colour's
+// hue left out): what is not metal, times the transmission, times the
+// mean over the channels of the base colour and of what the volume leaves
+// across its thickness (Beer-Lambert).
+float shadow_pass(const Material& m);
+
+// Glass seen through more glass than this is drawn as far as this many
+// surfaces (a closed bottle shows two: its front and its back).
+constexpr int kMaxGlassLayers = 4;
+
+class TransmissionStage {
+  public:
+    TransmissionStage(const World& world, const StylePlan& plan);
+
+    // Per triangle of the world: 1 where a transmitting material is drawn
+    // by `pbr`; empty when none is.
+    const std::vector<uint8_t>& transmitting() const { return transmitting_; }
+
+    // Before a frame's opaque pass, for `raster`'s tiles.
+    void begin_frame(const Rasterizer& raster);
+
+    // The coverage test of layer `layer` (0: the opaque pass), deciding
+    // alpha-tested triangles by `alpha`. Valid until the next call.
+    CoverageTest test(int layer, const AlphaCoverage& alpha);
+
+    // The tiles layer `layer` draws (a byte per tile): those where the
+    // layer before it showed glass. All 0 once there is none.
+    std::span<const uint8_t> tiles_of(int layer) const { return shown_[layer - 1]; }
+    bool any_in(int layer) const;
+
+    // Layer `layer`'s pass over one tile: keeps its glass samples.
+    void keep_layer(int layer, const TileVisibility& tile, const Rasterizer& raster);
+
+    // Layer `layer`'s glass in a tile `tile_index` where tiles_of(layer)
+    // holds it (ids kNoTriangle elsewhere, row stride kTileSize).
+    TileVisibility layer_tile(int layer, int tile_index, const Rasterizer& raster) const;
+
+  private:
+    struct Test {
+        TransmissionStage* stage;
+        const AlphaCoverage* alpha;
+        const Rasterizer* raster;
+        int layer;
+    };
+    static bool keep(const void* context, uint32_t triangle, float b1, float b2, int x, int y);
+
+    std::vector<uint8_t> transmitting_;
+    std::vector<uint8_t> alpha_tested_;
+    // shown_[k][tile]: layer k (0: the opaque pass) had glass in the tile.
+    std::vector<uint8_t> shown_[kMaxGlassLayers + 1];
+    // ids_[k - 1][tile]: layer k's triangle ids of the tile, where shown.
+    std::vector<std::vector<uint32_t>> ids_[kMaxGlassLayers];
+    const Rasterizer* raster_ = nullptr;
+    Test test_{};
+};
+
+// The backdrop of a layer: `color` (the frame so far, linear RGBA,
+// premultiplied) with its mip chain, for `camera`.
+TransmissionBackdrop make_backdrop(const HalfColorImage& color, const CameraMatrices& camera);
+
+}  // namespace facet
