@@ -359,6 +359,29 @@ std::vector<GltfCamera> read_cameras(const tinygltf::Model& model, const std::st
 // file whose nodes (or instancing) repeat a large mesh asks for far more
 // than its size: each placement is checked against the memory there is
 // before it is made.
+// KHR_materials_volume gives the thickness in the mesh's own units, which
+// the bake scales by each instance's node transform: a part placed at a
+// scale other than 1 gets a copy of its material with the thickness
+// scaled, as the Khronos sample viewer scales it by the model matrix (the
+// attenuation distance is in the file's world units already).
+void scale_volume_thickness(Mesh& mesh, const std::vector<double>& part_scales) {
+    std::map<std::pair<uint32_t, double>, uint32_t> copies;
+    for (size_t i = 0; i < mesh.parts.size(); ++i) {
+        MeshPart& part = mesh.parts[i];
+        const double scale = part_scales[i];
+        if (!(mesh.materials[part.material].thickness > 0.0f) || std::abs(scale - 1.0) < 1e-6)
+            continue;
+        const auto [copy, added] =
+            copies.try_emplace({part.material, scale}, mesh.materials.size());
+        if (added) {
+            Material scaled = mesh.materials[part.material];
+            scaled.thickness = static_cast<float>(scaled.thickness * scale);
+            mesh.materials.push_back(std::move(scaled));
+        }
+        part.material = copy->second;
+    }
+}
+
 class NodeWalk {
   public:
     NodeWalk(const tinygltf::Model& model, const std::string& path, Mesh& mesh, MeshRig* rig,
@@ -373,6 +396,8 @@ class NodeWalk {
 
     void visit(int node_index, const glm::dmat4& parent, int depth);
     bool used_default_material() const { return used_default_; }
+    // Per part placed: how much its transform scales lengths.
+    const std::vector<double>& part_scales() const { return part_scales_; }
 
   private:
     const std::vector<std::optional<gltf_detail::MeshSpacePrimitive>>& primitives(int mesh_index);
@@ -390,6 +415,7 @@ class NodeWalk {
     bool used_default_ = false;
     std::map<int, std::vector<std::optional<gltf_detail::MeshSpacePrimitive>>> read_;
     std::set<int> on_path_;
+    std::vector<double> part_scales_;
 };
 
 const std::vector<std::optional<gltf_detail::MeshSpacePrimitive>>& NodeWalk::primitives(
@@ -425,6 +451,7 @@ void NodeWalk::place(int node_index, size_t primitive, const gltf_detail::MeshSp
                                                        first ? mesh_.warnings : repeated,
                                                        rig_ ? &source_vertex : nullptr, pool_));
     used_default_ = used_default_ || p.material == default_material_;
+    part_scales_.push_back(std::cbrt(std::abs(glm::determinant(glm::dmat3(world)))));
     if (!rig_) return;
     const tinygltf::Node& node = model_.nodes[static_cast<size_t>(node_index)];
     RigPart part;
@@ -591,6 +618,7 @@ Mesh load_gltf(const MeshFile& file, const AssetContext& context) {
         fallback.color = glm::vec3(1);
         mesh.materials.push_back(fallback);
     }
+    scale_volume_thickness(mesh, walk.part_scales());
     if (mesh.triangle_count() == 0) bad(path, "the glTF file has no triangles to render");
     mesh.rig = rig;
     if (rig) bake_rest_pose(mesh, *rig);

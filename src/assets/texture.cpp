@@ -216,17 +216,6 @@ Texture Texture::from_linear(int width, int height, const std::vector<glm::vec4>
     return from_base_level(format, std::move(base));
 }
 
-Texture Texture::from_half(int width, int height, std::vector<Rgba16F> texels) {
-    check_size(width, height);
-    if (texels.size() != static_cast<size_t>(width) * height)
-        throw Error(ExitCode::invalid_input, "texel count does not match the texture's size");
-    TextureLevel base;
-    base.width = width;
-    base.height = height;
-    base.half = std::move(texels);
-    return from_base_level(Format::half, std::move(base));
-}
-
 Texture Texture::from_base_level(Format format, TextureLevel base) {
     Texture t;
     t.width = base.width;

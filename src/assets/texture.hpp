@@ -102,9 +102,6 @@ struct Texture {
     static Texture from_linear(int width, int height, const std::vector<glm::vec4>& texels,
                                Format format);
 
-    // From half-float linear RGBA texels, kept as they are (a rendered
-    // image: render/transmission_stage.hpp).
-    static Texture from_half(int width, int height, std::vector<Rgba16F> texels);
     Format format() const { return format_; }
     int level_count() const { return levels_ ? static_cast<int>(levels_->size()) : 0; }
     const TextureLevel& level(int i) const { return (*levels_)[static_cast<size_t>(i)]; }

@@ -109,8 +109,12 @@ inline float half_to_float(uint16_t h) {
     return out;
 }
 
+// The four channels through one eight-lane conversion (the same bits as
+// four single ones: each lane is converted alone).
 inline Rgba16F to_half(const glm::vec4& c) {
-    return {float_to_half(c.r), float_to_half(c.g), float_to_half(c.b), float_to_half(c.a)};
+    const simd::vi h = float_to_half(simd::vf{c.r, c.g, c.b, c.a, 0.0f, 0.0f, 0.0f, 0.0f});
+    return {static_cast<uint16_t>(h[0]), static_cast<uint16_t>(h[1]), static_cast<uint16_t>(h[2]),
+            static_cast<uint16_t>(h[3])};
 }
 
 inline glm::vec4 to_float(const Rgba16F& c) {

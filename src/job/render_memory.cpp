@@ -6,6 +6,7 @@
 #include "output/exr_compression.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/frame_targets.hpp"
+#include "render/transmission_stage.hpp"
 
 namespace facet {
 namespace {
@@ -18,6 +19,12 @@ constexpr uint64_t kPerSample = 16 + 4;  // float colour and depth per sample
 constexpr uint64_t kPerLineSample = 16;  // a sample's stroke, float RGBA
 constexpr uint64_t kPerGbufferSample = 4 + 12 + 4;  // depth, normal, object id
 constexpr uint64_t kPerSurfaceShare = 4;            // a pixel's share of surface samples
+// Glass (render/transmission_stage.hpp): per pixel the frame as the
+// backdrop's pyramid of float RGB;
+// per sample the count of glass asked about, and its triangle id and
+// depth in each layer, at most every sample's.
+constexpr uint64_t kPerGlassPixel = 12 + 4;  // float RGB, its pyramid's levels (4/3)
+constexpr uint64_t kPerGlassSample = 1 + 8 * kMaxGlassLayers;
 constexpr uint64_t kPerOcclusionFactor = 4;         // occlusion's value per G-buffer element
 constexpr uint64_t kPerOcclusionCell = 20 + 4 + 4;  // a cell's depth, normal, object; raw, blurred
 
@@ -87,7 +94,9 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     // The frame being rendered, two queued, and one or two being encoded
     // (job/render_job.cpp).
     const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
-    const FrameTargets targets = plan_frame_targets(plan_styles(scene), out.passes);
+    const StylePlan plan = plan_styles(scene);
+    const FrameTargets targets = plan_frame_targets(plan, out.passes);
+    const bool glass = !transmitting_triangles(world, plan).empty();
     MemoryParts parts;
     parts.push_back({"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight});
     // One encoder, or two at once (job/render_job.cpp).
@@ -103,6 +112,8 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
         parts.push_back(
             {"ambient occlusion", elements * kPerOcclusionFactor + cells * kPerOcclusionCell});
     }
+    if (glass)  // render/transmission_stage.hpp
+        parts.push_back({"glass layers", pixels * kPerGlassPixel + samples * kPerGlassSample});
     parts.push_back({"triangles", static_cast<uint64_t>(world.triangle_count()) * kPerTriangle});
     const uint64_t vertex_bytes = static_cast<uint64_t>(world.positions.size()) * kPerVertex;
     parts.push_back({"vertices", vertex_bytes});
@@ -114,7 +125,8 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
         if (!light.shadows) continue;
         const uint64_t faces = light.type == LightType::point ? 6 : 1;
         const uint64_t side_texels = static_cast<uint64_t>(light.shadow_resolution);
-        shadows += side_texels * side_texels * faces * (4 + 4);  // depth map and its raster buffer
+        // The depth map and its raster buffer; with glass, its depth and share too.
+        shadows += side_texels * side_texels * faces * (glass ? 4 + 4 + 4 + 4 : 4 + 4);
     }
     parts.push_back({"shadow maps", shadows});
     return parts;

@@ -144,7 +144,10 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
                               FrameImages& out) {
     int layers = 0;
     while (layers < kMaxGlassLayers && glass_.any_in(layers)) {
-        const int layer = ++layers;
+        const int layer = layers + 1;
+        const std::span<const uint8_t> tiles = glass_.tiles_of(layer);
+        if (std::find(tiles.begin(), tiles.end(), 1) == tiles.end()) break;
+        layers = layer;
         rasterizer_.draw_tiles(
             pool_,
             [&](const TileVisibility& tile) {
@@ -152,7 +155,7 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
                 if (layer == 1 && targets_.surface_passes)
                     write_surface_passes(tile, rasterizer_, surface_in, out.surface);
             },
-            glass_.test(layer, alpha), glass_.tiles_of(layer));
+            glass_.test(layer, alpha), tiles);
     }
     return layers;
 }
@@ -162,18 +165,22 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
 void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
                                const SurfacePassInputs& surface_in, FrameImages& out) {
     const int layers = peel_glass(alpha, surface_in, out);
-    const ShadeTarget target = shade_target(out);
+    // Over the finished colour: no G-buffer, strokes or surface share.
+    ShadeTarget target = shade_target(out);
+    target.gbuffer = nullptr;
+    target.line_samples = nullptr;
+    target.surface_share = nullptr;
+    target.over_existing = true;
     const FrameInputs& inputs = shade_in.frame;
     for (int layer = layers; layer >= 1; --layer) {
-        const TransmissionBackdrop backdrop = make_backdrop(out.color, inputs.camera);
         ShadeInputs glass_in = shade_in;
-        glass_in.backdrop = &backdrop;
-        const std::span<const uint8_t> tiles = glass_.tiles_of(layer + 1);
+        glass_in.backdrop = &glass_.backdrop(out.color, inputs.camera, pool_);
+        const std::span<const uint8_t> tiles = glass_.glass_tiles(layer);
         pool_.parallel_for(tiles.size(), [&](size_t tile) {
             if (!tiles[tile]) return;
             const TileVisibility visible =
                 glass_.layer_tile(layer, static_cast<int>(tile), rasterizer_);
-            const ShadeCounts counts = shade_glass_tile(visible, rasterizer_, glass_in, target);
+            const ShadeCounts counts = shade_tile(visible, rasterizer_, glass_in, target);
             batches_ += counts.batches;
         });
         // At the samples the layer is resolved again; at the pixels it

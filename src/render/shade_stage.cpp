@@ -155,6 +155,7 @@ void write_chunk_over_nothing(const ShadeTarget& out, const glm::vec4& backgroun
     Rgba16F* pixels = &out.pixels_over_nothing->at(x, y);
     for (int i = 0; i < chunk.count; ++i) {
         if (chunk.id[i] == kMixedPixel) continue;
+        if (out.over_existing && !((shown >> i) & 1)) continue;  // keeps what it held
         const glm::vec3 color(chunk.color[0][i], chunk.color[1][i], chunk.color[2][i]);
         pixels[i] = (shown >> i) & 1 ? to_half(over_nothing(color, chunk.coverage[i], background))
                                      : to_half(glm::vec4(0.0f));
@@ -236,6 +237,18 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
     return shown;
 }
 
+// What the chunk's pixels hold, for a layer drawn over them
+// (ShadeTarget::over_existing).
+void load_existing(const TileVisibility& tile, const ShadeTarget& out, int side, RowChunk& chunk) {
+    const int x = tile.x0 / side + chunk.px0, y = tile.y0 / side + chunk.py;
+    for (int i = 0; i < kLanes; ++i) {
+        const int at = std::min(i, chunk.count - 1);
+        const glm::vec4 c = to_float(out.pixels->at(x + at, y));
+        for (int a = 0; a < 4; ++a) chunk.color[a][i] = c[a];
+        chunk.depth[i] = out.depth.at(x + at, y);
+    }
+}
+
 // Every pixel of the tile that is background or shows one triangle.
 // Pixels with samples of several things go into `mixed` as fragments.
 [[gnu::always_inline]] inline void shade_simple_pixels(const TileVisibility& tile,
@@ -253,17 +266,24 @@ void write_chunk_gbuffer(const ShadeTarget& out, int x, int y, const RowChunk& c
     for (chunk.py = 0; chunk.py < pixels_y; ++chunk.py)
         for (chunk.px0 = 0; chunk.px0 < pixels_x; chunk.px0 += kLanes) {
             chunk.count = std::min(kLanes, pixels_x - chunk.px0);
-            for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
+            bool any_mixed = false;
+            const unsigned shown_at_start = chunk_ids(tile, side, chunk, any_mixed);
+            unsigned shown = shown_at_start;
+            // Over existing pixels, a chunk its surfaces cover whole need
+            // not read what they held.
+            const bool covered = shown == (1u << chunk.count) - 1 && !any_mixed;
+            if (out.over_existing && !covered) {
+                load_existing(tile, out, side, chunk);
+            } else {
+                for (int a = 0; a < 4; ++a) chunk.color[a] = simd::splat(bg[a]);
+                chunk.depth = simd::splat(kInfinity);
+            }
             chunk.coverage = simd::splat(0.0f);
-            chunk.depth = simd::splat(kInfinity);
             if (want_normal) {
                 chunk.centre_depth = simd::splat(kInfinity);
                 for (vf& n : chunk.normal) n = simd::splat(0.0f);
                 std::fill(chunk.object, chunk.object + kLanes, kNoObject);
             }
-            bool any_mixed = false;
-            const unsigned shown_at_start = chunk_ids(tile, side, chunk, any_mixed);
-            unsigned shown = shown_at_start;
             // The next chunk's triangles are most likely not in cache yet
             // (a dense mesh shows a new triangle every pixel or two): ask
             // for their setup records now, while this chunk shades.
@@ -369,13 +389,20 @@ void shade_mixed_pixels(const TileVisibility& tile, const Rasterizer& raster, co
         if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
         const int px = f.pixel_x[at], py = f.pixel_y[at];
         const float empty_share = static_cast<float>(f.empty[f.pixel[at]]) * per_sample;
-        const glm::vec4 color = sums[f.pixel[at]] + bg * empty_share;
         const int x = tile.x0 / side + px, y = tile.y0 / side + py;
-        out.pixels->at(x, y) = to_half(color);
-        if (out.pixels_over_nothing)
-            out.pixels_over_nothing->at(x, y) = to_half(nothing_sums[f.pixel[at]]);
+        // The samples with no triangle show the background, or over
+        // existing pixels what the pixel held.
+        const glm::vec4 behind = out.over_existing ? to_float(out.pixels->at(x, y)) : bg;
+        out.pixels->at(x, y) = to_half(sums[f.pixel[at]] + behind * empty_share);
+        if (out.pixels_over_nothing) {
+            const glm::vec4 alone = out.over_existing
+                                        ? to_float(out.pixels_over_nothing->at(x, y)) * empty_share
+                                        : glm::vec4(0.0f);
+            out.pixels_over_nothing->at(x, y) = to_half(nothing_sums[f.pixel[at]] + alone);
+        }
         const NearestSample nearest = nearest_sample(tile, raster, side, px, py);
-        out.depth.at(x, y) = nearest.depth;
+        out.depth.at(x, y) =
+            out.over_existing ? std::min(out.depth.at(x, y), nearest.depth) : nearest.depth;
         if (!out.gbuffer) continue;
         int shown = at;  // the pixel's fragment of the nearest sample's triangle
         while (shown + 1 < f.count && f.id[shown] != nearest.id) ++shown;
@@ -420,6 +447,7 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
                     }
             }
         });
+    if (out.over_existing) return;  // the samples with no triangle keep theirs
     for (int ty = 0; ty < tile.height; ++ty)
         for (int tx = 0; tx < tile.width; ++tx) {
             if (tile.id[ty * kTileSize + tx] != kNoTriangle) continue;
@@ -432,77 +460,7 @@ void shade_every_sample(const TileVisibility& tile, const Rasterizer& raster, co
         }
 }
 
-// A glass layer's pixels over what they held.
-void shade_glass_pixels(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
-                        const ShadeTarget& out, const TileFragments& f, ShadeCounts& counts) {
-    const int side = f.side;
-    const float per_sample = 1.0f / static_cast<float>(side * side);
-    const size_t pixel_count = static_cast<size_t>(f.pixels_x * f.pixels_y);
-    std::vector<glm::vec4> sums(pixel_count, glm::vec4(0));
-    std::vector<float> nearest(pixel_count, kInfinity);
-    shade_fragments(f, raster, in, out, counts,
-                    [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
-                        for (int i = 0; i < b.count; ++i) {
-                            const int at = fragment[i];
-                            const float weight = static_cast<float>(f.samples[at]) * per_sample;
-                            const glm::vec3 color(r.color[0][i], r.color[1][i], r.color[2][i]);
-                            sums[f.pixel[at]] += glm::vec4(color, 1.0f) * weight;
-                        }
-                    });
-    for (int at = 0; at < f.count; ++at) {
-        const int px = f.pixel_x[at], py = f.pixel_y[at];
-        for (int sy = py * side; sy < (py + 1) * side; ++sy)
-            for (int sx = px * side; sx < (px + 1) * side; ++sx)
-                if (tile.id[sy * kTileSize + sx] == f.id[at])
-                    nearest[f.pixel[at]] =
-                        std::min(nearest[f.pixel[at]],
-                                 sample_depth(raster, f.id[at], tile.x0 + sx, tile.y0 + sy));
-    }
-    for (int at = 0; at < f.count; ++at) {
-        if (at > 0 && f.pixel[at] == f.pixel[at - 1]) continue;  // one write per pixel
-        const float behind = static_cast<float>(f.empty[f.pixel[at]]) * per_sample;
-        const int x = tile.x0 / side + f.pixel_x[at], y = tile.y0 / side + f.pixel_y[at];
-        const glm::vec4 glass = sums[f.pixel[at]];
-        Rgba16F& pixel = out.pixels->at(x, y);
-        pixel = to_half(glass + to_float(pixel) * behind);
-        if (out.pixels_over_nothing) {
-            Rgba16F& alone = out.pixels_over_nothing->at(x, y);
-            alone = to_half(glass + to_float(alone) * behind);
-        }
-        out.depth.at(x, y) = std::min(out.depth.at(x, y), nearest[f.pixel[at]]);
-    }
-}
-
 }  // namespace
-
-ShadeCounts shade_glass_tile(const TileVisibility& tile, const Rasterizer& raster,
-                             const ShadeInputs& in, const ShadeTarget& out) {
-    ShadeCounts counts;
-    TileFragments f;
-    build_tile_fragments(tile, in.samples_per_side, false, f);
-    if (f.count == 0) return counts;
-    if (out.resolution == ShadeResolution::pixels) {
-        shade_glass_pixels(tile, raster, in, out, f, counts);
-        return counts;
-    }
-    const int side = f.side;
-    shade_fragments(
-        f, raster, in, out, counts,
-        [&](const ShadeRequest& b, const ShadeResult& r, const int* fragment) {
-            for (int i = 0; i < b.count; ++i) {
-                const int at = fragment[i];
-                const glm::vec4 color(r.color[0][i], r.color[1][i], r.color[2][i], 1.0f);
-                for (int sy = f.pixel_y[at] * side; sy < (f.pixel_y[at] + 1) * side; ++sy)
-                    for (int sx = f.pixel_x[at] * side; sx < (f.pixel_x[at] + 1) * side; ++sx) {
-                        if (tile.id[sy * kTileSize + sx] != f.id[at]) continue;
-                        const int x = tile.x0 + sx, y = tile.y0 + sy;
-                        out.samples->at(x, y) = color;
-                        out.depth.at(x, y) = sample_depth(raster, f.id[at], x, y);
-                    }
-            }
-        });
-    return counts;
-}
 
 ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                        const ShadeTarget& out) {

@@ -72,6 +72,10 @@ struct ShadeTarget {
     // At `pixels` with a G-buffer: the share of each pixel's samples that
     // show a surface, so that occlusion leaves the background's share alone.
     Image<float>* surface_share;
+    // Samples without a triangle keep what the target holds instead of
+    // taking the background, and a pixel's depth is the nearer of the two:
+    // a glass layer drawn over the frame (render/transmission_stage.hpp).
+    bool over_existing = false;
 };
 
 // How many batches of eight points shading ran, and how many of them took
@@ -85,15 +89,5 @@ struct ShadeCounts {
 // tiles on several threads at once: writes only the tile's own pixels.
 ShadeCounts shade_tile(const TileVisibility& tile, const Rasterizer& raster, const ShadeInputs& in,
                        const ShadeTarget& out);
-
-// Shades a tile of one glass layer (render/transmission_stage.hpp): only
-// its samples with a triangle, over what the target holds. At `pixels` a
-// pixel becomes its glass fragments' colours weighted by their samples,
-// plus what it held times the share of samples without glass (its depth
-// the nearer of the two); at `samples` each glass sample takes its
-// fragment's colour, covering the background in full. The G-buffer and
-// line samples are left as they are.
-ShadeCounts shade_glass_tile(const TileVisibility& tile, const Rasterizer& raster,
-                             const ShadeInputs& in, const ShadeTarget& out);
 
 }  // namespace facet

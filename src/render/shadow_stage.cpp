@@ -164,11 +164,9 @@ void ShadowStage::draw_casters(LightMap& lm, int face, std::span<const uint32_t>
                 const uint32_t id = tile.id[at];
                 texels[row + tx] =
                     id == kNoTriangle ? infinity : shadow_depth_from_raster(map, tile.depth[at]);
-                if (passes)
-                    passes[row + tx] =
-                        id == kNoTriangle
-                            ? 1.0f
-                            : glass_passes_[lm.raster.shade_setup(id).source_triangle];
+                // Where no glass casts, the filter never reads the share.
+                if (passes && id != kNoTriangle)
+                    passes[row + tx] = glass_passes_[lm.raster.shade_setup(id).source_triangle];
             }
         }
         nearest_in_blocks(texels, size, tile, map.blocks, blocks);

@@ -36,6 +36,10 @@ void TransmissionStage::begin_frame(const Rasterizer& raster) {
     const size_t tiles = static_cast<size_t>(raster.tile_count());
     for (std::vector<uint8_t>& shown : shown_) shown.assign(tiles, 0);
     for (auto& layer : ids_) layer.resize(tiles);
+    for (auto& layer : depths_) layer.resize(tiles);
+    if (transmitting_.empty()) return;
+    asked_.assign(static_cast<size_t>(raster.width()) * raster.height(), 0);
+    most_glass_.assign(tiles, 0);
 }
 
 CoverageTest TransmissionStage::test(int layer, const AlphaCoverage& alpha) {
@@ -50,7 +54,12 @@ bool TransmissionStage::keep(const void* context, uint32_t triangle, float b1, f
     if (!stage.transmitting_.empty() && stage.transmitting_[triangle]) {
         const int tile = t.raster->tile_index(x, y);
         if (t.layer == 0) {
-            // Only this tile's thread writes its byte.
+            // Only this tile's thread writes its bytes.
+            const size_t sample = static_cast<size_t>(y) * t.raster->width() + x;
+            uint8_t& asked = stage.asked_[sample];
+            asked = static_cast<uint8_t>(std::min(asked + 1, 255));
+            uint8_t& most = stage.most_glass_[static_cast<size_t>(tile)];
+            most = std::max(most, asked);
             stage.shown_[0][static_cast<size_t>(tile)] = 1;
             return false;
         }
@@ -67,6 +76,14 @@ bool TransmissionStage::keep(const void* context, uint32_t triangle, float b1, f
     return alpha.keep(alpha.context, triangle, b1, b2, x, y);
 }
 
+std::span<const uint8_t> TransmissionStage::tiles_of(int layer) {
+    const std::vector<uint8_t>& before = shown_[layer - 1];
+    wanted_.resize(before.size());
+    for (size_t t = 0; t < before.size(); ++t)
+        wanted_[t] = before[t] && most_glass_[t] >= layer ? 1 : 0;
+    return wanted_;
+}
+
 bool TransmissionStage::any_in(int layer) const {
     const std::vector<uint8_t>& shown = shown_[layer];
     return std::find(shown.begin(), shown.end(), 1) != shown.end();
@@ -76,7 +93,9 @@ void TransmissionStage::keep_layer(int layer, const TileVisibility& tile,
                                    const Rasterizer& raster) {
     const size_t index = static_cast<size_t>(raster.tile_index(tile.x0, tile.y0));
     std::vector<uint32_t>& ids = ids_[layer - 1][index];
+    std::vector<float>& depths = depths_[layer - 1][index];
     ids.assign(static_cast<size_t>(kTileSize) * kTileSize, kNoTriangle);
+    depths.assign(ids.size(), 0.0f);
     bool any = false;
     for (int y = 0; y < tile.height; ++y)
         for (int x = 0; x < tile.width; ++x) {
@@ -85,6 +104,7 @@ void TransmissionStage::keep_layer(int layer, const TileVisibility& tile,
             if (id == kNoTriangle || !transmitting_[raster.shade_setup(id).source_triangle])
                 continue;
             ids[at] = id;
+            depths[at] = tile.depth[at];
             any = true;
         }
     shown_[layer][index] = any ? 1 : 0;
@@ -99,17 +119,16 @@ TileVisibility TransmissionStage::layer_tile(int layer, int tile_index,
             y0,
             std::min(size, raster.width() - x0),
             std::min(size, raster.height() - y0),
-            nullptr,
+            depths_[layer - 1][static_cast<size_t>(tile_index)].data(),
             ids_[layer - 1][static_cast<size_t>(tile_index)].data()};
 }
 
-TransmissionBackdrop make_backdrop(const HalfColorImage& color, const CameraMatrices& camera) {
-    TransmissionBackdrop backdrop;
-    backdrop.image = Texture::from_half(
-        color.width, color.height, std::vector<Rgba16F>(color.pixels.begin(), color.pixels.end()));
-    backdrop.image.sampler.wrap_s = backdrop.image.sampler.wrap_t = Wrap::clamp;
-    backdrop.view_projection = camera.view_projection;
-    return backdrop;
+const TransmissionBackdrop& TransmissionStage::backdrop(const HalfColorImage& color,
+                                                        const CameraMatrices& camera,
+                                                        ThreadPool& pool) {
+    backdrop_.image.build(color, pool);
+    backdrop_.view_projection = camera.view_projection;
+    return backdrop_;
 }
 
 }  // namespace facet

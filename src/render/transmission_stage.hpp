@@ -58,14 +58,23 @@ class TransmissionStage {
     CoverageTest test(int layer, const AlphaCoverage& alpha);
 
     // The tiles layer `layer` draws (a byte per tile): those where the
-    // layer before it showed glass. All 0 once there is none.
-    std::span<const uint8_t> tiles_of(int layer) const { return shown_[layer - 1]; }
+    // layer before it showed glass and the opaque pass saw at least
+    // `layer` glass triangles over a sample. All 0 once there is none.
+    std::span<const uint8_t> tiles_of(int layer);
+    // The tiles where layer `layer` has glass (a byte per tile), after its pass.
+    std::span<const uint8_t> glass_tiles(int layer) const { return shown_[layer]; }
     bool any_in(int layer) const;
 
     // Layer `layer`'s pass over one tile: keeps its glass samples.
     void keep_layer(int layer, const TileVisibility& tile, const Rasterizer& raster);
 
-    // Layer `layer`'s glass in a tile `tile_index` where tiles_of(layer)
+    // The backdrop of a layer: `color` (the frame so far, linear RGBA,
+    // premultiplied) as a pyramid, for `camera`, made on `pool`. Valid
+    // until the next call.
+    const TransmissionBackdrop& backdrop(const HalfColorImage& color, const CameraMatrices& camera,
+                                         ThreadPool& pool);
+
+    // Layer `layer`'s glass in a tile `tile_index` where glass_tiles(layer)
     // holds it (ids kNoTriangle elsewhere, row stride kTileSize).
     TileVisibility layer_tile(int layer, int tile_index, const Rasterizer& raster) const;
 
@@ -82,14 +91,20 @@ class TransmissionStage {
     std::vector<uint8_t> alpha_tested_;
     // shown_[k][tile]: layer k (0: the opaque pass) had glass in the tile.
     std::vector<uint8_t> shown_[kMaxGlassLayers + 1];
-    // ids_[k - 1][tile]: layer k's triangle ids of the tile, where shown.
+    // ids_[k - 1][tile] and depths_[k - 1][tile]: layer k's triangle ids
+    // and depths in the tile, where shown.
     std::vector<std::vector<uint32_t>> ids_[kMaxGlassLayers];
+    std::vector<std::vector<float>> depths_[kMaxGlassLayers];
+    // The opaque pass counts, per sample, the glass triangles asked about:
+    // each glass surface a layer can show there was asked about (it was
+    // nearer than anything drawn before it), so a tile needs no more
+    // layers than its largest count (most_glass_).
+    std::vector<uint8_t> asked_;
+    std::vector<uint8_t> most_glass_;
+    std::vector<uint8_t> wanted_;  // tiles_of's
     const Rasterizer* raster_ = nullptr;
     Test test_{};
+    TransmissionBackdrop backdrop_;
 };
-
-// The backdrop of a layer: `color` (the frame so far, linear RGBA,
-// premultiplied) with its mip chain, for `camera`.
-TransmissionBackdrop make_backdrop(const HalfColorImage& color, const CameraMatrices& camera);
 
 }  // namespace facet

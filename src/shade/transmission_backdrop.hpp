@@ -7,19 +7,50 @@
 // opaque surfaces first, a mip chain of their colour, then the glass
 // reading it (render/transmission_stage.hpp draws the layers). docs/pbr.md,
 // "Transmission", gives the formulas.
+#include <vector>
+
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "assets/texture.hpp"
+#include "core/half.hpp"
+#include "core/thread_pool.hpp"
 
 namespace facet {
 
 struct EnvironmentLighting;  // shade/model_pbr.hpp
 
+// A frame's linear colour as a pyramid of float RGB levels (Williams 1983):
+// level 0 the frame's pixels, each next the 2 x 2 box average of the one
+// before (an odd last row or column averaged with itself), read
+// trilinearly and clamped at the frame's edges, as a GPU reads a
+// mipmapped render target. Its own, not a material Texture's: float
+// texels, built every layer of every frame, read only this way. Rebuilt
+// in place, so its buffers last from frame to frame.
+class BackdropPyramid {
+  public:
+    // From `color` (linear RGBA, premultiplied: its RGB is what shows), on
+    // `pool`'s threads; the same bits for any thread count.
+    void build(const HalfColorImage& color, ThreadPool& pool);
+    // log2 of the frame's width: the level that spans the whole frame.
+    float widest_level() const { return widest_level_; }
+    // `lod` log2 of the pixels a lookup spans; uv (0, 0) the frame's
+    // top-left corner, (1, 1) its bottom-right.
+    glm::vec3 sample(glm::vec2 uv, float lod) const;
+
+  private:
+    struct Level {
+        int width = 0, height = 0;
+        std::vector<glm::vec3> texels;  // row by row, top to bottom
+    };
+    glm::vec3 bilinear(const Level& level, glm::vec2 uv) const;
+    std::vector<Level> levels_;
+    size_t count_ = 0;  // levels in use (levels_ keeps the buffers of more)
+    float widest_level_ = 0.0f;
+};
+
 struct TransmissionBackdrop {
-    // Linear RGB of what lies behind, with its mip chain, clamped at the
-    // frame's edges.
-    Texture image;
+    BackdropPyramid image;      // what lies behind
     glm::mat4 view_projection;  // world -> clip, the frame's camera
 };
 
