@@ -65,6 +65,7 @@ struct GlResult {
     size_t coverage_mismatch_px = 0;  // pixels covered in one image only
     size_t differing = 0;             // pixels covered in both whose colour differs by > 8/255
     double mean_abs_diff = NAN;       // over pixels covered in both, largest channel, /255
+    int max_abs_diff = 0;             // the largest of those, /255
 };
 
 // Draws `frames` of the scene with OpenGL on llvmpipe through OSMesa, in this

@@ -96,7 +96,8 @@ std::string describe(const GlResult& g) {
                     " ms/frame (CPU " + fmt(g.job_cpu_ms, 2) + "); " + g.features +
                     "; check: " + with_thousands(g.coverage_mismatch_px) +
                     " px covered by one only, " + with_thousands(g.differing) +
-                    " px differ by > 8/255, mean |diff| " + fmt(g.mean_abs_diff, 2) + "/255";
+                    " px differ by > 8/255, mean |diff| " + fmt(g.mean_abs_diff, 2) + "/255, max " +
+                    std::to_string(g.max_abs_diff) + "/255";
     if (g.min_covered == 0) s += "; WARNING: frames with nothing drawn";
     return s;
 }
@@ -112,11 +113,11 @@ std::string format_gl_result(const GlResult& r) {
                   "render_ms=%.4f render_min_ms=%.4f render_max_ms=%.4f render_cpu_ms=%.4f "
                   "job_ms=%.4f job_min_ms=%.4f job_max_ms=%.4f job_cpu_ms=%.4f raster_threads=%d "
                   "min_covered=%zu coverage_mismatch_px=%zu differing=%zu mean_abs_diff=%.4f "
-                  "renderer=%s features=%s",
+                  "max_abs_diff=%d renderer=%s features=%s",
                   r.render_ms.median, r.render_ms.min, r.render_ms.max, r.render_cpu_ms,
                   r.job_ms.median, r.job_ms.min, r.job_ms.max, r.job_cpu_ms, r.raster_threads_seen,
                   r.min_covered, r.coverage_mismatch_px, r.differing, r.mean_abs_diff,
-                  word(r.renderer).c_str(), word(r.features).c_str());
+                  r.max_abs_diff, word(r.renderer).c_str(), word(r.features).c_str());
     return line;
 }
 
@@ -151,6 +152,7 @@ GlResult parse_gl_result(const std::string& line, int lp_threads, bool specialis
     r.coverage_mismatch_px = static_cast<size_t>(number("coverage_mismatch_px"));
     r.differing = static_cast<size_t>(number("differing"));
     r.mean_abs_diff = number("mean_abs_diff");
+    r.max_abs_diff = static_cast<int>(number("max_abs_diff"));
     r.renderer = text("renderer");
     r.features = text("features");
     r.ok = true;

@@ -1,6 +1,7 @@
 #include "llvmpipe_pbr.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <stdexcept>
@@ -10,10 +11,12 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "anim/track.hpp"
+#include "assets/mesh.hpp"
 #include "core/display_transform.hpp"
 #include "render/shade_lights.hpp"
 #include "shade/brdf.hpp"
 #include "shade/environment_map.hpp"
+#include "shade/lanes.hpp"
 #include "shade/model_pbr.hpp"
 
 namespace facet_bench {
@@ -24,6 +27,7 @@ namespace {
 constexpr int kDfgUnit = 2;
 constexpr int kEnvironmentUnit = 3;
 constexpr int kSheenUnit = 4;
+static_assert(PbrPeer::kBackdropUnit > kSheenUnit);
 
 // The surface at a fragment and the BRDF under one light: point_at and
 // light_response of src/shade/model_pbr.cpp with brdf.hpp's formulas
@@ -33,7 +37,8 @@ constexpr int kSheenUnit = 4;
 // them as facet does, inputs clamped to the grid; SheenTable::lookup the
 // same from its own table. The sheen (brdf_layers.hpp's with_sheen and
 // with_sheen_environment) is compiled in only when a material has one,
-// as a GL programmer would.
+// as a GL programmer would; so is the transmission (TRANSMISSION, the
+// glass draws' program only).
 const char* kSurfaceGlsl = R"(
 const float kPi = 3.14159265358979323846;
 const float kMinRoughness = 0.045;
@@ -49,12 +54,20 @@ uniform vec3 u_sheen_color;
 uniform float u_sheen_roughness;
 uniform sampler2D u_sheen;  // E_s: column n.v, row sheen roughness
 #endif
+#ifdef TRANSMISSION
+uniform float u_transmission;
+uniform float u_ior;
+#endif
 
 struct Surface {
     vec3 position, n, v, base, f0;
     float n_dot_v, metallic, roughness, alpha, f90;
     vec2 dfg;  // scale, bias
     vec3 metal_compensation, dielectric_compensation;
+    vec3 diffuse_albedo;  // the base's diffuse share: all of it, 1 - t of it under a transmission
+#ifdef TRANSMISSION
+    float transmission, transmission_roughness, transmission_alpha;
+#endif
 #ifdef SHEEN
     vec3 sheen_color;
     float sheen_max, sheen_roughness, sheen_alpha, lambda_v, albedo_v, keeps_v;
@@ -118,6 +131,19 @@ vec3 with_sheen(Surface s, float n_cross_h2, float n_dot_l, vec3 result) {
 }
 #endif
 
+#ifdef TRANSMISSION
+// brdf_layers.hpp's prepare_transmission_terms: the diffuse keeps 1 - t,
+// and the refraction's lobe is the surface's with its roughness scaled by
+// clamp(2 ior - 2, 0, 1) (an index of 1 bends nothing, so blurs nothing).
+void prepare_transmission(inout Surface s) {
+    s.transmission = clamp(u_transmission, 0.0, 1.0);
+    s.diffuse_albedo = s.diffuse_albedo * (1.0 - s.transmission);
+    s.transmission_roughness = s.roughness * clamp(2.0 * u_ior - 2.0, 0.0, 1.0);
+    float r = clamp(s.transmission_roughness, kMinRoughness, 1.0);
+    s.transmission_alpha = r * r;
+}
+#endif
+
 Surface surface_at(vec3 position, vec3 n, vec3 base) {
     Surface s;
     s.position = position;
@@ -137,38 +163,82 @@ Surface surface_at(vec3 position, vec3 n, vec3 base) {
     float k = 1.0 / (s.dfg.x + s.dfg.y) - 1.0;
     s.metal_compensation = vec3(1.0) + s.base * k;
     s.dielectric_compensation = vec3(1.0) + s.f0 * k;
+    s.diffuse_albedo = base;
 #ifdef SHEEN
     prepare_sheen(s);
+#endif
+#ifdef TRANSMISSION
+    prepare_transmission(s);
 #endif
     return s;
 }
 
-// GGX with the denominator from |n x h|^2 and height-correlated Smith,
-// both from the symmetric half vector l + v; Schlick's weight.
-vec3 light_response(Surface s, vec3 l) {
-    float n_dot_l = dot(s.n, l);
-    if (!(n_dot_l > 0.0)) return vec3(0.0);
-    vec3 sum = l + s.v;
+// The symmetric half vector l + v: n.h, |n x h|^2 and v.h.
+struct HalfVector {
+    float n_dot_h, n_cross_h2, v_dot_h;
+};
+HalfVector half_vector(vec3 n, vec3 v, vec3 l) {
+    vec3 sum = l + v;
     float s2 = dot(sum, sum);
-    float n_dot_h = 0.0, n_cross_h2 = 1.0, v_dot_h = 0.0;
+    HalfVector h = HalfVector(0.0, 1.0, 0.0);
     if (s2 > 1e-12) {
         float sum_length = sqrt(s2);
-        vec3 n_cross_s = cross(s.n, sum);
-        n_dot_h = dot(s.n, sum) / sum_length;
-        n_cross_h2 = dot(n_cross_s, n_cross_s) / s2;
-        v_dot_h = 0.5 * sum_length;
+        vec3 n_cross_s = cross(n, sum);
+        h.n_dot_h = dot(n, sum) / sum_length;
+        h.n_cross_h2 = dot(n_cross_s, n_cross_s) / s2;
+        h.v_dot_h = 0.5 * sum_length;
     }
-    float a2 = s.alpha * s.alpha;
-    float d = n_dot_h * n_dot_h * a2 + n_cross_h2;
-    float distribution = n_dot_h > 0.0 ? a2 / (kPi * d * d) : 0.0;
-    float view_root = sqrt(s.n_dot_v * s.n_dot_v * (1.0 - a2) + a2);
+    return h;
+}
+
+// GGX with the denominator from |n x h|^2 times height-correlated Smith.
+float specular_lobe(HalfVector h, float n_dot_l, float n_dot_v, float alpha) {
+    float a2 = alpha * alpha;
+    float d = h.n_dot_h * h.n_dot_h * a2 + h.n_cross_h2;
+    float distribution = h.n_dot_h > 0.0 ? a2 / (kPi * d * d) : 0.0;
+    float view_root = sqrt(n_dot_v * n_dot_v * (1.0 - a2) + a2);
     float light_root = sqrt(n_dot_l * n_dot_l * (1.0 - a2) + a2);
-    float specular = distribution * (0.5 / (n_dot_l * view_root + s.n_dot_v * light_root));
+    return distribution * (0.5 / (n_dot_l * view_root + n_dot_v * light_root));
+}
+
+float schlick_weight(float v_dot_h) {
     float m = 1.0 - clamp(v_dot_h, 0.0, 1.0);
     float m2 = m * m;
-    float w = m2 * m2 * m;
+    return m2 * m2 * m;
+}
+
+#ifdef TRANSMISSION
+uniform vec3 u_transmittance;  // what the volume leaves across its thickness (Beer-Lambert)
+
+// A light behind the surface through the specular BTDF, the light mirrored
+// to the viewer's side (brdf_layers.hpp's with_transmission):
+//   (1 - metallic) t T base (1 - F(v.h')) D(h') V(n.l', n.v) |n.l|
+vec3 light_behind(Surface s, vec3 l, float n_dot_l) {
+    if (!(s.transmission > 0.0)) return vec3(0.0);
+    vec3 mirrored = l - 2.0 * n_dot_l * s.n;
+    float cosine = -n_dot_l;
+    HalfVector h = half_vector(s.n, s.v, mirrored);
+    float lobe = specular_lobe(h, cosine, s.n_dot_v, s.transmission_alpha);
+    vec3 fd = s.f0 + (vec3(s.f90) - s.f0) * schlick_weight(h.v_dot_h);
+    float share = (1.0 - s.metallic) * s.transmission * lobe * cosine;
+    return (vec3(1.0) - fd) * share * s.base * u_transmittance;
+}
+#endif
+
+// The base's BRDF under one light, the sheen over it, and under a
+// transmission the light from behind.
+vec3 light_response(Surface s, vec3 l) {
+    float n_dot_l = dot(s.n, l);
+#ifdef TRANSMISSION
+    if (n_dot_l < 0.0) return light_behind(s, l, n_dot_l);
+#endif
+    if (!(n_dot_l > 0.0)) return vec3(0.0);
+    HalfVector h = half_vector(s.n, s.v, l);
+    float n_cross_h2 = h.n_cross_h2;
+    float specular = specular_lobe(h, n_dot_l, s.n_dot_v, s.alpha);
+    float w = schlick_weight(h.v_dot_h);
     vec3 fd = s.f0 + (vec3(s.f90) - s.f0) * w;
-    vec3 dielectric = (vec3(1.0) - fd) * (1.0 / kPi) * s.base +
+    vec3 dielectric = (vec3(1.0) - fd) * (1.0 / kPi) * s.diffuse_albedo +
                       fd * specular * s.dielectric_compensation;
     vec3 metal = (s.base + (vec3(1.0) - s.base) * w) * specular * s.metal_compensation;
     vec3 result = ((1.0 - s.metallic) * dielectric + s.metallic * metal) * n_dot_l;
@@ -184,13 +254,72 @@ vec3 environment_response(Surface s, vec3 diffuse, vec3 specular) {
     vec3 dielectric_lobe =
         (s.f0 * s.dfg.x + vec3(s.f90 * s.dfg.y)) * s.dielectric_compensation;
     vec3 metal_lobe = (s.base * s.dfg.x + vec3(s.dfg.y)) * s.metal_compensation;
-    vec3 dielectric = (vec3(1.0) - min(dielectric_lobe, vec3(1.0))) * s.base * diffuse +
+    vec3 dielectric = (vec3(1.0) - min(dielectric_lobe, vec3(1.0))) * s.diffuse_albedo * diffuse +
                       dielectric_lobe * specular;
     vec3 result = (1.0 - s.metallic) * dielectric + s.metallic * metal_lobe * specular;
 #ifdef SHEEN
     if (s.sheen_max > 0.0) result = result * s.keeps_v + s.sheen_color * s.albedo_v * diffuse;
 #endif
     return result;
+}
+
+#ifdef TRANSMISSION
+// What the surface passes of the radiance behind it (brdf.hpp's
+// transmitted_response): the dielectric's share t, tinted by the base
+// colour and the volume, weighted by what its specular lobe leaves, under
+// the sheen as the environment's diffuse light.
+vec3 transmitted_response(Surface s, vec3 behind) {
+    vec3 lobe = (s.f0 * s.dfg.x + vec3(s.f90 * s.dfg.y)) * s.dielectric_compensation;
+    vec3 result = (1.0 - s.metallic) * (vec3(1.0) - min(lobe, vec3(1.0))) * s.transmission *
+                  u_transmittance * s.base * behind;
+#ifdef SHEEN
+    if (s.sheen_max > 0.0) result *= s.keeps_v;
+#endif
+    return result;
+}
+#endif
+)";
+
+// The glass's view of what lies behind it (shade/transmission_backdrop.cpp's
+// radiance_behind): the opaque pass's linear colour, resolved into a
+// half-float texture with its 2x2 box mip chain, clamped to its edges and
+// read trilinearly where the view refracted by refract(-v, n, 1 / ior)
+// leaves the volume, position + thickness * that direction, at level
+// log2(width) * the refraction's roughness. With dispersion each channel
+// takes its own index, ior -+ (ior - 1) 0.025 dispersion. GL's texture
+// rows run bottom-up, so v is 0.5 (y / w + 1) where facet's image rows,
+// top-down, take 0.5 (1 - y / w): the same place.
+const char* kBackdropGlsl = R"(
+uniform sampler2D u_backdrop;
+uniform mat4 u_view_projection;
+uniform float u_thickness;  // world units: the material's times the object's scale
+#ifdef DISPERSION
+uniform float u_dispersion;
+#endif
+
+vec2 backdrop_uv(vec3 point, vec3 fallback) {
+    vec4 clip = u_view_projection * vec4(point, 1.0);
+    if (!(clip.w > 0.0)) clip = u_view_projection * vec4(fallback, 1.0);
+    if (!(clip.w > 0.0)) return vec2(0.5);
+    return 0.5 * (clip.xy / clip.w) + 0.5;
+}
+
+vec4 backdrop_along(Surface s, float ior, float lod) {
+    // Entering a denser medium the view always refracts.
+    vec3 direction = refract(-s.v, s.n, 1.0 / max(ior, 1.0));
+    vec3 exit = s.position + u_thickness * direction;
+    return textureLod(u_backdrop, backdrop_uv(exit, s.position), lod);
+}
+
+vec3 radiance_behind(Surface s) {
+    float lod = kBackdropLevelScale * s.transmission_roughness;
+#ifdef DISPERSION
+    float spread = (u_ior - 1.0) * 0.025 * u_dispersion;
+    return vec3(backdrop_along(s, u_ior - spread, lod).r, backdrop_along(s, u_ior, lod).g,
+                backdrop_along(s, u_ior + spread, lod).b);
+#else
+    return backdrop_along(s, u_ior, lod).rgb;
+#endif
 }
 )";
 
@@ -291,7 +420,10 @@ vec3 neutral(vec3 c) {
 
 // The lights (the scene's directional, point and spot lights), then the
 // environment, then the ambient lights as a uniform environment, times
-// the exposure, through the tone curve; the framebuffer encodes sRGB.
+// the exposure, through the tone curve; the framebuffer encodes sRGB. In a
+// scene with glass (LINEAR_OUTPUT) the draws leave linear light, as facet's
+// frame holds it, for the glass to read and add to; the present pass
+// applies exposure and tone curve after them.
 const char* kMainGlsl = R"(
 in vec3 v_world;
 in vec3 v_normal;
@@ -326,9 +458,16 @@ void main() {
     vec3 n = len > 0.0 ? v_normal * (1.0 / len) : vec3(0.0, 1.0, 0.0);
     if (!gl_FrontFacing) n = -n;
     Surface s = surface_at(v_world, n, base);
+#ifdef LINEAR_OUTPUT
+    vec3 colour = direct_light(s) + indirect_light(s);
+#ifdef TRANSMISSION
+    colour += transmitted_response(s, radiance_behind(s));
+#endif
+#else
     vec3 colour = (direct_light(s) + indirect_light(s)) * kExposureGain;
 #ifdef NEUTRAL
     colour = neutral(colour);
+#endif
 #endif
     frag_color = vec4(colour, 1.0);
 }
@@ -353,8 +492,11 @@ std::vector<LightKind> light_kinds(const facet::SceneDesc& scene, const facet::W
 
 // direct_light, unrolled over the scene's lights: pi times each light's
 // radiance (facet's intensities are irradiance over pi), its shadow for
-// the shadow light, times the BRDF and cosine.
-std::string direct_light_glsl(const std::vector<LightKind>& kinds, int shadow_index) {
+// the shadow light, times the BRDF and cosine. `behind_too`: the light
+// also arrives from behind (a transmission), its shadow looked up on that
+// side, as model_pbr.cpp's direct_light does.
+std::string direct_light_glsl(const std::vector<LightKind>& kinds, int shadow_index,
+                              bool behind_too) {
     auto flag = [](bool b) { return b ? "true" : "false"; };
     std::string glsl =
         "vec3 direct_light(Surface s) {\n    vec3 sum = vec3(0.0);\n    vec3 l, radiance;\n";
@@ -363,7 +505,9 @@ std::string direct_light_glsl(const std::vector<LightKind>& kinds, int shadow_in
                 flag(kinds[i].point) + ", " + flag(kinds[i].ranged) + ", " + flag(kinds[i].spot) +
                 ", l);\n";
         if (static_cast<int>(i) == shadow_index)
-            glsl += "    if (dot(s.n, l) > 0.0) radiance *= shadow(s.position, s.n);\n";
+            glsl += behind_too
+                        ? "    radiance *= shadow(s.position, dot(s.n, l) < 0.0 ? -s.n : s.n);\n"
+                        : "    if (dot(s.n, l) > 0.0) radiance *= shadow(s.position, s.n);\n";
         glsl += "    sum += kPi * radiance * light_response(s, l);\n";
     }
     return glsl + "    return sum;\n}\n";
@@ -380,7 +524,8 @@ int uploaded_index(const facet::SceneDesc& scene, int scene_light) {
 }
 
 // What the port leaves out, named, for a material that has it: maps,
-// emission, alpha, and the layers other than a sheen of constants.
+// emission, alpha, and the layers other than a sheen and a transmission of
+// constants.
 void check_material(const facet::Material& m) {
     const char* missing = m.clearcoat > 0.0f              ? "a clear coat"
                           : m.iridescence > 0.0f          ? "a thin film"
@@ -395,6 +540,40 @@ void check_material(const facet::Material& m) {
                                  " (material " + m.name + ")");
 }
 
+// What the port leaves out of glass: its inner surfaces, which facet
+// peels and shows through the front ones, and its shadow, which facet
+// makes lighter by what the glass lets through (the port's map is depth
+// only, so its glass would cast a black one).
+void check_glass(const facet::World& world, const facet::Draw& d, int shadow_light) {
+    const facet::Material& m = world.materials[d.material];
+    const char* missing = m.double_sided ? "double-sided glass"
+                          : shadow_light >= 0 && world.casts_shadows[d.object] ? "a glass's shadow"
+                                                                               : nullptr;
+    if (missing)
+        throw std::runtime_error("the llvmpipe pbr port does not draw " + std::string(missing) +
+                                 " (material " + m.name + ")");
+}
+
+// The full-screen pass that ends a frame with glass: the frame's linear
+// light, resolved, times the exposure, through the tone curve, into the
+// sRGB framebuffer; one triangle covering the viewport.
+const char* kPresentVertexGlsl = R"(
+void main() {
+    gl_Position = vec4(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0, 0.0, 1.0);
+}
+)";
+const char* kPresentFragmentGlsl = R"(
+uniform sampler2D u_frame;
+out vec4 frag_color;
+void main() {
+    vec3 colour = texelFetch(u_frame, ivec2(gl_FragCoord.xy), 0).rgb * kExposureGain;
+#ifdef NEUTRAL
+    colour = neutral(colour);
+#endif
+    frag_color = vec4(colour, 1.0);
+}
+)";
+
 }  // namespace
 
 PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World& world,
@@ -404,6 +583,10 @@ PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World
         const facet::Material& m = world.materials[d.material];
         check_material(m);
         sheen_ = sheen_ || m.sheen_color != glm::vec3(0.0f);
+        if (!transmits(m)) continue;
+        check_glass(world, d, shadow_light);
+        glass_ = true;
+        dispersion_ = dispersion_ || m.dispersion > 0.0f;
     }
     const facet::Tonemap tonemap = scene.output.display.tonemap;
     if (tonemap != facet::Tonemap::none && tonemap != facet::Tonemap::neutral)
@@ -415,18 +598,40 @@ PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World
     char gain[64];
     std::snprintf(gain, sizeof gain, "const float kExposureGain = %.9g;\n",
                   facet::exposure_gain(scene.output.display));
-    fragment_ = "#define DFG_SIZE " + std::to_string(facet::pbr::DfgTable::kSize) + "\n" +
-                "#define LEVELS " + std::to_string(facet::pbr::kEnvironmentLevels) + "\n" +
-                (world.environment ? "#define ENVIRONMENT\n" : "") +
-                (ambient ? "#define AMBIENT\n" : "") + (sheen_ ? "#define SHEEN\n" : "") +
-                (tonemap == facet::Tonemap::neutral ? "#define NEUTRAL\n" : "") + gain +
-                kSurfaceGlsl + (world.environment ? kEnvironmentGlsl : "") +
-                (tonemap == facet::Tonemap::neutral ? kNeutralGlsl : "") +
-                direct_light_glsl(light_kinds(scene, world), uploaded_index(scene, shadow_light)) +
-                kMainGlsl;
+    const bool neutral = tonemap == facet::Tonemap::neutral;
+    tone_ =
+        (neutral ? "#define NEUTRAL\n" : "") + std::string(gain) + (neutral ? kNeutralGlsl : "");
+    defines_ = "#define DFG_SIZE " + std::to_string(facet::pbr::DfgTable::kSize) + "\n" +
+               "#define LEVELS " + std::to_string(facet::pbr::kEnvironmentLevels) + "\n" +
+               (world.environment ? "#define ENVIRONMENT\n" : "") +
+               (ambient ? "#define AMBIENT\n" : "") + (sheen_ ? "#define SHEEN\n" : "");
+    const std::vector<LightKind> kinds = light_kinds(scene, world);
+    const int shadow_index = uploaded_index(scene, shadow_light);
+    direct_light_ = direct_light_glsl(kinds, shadow_index, false);
+    if (glass_) glass_direct_light_ = direct_light_glsl(kinds, shadow_index, true);
     upload_dfg_table();
     if (sheen_) upload_sheen_table();
     if (world.environment) upload_environment();
+}
+
+std::string PbrPeer::fragment_shader(PbrOutput output) const {
+    const std::string environment = world_.environment ? kEnvironmentGlsl : "";
+    if (output == PbrOutput::displayed)
+        return defines_ + tone_ + kSurfaceGlsl + environment + direct_light_ + kMainGlsl;
+    if (output == PbrOutput::linear)
+        return defines_ + "#define LINEAR_OUTPUT\n" + kSurfaceGlsl + environment + direct_light_ +
+               kMainGlsl;
+    // The glass reads the backdrop's levels up to log2 of its width.
+    char scale[64];
+    std::snprintf(scale, sizeof scale, "const float kBackdropLevelScale = %.9g;\n",
+                  std::log2(static_cast<float>(scene_.output.width)));
+    return defines_ + "#define LINEAR_OUTPUT\n#define TRANSMISSION\n" +
+           (dispersion_ ? "#define DISPERSION\n" : "") + scale + kSurfaceGlsl + environment +
+           kBackdropGlsl + glass_direct_light_ + kMainGlsl;
+}
+
+ShaderSources PbrPeer::present_shaders() const {
+    return {kPresentVertexGlsl, tone_ + kPresentFragmentGlsl};
 }
 
 void PbrPeer::upload_dfg_table() {
@@ -499,6 +704,8 @@ void PbrPeer::prepare(GLuint program) {
     auto loc = [&](const char* name) { return gl_.GetUniformLocation(program, name); };
     gl_.Uniform1i(loc("u_dfg"), kDfgUnit);
     if (sheen_) gl_.Uniform1i(loc("u_sheen"), kSheenUnit);
+    // -1 outside the glass program: the GL ignores it.
+    gl_.Uniform1i(loc("u_backdrop"), kBackdropUnit);
     if (world_.environment) {
         gl_.Uniform1i(loc("u_environment"), kEnvironmentUnit);
         gl_.Uniform1iv(loc("u_level_row"), facet::pbr::kEnvironmentLevels, level_rows_.data());
@@ -506,9 +713,35 @@ void PbrPeer::prepare(GLuint program) {
         gl_.Uniform3fv(loc("u_sh"), facet::pbr::kShCount,
                        glm::value_ptr(world_.environment->sh().coefficients[0]));
     }
-    locations_[program] = {loc("u_metallic_roughness"), loc("u_f0"),        loc("u_f90"),
-                           loc("u_rotation"),           loc("u_intensity"), loc("u_sheen_color"),
-                           loc("u_sheen_roughness")};
+    locations_[program] = {loc("u_metallic_roughness"),
+                           loc("u_f0"),
+                           loc("u_f90"),
+                           loc("u_rotation"),
+                           loc("u_intensity"),
+                           loc("u_sheen_color"),
+                           loc("u_sheen_roughness"),
+                           {loc("u_transmission"), loc("u_ior"), loc("u_thickness"),
+                            loc("u_transmittance"), loc("u_dispersion")}};
+}
+
+void PbrPeer::set_glass(GLuint program, const facet::Material& m, float object_scale) {
+    const GlassLocations& at = locations_.at(program).glass;
+    gl_.Uniform1f(at.transmission, m.transmission);
+    gl_.Uniform1f(at.ior, m.ior);
+    // As shade/material_terms.hpp's put_extra_lobes and brdf_layers.hpp's
+    // prepare_transmission_terms: lengths in the world's units, and the
+    // volume's tint worked out once per draw with facet's own power (no
+    // map varies it over the surface).
+    const float thickness = m.thickness * object_scale;
+    const float distance = m.attenuation_distance * object_scale;
+    const float exponent = distance > 0.0f ? std::max(thickness, 0.0f) / distance : 0.0f;
+    glm::vec3 transmittance;
+    for (int c = 0; c < 3; ++c)
+        transmittance[c] =
+            facet::lanes::power_unit(std::clamp(m.attenuation_color[c], 0.0f, 1.0f), exponent);
+    gl_.Uniform1f(at.thickness, std::max(thickness, 0.0f));
+    gl_.Uniform3fv(at.transmittance, 1, glm::value_ptr(transmittance));
+    gl_.Uniform1f(at.dispersion, m.dispersion);
 }
 
 void PbrPeer::set_draw(GLuint program, const facet::FrameState& state, const facet::Material& m) {
@@ -551,6 +784,9 @@ std::string PbrPeer::features() const {
              " float octahedral levels + SH";
     f += ", DFG table";
     if (sheen_) f += ", sheen (Charlie, its albedo table)";
+    if (glass_)
+        f += ", glass (linear half-float frame, the opaque pass's 2x2 box mips read along the "
+             "refracted view, draws back to front, then exposure and tone in a full-screen pass)";
     if (scene_.output.display.tonemap == facet::Tonemap::neutral) f += ", PBR Neutral";
     return f;
 }

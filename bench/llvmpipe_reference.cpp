@@ -3,11 +3,13 @@
 // facet: the same meshes (posed each frame when they move), the same camera,
 // lights, materials and textures, the scene style's shading model as GLSL,
 // a two-pass shadow map for a shadow-casting sun, MSAA for output.samples,
-// an sRGB framebuffer, and colour plus depth read back. The whole job adds
+// an sRGB framebuffer, and colour plus depth read back; glass under `pbr`
+// over the opaque frame it refracts (llvmpipe_glass.hpp). The whole job adds
 // a PNG of each frame through libpng at zlib level 1. Built only when
 // OSMesa is found.
 #include <png.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +19,9 @@
 #include <map>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
+#include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -30,6 +35,7 @@
 #include "core/display_transform.hpp"
 #include "core/thread_pool.hpp"
 #include "llvmpipe_gl.hpp"
+#include "llvmpipe_glass.hpp"
 #include "llvmpipe_pbr.hpp"
 #include "llvmpipe_phong.hpp"
 #include "render/camera.hpp"
@@ -173,6 +179,10 @@ class Reference {
             make_specialised_programs();
         else
             make_general_programs();
+        if (pbr_ && pbr_->glass()) {
+            const GLuint present = link(gl_, pbr_->present_shaders());
+            glass_.emplace(gl_, width_, height_, samples_, PbrPeer::kBackdropUnit, present);
+        }
     }
 
     std::string features() const {
@@ -198,54 +208,19 @@ class Reference {
         const facet::FrameState state = facet::evaluate_frame(scene_, world_.object_bounds, frame);
         if (world_.deforms()) upload_pose(pose.pose(state));
         if (shadow_light_ >= 0) draw_shadow_map(state, pose);
-        gl_.BindFramebuffer(GL_FRAMEBUFFER, samples_ > 1 ? msaa_fbo_ : resolve_fbo_);
+        const GLuint target = glass_ ? glass_->frame() : samples_ > 1 ? msaa_fbo_ : resolve_fbo_;
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, target);
         glViewport(0, 0, width_, height_);
         glEnable(GL_FRAMEBUFFER_SRGB);
         const glm::vec4 bg = scene_.style.background.value_or(scene_.output.background);
         glClearColor(bg.r, bg.g, bg.b, bg.a);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
-        const facet::CameraMatrices cam = facet::make_camera(state.camera, aspect);
-        const glm::mat4 view_projection =
-            glm::perspective(glm::radians(state.camera.fov_degrees), aspect, state.camera.near,
-                             state.camera.far) *
-            cam.view;
-        const std::vector<facet::ShadeLight> lights = facet::make_shade_lights(state.lights);
-        for (const facet::Draw& d : world_.draws) {
-            const facet::Material& m = world_.materials[d.material];
-            const bool textured = m.base_color_map && d.has_uvs;
-            const Program& p =
-                programs_.at({specialised_ ? static_cast<int>(d.material) : -1, textured});
-            gl_.UseProgram(p.id);
-            set_lights(p, lights, cam.position, view_projection);
-            if (pbr_) pbr_->set_draw(p.id, state, m);
-            const glm::mat4& model_matrix = state.objects[d.object].transform;
-            const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model_matrix)));
-            gl_.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model_matrix));
-            gl_.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
-            gl_.Uniform3fv(p.albedo, 1, glm::value_ptr(m.color));
-            gl_.Uniform2fv(p.uv_scale, 1,
-                           glm::value_ptr(glm::vec2(m.base_color_map.transform.linear[0].x,
-                                                    m.base_color_map.transform.linear[1].y)));
-            const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
-            gl_.Uniform4fv(p.terms, 1, glm::value_ptr(terms));
-            // The general program's fade: beyond every point where none is asked for.
-            const bool fades = m.fade_end > m.fade_start;
-            const glm::vec2 fade =
-                fades ? glm::vec2(m.fade_start, m.fade_end) : glm::vec2(1e30f, 2e30f);
-            gl_.Uniform2fv(p.fade, 1, glm::value_ptr(fade));
-            gl_.Uniform3fv(p.background, 1, glm::value_ptr(lighting_.background));
-            if (textured) {
-                gl_.ActiveTexture(GL_TEXTURE0);
-                glBindTexture(GL_TEXTURE_2D, textures_.at(m.base_color_map.texture.get()));
-                gl_.Uniform1i(p.texture, 0);
-            }
-            if (m.double_sided)
-                glDisable(GL_CULL_FACE);
-            else
-                glEnable(GL_CULL_FACE);
-            draw_elements(d);
+        const View view = view_of(state);
+        if (glass_) {
+            draw_with_glass(state, view);
+            return;
         }
+        for (const facet::Draw& d : world_.draws) draw_surface(d, state, view, false);
         if (samples_ > 1) {  // resolve, as facet's output is one sample per pixel
             gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, msaa_fbo_);
             gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_fbo_);
@@ -262,24 +237,111 @@ class Reference {
     }
 
   private:
+    // The frame's camera and lights, as every draw takes them.
+    struct View {
+        facet::CameraMatrices camera;
+        glm::mat4 view_projection;
+        std::vector<facet::ShadeLight> lights;
+    };
+
+    View view_of(const facet::FrameState& state) const {
+        const float aspect = static_cast<float>(width_) / static_cast<float>(height_);
+        View view;
+        view.camera = facet::make_camera(state.camera, aspect);
+        view.view_projection = glm::perspective(glm::radians(state.camera.fov_degrees), aspect,
+                                                state.camera.near, state.camera.far) *
+                               view.camera.view;
+        view.lights = facet::make_shade_lights(state.lights);
+        return view;
+    }
+
+    // The opaque draws into the linear frame, its backdrop, the glass
+    // draws over it from the farthest to the nearest (by their bounds'
+    // centres, as real-time renderers sort), then the displayed frame
+    // into the read-back target.
+    void draw_with_glass(const facet::FrameState& state, const View& view) {
+        std::vector<std::pair<float, const facet::Draw*>> glass;
+        for (const facet::Draw& d : world_.draws) {
+            if (!PbrPeer::transmits(world_.materials[d.material])) {
+                draw_surface(d, state, view, false);
+                continue;
+            }
+            const glm::vec3 centre(facet::transformed_box_sphere(world_.object_bounds[d.object],
+                                                                 state.objects[d.object].transform)
+                                       .center);
+            glass.push_back({glm::distance(centre, view.camera.position), &d});
+        }
+        glass_->make_backdrop();
+        std::stable_sort(glass.begin(), glass.end(),
+                         [](const auto& a, const auto& b) { return a.first > b.first; });
+        for (const auto& [distance, d] : glass) draw_surface(*d, state, view, true);
+        glass_->present(resolve_fbo_);
+    }
+
+    // One draw, with its program's uniforms; `glass`: with the glass program.
+    void draw_surface(const facet::Draw& d, const facet::FrameState& state, const View& view,
+                      bool glass) {
+        const facet::Material& m = world_.materials[d.material];
+        const bool textured = m.base_color_map && d.has_uvs;
+        const Program& p =
+            programs_.at({specialised_ ? static_cast<int>(d.material) : -1, textured, glass});
+        gl_.UseProgram(p.id);
+        set_lights(p, view.lights, view.camera.position, view.view_projection);
+        const glm::mat4& model_matrix = state.objects[d.object].transform;
+        if (pbr_) pbr_->set_draw(p.id, state, m);
+        if (glass) pbr_->set_glass(p.id, m, facet::object_scale(model_matrix));
+        const glm::mat3 normal_matrix = glm::transpose(glm::inverse(glm::mat3(model_matrix)));
+        gl_.UniformMatrix4fv(p.model, 1, GL_FALSE, glm::value_ptr(model_matrix));
+        gl_.UniformMatrix3fv(p.normal_matrix, 1, GL_FALSE, glm::value_ptr(normal_matrix));
+        gl_.Uniform3fv(p.albedo, 1, glm::value_ptr(m.color));
+        gl_.Uniform2fv(p.uv_scale, 1,
+                       glm::value_ptr(glm::vec2(m.base_color_map.transform.linear[0].x,
+                                                m.base_color_map.transform.linear[1].y)));
+        const glm::vec4 terms(m.ambient, m.diffuse, m.specular, m.shininess);
+        gl_.Uniform4fv(p.terms, 1, glm::value_ptr(terms));
+        // The general program's fade: beyond every point where none is asked for.
+        const bool fades = m.fade_end > m.fade_start;
+        const glm::vec2 fade =
+            fades ? glm::vec2(m.fade_start, m.fade_end) : glm::vec2(1e30f, 2e30f);
+        gl_.Uniform2fv(p.fade, 1, glm::value_ptr(fade));
+        gl_.Uniform3fv(p.background, 1, glm::value_ptr(lighting_.background));
+        if (textured) {
+            gl_.ActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, textures_.at(m.base_color_map.texture.get()));
+            gl_.Uniform1i(p.texture, 0);
+        }
+        if (m.double_sided)
+            glDisable(GL_CULL_FACE);
+        else
+            glEnable(GL_CULL_FACE);
+        draw_elements(d);
+    }
+
     void make_general_programs() {
         bool fade = false;
         for (const facet::Material& m : world_.materials) fade = fade || m.fade_end > m.fade_start;
         const std::string filter = shadow_filter_defines(lighting_);
-        for (bool textured : {false, true}) {
-            const bool shadows = shadow_light_ >= 0;
-            // The pbr port's fragment shader follows the light uniforms.
-            const std::string pbr_head = std::string(textured ? "#define TEXTURED\n" : "") +
-                                         (shadows ? "#define SHADOWS\n" : "") + kLightUniformsGlsl;
-            const ShaderSources sources =
-                pbr_ ? ShaderSources{pbr_head + kPhongVertexShader,
-                                     pbr_head + pbr_->fragment_shader()}
-                     : general_phong_program(model_, textured, shadows, fade);
-            const Program p =
-                make_program(gl_, {filter + sources.vertex, filter + sources.fragment});
-            if (pbr_) pbr_->prepare(p.id);
-            programs_[{-1, textured}] = p;
-        }
+        const bool glass = pbr_ && pbr_->glass();
+        for (bool textured : {false, true})
+            for (bool glass_program : {false, true}) {
+                if (glass_program && !glass) continue;
+                const bool shadows = shadow_light_ >= 0;
+                // The pbr port's fragment shader follows the light uniforms.
+                const std::string pbr_head = std::string(textured ? "#define TEXTURED\n" : "") +
+                                             (shadows ? "#define SHADOWS\n" : "") +
+                                             kLightUniformsGlsl;
+                const PbrOutput output = glass_program ? PbrOutput::glass
+                                         : glass       ? PbrOutput::linear
+                                                       : PbrOutput::displayed;
+                const ShaderSources sources =
+                    pbr_ ? ShaderSources{pbr_head + kPhongVertexShader,
+                                         pbr_head + pbr_->fragment_shader(output)}
+                         : general_phong_program(model_, textured, shadows, fade);
+                const Program p =
+                    make_program(gl_, {filter + sources.vertex, filter + sources.fragment});
+                if (pbr_) pbr_->prepare(p.id);
+                programs_[{-1, textured, glass_program}] = p;
+            }
     }
 
     // One program per material and texture use the draws need.
@@ -288,11 +350,11 @@ class Reference {
         const std::string filter = shadow_filter_defines(lighting_);
         for (const facet::Draw& d : world_.draws) {
             const facet::Material& m = world_.materials[d.material];
-            const std::pair<int, bool> key{static_cast<int>(d.material),
-                                           m.base_color_map && d.has_uvs};
+            const std::tuple<int, bool, bool> key{static_cast<int>(d.material),
+                                                  m.base_color_map && d.has_uvs, false};
             if (programs_.count(key)) continue;
             const ShaderSources sources =
-                specialised_phong_program(model_, lighting_, m, key.second, shadow_size_);
+                specialised_phong_program(model_, lighting_, m, std::get<1>(key), shadow_size_);
             programs_[key] =
                 make_program(gl_, {filter + sources.vertex, filter + sources.fragment});
         }
@@ -538,11 +600,12 @@ class Reference {
     glm::mat4 shadow_matrix_{1};
     glm::mat3 shadow_view_{1};     // world -> the sun's view: right, up, towards the sun
     glm::vec2 shadow_offsets_{0};  // see draw_shadow_map
-    // By (material, textured); the general programs' material is -1.
-    std::map<std::pair<int, bool>, Program> programs_;
+    // By (material, textured, glass); the general programs' material is -1.
+    std::map<std::tuple<int, bool, bool>, Program> programs_;
     bool specialised_ = false;
-    SceneLighting lighting_;      // the scene's lights over its frames, its background
-    std::optional<PbrPeer> pbr_;  // the `pbr` model's GLSL port and its textures
+    SceneLighting lighting_;           // the scene's lights over its frames, its background
+    std::optional<PbrPeer> pbr_;       // the `pbr` model's GLSL port and its textures
+    std::optional<GlassFrame> glass_;  // with glass, the targets it is drawn with
 };
 
 // facet's first frame against llvmpipe's, both as 8-bit sRGB, covered
@@ -584,6 +647,7 @@ void compare_first_frame(const facet::SceneDesc& scene, const facet::World& worl
                 worst = std::max(worst, std::abs(mine - g[k]));
             }
             diff_sum += worst;
+            r.max_abs_diff = std::max(r.max_abs_diff, worst);
             if (worst > 8) ++r.differing;
         }
     r.mean_abs_diff = both ? diff_sum / static_cast<double>(both) : NAN;
