@@ -98,7 +98,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     batches_ = 0;
     plain_batches_ = 0;
     glass_.begin_frame(rasterizer_);
-    // Stage 7: the opaque surfaces (glass waits for stage 7d).
+    // Stage 7: the opaque surfaces (glass waits for stage 12).
     rasterizer_.draw_tiles(
         pool_,
         [&](const TileVisibility& tile) {
@@ -136,7 +136,7 @@ void FrameRenderer::finish_colour(const FrameInputs& inputs, FrameImages& out) {
                                          inputs.environment_blur, pool_);
 }
 
-// Stage 7d, first half: the glass layers, nearest first
+// Stage 12, first half: the glass layers, nearest first
 // (render/transmission_stage.hpp). The first shows the nearest surface of
 // every sample, glass or not: the surface passes are its. Returns how
 // many layers have glass.
@@ -160,7 +160,7 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
     return layers;
 }
 
-// Stage 7d, second half: each layer shaded back to front over a backdrop
+// Stage 12, second half: each layer shaded back to front over a backdrop
 // of the frame so far.
 void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
                                const SurfacePassInputs& surface_in, FrameImages& out) {

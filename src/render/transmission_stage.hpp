@@ -1,5 +1,5 @@
 #pragma once
-// Stage 7d of a frame: glass (KHR_materials_transmission under `pbr`),
+// Stage 12 of a frame: glass (KHR_materials_transmission under `pbr`),
 // drawn as real-time renderers draw it, over the finished opaque image.
 //
 // 1. The opaque pass leaves transmitting triangles out (they are

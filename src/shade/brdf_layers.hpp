@@ -157,6 +157,16 @@ template <typename T>
     if (p.any_diffuse_transmission) prepare_diffuse_transmission_terms(s, p);
 }
 
+// A light l behind the surface mirrored to the viewer's side,
+// l' = l - 2 (n.l) n: both transmissions evaluate their Fresnel term (and
+// the specular BTDF its lobe) at it, as the Khronos sample viewer does.
+template <typename T>
+[[gnu::always_inline]] inline lanes::Vec3<T> mirrored_light(const lanes::Vec3<T>& n,
+                                                            const lanes::Vec3<T>& l, T n_dot_l) {
+    const T twice = 2.0f * n_dot_l;
+    return {l[0] - twice * n[0], l[1] - twice * n[1], l[2] - twice * n[2]};
+}
+
 // KHR_materials_transmission: the dielectric's base is
 //   mix(diffuse, specular BTDF * base colour, t)
 // so the diffuse terms (and a diffuse transmission's) keep 1 - t of
@@ -203,11 +213,8 @@ template <typename T>
     const T zero = splat<T>(0.0f);
     const lanes::Mask<T> behind = (n_dot_l < zero) & (p.transmission > zero);
     if (!lanes::any(behind)) return result;
-    const T twice = 2.0f * n_dot_l;
-    const lanes::Vec3<T> mirrored = {l[0] - twice * p.n[0], l[1] - twice * p.n[1],
-                                     l[2] - twice * p.n[2]};
     const T cosine = zero - n_dot_l;
-    const HalfVector<T> h = half_vector(p.n, p.v, mirrored);
+    const HalfVector<T> h = half_vector(p.n, p.v, mirrored_light(p.n, l, n_dot_l));
     const T lobe =
         specular_brdf(h, cosine, p.n_dot_v, p.transmission_view_root, p.transmission_alpha);
     const T w = schlick_weight(h.v_dot_h);
@@ -269,10 +276,7 @@ template <typename T>
     const T zero = splat<T>(0.0f);
     const lanes::Mask<T> behind = (n_dot_l < zero) & (p.diffuse_transmission > zero);
     if (!lanes::any(behind)) return result;
-    const T twice = 2.0f * n_dot_l;
-    const lanes::Vec3<T> mirrored = {l[0] - twice * p.n[0], l[1] - twice * p.n[1],
-                                     l[2] - twice * p.n[2]};
-    const T w = schlick_weight(half_vector(p.n, p.v, mirrored).v_dot_h);
+    const T w = schlick_weight(half_vector(p.n, p.v, mirrored_light(p.n, l, n_dot_l)).v_dot_h);
     const T share = (1.0f - p.metallic) * p.diffuse_transmission * (1.0f / kPi) * (zero - n_dot_l);
     for (int c = 0; c < 3; ++c) {
         const T through =
