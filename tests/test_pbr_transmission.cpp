@@ -28,8 +28,9 @@ namespace {
 // A scene lit by nothing: an unlit grey wall at z = -2 seen head-on from
 // z = 3, and `glass` (objects' YAML) between. Only what passes through the
 // glass reaches the camera; nothing is reflected.
-std::string dark_room(const std::string& glass, const std::string& extra = "") {
-    return R"(output: { size: [48, 48], tonemap: none, passes: [color, depth, object_id] }
+std::string dark_room(const std::string& glass, const std::string& extra = "", int samples = 1) {
+    return "output: { size: [160, 120], samples: " + std::to_string(samples) +
+           R"(, tonemap: none, passes: [color, depth, object_id] }
 camera: { position: [0, 0, 3], target: [0, 0, 0], fov: 30 }
 style: pbr
 environment: { color: [0, 0, 0] }
@@ -57,7 +58,7 @@ std::string pane(const std::string& name, float z, const std::string& material,
 }
 
 glm::vec3 centre(const FrameImages& images) {
-    return glm::vec3(to_float(images.color.at(24, 24)));
+    return glm::vec3(to_float(images.color.at(80, 60)));
 }
 
 glm::vec3 render_centre(const std::string& yaml) {
@@ -145,9 +146,15 @@ TEST_CASE("transmission: panes seen through panes are drawn back to front, each 
         CHECK(got[c] == Approx(expected[c]).epsilon(0.01));
     }
     // The passes show the nearest surface: the near pane, at depth 2.
-    CHECK(images.surface.object_id.at(24, 24) == 2);  // objects: wall 1, near 2
-    CHECK(images.depth.at(24, 24) == Approx(2.0f).epsilon(1e-4));
-    // Eight threads, the same bits.
+    CHECK(images.surface.object_id.at(80, 60) == 2);  // objects: wall 1, near 2
+    CHECK(images.depth.at(80, 60) == Approx(2.0f).epsilon(1e-4));
+    // With 4 samples a pixel, the same shares.
+    const glm::vec3 sampled = centre(render_yaml(
+        dir.path(),
+        dark_room(pane("near", 1, red) + pane("middle", 0, blue) + pane("far", -1, green), "", 4),
+        1, 2));
+    for (int c = 0; c < 3; ++c) CHECK(sampled[c] == Approx(expected[c]).epsilon(0.01));
+    // Eight threads (the frame is several tiles), the same bits.
     const FrameImages again = render_yaml(
         dir.path(),
         dark_room(pane("near", 1, red) + pane("middle", 0, blue) + pane("far", -1, green)), 1, 8);
@@ -365,8 +372,15 @@ TEST_CASE("transmission: a volume placed by a scaled node has its thickness scal
         {{{"extensions",
            {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
             {"KHR_materials_volume", {{"thicknessFactor", 0.4}, {"attenuationDistance", 1.0}}}}}}});
-    g.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume"};
+    // A variant draws the part in a second glass.
+    g.doc["materials"].push_back(g.doc["materials"][0]);
+    g.doc["materials"][1]["extensions"]["KHR_materials_volume"]["thicknessFactor"] = 0.1;
+    g.doc["extensions"]["KHR_materials_variants"]["variants"] = {{{"name", "thin"}}};
+    g.doc["extensionsUsed"] = {"KHR_materials_transmission", "KHR_materials_volume",
+                               "KHR_materials_variants"};
     g.one_quad_scene();
+    g.doc["meshes"][0]["primitives"][0]["extensions"]["KHR_materials_variants"]["mappings"] = {
+        {{"material", 1}, {"variants", {0}}}};
     const int mesh = g.doc["nodes"][0]["mesh"];
     const int scaled = g.node({{"mesh", mesh}, {"scale", {2.0, 2.0, 2.0}}});
     const int again = g.node({{"mesh", mesh}, {"scale", {2.0, 2.0, 2.0}}});
@@ -379,4 +393,8 @@ TEST_CASE("transmission: a volume placed by a scaled node has its thickness scal
     CHECK(doubled.thickness == Approx(0.8f));
     CHECK(doubled.attenuation_distance == Approx(1.0f));  // the file's world units already
     CHECK(m.parts[2].material == m.parts[1].material);    // one copy per scale
+    // The variant's glass is scaled alike.
+    REQUIRE(m.parts[1].variant_materials.size() == 1);
+    CHECK(m.materials[m.parts[0].variant_materials[0]].thickness == Approx(0.1f));
+    CHECK(m.materials[m.parts[1].variant_materials[0]].thickness == Approx(0.2f));
 }

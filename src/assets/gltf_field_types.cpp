@@ -307,12 +307,13 @@ class FieldTypes {
             texture_info(*sheen, "sheenColorTexture", p);
             texture_info(*sheen, "sheenRoughnessTexture", p);
         }
-        glass_extensions(extensions, at);
+        number_and_map_extensions(extensions, at);
     }
 
-    // KHR_materials_transmission, _volume and _dispersion, and the other
-    // layers read by number and map: _anisotropy, _diffuse_transmission.
-    void glass_extensions(const json& extensions, const std::string& at) {
+    // The layers read by numbers, colours and maps alone:
+    // KHR_materials_transmission, _volume, _dispersion, _anisotropy and
+    // _diffuse_transmission.
+    void number_and_map_extensions(const json& extensions, const std::string& at) {
         struct Fields {
             const char* extension;
             std::initializer_list<const char*> numbers, colors, maps;

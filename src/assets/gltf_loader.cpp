@@ -366,19 +366,22 @@ std::vector<GltfCamera> read_cameras(const tinygltf::Model& model, const std::st
 // attenuation distance is in the file's world units already).
 void scale_volume_thickness(Mesh& mesh, const std::vector<double>& part_scales) {
     std::map<std::pair<uint32_t, double>, uint32_t> copies;
+    // The material (the part's, or a variant's) a part placed at `scale` draws.
+    const auto scaled = [&](uint32_t material, double scale) {
+        if (!(mesh.materials[material].thickness > 0.0f) || std::abs(scale - 1.0) < 1e-6)
+            return material;
+        const auto [copy, added] = copies.try_emplace({material, scale}, mesh.materials.size());
+        if (added) {
+            Material thicker = mesh.materials[material];
+            thicker.thickness = static_cast<float>(thicker.thickness * scale);
+            mesh.materials.push_back(std::move(thicker));
+        }
+        return copy->second;
+    };
     for (size_t i = 0; i < mesh.parts.size(); ++i) {
         MeshPart& part = mesh.parts[i];
-        const double scale = part_scales[i];
-        if (!(mesh.materials[part.material].thickness > 0.0f) || std::abs(scale - 1.0) < 1e-6)
-            continue;
-        const auto [copy, added] =
-            copies.try_emplace({part.material, scale}, mesh.materials.size());
-        if (added) {
-            Material scaled = mesh.materials[part.material];
-            scaled.thickness = static_cast<float>(scaled.thickness * scale);
-            mesh.materials.push_back(std::move(scaled));
-        }
-        part.material = copy->second;
+        part.material = scaled(part.material, part_scales[i]);
+        for (uint32_t& variant : part.variant_materials) variant = scaled(variant, part_scales[i]);
     }
 }
 

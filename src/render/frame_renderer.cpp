@@ -147,7 +147,6 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
         const int layer = layers + 1;
         const std::span<const uint8_t> tiles = glass_.tiles_of(layer);
         if (std::find(tiles.begin(), tiles.end(), 1) == tiles.end()) break;
-        layers = layer;
         rasterizer_.draw_tiles(
             pool_,
             [&](const TileVisibility& tile) {
@@ -156,6 +155,8 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
                     write_surface_passes(tile, rasterizer_, surface_in, out.surface);
             },
             glass_.test(layer, alpha), tiles);
+        if (!glass_.any_in(layer)) break;  // found none: not a layer
+        layers = layer;
     }
     return layers;
 }

@@ -2,14 +2,14 @@
 // rendered through the raster core with the frame's object transforms.
 #include "render/shadow_stage.hpp"
 
-#include "render/transmission_stage.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
+
+#include "render/transmission_stage.hpp"
 
 namespace facet {
 namespace {

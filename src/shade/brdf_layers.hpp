@@ -173,9 +173,11 @@ template <typename T>
 // theirs. KHR_materials_volume: light crossing the volume keeps
 //   T = attenuation_color ^ (thickness / attenuation_distance)
 // (Beer-Lambert, the path taken as the thickness, as the Khronos sample
-// viewer does). The refraction's lobe is the surface's GGX, its roughness
-// scaled by clamp(2 ior - 2, 0, 1): an index of 1 bends nothing, so blurs
-// nothing (the sample viewer's applyIorToRoughness).
+// viewer does). The refraction's lobe is the surface's GGX, its alpha
+// scaled by clamp(2 ior - 2, 0, 1) (at least the smallest alpha), and the
+// backdrop's blur its perceptual roughness scaled alike: an index of 1
+// bends nothing, so blurs nothing (the sample viewer's applyIorToRoughness,
+// on alphaRoughness for the lobe and on the roughness for the blur).
 template <typename T>
 [[gnu::noinline]] void prepare_transmission_terms(const SurfaceTerms<T>& s, PbrPoint<T>& p) {
     using lanes::clamp01, lanes::splat;
@@ -188,8 +190,9 @@ template <typename T>
         lanes::max_of(s.thickness, splat<T>(0.0f)) / s.attenuation_distance, splat<T>(0.0f));
     for (int c = 0; c < 3; ++c)
         p.transmittance[c] = lanes::power_unit(clamp01(s.attenuation_color[c]), exponent);
-    p.transmission_roughness = p.roughness * clamp01(2.0f * s.ior - 2.0f);
-    p.transmission_alpha = alpha_from_roughness(p.transmission_roughness);
+    const T bends = clamp01(2.0f * s.ior - 2.0f);
+    p.transmission_roughness = p.roughness * bends;
+    p.transmission_alpha = lanes::max_of(p.alpha * bends, splat<T>(kMinRoughness * kMinRoughness));
     p.transmission_view_root = smith_root(p.n_dot_v, p.transmission_alpha);
 }
 

@@ -383,8 +383,8 @@ struct PbrPoint {
     // The transmission (any_transmission): its share t (0 where the lane
     // has none; the diffuse terms above keep 1 - t), what the volume leaves
     // of light crossing its thickness (Beer-Lambert), and the refraction's
-    // lobe: its perceptual roughness and alpha (the surface's scaled by
-    // clamp(2 ior - 2, 0, 1)) and the view's Smith root.
+    // blur and lobe: the surface's perceptual roughness and alpha, each
+    // scaled by clamp(2 ior - 2, 0, 1), and the view's Smith root.
     bool any_transmission;
     T transmission;
     lanes::Vec3<T> transmittance;

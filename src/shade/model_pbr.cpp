@@ -131,7 +131,7 @@ inline RefractedView refracted_view(const pbr::PbrPoint<float>& p, const Vec3<fl
             {p.n[0], p.n[1], p.n[2]},
             {p.v[0], p.v[1], p.v[2]},
             s.ior,
-            s.thickness,
+            lanes::max_of(s.thickness, 0.0f),
             p.transmission_roughness,
             s.dispersion};
 }
