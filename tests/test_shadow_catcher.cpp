@@ -55,7 +55,8 @@ TEST_CASE("shadow catcher: transparent where unshadowed, dark where shadowed",
     // Unshadowed: nothing at all, in the colour and the alpha pass.
     CHECK(pixel_at(images, images.color, kOpenFloor) == glm::vec4(0.0f));
     CHECK(pixel_at(images, images.alpha, kOpenFloor) == glm::vec4(0.0f));
-    // In the shadow: black, covering most of the background.
+    // In the shadow: black over nothing, covering most of the background
+    // (all but the ambient term's share, 0.125 / 1.125).
     const glm::vec4 shadow = pixel_at(images, images.alpha, kInShadow);
     CHECK(shadow.a > 0.8f);
     CHECK(glm::vec3(shadow) == glm::vec3(0.0f));
@@ -65,15 +66,18 @@ TEST_CASE("shadow catcher: transparent where unshadowed, dark where shadowed",
 
 TEST_CASE("shadow catcher: over a coloured background it shows the background, darkened",
           "[render][shadow_catcher]") {
-    // A second light, casting no shadow, keeps half the light in the shadow.
+    // A second light, casting no shadow, keeps half the lights' light in the
+    // shadow, and the ambient term (ka 0.1 of the default white ambient,
+    // over kd 0.8) stays whole: (0.125 + 1) / (0.125 + 2) of the background.
     const facet::FrameImages images = render_catcher(
         "[0.2, 0.4, 0.6]", "phong", 2, "  - { type: directional, direction: [0, -1, 0] }");
+    const float kept = (0.125f + 1.0f) / (0.125f + 2.0f);
     const glm::vec4 open = pixel_at(images, images.color, kOpenFloor);
     for (int c = 0; c < 3; ++c)
         CHECK(open[c] == Approx(glm::vec3(0.2f, 0.4f, 0.6f)[c]).margin(1e-3));
     CHECK(open.a == 1.0f);
     const glm::vec4 dark = pixel_at(images, images.color, kInShadow);
-    CHECK(dark.b == Approx(0.5f * 0.6f).margin(0.01));
+    CHECK(dark.b == Approx(kept * 0.6f).margin(0.01));
     // Same hue: the background scaled down.
     CHECK(dark.r / dark.b == Approx(0.2f / 0.6f).margin(0.02));
 }

@@ -142,8 +142,10 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
     scratch.id.resize(n);
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
         for (size_t i = row * w; i < (row + 1) * w; ++i) {
+            // A surface without an object (a shadow catcher) draws no line.
             const float depth = b.depth[i];
-            const bool surface = depth > 0.0f && depth < std::numeric_limits<float>::infinity();
+            const bool surface = depth > 0.0f && depth < std::numeric_limits<float>::infinity() &&
+                                 b.object_id[i] != kNoObject;
             scratch.inverse_depth[i] = surface ? 1.0f / depth : 0.0f;
             scratch.id[i] = surface ? b.object_id[i] : kNoObject;
         }

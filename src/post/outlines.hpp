@@ -50,9 +50,12 @@ inline constexpr uint32_t kNoObject = 0xffffffffu;
 struct OutlineBuffers {
     int width = 0;
     int height = 0;
-    std::vector<float> depth;         // linear view depth; +inf (not in (0, inf)) = background
-    std::vector<glm::vec3> normal;    // world or view space, one space per frame; any length
-    std::vector<uint32_t> object_id;  // ignored on background pixels
+    std::vector<float> depth;       // linear view depth; +inf (not in (0, inf)) = background
+    std::vector<glm::vec3> normal;  // world or view space, one space per frame; any length
+    // kNoObject on background, and on surfaces that draw no lines (shadow
+    // catchers, which show only the shadows on them): both read as
+    // background here, while ambient occlusion still reads their depth.
+    std::vector<uint32_t> object_id;
     // Set: intersection lines only between these object pairs (sorted keys,
     // the smaller id in the high 32 bits), the ones that really cross. An
     // image alone cannot tell flush contact from crossing.

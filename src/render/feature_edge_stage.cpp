@@ -39,7 +39,8 @@ std::span<const uint8_t> FeatureEdgeStage::classify(std::span<const glm::vec4> c
     for (size_t t = 0; t < triangles; ++t) {
         const Draw& draw = world_.draws[world_.triangle_draw[t]];
         const StyleState& style = frame.styles[plan.object_style[draw.object]];
-        if (!style.wireframe) continue;
+        // A shadow catcher shows only the shadows on it: no edges of its own.
+        if (!style.wireframe || world_.materials[draw.material].shadow_catcher) continue;
         uint8_t mask = 0;
         for (int e = 0; e < 3; ++e) {
             const uint32_t neighbor = world_.edge_neighbor[3 * t + e];

@@ -6,8 +6,9 @@
 // - creases: folds sharper than the style's `crease_angle`;
 // - boundaries: edges with no face across them.
 // `wireframe.edges: all` draws every edge but the diagonals inside flat
-// polygons instead. The result is a plain per-triangle mask the shading and
-// hidden-edge stages read (bit i: the edge opposite vertex i).
+// polygons instead. A shadow catcher's triangles have none. The result is
+// a plain per-triangle mask the shading and hidden-edge stages read (bit i:
+// the edge opposite vertex i).
 #include <cstdint>
 #include <span>
 #include <vector>

@@ -431,6 +431,34 @@ bool environment_diffuse(const ShadeInputs& in, const StyleState& style, const S
     return true;
 }
 
+// The light no shadow map blocks at a shadow catcher, in the units of
+// shadow_share's direct light (a white surface's n.l times the lights'
+// radiance): the same rule for every model that draws shadows. Under
+// `pbr`, the environment's diffuse light and the ambient lights (a uniform
+// environment there). Under the Phong family, the ambient term the model
+// gives the catcher, ka times the ambient light (white 1 without ambient
+// lights), over its kd, since shadow_share weighs the lights by 1 where
+// the model weighs them by kd.
+void unshadowed_light(const ShadeInputs& in, const StyleState& style, const Batch& b,
+                      vf (&out)[3]) {
+    for (vf& channel : out) channel = simd::splat(0.0f);
+    if (style.model == ShadingModel::pbr) {
+        environment_diffuse(in, style, b.lanes.surface, out);
+        glm::vec3 ambient(0.0f);
+        for (const ShadeLight& light : in.lights)
+            if (light.is_ambient) ambient += light.radiance;
+        for (int a = 0; a < 3; ++a) out[a] += ambient[a];
+        return;
+    }
+    // The material's own coefficients (Gouraud's lanes do not carry them).
+    const glm::vec3 ambient = ambient_light(in.lights);
+    for (int i = 0; i < b.count; ++i) {
+        const Material& m = *b.material[i];
+        const float ratio = m.diffuse > 0.0f ? m.ambient / m.diffuse : 0.0f;
+        for (int a = 0; a < 3; ++a) out[a][i] = ratio * ambient[a];
+    }
+}
+
 // kShadowCatcher: the share of the light the shadows take at each point,
 // from the same lights lit twice, with and without their shadow maps, and
 // compared by the diffuse light's luminance. The lane then shows the
@@ -440,18 +468,20 @@ bool environment_diffuse(const ShadeInputs& in, const StyleState& style, const S
 void apply_shadow_catchers(const ShadeInputs& in, uint32_t style_index, Batch& b) {
     const StyleState& style = in.frame.styles[style_index];
     const glm::vec4 background = in.frame.background;
-    vf environment[3];
-    const bool lit_by_environment = environment_diffuse(in, style, b.lanes.surface, environment);
+    vf unshadowed[3];
+    unshadowed_light(in, style, b, unshadowed);
     const vf share = in.frame.style_needs[style_index].position
-                         ? shadow_share(in, in.lights, b.lanes.surface,
-                                        lit_by_environment ? environment : nullptr)
-                               .luminance
+                         ? shadow_share(in, in.lights, b.lanes.surface, unshadowed).luminance
                          : simd::splat(0.0f);
     ShadeResult& r = b.result;
     for (int i = 0; i < b.count; ++i) {
         if (!(b.features[i] & kShadowCatcher)) continue;
         for (int a = 0; a < 3; ++a) r.color[a][i] = background[a] * (1.0f - share[i]);
         r.coverage[i] = share[i];
+        // No lines of its own: no wireframe, and no object in the G-buffer
+        // (outlines read it as background; post/outlines.hpp).
+        r.wire[i] = 0.0f;
+        r.object[i] = kNoObject;
     }
 }
 
