@@ -118,7 +118,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     if (targets_.shading == ShadeResolution::samples)
         apply_sample_stages(inputs, vertices, edge_mask);
     finish_colour(inputs, out);
-    if (glass_.any_in(0)) draw_glass(alpha, shade_in, surface_in, out);
+    if (glass_.any_in(0)) draw_glass(alpha, shade_in, surface_in, out, stopped);
 }
 
 // The samples resolved into the output's pixels, and the environment
@@ -164,7 +164,8 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
 // Stage 12, second half: each layer shaded back to front over a backdrop
 // of the frame so far.
 void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
-                               const SurfacePassInputs& surface_in, FrameImages& out) {
+                               const SurfacePassInputs& surface_in, FrameImages& out,
+                               const std::function<bool()>& stopped) {
     const int layers = peel_glass(alpha, surface_in, out);
     // Over the finished colour: no G-buffer, strokes or surface share.
     ShadeTarget target = shade_target(out);
@@ -173,12 +174,12 @@ void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& sh
     target.surface_share = nullptr;
     target.over_existing = true;
     const FrameInputs& inputs = shade_in.frame;
-    for (int layer = layers; layer >= 1; --layer) {
+    for (int layer = layers; layer >= 1 && !stopped(); --layer) {
         ShadeInputs glass_in = shade_in;
         glass_in.backdrop = &glass_.backdrop(out.color, inputs.camera, pool_);
         const std::span<const uint8_t> tiles = glass_.glass_tiles(layer);
         pool_.parallel_for(tiles.size(), [&](size_t tile) {
-            if (!tiles[tile]) return;
+            if (!tiles[tile] || stopped()) return;
             const TileVisibility visible =
                 glass_.layer_tile(layer, static_cast<int>(tile), rasterizer_);
             const ShadeCounts counts = shade_tile(visible, rasterizer_, glass_in, target);

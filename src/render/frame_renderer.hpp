@@ -74,7 +74,8 @@ class FrameRenderer {
     int peel_glass(const AlphaCoverage& alpha, const SurfacePassInputs& surface_in,
                    FrameImages& out);
     void draw_glass(const AlphaCoverage& alpha, const ShadeInputs& shade_in,
-                    const SurfacePassInputs& surface_in, FrameImages& out);
+                    const SurfacePassInputs& surface_in, FrameImages& out,
+                    const std::function<bool()>& stopped);
 
     const SceneDesc& scene_;
     const World& world_;
