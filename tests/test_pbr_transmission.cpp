@@ -346,6 +346,11 @@ TEST_CASE("transmission: KHR_materials_transmission, _volume and _dispersion are
     CHECK(m.transmission_map.texture->format() == Texture::Format::data8);
     REQUIRE(m.thickness_map.texture);
     CHECK((m.features() & kExtraLobes) != 0);
+    // Double-sided with a volume: drawn, with a warning that the tint is
+    // applied at both faces.
+    g.doc["materials"][0]["doubleSided"] = true;
+    const Mesh both = load_gltf(g.write(dir.file("both.gltf")));
+    CHECK(warns(both, "double-sided glass with a volume"));
     // Without a volume: thin-walled, untinted, the distance infinite.
     const Mesh thin = load_gltf(write(transmission, json::object(), "thin.gltf"));
     CHECK(thin.materials[0].thickness == 0.0f);

@@ -534,6 +534,13 @@ void read_transmission(const tinygltf::Material& m, TextureCache& cache, const s
     }
     if (const auto it = m.extensions.find("KHR_materials_dispersion"); it != m.extensions.end())
         mat.dispersion = extension_number(it->second, "dispersion", 0.0f, 0.0, 1e3, path, what);
+    // Its back faces are drawn as layers of their own (docs/pbr.md,
+    // "Transmission"): the view crosses the volume twice.
+    if (mat.transmission > 0.0f && mat.thickness > 0.0f && mat.double_sided)
+        warnings.push_back(file_warning(
+            path, what + " is double-sided glass with a volume: its tint and refraction are "
+                         "applied at its front and again at its back faces, darker than the "
+                         "one crossing authored"));
 }
 
 // KHR_materials_ior, _specular, _clearcoat, _sheen, _iridescence, _anisotropy,

@@ -101,6 +101,8 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
         static_cast<float>(scene_.output.width) / static_cast<float>(scene_.output.height);
     in.camera = make_camera(in.state.camera, aspect);
     in.materials = frame_materials(world_, in.state);
+    for (const ObjectState& object : in.state.objects)
+        in.object_scales.push_back(object_scale(object.transform));
     for (const StyleDesc* style : plan_.styles)
         in.styles.push_back(evaluate_style(*style, at, tams_));
     in.draw_features = settle_draw_features(world_, in.materials, in.styles);

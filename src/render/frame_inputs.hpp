@@ -39,7 +39,11 @@ struct FrameInputs {
     FrameState state;  // objects, camera and lights at this frame
     CameraMatrices camera;
     std::vector<Material> materials;  // the world's, with this frame's animated values
-    std::vector<StyleState> styles;   // StylePlan::styles at this frame
+    // Per scene object: how much its transform scales lengths this frame
+    // (object_scale, anim/frame_state.hpp), settled once for the shading
+    // stage, which scales a volume's thickness by it.
+    std::vector<float> object_scales;
+    std::vector<StyleState> styles;  // StylePlan::styles at this frame
     // Per style and draw, draw_features[style * draws + draw]: the features
     // (MaterialFeature) the style draws of the draw's material and mesh
     // part at this frame, settled once for the shading stage.

@@ -138,9 +138,8 @@ template <bool Plain, bool Single>
         if (needs.position)
             put<Single>(b.lanes.surface.receives_shadow, mask, world.receives_shadows[draw.object],
                         first);
-        const float scale =
-            needs.extra_lobes ? object_scale(in.frame.state.objects[draw.object].transform) : 1.0f;
-        put_material_terms<Single>(m, scale, style, needs, mask, first, b.lanes);
+        put_material_terms<Single>(m, in.frame.object_scales[draw.object], style, needs, mask,
+                                   first, b.lanes);
         const vi object = simd::splat_i(static_cast<int32_t>(draw.object));
         objects = (Single || first) ? object : (mask ? object : objects);
         if constexpr (Plain) continue;
@@ -450,13 +449,9 @@ void unshadowed_light(const ShadeInputs& in, const StyleState& style, const Batc
         for (int a = 0; a < 3; ++a) out[a] += ambient[a];
         return;
     }
-    // The material's own coefficients (Gouraud's lanes do not carry them).
     const glm::vec3 ambient = ambient_light(in.lights);
-    for (int i = 0; i < b.count; ++i) {
-        const Material& m = *b.material[i];
-        const float ratio = m.diffuse > 0.0f ? m.ambient / m.diffuse : 0.0f;
-        for (int a = 0; a < 3; ++a) out[a][i] = ratio * ambient[a];
-    }
+    const vf ratio = ambient_over_diffuse(b.material, b.count);
+    for (int a = 0; a < 3; ++a) out[a] = ratio * ambient[a];
 }
 
 // kShadowCatcher: the share of the light the shadows take at each point,

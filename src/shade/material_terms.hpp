@@ -114,6 +114,19 @@ auto slot_of(LaneMaterials material, Slot slot) {
     };
 }
 
+// A shadow catcher's ambient term against its diffuse one, ka / kd (0
+// without a diffuse term), lane by lane from the frame's materials: the
+// ambient light the Phong family gives it for each unit of direct light
+// (render/shade_batch.cpp's catchers; Gouraud's lanes carry no Phong terms).
+inline simd::vf ambient_over_diffuse(LaneMaterials material, int count) {
+    simd::vf ratio = simd::splat(0.0f);
+    for (int i = 0; i < count; ++i) {
+        const Material& m = *material[i];
+        ratio[i] = m.diffuse > 0.0f ? m.ambient / m.diffuse : 0.0f;
+    }
+    return ratio;
+}
+
 // The steps' texture lookups: `lookup(slot_of, use)` reads each lane's
 // slot `slot_of(lane)` (null: none) at the lane's point and footprint and
 // calls `use(lane, texel)`.
