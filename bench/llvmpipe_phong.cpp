@@ -365,6 +365,14 @@ void main() {
 
 SceneLighting scene_lighting(const facet::SceneDesc& scene, const facet::World& world,
                              int shadow_light) {
+    // Said by name, not drawn otherwise: the port has no metal-rough
+    // conversion (shade/metal_rough_phong.hpp) in its shaders.
+    for (const facet::Material& m : world.materials)
+        if (m.metal_rough && !m.unlit && scene.style.shading != facet::ShadingModel::unlit)
+            throw std::runtime_error(
+                "the llvmpipe phong port does not draw a metallic-roughness "
+                "material (" +
+                m.name + ") under the Phong family");
     SceneLighting lighting;
     bool first = true;
     for (int frame : scene.output.frames) {

@@ -86,13 +86,17 @@ void check_render(const RenderCase& c) {
     }
     SceneDesc scene = load_scene(source_path(c.scene), options);
     const FrameImages images = render_images(scene, c.frame, 2);
+    check_against_baseline(pass_png(c.pass, images), c.reference, c.tolerance);
+}
 
+void check_against_baseline(const std::vector<uint8_t>& png, const std::string& reference,
+                            const Tolerance& tolerance) {
     const fs::path out_dir = fs::path("render-test-output");
     fs::create_directories(out_dir);
-    const std::string actual_path = (out_dir / c.reference).string();
-    write_file_atomically(actual_path, pass_png(c.pass, images));
+    const std::string actual_path = (out_dir / reference).string();
+    write_file_atomically(actual_path, png);
     const std::string reference_path =
-        (fs::path(facet::test::baselines_dir()) / c.reference).string();
+        (fs::path(facet::test::baselines_dir()) / reference).string();
 
     const char* update = std::getenv("FACET_UPDATE_BASELINES");
     if ((update && std::string(update) == "1") || !fs::exists(reference_path)) {
@@ -102,14 +106,14 @@ void check_render(const RenderCase& c) {
     }
 
     DecodedPng actual = read_png(actual_path);
-    DecodedPng reference = read_png(reference_path);
-    REQUIRE(actual.width == reference.width);
-    REQUIRE(actual.height == reference.height);
+    DecodedPng expected = read_png(reference_path);
+    REQUIRE(actual.width == expected.width);
+    REQUIRE(actual.height == expected.height);
     // RGB and RGBA files compare equal when the RGBA one is opaque.
     auto sample = [](const DecodedPng& png, size_t pixel, int channel) {
         return channel < png.channels ? int(png.samples[pixel * png.channels + channel]) : 255;
     };
-    const int channels = std::max(actual.channels, reference.channels);
+    const int channels = std::max(actual.channels, expected.channels);
     const size_t pixels = static_cast<size_t>(actual.width) * actual.height;
     double sum = 0;
     size_t outliers = 0;
@@ -117,7 +121,7 @@ void check_render(const RenderCase& c) {
     for (size_t p = 0; p < pixels; ++p) {
         int worst = 0;
         for (int ch = 0; ch < channels; ++ch)
-            worst = std::max(worst, std::abs(sample(actual, p, ch) - sample(reference, p, ch)));
+            worst = std::max(worst, std::abs(sample(actual, p, ch) - sample(expected, p, ch)));
         sum += worst;
         if (worst > 24) ++outliers;
         uint8_t v = static_cast<uint8_t>(std::min(255, worst * 8));
@@ -126,17 +130,17 @@ void check_render(const RenderCase& c) {
     }
     const double mean = sum / static_cast<double>(pixels);
     const double outlier_fraction = static_cast<double>(outliers) / static_cast<double>(pixels);
-    if (mean > c.tolerance.mean || outlier_fraction > c.tolerance.outliers) {
+    if (mean > tolerance.mean || outlier_fraction > tolerance.outliers) {
         ColorImage diff_image(actual.width, actual.height);
         for (size_t p = 0; p < pixels; ++p) diff_image.pixels[p] = {diff[4 * p] / 255.0f, 0, 0, 1};
-        write_file_atomically((out_dir / ("diff-" + c.reference)).string(),
+        write_file_atomically((out_dir / ("diff-" + reference)).string(),
                               encode_png_color(diff_image, 1));
     }
-    INFO(c.reference << ": mean difference " << mean << " (allowed " << c.tolerance.mean
-                     << "), outliers " << outlier_fraction << " (allowed " << c.tolerance.outliers
-                     << "); actual image in " << fs::absolute(actual_path).string());
-    CHECK(mean <= c.tolerance.mean);
-    CHECK(outlier_fraction <= c.tolerance.outliers);
+    INFO(reference << ": mean difference " << mean << " (allowed " << tolerance.mean
+                   << "), outliers " << outlier_fraction << " (allowed " << tolerance.outliers
+                   << "); actual image in " << fs::absolute(actual_path).string());
+    CHECK(mean <= tolerance.mean);
+    CHECK(outlier_fraction <= tolerance.outliers);
 }
 
 glm::vec4 pixel_at(const FrameImages& images, const HalfColorImage& image, glm::vec3 p) {

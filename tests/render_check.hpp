@@ -31,6 +31,11 @@ struct RenderCase {
 // writes the rendered image into tests/baselines for review and fails.
 void check_render(const RenderCase& c);
 
+// Compares a PNG with tests/baselines/`reference` as check_render does
+// (the same update rule and diff image).
+void check_against_baseline(const std::vector<uint8_t>& png, const std::string& reference,
+                            const Tolerance& tolerance = {});
+
 // One frame of a loaded scene, rendered on `threads` threads, as linear
 // float colour (for tests that compute what each pixel must be).
 ColorImage render_color(const SceneDesc& scene, int frame = 1, unsigned threads = 1);

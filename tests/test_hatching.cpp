@@ -81,8 +81,8 @@ double crossings_per_pixel(const std::vector<float>& d, int size) {
 
 TEST_CASE("hatching density rises monotonically with darkness", "[render][hatching]") {
     // From more than full light (no strokes) down to none. Ink covers as
-    // much of the paper as the tone is dark, up to the darkest level's
-    // coverage (0.8), which the last two nearly share.
+    // much of the paper as the tone (the lightness L* of the light) is
+    // dark, up to the darkest level's coverage (0.8).
     const float intensities[] = {1.6f, 1.0f, 0.8f, 0.6f, 0.45f, 0.3f, 0.0f};
     double previous = -1;
     for (float intensity : intensities) {
@@ -94,6 +94,20 @@ TEST_CASE("hatching density rises monotonically with darkness", "[render][hatchi
         if (intensity == 0.0f) CHECK(coverage > 0.7);
         previous = coverage;
     }
+}
+
+TEST_CASE("hatching exposure: one stop up draws as twice the light, one down as half",
+          "[render][hatching]") {
+    // Below full light the tone follows the light, so +1 stop at 0.3 is
+    // the light of 0.6, and -1 stop at 0.6 that of 0.3; the strokes match.
+    const double at_03 = mean(render_darkness(plane_scene(0.3f, "levels: 24")));
+    const double at_06 = mean(render_darkness(plane_scene(0.6f, "levels: 24")));
+    const double up = mean(render_darkness(plane_scene(0.3f, "levels: 24, exposure: 1")));
+    const double down = mean(render_darkness(plane_scene(0.6f, "levels: 24, exposure: -1")));
+    INFO("ink at 0.3 " << at_03 << ", 0.6 " << at_06 << ", 0.3 +1 " << up << ", 0.6 -1 " << down);
+    REQUIRE(at_03 > at_06 + 0.05);  // the two lights differ in strokes
+    CHECK(up == Approx(at_06).margin(0.005));
+    CHECK(down == Approx(at_03).margin(0.005));
 }
 
 TEST_CASE("hatching strokes keep their size in pixels at any UV scale and distance",

@@ -185,7 +185,10 @@ std::string write_dome(const facet::test::TempDir& dir, bool colored) {
 // The scene material (YAML) that gives a dome the features `bits`
 // (MaterialFeature); vertex colours come from the mesh.
 std::string material_with(uint32_t bits) {
-    std::string m = "{ color: [0.7, 0.6, 0.5], metallic: 0.3, roughness: 0.4, clearcoat: 0.5";
+    std::string m = "{ color: [0.7, 0.6, 0.5], clearcoat: 0.5";
+    // Metal and roughness make a metal-rough material; Phong terms a Phong one.
+    m += (bits & facet::kMetalRough) ? ", metallic: 0.3, roughness: 0.4"
+                                     : ", specular: 0.4, shininess: 32";
     if (bits & facet::kBaseColorMap) m += ", texture: checker.png";
     if (bits & facet::kPhysicalMaps) m += ", metal_rough_map: checker.png";
     if (bits & facet::kNormalMaps) m += ", normal_map: normal.png";
@@ -239,7 +242,7 @@ std::vector<std::vector<uint32_t>> every_feature_set() {
 
 TEST_CASE("every combination of features gives the same bits on the plain and general paths",
           "[render][shade_plain]") {
-    // Each of the 256 feature sets on its own object, under each model, at
+    // Each of the 512 feature sets on its own object, under each model, at
     // one and four samples, with the G-buffer and the lines pass: batches
     // with no feature under a plain style take the plain path, the others
     // the general one, and shading everything the general way must change
@@ -340,6 +343,7 @@ TEST_CASE("a batch takes the plain path when its style draws none of its feature
         {facet::kShadowCatcher, true, true, true},
         {facet::kFade, true, true, true},
         {facet::kExtraLobes, false, false, false},
+        {facet::kMetalRough, true, false, false},
     };
     const facet::ShadeCounts none = counts(0, "phong");
     CHECK(none.batches > 200);

@@ -390,6 +390,13 @@ TEST_CASE("bad style values name file, line and key", "[style]") {
         check_error_at(message, path, line_col(text, "sideways"), "style.hatching.space");
         CHECK_THAT(message, Contains("object"));  // the choices are listed
     }
+    SECTION("a hatching exposure out of range") {
+        const std::string text = "style: { hatching: { exposure: 12 } }\n" + kMinimalObjects;
+        const std::string path = d.scene(text);
+        const std::string message = load_error(path, d.options());
+        check_error_at(message, path, line_col(text, "12"), "style.hatching.exposure");
+        CHECK_THAT(message, Contains("between -10 and 10"));
+    }
     SECTION("a zero hatching axis") {
         const std::string text =
             "style: { hatching: { direction: axis, axis: [0, 0, 0] } }\n" + kMinimalObjects;

@@ -346,7 +346,8 @@ TEST_CASE("A normal map the materials add gets tangents on a copy of the mesh", 
     REQUIRE(warnings.size() == 1);
     CHECK(warnings[0].where.file == "pair.obj");
     CHECK(warnings[0].message.find("part 1 (material 'bare')") != std::string::npos);
-    CHECK(warnings[0].message.find("drawn without its normal maps and anisotropy") != std::string::npos);
+    CHECK(warnings[0].message.find("drawn without its normal maps and anisotropy") !=
+          std::string::npos);
 
     Warnings again;
     CHECK(with_normal_map_tangents(with, mapped, again) == with);
@@ -541,7 +542,7 @@ TEST_CASE("The pose and vertex stages carry tangents through mirroring transform
     SECTION("a model matrix that turns without mirroring keeps w") {
         frame.state.objects[0].transform =
             glm::rotate(glm::mat4(1.0f), float(kPi / 2), glm::vec3(0, 0, 1));
-        const TransformedVertices& out = stage.transform(frame, posed, {}, false, pool);
+        const TransformedVertices& out = stage.transform(frame, posed, {}, nullptr, pool);
         REQUIRE(out.world_tangent.size() == vertices);
         for (size_t v = 0; v < vertices; ++v) {
             const glm::vec4 t = posed.tangents[v];
@@ -553,7 +554,7 @@ TEST_CASE("The pose and vertex stages carry tangents through mirroring transform
     }
     SECTION("a model matrix that mirrors (negative scale) flips w again") {
         frame.state.objects[0].transform = glm::scale(glm::mat4(1.0f), glm::vec3(1, -3, 1));
-        const TransformedVertices& out = stage.transform(frame, posed, {}, false, pool);
+        const TransformedVertices& out = stage.transform(frame, posed, {}, nullptr, pool);
         REQUIRE(out.world_tangent.size() == vertices);
         for (size_t v = 0; v < vertices; ++v) {
             const glm::vec4 t = posed.tangents[v];
@@ -567,7 +568,7 @@ TEST_CASE("The pose and vertex stages carry tangents through mirroring transform
     SECTION("a world without tangents spends nothing on them") {
         PosedVertices bare = posed;
         bare.tangents = {};
-        const TransformedVertices& out = stage.transform(frame, bare, {}, false, pool);
+        const TransformedVertices& out = stage.transform(frame, bare, {}, nullptr, pool);
         CHECK(out.world_tangent.empty());
         CHECK(out.world_normal.size() == vertices);
     }

@@ -321,13 +321,14 @@ tinygltf::TextureInfo plain_info(const Info& info) {
 
 // glTF's metallic-roughness terms (§3.9.2) and its normal and occlusion
 // maps (§3.9.3, §3.9.4), read as data.
-// A Phong reading of metal/roughness: smoother surfaces get tighter,
-// stronger highlights (documented in docs/scene-format.md).
+// Marks the material as metallic-roughness (the Phong family reads it
+// through shade/metal_rough_phong.hpp) and gives the stylised models'
+// highlight: smoother surfaces get tighter, stronger highlights
+// (documented in docs/scene-format.md).
 void phong_from_roughness(double roughness_factor, Material& mat) {
+    mat.metal_rough = true;
     const float roughness = static_cast<float>(std::clamp(roughness_factor, 0.05, 1.0));
-    mat.shininess =
-        std::min(2.0f / (roughness * roughness * roughness * roughness) - 2.0f, 2048.0f);
-    mat.shininess = std::max(mat.shininess, 1.0f);
+    mat.shininess = roughness_exponent(roughness);
     mat.specular = 0.15f + 0.6f * (1.0f - roughness);
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // Triangle meshes as loaded from files or built procedurally. A mesh is a list
 // of parts; each part has one material and its own indexed vertices.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <limits>
@@ -31,6 +32,15 @@ enum class AlphaMode { opaque, mask, blend };
 // gives one. The stylised models' highlights are designed for it.
 constexpr float kDefaultSpecular = 0.4f;
 
+// The Blinn-Phong exponent of a metal-rough material's roughness: 2 /
+// alpha^2 - 2 with alpha = roughness^2 (shade/metal_rough_phong.hpp says
+// why), the roughness taken as at least 0.05 and the exponent kept within
+// 1..2048, a mirror's highlight being smaller than any pixel.
+inline float roughness_exponent(float roughness) {
+    const float r = std::clamp(roughness, 0.05f, 1.0f);
+    return std::max(std::min(2.0f / (r * r * r * r) - 2.0f, 2048.0f), 1.0f);
+}
+
 // The steps of the shading stage's surface path (render/shade_batch.cpp)
 // that a material, a mesh part and a style may need beyond a material of
 // constants: one bit each. A batch whose set is empty, under a Phong,
@@ -47,8 +57,12 @@ enum MaterialFeature : uint32_t {
     kFade = 1u << 6,           // fades into the background with distance
     // `pbr`'s sheen, thin film, anisotropy, diffuse transmission or transmission
     kExtraLobes = 1u << 7,
+    // A metallic-roughness material under a Phong-family model: its metal,
+    // roughness and maps become the model's colours and highlight
+    // (shade/metal_rough_phong.hpp)
+    kMetalRough = 1u << 8,
 };
-constexpr int kMaterialFeatureCount = 8;
+constexpr int kMaterialFeatureCount = 9;
 
 struct Material {
     std::string name;
@@ -87,6 +101,12 @@ struct Material {
     // materials; these are a scene's and an OBJ's (a grey dielectric).
     float metallic = 0.0f;   // 0 dielectric .. 1 metal
     float roughness = 0.5f;  // perceptual roughness, 0..1
+    // Whether its author described it by metal and roughness (a glTF
+    // file's; a scene's that gives `metallic` or `roughness` and neither
+    // `specular` nor `shininess`): the Phong family then reads it through
+    // shade/metal_rough_phong.hpp. An OBJ's is a Phong material (MTL's
+    // Ka, Kd, Ks and Ns are the Phong family's own terms).
+    bool metal_rough = false;
     // glTF metallicRoughnessTexture: G multiplies roughness, B metallic
     // (linear data, not colour).
     TextureSlot metal_rough_map;
@@ -238,6 +258,7 @@ struct Material {
         if (sheen_color != glm::vec3(0) || iridescence > 0.0f || anisotropy > 0.0f ||
             diffuse_transmission > 0.0f || transmission > 0.0f)
             f |= kExtraLobes;
+        if (metal_rough && !unlit) f |= kMetalRough;  // an unlit material shows its colour
         return f;
     }
 };

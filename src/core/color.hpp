@@ -10,6 +10,10 @@ float srgb_to_linear(float c);
 // for building the encoder's lookup table.
 double linear_to_srgb(double c);
 
+// CIE 1976 lightness L* / 100 of relative luminance y in [0, 1]: 1.16
+// y^(1/3) - 0.16, and 9.033 y below (6/29)^3 (CIE 15:2004).
+float cie_lightness(float y);
+
 // Relative luminance of linear RGB, Rec. 709 weights; for floats or SIMD
 // lanes alike.
 template <typename T>

@@ -75,7 +75,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     const PosedVertices posed = pose_.pose(inputs.state);
     const FrameLights lights = light(inputs, posed);
     const TransformedVertices& vertices =
-        vertices_.transform(inputs, posed, lights.all, plan.any_gouraud, pool_);
+        vertices_.transform(inputs, posed, lights.all, plan.any_gouraud ? &plan : nullptr, pool_);
     rasterizer_.set_geometry(raster_input(world_, vertices, posed, coverage_tested_), pool_);
     fit_targets(inputs, out);
     const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);

@@ -25,7 +25,7 @@ class PreviousFrameStage {
     std::span<const glm::vec4> clip_positions(const FrameInputs& previous, ThreadPool& pool) {
         PosedVertices posed = pose_.pose(previous.state);
         posed.tangents = {};  // only where the vertices were is wanted
-        const TransformedVertices& v = vertices_.transform(previous, posed, {}, false, pool);
+        const TransformedVertices& v = vertices_.transform(previous, posed, {}, nullptr, pool);
         return {v.clip.data(), v.clip.size()};
     }
 

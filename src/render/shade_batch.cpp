@@ -517,7 +517,7 @@ void layer_inputs(const ShadeInputs& in, const StyleState& style, const Batch& b
                                    in.edge_mask[s.triangle]);
         if (!style.hatching || !shaded) continue;
         const HatchingState& h = *style.hatching;
-        l.hatch_tone = hatch_tone(style, shaded->color_at(i), l.albedo, shaded->palette_tone[i]);
+        l.hatch_tone = hatch_tone(style, shaded->color_at(i), shaded->palette_tone[i]);
         const bool strokes = h.strength > 0.0f && l.hatch_tone < 1.0f;
         if (!strokes && !h.pencil) continue;
         // pixel_sample's derivatives are per output pixel already.
@@ -594,6 +594,8 @@ template <bool Plain>
     const TextureLookups lookup{in, b};
     if (!Plain && (features & kBaseColorMap)) apply_base_color_maps(b.material, lookup, b.lanes);
     if (!Plain && (features & kVertexColors)) apply_vertex_colors(in, b);
+    if (!Plain && (features & kMetalRough))
+        apply_metal_rough_reading(b.material, b.features, b.count, lookup, b.lanes);
     if (!Plain && (features & kPhysicalMaps))
         apply_physical_maps(b.material, b.count, lookup, b.lanes);
     if (!Plain && (features & kExtraLobes)) apply_anisotropy(in, lookup, b);

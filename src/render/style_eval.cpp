@@ -60,6 +60,7 @@ StyleState evaluate_style(const StyleDesc& d, const FrameTime& at, TamCache& tam
         h.tam = &tams.get(tam_params(*d.hatching));
         h.strength = evaluate(d.hatching->strength, at);
         h.white = evaluate(d.hatching->white, at);
+        h.exposure_scale = std::exp2(evaluate(d.hatching->exposure, at));
         if (d.hatching->ink) h.ink = evaluate(*d.hatching->ink, at);
         h.space = d.hatching->space;
         h.direction = d.hatching->direction;

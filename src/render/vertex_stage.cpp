@@ -8,6 +8,7 @@
 
 #include "assets/tangent_frames.hpp"
 #include "shade/lighting_batch.hpp"
+#include "shade/metal_rough_phong.hpp"
 
 namespace facet {
 namespace {
@@ -33,11 +34,22 @@ glm::vec4 world_tangent(const DrawTransform& t, const glm::vec4& model_tangent,
 }
 }  // namespace
 
+// A metal-rough material's roughness at vertex `v`: its factor times its
+// map's G at the vertex's texture coordinates (the map's full-size level:
+// a vertex stands for no footprint of its own).
+float VertexStage::vertex_roughness(const Material& m, const Draw& draw, size_t v) const {
+    const TextureSlot& map = m.metal_rough_map;
+    if (!map || !draw.has_uvs) return m.roughness;
+    const bool second = map.uv_set == 1 && !world_.uvs1.empty();
+    const glm::vec2 uv = second ? world_.uvs1[v] : world_.uvs[v];
+    return m.roughness * map.texture->sample(map.map(uv)).g;
+}
+
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
 // batch lighting as per-pixel shading. With `casting` (the shadow-casting
 // lights, without their maps), `lights` come without their maps too, and
 // the casting lights' direct light is kept apart.
-void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
+void VertexStage::light(size_t first, size_t last, const FrameInputs& frame, const StylePlan& plan,
                         std::span<const ShadeLight> lights, std::span<const ShadeLight> casting) {
     for (size_t start = first; start < last; start += simd::kLanes) {
         const int count = static_cast<int>(std::min<size_t>(simd::kLanes, last - start));
@@ -46,12 +58,21 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
             const size_t v = start + i;
             const glm::vec3& p = out_.world_position[v];
             const glm::vec3& n = out_.world_normal[v];
-            const Draw& draw = world_.draws[world_.vertex_draw[v]];
+            const uint32_t d = world_.vertex_draw[v];
+            const Draw& draw = world_.draws[d];
             const Material& m = frame.materials[draw.material];
             s.px[i] = p.x, s.py[i] = p.y, s.pz[i] = p.z;
             s.nx[i] = n.x, s.ny[i] = n.y, s.nz[i] = n.z;
             s.ambient[i] = m.ambient, s.diffuse[i] = m.diffuse;
             s.specular[i] = m.specular, s.shininess[i] = m.shininess;
+            // The highlight's colour and the map's metal are the pixels'
+            // (render/shade_batch.cpp); the highlight's width the vertex's.
+            const size_t row = plan.object_style[draw.object] * world_.draws.size();
+            if (frame.draw_features[row + d] & kMetalRough) {
+                s.shininess[i] = roughness_exponent(vertex_roughness(m, draw, v));
+                s.specular[i] = normalised_highlight(s.shininess[i]);
+                s.ambient_specular[i] = m.ambient;
+            }
             s.receives_shadow[i] = world_.receives_shadows[draw.object];
         }
         pad_batch(s, count);
@@ -60,7 +81,7 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
         for (int i = 0; i < count; ++i)
             out_.lit[start + i] = {{l.dr[i], l.dg[i], l.db[i]}, {l.sr[i], l.sg[i], l.sb[i]}};
         if (casting.empty()) continue;
-        s.ambient = simd::splat(0.0f);
+        s.ambient = s.ambient_specular = simd::splat(0.0f);
         const LightingBatch d =
             light_surface_batch(s, frame.camera.position, casting, Highlight::blinn);
         for (int i = 0; i < count; ++i)
@@ -71,7 +92,8 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame,
 const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
                                                   const PosedVertices& posed,
                                                   std::span<const ShadeLight> lights,
-                                                  bool light_vertices, ThreadPool& pool) {
+                                                  const StylePlan* light_for, ThreadPool& pool) {
+    const bool light_vertices = light_for != nullptr;
     const size_t count = posed.positions.size();
     out_.clip.resize(count);
     out_.world_position.resize(count);
@@ -106,7 +128,7 @@ const TransformedVertices& VertexStage::transform(const FrameInputs& frame,
             if (tangents)
                 out_.world_tangent[v] = world_tangent(t, posed.tangents[v], out_.world_normal[v]);
         }
-        if (light_vertices) light(first, last, frame, open, casting);
+        if (light_vertices) light(first, last, frame, *light_for, open, casting);
     });
     return out_;
 }

@@ -43,14 +43,16 @@ class VertexStage {
   public:
     explicit VertexStage(const World& world) : world_(world) {}
 
-    // Valid until the next call. `light_vertices`: fill `lit` (Blinn-Phong
-    // with the frame's materials and lights).
+    // Valid until the next call. `light_for`, when some style lights
+    // vertices: fill `lit` (Blinn-Phong with the frame's materials and
+    // lights, a metal-rough material read as its object's style reads it).
     const TransformedVertices& transform(const FrameInputs& frame, const PosedVertices& posed,
-                                         std::span<const ShadeLight> lights, bool light_vertices,
-                                         ThreadPool& pool);
+                                         std::span<const ShadeLight> lights,
+                                         const StylePlan* light_for, ThreadPool& pool);
 
   private:
-    void light(size_t first, size_t last, const FrameInputs& frame,
+    float vertex_roughness(const Material& m, const Draw& draw, size_t v) const;
+    void light(size_t first, size_t last, const FrameInputs& frame, const StylePlan& plan,
                std::span<const ShadeLight> lights, std::span<const ShadeLight> casting);
 
     const World& world_;

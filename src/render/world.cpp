@@ -73,6 +73,10 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, int ma
     if (desc.diffuse) m.diffuse = desc.diffuse->value;
     if (desc.specular) m.specular = desc.specular->value;
     if (desc.shininess) m.shininess = desc.shininess->value;
+    // Metal and roughness make a metallic-roughness material; a Phong
+    // term makes a Phong one, whatever the file said (Material::metal_rough).
+    if (desc.metallic || desc.roughness) m.metal_rough = true;
+    if (desc.specular || desc.shininess) m.metal_rough = false;
     if (desc.double_sided) m.double_sided = *desc.double_sided;
     if (desc.emissive) m.emissive = *desc.emissive;
     if (desc.unlit) m.unlit = *desc.unlit;

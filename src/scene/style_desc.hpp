@@ -80,6 +80,9 @@ struct HatchingDesc {
     // The share of its full light at and above which a surface gets no
     // strokes: lit faces stay paper, as an illustrator leaves them.
     Animated<float> white = 1.0f;
+    // Stops: the light is scaled by 2^exposure before the tone curve that
+    // turns it into strokes (docs/styles.md, "hatching", "Tone").
+    Animated<float> exposure = 0.0f;
     bool pencil = false;  // pencil strokes over paper grain
     // Set: the strokes go on a flat wash, the paper tinted by the object's
     // colour by this much (0 paper, 1 the full colour), and carry the tone

@@ -94,8 +94,8 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
         return;
     }
     f.check_keys({"levels", "scale", "tile_pixels", "space", "direction", "axis", "angle",
-                  "stroke_width", "ink", "strength", "white", "pencil", "wash", "paper", "seed",
-                  "blend"});
+                  "stroke_width", "ink", "strength", "white", "exposure", "pencil", "wash", "paper",
+                  "seed", "blend"});
     if (!hatching) hatching = HatchingDesc{};
     HatchingDesc& h = *hatching;
     if (f.has("levels")) h.levels = f["levels"].integer(2, 32);
@@ -126,6 +126,7 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
     if (f.has("strength")) h.strength = f["strength"].animated_number(0, 1);
     if (f.has("pencil")) h.pencil = f["pencil"].boolean();
     if (f.has("white")) h.white = f["white"].animated_number(0.05, 1);
+    if (f.has("exposure")) h.exposure = f["exposure"].animated_number(-10, 10);
     if (f.has("wash")) h.wash = f["wash"].animated_number(0, 1);
     if (f.has("paper")) h.paper = f["paper"].animated_color3();
     if (f.has("seed")) h.seed = f["seed"].integer(0, 1000000);

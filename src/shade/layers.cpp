@@ -6,12 +6,12 @@
 
 namespace facet {
 
-float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone) {
+float hatch_tone(const StyleState& style, glm::vec3 color, float palette_tone) {
     if (palette_tone >= 0) return palette_hatch_tone(style.palette, palette_tone);
-    // Relative to the object's own colour, so dark colours are not all ink.
-    const float lit = rec709_luminance(color.x, color.y, color.z) /
-                      std::max(rec709_luminance(albedo.x, albedo.y, albedo.z), 1e-4f);
-    return std::clamp(lit / style.hatching->white, 0.0f, 1.0f);
+    const HatchingState& h = *style.hatching;
+    const float light =
+        std::max(rec709_luminance(color.x, color.y, color.z), 0.0f) * h.exposure_scale;
+    return std::clamp(cie_lightness(light) / h.white, 0.0f, 1.0f);
 }
 
 glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in) {

@@ -26,9 +26,11 @@ inline bool has_layers(const StyleState& style) {
 
 // The tone a point is hatched at, 1 (white, no strokes) .. 0. `palette_tone`
 // is the palette model's cel tone (>= 0), which hatches by cels as seed 000
-// does; other models hatch by how much light the surface gets (-1): the
-// brightness relative to its own colour's, over the style's white point.
-float hatch_tone(const StyleState& style, glm::vec3 color, glm::vec3 albedo, float palette_tone);
+// does; other models hatch by the lightness the shading shows (-1): the
+// CIE lightness L* / 100 (tone as the eye judges it) of its luminance
+// times 2^exposure, clipped at 1, over the style's white point. A dark
+// object gets dense strokes, a fully lit white one none.
+float hatch_tone(const StyleState& style, glm::vec3 color, float palette_tone);
 
 // The layers over a shading model's colour.
 glm::vec3 apply_layers(const StyleState& style, glm::vec3 color, const LayerInputs& in);

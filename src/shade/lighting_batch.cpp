@@ -23,7 +23,7 @@ void set_spot_cone(ShadeLight& light, float inner_degrees, float outer_degrees) 
 void pad_batch(SurfaceBatch& s, int count) {
     for (int i = count; i < simd::kLanes; ++i)
         for (vf* v : {&s.px, &s.py, &s.pz, &s.nx, &s.ny, &s.nz, &s.ambient, &s.diffuse, &s.specular,
-                      &s.shininess, &s.receives_shadow})
+                      &s.shininess, &s.receives_shadow, &s.ambient_specular})
             (*v)[i] = (*v)[0];
 }
 
@@ -93,7 +93,9 @@ LightingBatch light_surface_batch(const SurfaceBatch& surface, const glm::vec3& 
     out.dr = p.ambient * ambient.x;
     out.dg = p.ambient * ambient.y;
     out.db = p.ambient * ambient.z;
-    out.sr = out.sg = out.sb = splat(0.0f);
+    out.sr = p.ambient_specular * ambient.x;
+    out.sg = p.ambient_specular * ambient.y;
+    out.sb = p.ambient_specular * ambient.z;
     for (const ShadeLight& light : lights) {
         if (light.is_ambient) continue;
         add_light(light, p, s, highlight, out);

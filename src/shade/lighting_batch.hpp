@@ -15,6 +15,9 @@ struct SurfaceBatch {
     simd::vf ambient, diffuse, specular, shininess;
     // 1 where shadows darken the point, 0 where its object does not receive them.
     simd::vf receives_shadow = simd::splat(1.0f);
+    // The ambient term of the highlight: the ambient light a metal-rough
+    // material reflects in its specular colour (shade/metal_rough_phong.hpp).
+    simd::vf ambient_specular = simd::splat(0.0f);
 };
 
 struct LightingBatch {
@@ -27,7 +30,8 @@ struct LightingBatch {
 void pad_batch(SurfaceBatch& s, int count);
 
 // Ambient lights add ambient * their radiance (white 1 without any, see
-// ambient_light); every other light adds its diffuse and highlight, each
+// ambient_light) to the diffuse light, and ambient_specular * their
+// radiance to the specular light; every other light adds its diffuse and highlight, each
 // times the light's shadow visibility at that lane (shade/shadow_map.hpp).
 LightingBatch light_surface_batch(const SurfaceBatch& s, const glm::vec3& eye,
                                   std::span<const ShadeLight> lights, Highlight highlight);

@@ -20,6 +20,7 @@
 #include "assets/mesh.hpp"
 #include "core/simd_math.hpp"
 #include "shade/brdf.hpp"
+#include "shade/metal_rough_phong.hpp"
 #include "shade/shading_models.hpp"
 #include "shade/style_math.hpp"
 
@@ -65,6 +66,16 @@ template <bool Single>
     put<Single>(p.iridescence_thickness, mask, m.iridescence_thickness_max, first);
 }
 
+// The dielectric's reflectance at normal incidence, from its ior and
+// KHR_materials_specular: min(f0(ior) * colour, 1) * weight.
+inline glm::vec3 dielectric_f0(const Material& m) {
+    const float f0 = pbr::f0_from_ior(m.ior);
+    glm::vec3 out;
+    for (int a = 0; a < 3; ++a)
+        out[a] = std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight;
+    return out;
+}
+
 // The constants of material `m` that `style`'s model reads, into the lanes
 // of `mask`: the albedo (the style's own colour first), the Phong terms,
 // and the `pbr` model's terms, the dielectric's reflectances from its ior
@@ -81,16 +92,17 @@ template <bool Single>
         put<Single>(s.diffuse, mask, m.diffuse, first);
         put<Single>(s.specular, mask, m.specular, first);
         put<Single>(s.shininess, mask, m.shininess, first);
+        put<Single>(s.ambient_specular, mask, 0.0f, first);
     }
+    if (needs.light_terms || needs.vertex_light)
+        for (simd::vf& c : lanes.specular_color) put<Single>(c, mask, 1.0f, first);
     if (style.model == ShadingModel::pbr) {
         pbr::SurfaceTerms<simd::vf>& p = lanes.pbr;
         put<Single>(p.metallic, mask, m.metallic, first);
         put<Single>(p.roughness, mask, m.roughness, first);
         put<Single>(p.occlusion, mask, 1.0f, first);
-        const float f0 = pbr::f0_from_ior(m.ior);
-        for (int a = 0; a < 3; ++a)
-            put<Single>(p.f0[a], mask, std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight,
-                        first);
+        const glm::vec3 f0 = dielectric_f0(m);
+        for (int a = 0; a < 3; ++a) put<Single>(p.f0[a], mask, f0[a], first);
         put<Single>(p.f90, mask, m.specular_weight, first);
         put<Single>(p.coat, mask, m.clearcoat, first);
         put<Single>(p.coat_roughness, mask, m.clearcoat_roughness, first);
@@ -157,6 +169,37 @@ void apply_specular_glossiness_map(LaneMaterials material, Lookup&& lookup, Surf
         for (int a = 0; a < 3; ++a) lanes.albedo[a][i] *= 1.0f - largest;
         p.roughness[i] = 1.0f - m.glossiness_factor * t.a;
     });
+}
+
+// kMetalRough: under the Phong family, each such lane's metal and
+// roughness (the factors times the metal-rough map's B and G) turn its
+// albedo (the base colour, maps applied) into the model's diffuse colour,
+// highlight colour, strength and exponent (shade/metal_rough_phong.hpp);
+// the ambient light reflects in the highlight's colour too.
+template <typename Lookup>
+void apply_metal_rough_reading(LaneMaterials material, const uint32_t* features, int count,
+                               Lookup&& lookup, SurfaceLanes& lanes) {
+    float metallic[simd::kLanes], roughness[simd::kLanes];
+    for (int i = 0; i < count; ++i)
+        metallic[i] = material[i]->metallic, roughness[i] = material[i]->roughness;
+    lookup(slot_of(material, &Material::metal_rough_map), [&](int i, const glm::vec4& t) {
+        roughness[i] *= t.g;
+        metallic[i] *= t.b;
+    });
+    SurfaceBatch& s = lanes.surface;
+    for (int i = 0; i < count; ++i) {
+        if (!(features[i] & kMetalRough)) continue;
+        const Material& m = *material[i];
+        const PhongReading r =
+            read_metal_rough(lanes.albedo_at(i), dielectric_f0(m), metallic[i], roughness[i]);
+        for (int a = 0; a < 3; ++a) {
+            lanes.albedo[a][i] = r.diffuse[a];
+            lanes.specular_color[a][i] = r.specular[a];
+        }
+        s.specular[i] = r.strength;
+        s.shininess[i] = r.shininess;
+        s.ambient_specular[i] = m.ambient;
+    }
 }
 
 // kPhysicalMaps: the `pbr` model's maps (glTF 2.0 §3.9): metallic-roughness

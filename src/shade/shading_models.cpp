@@ -99,9 +99,15 @@ ModelNeeds needs_of(ShadingModel m) {
     return {lit || gouraud, lit || gouraud || m == ShadingModel::normal, lit, gouraud};
 }
 
+bool phong_family(ShadingModel m) {
+    return m == ShadingModel::phong || m == ShadingModel::blinn_phong || m == ShadingModel::flat ||
+           m == ShadingModel::gouraud;
+}
+
 uint32_t drawn_features(const StyleState& style, uint32_t features) {
-    if (style.base_color) features &= ~(kBaseColorMap | kVertexColors);
+    if (style.base_color) features &= ~(kBaseColorMap | kVertexColors | kMetalRough);
     if (style.model != ShadingModel::pbr) features &= ~kPbrOnlyFeatures;
+    if (!phong_family(style.model)) features &= ~kMetalRough;
     // The unlit, normal and depth models show no emission: views stay measurements.
     if (!needs_of(style.model).position) features &= ~kEmission;
     return features;

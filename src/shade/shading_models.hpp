@@ -27,7 +27,10 @@ struct SurfaceLanes {
     int count = 0;
     SurfaceBatch surface;
     simd::vf albedo[3];  // object colour (linear RGB), texture applied
-    simd::vf depth;      // linear view depth
+    // The Phong family's highlight colour: white, or a metal-rough
+    // material's specular colour (shade/metal_rough_phong.hpp).
+    simd::vf specular_color[3];
+    simd::vf depth;  // linear view depth
     // Gouraud: the vertex lighting interpolated, diffuse and specular RGB.
     simd::vf vertex_diffuse[3], vertex_specular[3];
     // The `pbr` model's terms, textures applied; `base` is left to the
@@ -83,10 +86,16 @@ ModelNeeds needs_of(ShadingModel model);
 // The features only the `pbr` model draws: its maps and its extra lobes.
 constexpr uint32_t kPbrOnlyFeatures = kPhysicalMaps | kNormalMaps | kExtraLobes;
 
+// Whether `model` is of the Phong family, which reads a metal-rough
+// material through shade/metal_rough_phong.hpp.
+bool phong_family(ShadingModel model);
+
 // Of a material's and mesh part's features (MaterialFeature,
 // assets/mesh.hpp), those `style` draws: its own base colour replaces the
-// maps and vertex colours, only `pbr` reads its maps, and only the models
-// that light a surface add emission. Asked once per draw, style and frame.
+// maps and vertex colours (and the reading of metal and roughness), only
+// `pbr` reads its maps, only the Phong family reads metal and roughness,
+// and only the models that light a surface add emission. Asked once per
+// draw, style and frame.
 uint32_t drawn_features(const StyleState& style, uint32_t features);
 
 // Whether `style`'s batches with no drawn feature take the plain path, the

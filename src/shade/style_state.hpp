@@ -18,7 +18,8 @@ namespace facet {
 struct HatchingState {
     const TonalArtMap* tam = nullptr;
     float strength = 1;
-    float white = 1;  // the lit share that gets no strokes
+    float white = 1;           // the tone at and above which no strokes are drawn
+    float exposure_scale = 1;  // 2^exposure: the light's scale before the tone curve
     std::optional<glm::vec3> ink;
     HatchSpace space = HatchSpace::object;
     HatchDirection direction = HatchDirection::curvature;
