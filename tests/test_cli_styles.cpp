@@ -171,6 +171,31 @@ TEST_CASE("facet sheet --styles writes one labelled cell per preset", "[cli][sty
     CHECK(light > png.width * (png.height - 60) / 2);
 }
 
+TEST_CASE("facet sheet: a label too long for its cell stays inside it", "[cli][style]") {
+    // "wireframe-shaded" at the labels' size is about twice 80 pixels: it
+    // is drawn smaller, then cut, and never reaches the next cell.
+    TempDir dir("cli-sheet");
+    const std::string scene = write_text(dir.file("s.yaml"), kSheetScene);
+    const std::string out = dir.file("long.png");
+    const RunResult r = facet_shipped("sheet " + quoted(scene) +
+                                      " --styles wireframe-shaded,flat --cell 80x60 -o " +
+                                      quoted(out) + " --threads 2");
+    INFO(r.output);
+    REQUIRE(r.exit_code == 0);
+    const facet::DecodedPng png = facet::read_png(out);
+    REQUIRE(png.width == 2 * 80);
+    int dark_inside = 0, dark_at_border = 0;
+    for (int y = 60; y < png.height; ++y)
+        for (int x = 0; x < png.width; ++x) {
+            const bool dark =
+                png.samples[(static_cast<size_t>(y) * png.width + x) * png.channels] < 64;
+            if (dark && x < 74) ++dark_inside;
+            if (dark && x >= 76 && x < 84) ++dark_at_border;
+        }
+    CHECK(dark_inside > 20);  // the label is there
+    CHECK(dark_at_border == 0);
+}
+
 TEST_CASE("facet sheet --vary renders one cell per value", "[cli][style]") {
     TempDir dir("cli-sheet");
     const std::string scene = write_text(dir.file("s.yaml"), kSheetScene);

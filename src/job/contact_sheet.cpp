@@ -14,6 +14,22 @@ constexpr int kPadding = 6;     // pixels around each label
 const glm::vec4 kSheetBackground(0.9f, 0.9f, 0.9f, 1.0f);
 const glm::vec3 kLabelColor(0.02f, 0.02f, 0.02f);
 
+// A cell's label as drawn: at kLabelScale if it fits the cell, else at
+// scale 1, else cut and ended with "..", so that it never runs into the
+// next cell.
+struct FittedLabel {
+    std::string text;
+    int scale;
+};
+FittedLabel fit_label(const std::string& label, int cell_width) {
+    const int room = cell_width - 2 * kPadding;
+    if (label_width(label, kLabelScale) <= room) return {label, kLabelScale};
+    if (label_width(label, 1) <= room) return {label, 1};
+    std::string text = label;
+    while (text.size() > 1 && label_width(text + "..", 1) > room) text.pop_back();
+    return {text + "..", 1};
+}
+
 }  // namespace
 
 ColorImage render_contact_sheet(const SheetRequest& request) {
@@ -53,9 +69,10 @@ ColorImage render_contact_sheet(const SheetRequest& request) {
         for (int y = 0; y < request.cell_height; ++y)
             for (int x = 0; x < request.cell_width; ++x)
                 sheet.at(x0 + x, y0 + y) = to_float(images.color.at(x, y));
-        const int text_width = label_width(cell.label, kLabelScale);
+        const FittedLabel label = fit_label(cell.label, request.cell_width);
+        const int text_width = label_width(label.text, label.scale);
         draw_label(sheet, x0 + std::max(kPadding, (request.cell_width - text_width) / 2),
-                   y0 + request.cell_height + kPadding, cell.label, kLabelColor, kLabelScale);
+                   y0 + request.cell_height + kPadding, label.text, kLabelColor, label.scale);
     }
     return sheet;
 }
