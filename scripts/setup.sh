@@ -31,6 +31,10 @@ set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build="${FACET_BUILD_DIR:-$root/build}"
+# When this run began: the stamp ./facet checks (written at the end, with
+# this time, so a file edited during the build still counts as newer).
+started=$(mktemp)
+trap 'rm -f "$started"' EXIT
 sanitize=0
 tests=0
 bench=0
@@ -102,6 +106,8 @@ if ! cmake --build "$build" -j2 "${targets[@]}" >"$log" 2>&1; then
     echo "setup: build failed (full log: $log)" >&2
     exit 1
 fi
+# ./facet runs the program directly while no file it is built from is newer.
+touch -r "$started" "$build/setup.stamp"
 
 if [ "$sanitize" = 1 ]; then
     sbuild="${FACET_SANITIZE_BUILD_DIR:-$root/build-sanitize}"

@@ -221,6 +221,26 @@ TEST_CASE(
           listed_hashes(read_manifest_json(dir.file("from-file/column"))));
 }
 
+TEST_CASE("turntable: facet scene's printed text names the model wherever it is saved",
+          "[turntable]") {
+    // `facet scene models/column.stl > scenes/column.yaml`, run from the
+    // folder above both: the saved text must still find the model.
+    TempDir dir("turntable-printed");
+    std::filesystem::create_directories(dir.file("models"));
+    std::filesystem::create_directories(dir.file("scenes"));
+    write_binary_stl(dir.file("models/column.stl"), z_up_column());
+    const RunResult printed =
+        run_command("cd '" + dir.path() + "' && '" + facet::test::facet_executable() +
+                    "' scene models/column.stl -q > scenes/column.yaml");
+    REQUIRE(printed.exit_code == 0);
+    const std::string text = read_file(dir.file("scenes/column.yaml"));
+    CHECK_THAT(text, Contains("mesh: \"" + dir.file("models/column.stl")));
+    const RunResult rendered = run_facet("render '" + dir.file("scenes/column.yaml") + "' -o '" +
+                                         dir.file("out") + "' --frames 1 --size 32x18 -q");
+    INFO(rendered.output);
+    CHECK(rendered.exit_code == 0);
+}
+
 TEST_CASE("turntable: --environment lights it with an .hdr, --ground none leaves no ground",
           "[turntable]") {
     TempDir dir("turntable-environment");

@@ -172,7 +172,8 @@ int scene_command(const SceneFileArgs& args) {
     std::string folder = std::filesystem::path(args.output).parent_path().string();
     if (folder.empty()) folder = ".";
     const TurntableRequest request = turntable_request(model, scene_options(model));
-    const TurntableFile file = turntable_scene_file(request, folder);
+    // Printed, the text may be saved anywhere: its paths are absolute then.
+    const TurntableFile file = turntable_scene_file(request, args.output.empty() ? "" : folder);
     if (!model.quiet) report_model(model.scene, file.survey);
     if (args.output.empty()) {
         std::fwrite(file.text.data(), 1, file.text.size(), stdout);

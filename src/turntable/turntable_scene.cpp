@@ -208,6 +208,7 @@ const char* ground_kind_name(GroundKind kind) {
 std::string path_from_scene(const std::string& scene_dir, const std::string& file) {
     std::error_code ec;
     const fs::path target = fs::weakly_canonical(fs::absolute(file, ec), ec);
+    if (scene_dir.empty()) return target.string();  // text with no folder of its own
     const fs::path folder = fs::weakly_canonical(fs::absolute(scene_dir, ec), ec);
     // Relative within one top folder (a checkout, a home), so the two move
     // together; absolute across top folders, where ../../.. says nothing.

@@ -46,7 +46,8 @@ std::vector<std::pair<std::string, std::string>> turntable_option_record(
     const TurntableOptions& options, const ModelSurvey& survey);
 
 // `file` as a scene in `scene_dir` names it: relative to that folder when
-// both are on one root, else absolute.
+// both are on one root, else absolute; absolute for an empty `scene_dir`
+// (text printed, with no folder of its own).
 std::string path_from_scene(const std::string& scene_dir, const std::string& file);
 
 // The scene's text around a surveyed model. `mesh_reference` is the model's
