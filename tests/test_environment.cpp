@@ -22,6 +22,7 @@
 #include "core/exact_trig.hpp"
 #include "core/half.hpp"
 #include "output/encoders.hpp"
+#include "render/environment_file.hpp"
 #include "shade/environment_map.hpp"
 #include "support.hpp"
 

@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "compare_support.hpp"
+#include "core/host_name.hpp"
 #include "farm_support.hpp"
 #include "output/atomic_file.hpp"
 #include "output/manifest.hpp"

@@ -7,6 +7,7 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/host_name.hpp"
 #include "output/atomic_file.hpp"
 #include "output/manifest.hpp"
 #include "output/manifest_journal.hpp"

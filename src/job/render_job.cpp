@@ -11,6 +11,7 @@
 #include <thread>
 
 #include "core/error.hpp"
+#include "core/host_name.hpp"
 #include "core/input_file.hpp"
 #include "core/plain_text.hpp"
 #include "core/sha256.hpp"

@@ -13,6 +13,7 @@
 #include <set>
 
 #include "core/error.hpp"
+#include "core/host_name.hpp"
 #include "core/number_text.hpp"
 
 namespace facet {
@@ -59,15 +60,6 @@ void AtomicFileSet::sync_folder(const std::string& folder) const {
     const bool failed = calls_.fsync(fd) != 0 && errno == EIO;
     calls_.close(fd);
     if (failed) fail_io(folder, "cannot sync folder: " + std::string(std::strerror(EIO)));
-}
-
-std::string host_name() {
-    char name[256] = {};
-    if (::gethostname(name, sizeof name - 1) != 0) return "unknown";
-    std::string host = name;
-    for (char& c : host)
-        if (c == '/' || c == '.') c = '_';  // the mark's separator stays unambiguous
-    return host;
 }
 
 void write_file_atomically(const std::string& path, const std::vector<uint8_t>& bytes) {

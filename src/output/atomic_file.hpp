@@ -8,10 +8,6 @@
 
 namespace facet {
 
-// This machine's name, with '/' and '.' made '_' so that it can sit inside
-// a file name between dots (temporaries, journals).
-std::string host_name();
-
 // Writes the bytes to a temporary file beside `path` (".NAME.facet-tmp.HOST.PID"),
 // syncs it to disk, renames it over `path` and syncs the folder, so readers
 // see the old file or the new one, never half of one, even after a power

@@ -10,6 +10,7 @@
 #include <fstream>
 
 #include "core/error.hpp"
+#include "core/host_name.hpp"
 #include "output/atomic_file.hpp"
 
 namespace facet {

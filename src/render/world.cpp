@@ -13,6 +13,7 @@
 #include "assets/gltf_pose.hpp"
 #include "assets/normal_map_tangents.hpp"
 #include "core/error.hpp"
+#include "render/environment_file.hpp"
 #include "render/principal_directions.hpp"
 #include "shade/shading_models.hpp"
 #include "shapes/primitives.hpp"

@@ -111,8 +111,4 @@ SharedEnvironment uniform_environment(const glm::vec3& radiance) {
                                                           std::move(levels));
 }
 
-SharedEnvironment load_environment(const std::string& path, Warnings& warnings, unsigned threads) {
-    return build_environment(read_environment_image(path, warnings), threads);
-}
-
 }  // namespace facet::pbr

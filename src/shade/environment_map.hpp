@@ -19,6 +19,7 @@
 //
 // Once per run and file:
 //   const std::shared_ptr<const PrefilteredEnvironment> env = load_environment(path, warnings);
+//   (render/environment_file.hpp reads the file)
 // per shading point (n, r and v unit, in the environment's frame):
 //   colour += albedo * env->diffuse(n) + dfg * env->specular(r, roughness);
 //
@@ -135,24 +136,5 @@ SharedEnvironment studio_environment(unsigned threads = 0);
 // static const, like the DFG table): the preview rebuilds its world on
 // every edit, and the studio is the same each time.
 SharedEnvironment shared_studio_environment();
-
-// Reads an equirectangular environment image: a Radiance .hdr (RGBE,
-// stb_image) or an OpenEXR .exr (its R, G and B channels), told apart by
-// their first bytes ("#?RADIANCE" or "#?RGBE"; 76 2f 31 01), never by the
-// name. `path` is the resolved file: the scene's asset path policy is the
-// caller's. Throws facet::Error (invalid_input) naming the path when the
-// file cannot be read, is neither format, is damaged or cut short, is not
-// equirectangular (its width must be exactly twice its height: anything
-// else is a cube map, a mirror ball or a photograph, and would light the
-// scene wrongly without a word), is wider than kMaxEnvironmentWidth
-// (core/limits.hpp; checked from the header, before decoding), or holds a
-// NaN or infinite texel (one would spread over every level). Negative
-// texels, which resampling filters leave beside bright spots, are set to 0
-// with one warning that counts them.
-EquirectRadiance read_environment_image(const std::string& path, Warnings& warnings);
-
-// build_environment(read_environment_image(path, warnings), threads).
-SharedEnvironment load_environment(const std::string& path, Warnings& warnings,
-                                   unsigned threads = 0);
 
 }  // namespace facet::pbr

@@ -12,6 +12,7 @@
 #include "core/error.hpp"
 #include "output/manifest.hpp"
 #include "output/manifest_journal.hpp"
+#include "render/environment_file.hpp"
 #include "scene/scene_desc.hpp"
 #include "shade/environment_map.hpp"
 

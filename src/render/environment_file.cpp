@@ -1,4 +1,4 @@
-// Environment image files (shade/environment_map.hpp,
+// Environment image files (render/environment_file.hpp,
 // read_environment_image): a Radiance .hdr or an OpenEXR .exr, checked
 // before it is decoded (size, shape) and after (every texel a finite,
 // non-negative radiance), with messages that name the file.
@@ -18,7 +18,7 @@
 #include "core/limits.hpp"
 #include "core/memory.hpp"
 #include "output/encoders.hpp"
-#include "shade/environment_map.hpp"
+#include "render/environment_file.hpp"
 
 namespace facet::pbr {
 
@@ -136,6 +136,10 @@ EquirectRadiance read_environment_image(const std::string& path, Warnings& warni
     EquirectRadiance image = read_by_content(path);
     check_texels(path, image, warnings);
     return image;
+}
+
+SharedEnvironment load_environment(const std::string& path, Warnings& warnings, unsigned threads) {
+    return build_environment(read_environment_image(path, warnings), threads);
 }
 
 }  // namespace facet::pbr
