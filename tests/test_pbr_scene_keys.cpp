@@ -249,6 +249,8 @@ TEST_CASE("bad pbr keys are errors naming the file, line, column and key", "[pbr
          "studio"},
         {"background blur above 1", "environment: { background: { blur: 3 } }\n" + cube,
          "environment.background.blur", "3 }", "between 0 and 1"},
+        {"follow_camera not a boolean", "environment: { follow_camera: often }\n" + cube,
+         "environment.follow_camera", "often", "true"},
     };
     for (const ErrorCase& c : cases) {
         DYNAMIC_SECTION(c.name) {

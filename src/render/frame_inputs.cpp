@@ -4,8 +4,10 @@
 #include "shade/shading_models.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
 
 namespace facet {
 namespace {
@@ -42,6 +44,13 @@ std::vector<uint32_t> settle_draw_features(const World& world,
 }
 
 }  // namespace
+
+float camera_heading_degrees(const CameraMatrices& camera) {
+    const glm::vec3& f = camera.forward;
+    // Straight up or down has no heading: 0, rather than noise.
+    if (f.x * f.x + f.z * f.z < 1e-8f) return 0.0f;
+    return glm::degrees(std::atan2(-f.x, -f.z));
+}
 
 StylePlan plan_styles(const SceneDesc& scene) {
     StylePlan plan;
@@ -123,9 +132,10 @@ FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {
     in.background = glm::vec4(glm::vec3(background) * background.a, background.a);
     if (world_.environment) {
         const std::optional<EnvironmentDesc>& e = scene_.environment;
-        in.environment =
-            environment_at(world_.environment.get(), e ? facet::evaluate(e->intensity, at) : 1.0f,
-                           e ? facet::evaluate(e->rotation, at) : 0.0f);
+        float rotation = e ? facet::evaluate(e->rotation, at) : 0.0f;
+        if (e && e->follow_camera) rotation += camera_heading_degrees(in.camera);
+        in.environment = environment_at(world_.environment.get(),
+                                        e ? facet::evaluate(e->intensity, at) : 1.0f, rotation);
         in.environment_background = e && e->background;
         in.environment_blur = e ? e->background_blur : 0.0f;
         if (in.environment_background) in.background = glm::vec4(0.0f);

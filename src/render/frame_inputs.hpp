@@ -35,6 +35,11 @@ struct StylePlan {
 
 StylePlan plan_styles(const SceneDesc& scene);
 
+// The camera's heading: the angle about +Y, in degrees, that turns -Z
+// (where a camera with no rotation looks) to the camera's forward
+// direction seen from above. An environment with follow_camera turns by it.
+float camera_heading_degrees(const CameraMatrices& camera);
+
 struct FrameInputs {
     FrameState state;  // objects, camera and lights at this frame
     CameraMatrices camera;

@@ -21,7 +21,8 @@ void parse_environment_background(const Field& f, EnvironmentDesc& e) {
 }  // namespace
 
 // `environment: studio | none`, or a mapping with `file:` or `color:`
-// (neither: the studio), `intensity:`, `rotation:` and `background:`.
+// (neither: the studio), `intensity:`, `rotation:`, `follow_camera:` and
+// `background:`.
 EnvironmentDesc parse_environment(const Field& f, const std::string& base_dir) {
     EnvironmentDesc e;
     e.where = f.where();
@@ -30,7 +31,7 @@ EnvironmentDesc parse_environment(const Field& f, const std::string& base_dir) {
         e.source = name == "none" ? EnvironmentDesc::Source::none : EnvironmentDesc::Source::studio;
         return e;
     }
-    f.check_keys({"file", "color", "intensity", "rotation", "background"});
+    f.check_keys({"file", "color", "intensity", "rotation", "follow_camera", "background"});
     if (f.has("file") && f.has("color"))
         f["color"].fail("an environment is a file or a colour; give only one of them");
     if (f.has("file")) {
@@ -45,6 +46,7 @@ EnvironmentDesc parse_environment(const Field& f, const std::string& base_dir) {
     if (f.has("intensity"))
         e.intensity = f["intensity"].animated_number(0, kMaxEnvironmentIntensity);
     if (f.has("rotation")) e.rotation = f["rotation"].animated_number(-36000, 36000);
+    if (f.has("follow_camera")) e.follow_camera = f["follow_camera"].boolean();
     if (f.has("background")) parse_environment_background(f["background"], e);
     return e;
 }

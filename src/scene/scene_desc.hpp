@@ -306,6 +306,10 @@ struct EnvironmentDesc {
     SourceLocation file_at;
     Animated<float> intensity = 1.0f;
     Animated<float> rotation = 0.0f;  // degrees about +Y
+    // Turned with the camera about +Y as well (its view's heading added to
+    // `rotation`), so light and background stay put in the image as the
+    // camera circles: a product turntable's fixed studio.
+    bool follow_camera = false;
     // Shown behind the scene instead of the background colour, blurred
     // this much (0 sharp .. 1 the roughest level).
     bool background = false;

@@ -106,6 +106,7 @@ void write_lighting(YamlWriter& w) {
     w.comment("gradient. --environment FILE lights it with an .hdr or .exr image instead.");
     w.begin_map("environment");
     w.optional_value("file");
+    w.value("follow_camera", "true", "turns with the camera: the studio stays put in the image");
     w.begin_map("background");
     w.value("blur", yaml_number(kBackgroundBlur));
     w.end_map();
