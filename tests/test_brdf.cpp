@@ -208,7 +208,10 @@ TEST_CASE("brdf: white furnace: a white dielectric conserves energy only away fr
     // Reflection"). Seen from n.v >= 0.7 a white dielectric reflects 0.97 to
     // 1.002 (rough ones lose some of the specular layer's multiple
     // scattering to the diffuse weight); smooth ones seen from n.v <= 0.4
-    // reflect more than they receive, which this test pins.
+    // reflect more than they receive. That gain is intended: facet draws the
+    // specification's BRDF, as the Khronos sample viewer does, so that a
+    // file looks as its author saw it there; this test pins the gain, so a
+    // change to the coupling (an energy-preserving one, say) shows here.
     for (float roughness : {0.05f, 0.25f, 0.5f, 0.75f, 1.0f})
         for (double n_dot_v : {1.0, 0.7}) {
             const glm::dvec3 e =
@@ -303,19 +306,6 @@ TEST_CASE("brdf: the DFG table's albedo is above 0, at most 1, and falls with ro
             INFO("roughness " << roughness << ", n.v " << n_dot_v);
             CHECK(table.lookup(static_cast<float>(n_dot_v), roughness).albedo() ==
                   Approx(integrated).epsilon(0.01));
-        }
-}
-
-TEST_CASE("brdf: the DFG table has the same bits every time it is computed", "[shade][brdf]") {
-    const pbr::DfgTable first = pbr::compute_dfg_table();
-    const pbr::DfgTable second = pbr::compute_dfg_table();
-    CHECK(std::memcmp(first.terms.data(), second.terms.data(), sizeof first.terms) == 0);
-    CHECK(std::memcmp(first.terms.data(), pbr::dfg_table().terms.data(), sizeof first.terms) == 0);
-    for (float n_dot_v : {0.0f, 0.13f, 0.5f, 0.77f, 1.0f})
-        for (float roughness : {0.0f, 0.2f, 0.51f, 1.0f}) {
-            const pbr::DfgTerms a = first.lookup(n_dot_v, roughness);
-            const pbr::DfgTerms b = second.lookup(n_dot_v, roughness);
-            CHECK(std::memcmp(&a, &b, sizeof a) == 0);
         }
 }
 

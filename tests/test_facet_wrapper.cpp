@@ -29,13 +29,14 @@ struct Checkout {
         write_text(root + "/CMakeLists.txt", "\n");
         // setup.sh's contract as the wrapper sees it: it builds the program
         // and leaves the stamp.
-        write_text(root + "/scripts/setup.sh",
-                   "#!/bin/sh\n"
-                   "echo run >> \"$(dirname \"$0\")/../setup-runs\"\n"
-                   "mkdir -p \"$(dirname \"$0\")/../build\"\n"
-                   "printf '#!/bin/sh\\necho program \"$@\"\\n' > \"$(dirname \"$0\")/../build/facet\"\n"
-                   "chmod +x \"$(dirname \"$0\")/../build/facet\"\n"
-                   "touch \"$(dirname \"$0\")/../build/setup.stamp\"\n");
+        write_text(
+            root + "/scripts/setup.sh",
+            "#!/bin/sh\n"
+            "echo run >> \"$(dirname \"$0\")/../setup-runs\"\n"
+            "mkdir -p \"$(dirname \"$0\")/../build\"\n"
+            "printf '#!/bin/sh\\necho program \"$@\"\\n' > \"$(dirname \"$0\")/../build/facet\"\n"
+            "chmod +x \"$(dirname \"$0\")/../build/facet\"\n"
+            "touch \"$(dirname \"$0\")/../build/setup.stamp\"\n");
         fs::permissions(root + "/scripts/setup.sh", fs::perms::owner_all);
     }
     int setup_runs() const {

@@ -287,6 +287,24 @@ TEST_CASE("turntable: --environment lights it with an .hdr, --ground none leaves
     const TurntableFrame f = read_turntable_frame(run, 1);
     CHECK_FALSE(pixels_of(f, 1).empty());
     CHECK(pixels_of(f, 2).empty());
+    // The sky shows behind the model: radiance 1 in every channel wherever
+    // nothing is drawn (the studio would show its grey gradient there).
+    const facet::DecodedExr color = facet::read_exr(run + "/color.0001.exr");
+    const std::vector<float>& red = facet::test::exr_channel(color, "R");
+    const std::vector<float>& blue = facet::test::exr_channel(color, "B");
+    // (Pixels beside the model may mix in its edge: all within 10%, most
+    // within 2%.)
+    int background = 0, exact = 0;
+    for (size_t i = 0; i < f.id.size(); ++i) {
+        if (f.id[i] != 0) continue;
+        ++background;
+        INFO("pixel " << i);
+        REQUIRE(red[i] == Approx(1.0).epsilon(0.1));
+        REQUIRE(blue[i] == Approx(1.0).epsilon(0.1));
+        exact += std::fabs(red[i] - 1.0f) < 0.02f && std::fabs(blue[i] - 1.0f) < 0.02f;
+    }
+    CHECK(background > 1000);
+    CHECK(exact > 0.9 * background);
     const nlohmann::json m = read_manifest_json(run);
     CHECK(m["model"]["options"]["environment"] == dir.file("sky.hdr"));
     CHECK(m["model"]["options"]["ground"] == "none");

@@ -4,10 +4,12 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstring>
 #include <string>
 
 #include "core/half.hpp"
 #include "render_check.hpp"
+#include "shade/environment_map.hpp"
 #include "support.hpp"
 
 using facet::test::pixel_at;
@@ -98,8 +100,13 @@ TEST_CASE("pbr: the built-in studio lights a scene without an environment", "[re
     const facet::FrameImages images =
         render_sphere("{ color: [0.8, 0.8, 0.8], metallic: 0, roughness: 0.5 }", "");
     const glm::vec4 c = pixel_at(images, images.color, sphere_point(0));
-    CHECK(c.r > 0.2f);
-    CHECK(c.r < 1.5f);
+    // Exactly the scene with `environment: studio` written out.
+    const facet::FrameImages studio = render_sphere(
+        "{ color: [0.8, 0.8, 0.8], metallic: 0, roughness: 0.5 }", "environment: studio");
+    REQUIRE(images.color.pixels.size() == studio.color.pixels.size());
+    CHECK(std::memcmp(images.color.pixels.data(), studio.color.pixels.data(),
+                      images.color.pixels.size() * sizeof(images.color.pixels[0])) == 0);
+    CHECK(c.r > 0.2f);  // lit: the studio's key faces the camera
     // Neutral grey stays grey.
     CHECK(c.g == Approx(c.r).margin(0.02));
     // `environment: none` with no lights leaves the sphere black.
@@ -128,11 +135,22 @@ TEST_CASE("pbr: a keyed environment rotation moves reflections and nothing else"
     CHECK(std::memcmp(
               still.surface.normal.pixels.data(), turned.surface.normal.pixels.data(),
               still.surface.normal.pixels.size() * sizeof(still.surface.normal.pixels[0])) == 0);
-    double difference = 0;
-    for (size_t i = 0; i < still.color.pixels.size(); ++i)
-        difference += std::fabs(facet::to_float(still.color.pixels[i]).r -
-                                facet::to_float(turned.color.pixels[i]).r);
-    CHECK(difference / static_cast<double>(still.color.pixels.size()) > 0.01);
+    // Where the still sphere mirrors the studio's key softbox (a direction
+    // 35 degrees up and 40 degrees from +Z towards -X, where its light is
+    // even), the turned one mirrors what the studio holds 90 degrees round:
+    // a world direction r reads the map at R(-90) r = (-r.z, r.y, r.x) (+X
+    // turns towards -Z). The two pixels stand as the studio's sharp lookups.
+    const float up = glm::radians(35.0f), round = glm::radians(-40.0f);
+    const glm::vec3 r(std::cos(up) * std::sin(round), std::sin(up), std::cos(up) * std::cos(round));
+    glm::vec3 n = glm::normalize(r + glm::vec3(0, 0, 1));  // the normal halfway to the eye
+    for (int i = 0; i < 20; ++i) n = glm::normalize(r + glm::normalize(glm::vec3(0, 0, 4) - n));
+    const facet::pbr::SharedEnvironment studio = facet::pbr::shared_studio_environment();
+    const float key = studio->specular(r, 0.05f).g;
+    const float beside = studio->specular({-r.z, r.y, r.x}, 0.05f).g;
+    REQUIRE(beside < 0.5f * key);  // the key is there, and not 90 degrees round
+    const glm::vec4 a = pixel_at(still, still.color, n);
+    const glm::vec4 b = pixel_at(turned, turned.color, n);
+    CHECK(b.g / a.g == Approx(beside / key).epsilon(0.05));
 }
 
 TEST_CASE("pbr: ior sets the dielectric's reflectance at normal incidence", "[render][pbr]") {

@@ -3,7 +3,7 @@
 // environment") against closed forms: the equirect mapping and its solid
 // angles, the basis's orthonormality, a uniform environment, a single bright
 // direction (with the 9 terms' known error against the true cosine), a
-// rotation about +Y, and determinism.
+// rotation about +Y.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -204,20 +204,6 @@ TEST_CASE("spherical harmonics: rotating the environment 90 degrees about +Y rot
     }
     CHECK(worst < 1e-5);
     CHECK(unrotated_difference > 0.1);  // the environment is not symmetric about +Y
-}
-
-TEST_CASE("spherical harmonics: two projections of one image have the same bits",
-          "[shade][harmonics]") {
-    constexpr int kWidth = 96, kHeight = 48;
-    pbr::EquirectRadiance image{kWidth, kHeight, std::vector<float>(kWidth * kHeight * 3)};
-    uint32_t state = 12345u;
-    for (float& value : image.rgb) {
-        state = state * 1664525u + 1013904223u;             // Numerical Recipes' LCG
-        value = static_cast<float>(state >> 8) * 0x1p-20f;  // 0 .. 16
-    }
-    const pbr::RadianceSh first = pbr::project_equirect(image);
-    const pbr::RadianceSh second = pbr::project_equirect(image);
-    CHECK(std::memcmp(&first, &second, sizeof first) == 0);
 }
 
 TEST_CASE("spherical harmonics: an image whose data does not match its size is refused",

@@ -223,8 +223,11 @@ TEST_CASE("turntable options get clear errors, and apply to models only", "[turn
     CHECK_THAT(tonemapped.output, Contains("tonemap: agx"));
 }
 
-TEST_CASE("facet render MODEL reads the model once, unless -D asks for other asset settings",
-          "[turntable][assets]") {
+// (tests/test_read_once.cpp counts the opens of the model file.)
+TEST_CASE(
+    "facet render MODEL hands the survey's mesh to the world, unless -D asks for other "
+    "asset settings",
+    "[turntable][assets]") {
     TempDir dir("turntable-read-once");
     const std::vector<glm::vec3> corners = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0},
                                             {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};

@@ -104,7 +104,7 @@ void refuse_warnings(bool strict, const Warnings& warnings) {
                     " an error; the first: " + warnings.front().describe());
 }
 
-World check_render_inputs(const RenderCheck& check) {
+CheckedRun check_render_inputs(const RenderCheck& check) {
     Warnings warnings = check.scene.warnings;
     warnings.insert(warnings.end(), check.extra.begin(), check.extra.end());
     // What earlier checks of the command collected (other variants' runs)
@@ -123,7 +123,7 @@ World check_render_inputs(const RenderCheck& check) {
                      is_new);
     };
     collect();
-    check_outputs(check.scene, check.options);  // before the slow part: loading meshes
+    JobPlan plan = plan_job(check.scene, check.options);  // before the slow part: loading meshes
     World world = build_world(check.scene, check.options.threads, check.model_mesh);
     warnings.insert(warnings.end(), world.warnings.begin(), world.warnings.end());
     collect();
@@ -133,7 +133,7 @@ World check_render_inputs(const RenderCheck& check) {
     refuse_warnings(check.args.strict, warnings);
     const unsigned threads = check.options.threads == 0 ? available_cores() : check.options.threads;
     check_render_memory(check.scene, world, threads);
-    return world;
+    return {std::move(plan), std::move(world)};
 }
 
 namespace {
@@ -142,7 +142,7 @@ int dry_run(const RenderArgs& args, const std::vector<SceneDesc>& runs,
             const RenderOptions& options) {
     size_t images = 0;  // files but the manifests
     for (const SceneDesc& run : runs) {
-        const std::vector<std::string> files = planned_files(run, options);
+        const std::vector<std::string> files = planned_files(run, plan_job(run, options));
         for (const std::string& file : files) std::printf("%s\n", file.c_str());
         images += files.size() - 1;
     }
@@ -263,8 +263,9 @@ void check_single_run(const RenderArgs& args, bool compare, size_t runs) {
 // meshes read for it are let go.
 RenderResult render_run(const RenderArgs& args, const SceneDesc& scene, RenderOptions options,
                         LoadedMeshes& meshes, const Warnings& extra, Warnings& said, bool last) {
-    const World world =
+    const CheckedRun run =
         check_render_inputs({args, scene, options, &meshes, extra, !args.quiet, &said});
+    const World& world = run.world;
     if (last) meshes.clear();  // the world holds what it uses
     ProgressReporter progress(stderr, args.quiet);
     const std::string what =
@@ -276,7 +277,7 @@ RenderResult render_run(const RenderArgs& args, const SceneDesc& scene, RenderOp
         progress.start(to_render, what + " to " + args.out);
     };
     RenderResult result = render_scene(
-        scene, world, options, [&](const FrameProgress& p) { progress.frame_done(p); },
+        scene, world, options, run.plan, [&](const FrameProgress& p) { progress.frame_done(p); },
         [&](const FrameWritten& w) { progress.frame_written(w); });
     progress.finish();
     if (!args.quiet && !args.video_only)
@@ -375,7 +376,7 @@ int validate_command(const RenderArgs& args) {
         ValidateFacts facts;
         for (const SceneDesc& run : runs) {
             const World world = check_render_inputs(
-                {args, run, options, &meshes, {}, !args.json && !args.quiet, &warnings});
+                {args, run, options, &meshes, {}, !args.json && !args.quiet, &warnings}).world;
             if (!run.variant.empty()) facts.variants.push_back(run.variant);
             facts.triangles = world.triangle_count();
             if (!args.json && !args.quiet) print_validation(run, world, options);

@@ -242,10 +242,10 @@ int farm_command(const FarmArgs& args, bool openjd) {
     // Every task runs `facet render` with these words: what render would
     // refuse (a mesh it cannot read, a warning under --strict, too little
     // memory) is refused here, before anything is submitted.
-    check_render_inputs({r, scene, options, &model_mesh, {}, !r.quiet});
+    const CheckedRun run = check_render_inputs({r, scene, options, &model_mesh, {}, !r.quiet});
     // The folder every task writes its partial manifest to, and the names
     // checked, as render would check them.
-    const std::vector<std::string> planned = planned_files(scene, options);
+    const std::vector<std::string> planned = planned_files(scene, run.plan);
     const std::string folder = fs::path(planned.back()).parent_path().string();
     FarmJob job;
     job.name = "facet-" + scene.name;

@@ -61,17 +61,11 @@ TurntableOptions turntable_options(const TurntableArgs& args) {
     options.elevation = args.elevation;
     options.background = args.background;
     options.environment = args.environment;
-    if (!args.ground.empty()) {
-        static constexpr std::string_view kGrounds[] = {"shadow", "floor", "none"};
-        const std::string ground = parse_word(args.ground, "--ground", kGrounds);
-        options.ground = ground == "floor"  ? GroundKind::floor
-                         : ground == "none" ? GroundKind::none
-                                            : GroundKind::shadow;
-    }
-    if (!args.up.empty()) {
-        static constexpr std::string_view kAxes[] = {"y", "z"};
-        options.up = parse_word(args.up, "--up", kAxes) == "z" ? UpAxis::z : UpAxis::y;
-    }
+    if (!args.ground.empty())
+        options.ground =
+            value_of(kGroundKinds, parse_word(args.ground, "--ground", names_of(kGroundKinds)));
+    if (!args.up.empty())
+        options.up = value_of(kUpAxes, parse_word(args.up, "--up", names_of(kUpAxes)));
     return options;
 }
 

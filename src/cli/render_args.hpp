@@ -106,6 +106,12 @@ struct RenderCheck {
     bool print = true;
     Warnings* collected = nullptr;
 };
-World check_render_inputs(const RenderCheck& check);
+// A run checked: its job planned (outputs and manifest claims checked, as
+// plan_job does) and its world built; the plan goes on to the render.
+struct CheckedRun {
+    JobPlan plan;
+    World world;
+};
+CheckedRun check_render_inputs(const RenderCheck& check);
 
 }  // namespace facet

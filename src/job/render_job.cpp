@@ -10,6 +10,7 @@
 #include <set>
 #include <thread>
 
+#include "core/elapsed.hpp"
 #include "core/error.hpp"
 #include "core/host_name.hpp"
 #include "core/input_file.hpp"
@@ -18,6 +19,7 @@
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
 #include "job/file_metadata.hpp"
+#include "job/frame_encoder.hpp"
 #include "job/pass_files.hpp"
 #include "job/render_memory.hpp"
 #include "output/atomic_file.hpp"
@@ -31,36 +33,6 @@ namespace facet {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-// Frames waiting for the encoder; more would only hold memory, since the
-// encoder is then the bottleneck anyway.
-constexpr size_t kMaxQueuedFrames = 2;
-
-// Where a run's files go: the output folder, the name template, and the
-// folder (relative to the output folder) that holds manifest.json.
-struct OutputLayout {
-    std::string root;
-    std::string template_text;
-    OutputTemplate names;
-    std::string manifest_dir;
-};
-
-// The fields one of the run's files is named from.
-OutputNameFields file_fields(const SceneDesc& scene, const std::string& camera,
-                             const std::string& pass, int frame, const std::string& ext) {
-    return {scene.name, camera, pass, frame, ext, scene.variant};
-}
-
-struct EncodeJob {
-    int frame;
-    std::string camera;
-    double render_ms;
-    FrameImages images;
-};
 
 // The manifest's header for this run: everything but the frames and files.
 Manifest manifest_header(const SceneDesc& scene, const OutputLayout& layout,
@@ -125,171 +97,6 @@ LedgerRequest ledger_request(const SceneDesc& scene, const OutputLayout& layout,
     }
     return request;
 }
-
-// Encodes and writes finished frames on worker threads of its own, while the
-// caller renders the next frame. Each frame is encoded by one worker; the
-// files' bytes depend only on the frame, so the order workers finish in
-// changes nothing but the order of lines gathered for the manifest, which
-// write_manifest sorts.
-class Encoder {
-  public:
-    Encoder(const SceneDesc& scene, const OutputLayout& layout, unsigned workers, RunLedger& ledger,
-            std::string host, std::function<void(const FrameWritten&)> on_written)
-        : scene_(scene),
-          layout_(layout),
-          ledger_(ledger),
-          host_(std::move(host)),
-          on_written_(std::move(on_written)) {
-        for (unsigned i = 0; i < workers; ++i) workers_.emplace_back([this] { run(); });
-    }
-    ~Encoder() { stop(); }
-
-    void push(EncodeJob job) {
-        std::unique_lock lock(mutex_);
-        space_.wait(lock, [&] { return queue_.size() < kMaxQueuedFrames || failure_; });
-        if (failure_) std::rethrow_exception(failure_);
-        queue_.push_back(std::move(job));
-        ready_.notify_one();
-    }
-
-    // Buffers of a frame already written, to render the next one into.
-    FrameImages take_spare() {
-        std::lock_guard lock(mutex_);
-        if (spare_.empty()) return {};
-        FrameImages images = std::move(spare_.back());
-        spare_.pop_back();
-        return images;
-    }
-
-    // Waits for all queued frames: the frames written, and the first
-    // encoding failure, if any (the frames queued after it are dropped).
-    Manifest finish(std::exception_ptr& failure) {
-        stop();
-        if (!failure) failure = failure_;
-        return manifest_;
-    }
-
-  private:
-    void stop() {
-        {
-            std::lock_guard lock(mutex_);
-            closed_ = true;
-        }
-        ready_.notify_all();
-        for (auto& worker : workers_)
-            if (worker.joinable()) worker.join();
-    }
-
-    void run() {
-        for (;;) {
-            EncodeJob job;
-            {
-                std::unique_lock lock(mutex_);
-                ready_.wait(lock, [&] { return !queue_.empty() || closed_ || failure_; });
-                if (queue_.empty() || failure_) return;
-                job = std::move(queue_.front());
-                queue_.pop_front();
-            }
-            try {
-                Manifest written = encode(job);
-                // The files are on disk: a rerun may trust them. Outside the
-                // queue's lock, so the journal's disk sync holds up neither
-                // the render thread nor the other encoder.
-                ledger_.record(written);
-                std::lock_guard lock(mutex_);
-                if (on_written_) {
-                    FrameWritten report{
-                        job.frame, job.camera, job.render_ms, written.frames.front().encode_ms, {}};
-                    for (const ManifestFile& f : written.files) report.files.push_back(f.path);
-                    on_written_(report);
-                }
-                manifest_.frames.insert(manifest_.frames.end(), written.frames.begin(),
-                                        written.frames.end());
-                manifest_.files.insert(manifest_.files.end(), written.files.begin(),
-                                       written.files.end());
-                spare_.push_back(std::move(job.images));
-                space_.notify_one();
-            } catch (...) {
-                std::lock_guard lock(mutex_);
-                if (!failure_) failure_ = std::current_exception();
-                queue_.clear();
-                space_.notify_all();
-                ready_.notify_all();
-                return;
-            }
-        }
-    }
-
-    // Creates a folder the first time a file goes into it, and removes what
-    // an interrupted earlier run on this host left there half-written.
-    // Under the lock throughout: a second worker must not find the folder
-    // marked as prepared before it exists (it would write into nothing).
-    void prepare_folder(const std::string& folder) const {
-        std::lock_guard lock(folders_mutex_);
-        if (prepared_folders_.count(folder)) return;
-        make_directories(folder);
-        remove_stale_temporaries(folder);
-        prepared_folders_.insert(folder);
-    }
-
-    // Encodes one frame's passes and writes its files; returns their manifest lines.
-    Manifest encode(const EncodeJob& job) const {
-        const auto start = Clock::now();
-        const OutputDesc& out = scene_.output;
-        Manifest written;
-        // The image's files, published together once all are written: their
-        // syncs taken together and one folder sync (output/atomic_file.hpp).
-        AtomicFileSet files;
-        auto write = [&](const std::string& pass, const std::string& format,
-                         const std::vector<uint8_t>& bytes) {
-            const std::string name =
-                expand(layout_.names, file_fields(scene_, job.camera, pass, job.frame, format));
-            const std::filesystem::path file = std::filesystem::path(layout_.root) / name;
-            prepare_folder(file.parent_path().string());
-            files.write(file.string(), bytes);
-            written.files.push_back({job.frame, job.camera, pass, format,
-                                     path_relative_to_manifest(name, layout_.manifest_dir),
-                                     sha256_hex(bytes), scene_.style.name});
-        };
-        const FileFacts facts{scene_.name,       job.camera,      job.frame,
-                              scene_.style.name, job.images.view, job.images.projection};
-        const PassFileFacts file_facts{out.depth_range.value_or(job.images.depth_view_range),
-                                       png_metadata(facts), exr_metadata(facts)};
-        try {
-            encode_frame_files(out, job.images, file_facts,
-                               [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
-                                   write(file.pass, file.format, bytes);
-                               });
-            files.publish();
-        } catch (...) {
-            // No file of an unfinished image stays (a full disk, say): a
-            // rerun with --skip-existing renders the whole image again.
-            // Those not yet published go with `files`.
-            std::error_code ignored;
-            for (const std::string& file : files.published())
-                std::filesystem::remove(file, ignored);
-            throw;
-        }
-        written.frames.push_back({job.frame, job.camera, job.render_ms, ms_since(start), host_});
-        return written;
-    }
-
-    const SceneDesc& scene_;
-    const OutputLayout& layout_;
-    RunLedger& ledger_;  // its journal serialises its own appends
-    std::string host_;
-    std::function<void(const FrameWritten&)> on_written_;  // called under mutex_
-    std::vector<std::thread> workers_;
-    std::mutex mutex_;
-    std::condition_variable ready_, space_;
-    std::deque<EncodeJob> queue_;
-    std::vector<FrameImages> spare_;
-    mutable std::mutex folders_mutex_;
-    mutable std::set<std::string> prepared_folders_;
-    bool closed_ = false;
-    std::exception_ptr failure_;
-    Manifest manifest_;  // guarded by mutex_ until the workers have stopped
-};
 
 }  // namespace
 
@@ -447,33 +254,28 @@ std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout&
 
 }  // namespace
 
-void check_outputs(const SceneDesc& scene, const RenderOptions& options) {
-    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
-                                             options.out_dir, options.several_variants);
-    const std::string output_dir =
-        (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    check_manifest_claims(
-        ledger_request(scene, layout, options, output_dir, run_frames(scene, options), cameras));
+JobPlan plan_job(const SceneDesc& scene, const RenderOptions& options) {
+    JobPlan plan;
+    plan.frames = run_frames(scene, options);
+    plan.cameras = select_cameras(scene, options.cameras);
+    plan.layout = plan_outputs(scene, plan.cameras, named_frames(scene, options), options.out_dir,
+                               options.several_variants);
+    plan.output_dir =
+        (std::filesystem::path(options.out_dir) / plan.layout.manifest_dir).string();
+    plan.ledger =
+        ledger_request(scene, plan.layout, options, plan.output_dir, plan.frames, plan.cameras);
+    check_manifest_claims(plan.ledger);
+    return plan;
 }
 
-std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options) {
-    check_outputs(scene, options);
-    const std::vector<int>& frames = run_frames(scene, options);
-    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
-                                             options.out_dir, options.several_variants);
+std::vector<std::string> planned_files(const SceneDesc& scene, const JobPlan& plan) {
     std::vector<std::string> files;
-    for (int frame : frames)
-        for (size_t camera : cameras)
+    for (int frame : plan.frames)
+        for (size_t camera : plan.cameras)
             for (const std::string& name :
-                 image_files(scene, layout, frame, scene.cameras[camera].name))
-                files.push_back((std::filesystem::path(options.out_dir) / name).string());
-    const std::string output_dir =
-        (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    const LedgerRequest request =
-        ledger_request(scene, layout, options, output_dir, frames, cameras);
-    files.push_back((std::filesystem::path(output_dir) / request.manifest_name).string());
+                 image_files(scene, plan.layout, frame, scene.cameras[camera].name))
+                files.push_back((std::filesystem::path(plan.layout.root) / name).string());
+    files.push_back((std::filesystem::path(plan.output_dir) / plan.ledger.manifest_name).string());
     return files;
 }
 
@@ -541,15 +343,19 @@ namespace {
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written) {
-    const std::vector<int>& frames = run_frames(scene, options);
-    const std::vector<size_t> cameras = select_cameras(scene, options.cameras);
-    const OutputLayout layout = plan_outputs(scene, cameras, named_frames(scene, options),
-                                             options.out_dir, options.several_variants);
+    return render_scene(scene, world, options, plan_job(scene, options), on_frame, on_written);
+}
+
+RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
+                          const JobPlan& plan,
+                          const std::function<void(const FrameProgress&)>& on_frame,
+                          const std::function<void(const FrameWritten&)>& on_written) {
+    const std::vector<int>& frames = plan.frames;
+    const std::vector<size_t>& cameras = plan.cameras;
+    const OutputLayout& layout = plan.layout;
     RenderResult result;
-    result.output_dir = (std::filesystem::path(options.out_dir) / layout.manifest_dir).string();
-    const LedgerRequest request =
-        ledger_request(scene, layout, options, result.output_dir, frames, cameras);
-    check_manifest_claims(request);  // before creating any folder
+    result.output_dir = plan.output_dir;
+    const LedgerRequest& request = plan.ledger;
     ThreadPool pool(options.threads);
     check_render_memory(scene, world, static_cast<unsigned>(pool.size()));
     make_directories(result.output_dir);
@@ -564,8 +370,8 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     FrameRenderer renderer(scene, world, pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
-    Encoder encoder(scene, layout, pool.size() > 1 ? 2 : 1, ledger, request.header.host,
-                    on_written);
+    FrameEncoder encoder(scene, layout, encoder_workers(pool.size()), ledger, request.header.host,
+                         on_written);
     size_t rendered = 0;
     auto cancelled = [&] { return options.cancel && options.cancel->load(); };
     // A failure (an encoder's, surfaced by push, or the renderer's) stops

@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include "job/output_layout.hpp"
+#include "output/run_ledger.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -102,18 +104,35 @@ std::vector<std::string> select_variants(const SceneDesc& scene,
 std::vector<SceneDesc> variant_runs(const SceneDesc& scene, unsigned load_threads,
                                     LoadedMeshes& loaded);
 
-// Checks the camera choice, the output names (template syntax, two images
-// to one file) and that an existing manifest in the output folder has the
-// same settings (or options.overwrite), without rendering; render_scene
-// does the same first.
-void check_outputs(const SceneDesc& scene, const RenderOptions& options);
+// One job's plan, settled once and handed to every step that needs it
+// (the checks, --dry-run, the farm's job files, the render): the frames and
+// cameras this run renders, where its files go and what they are named,
+// and what its manifest claims.
+struct JobPlan {
+    std::vector<int> frames;      // this run's
+    std::vector<size_t> cameras;  // indices into the scene's
+    OutputLayout layout;
+    std::string output_dir;  // the manifest's folder
+    LedgerRequest ledger;    // the manifest's header and name
+};
 
-// The files a render with these options would write, in the order it
-// writes them (frame, camera, pass, format), then the manifest (or the
-// part's partial manifest): paths under options.out_dir. For --dry-run;
-// checks as check_outputs does.
-std::vector<std::string> planned_files(const SceneDesc& scene, const RenderOptions& options);
+// Plans the job and checks it without rendering: the camera choice, the
+// output names (template syntax, two images to one file) and that an
+// existing manifest in the output folder has the same settings (or
+// options.overwrite).
+JobPlan plan_job(const SceneDesc& scene, const RenderOptions& options);
 
+// The files the job writes, in the order it writes them (frame, camera,
+// pass, format), then the manifest (or the part's partial manifest):
+// paths under options.out_dir. For --dry-run and the farm's job files.
+std::vector<std::string> planned_files(const SceneDesc& scene, const JobPlan& plan);
+
+RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
+                          const JobPlan& plan,
+                          const std::function<void(const FrameProgress&)>& on_frame,
+                          const std::function<void(const FrameWritten&)>& on_written = nullptr);
+
+// The same, planning the job itself (tests, the bench, the preview).
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written = nullptr);

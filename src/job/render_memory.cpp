@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "job/frame_encoder.hpp"
 #include "output/exr_compression.hpp"
 #include "render/frame_inputs.hpp"
 #include "render/frame_targets.hpp"
@@ -91,17 +92,13 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     const uint64_t pixels = static_cast<uint64_t>(out.width) * out.height;
     const uint64_t side = static_cast<uint64_t>(out.samples_per_side());
     const uint64_t samples = pixels * side * side;
-    // The frame being rendered, two queued, and one or two being encoded
-    // (job/render_job.cpp).
-    const uint64_t frames_in_flight = threads == 1 ? 4 : 5;
     const StylePlan plan = plan_styles(scene);
     const FrameTargets targets = plan_frame_targets(plan, out.passes);
     const bool glass = !transmitting_triangles(world, plan).empty();
     MemoryParts parts;
-    parts.push_back({"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight});
-    // One encoder, or two at once (job/render_job.cpp).
-    const uint64_t encoders = threads == 1 ? 1 : 2;
-    parts.push_back({"encoding", pixels * encoder_pixel_bytes(out) * encoders});
+    parts.push_back(
+        {"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight(threads)});
+    parts.push_back({"encoding", pixels * encoder_pixel_bytes(out) * encoder_workers(threads)});
     if (const uint64_t screen_space = screen_space_bytes(targets, pixels, samples))
         parts.push_back({"screen-space buffers", screen_space});
     if (scene.style.occlusion.enabled) {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <thread>
 
+#include "core/elapsed.hpp"
 #include "core/thread_pool.hpp"
 #include "job/labels.hpp"
 #include "job/plot.hpp"
@@ -33,9 +34,7 @@ ThreadStudy run_thread_study(const SceneDesc& scene, const World& world,
         for (int frame : frames) {
             const auto start = std::chrono::steady_clock::now();
             renderer.render(frame, 0, images);
-            times.push_back(
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count());
+            times.push_back(ms_since(start));
         }
         std::vector<double> sorted = times;
         std::sort(sorted.begin(), sorted.end());

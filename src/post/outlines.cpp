@@ -127,7 +127,7 @@ uint8_t classify_pair(const Surfaces& s, const EdgeTest& test, size_t p_out, siz
 }  // namespace
 
 void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScratch& scratch,
-                ThreadPool& pool) {
+                ThreadPool& pool, CrossingPairs crossing) {
     const size_t n = static_cast<size_t>(b.width) * static_cast<size_t>(b.height);
     if (b.depth.size() != n || b.normal.size() != n || b.object_id.size() != n)
         throw Error(ExitCode::runtime_failure,
@@ -157,7 +157,7 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
                         static_cast<float>(std::cos(static_cast<double>(style.crease_angle) *
                                                     (std::numbers::pi / 180.0))),
                         enabled};
-    const Surfaces s{scratch.inverse_depth, scratch.id, b.normal, b.crossing_pairs};
+    const Surfaces s{scratch.inverse_depth, scratch.id, b.normal, crossing};
     const size_t stride = static_cast<size_t>(w);
     pool.parallel_for(static_cast<size_t>(h), [&](size_t row) {
         const int y = static_cast<int>(row);
@@ -176,8 +176,8 @@ void find_edges(const OutlineBuffers& b, const OutlineStyle& style, OutlineScrat
 }
 
 void draw_outlines(const OutlineBuffers& b, const OutlineStyle& style, ColorImage& lines,
-                   ThreadPool& pool, OutlineScratch& scratch) {
-    find_edges(b, style, scratch, pool);
+                   ThreadPool& pool, OutlineScratch& scratch, CrossingPairs crossing) {
+    find_edges(b, style, scratch, pool, crossing);
     const int w = b.width, h = b.height;
     if (w == 0 || h == 0 || lines.width != w || lines.height != h) {
         lines = ColorImage(w, h, glm::vec4(0.0f));

@@ -56,10 +56,6 @@ struct OutlineBuffers {
     // catchers, which show only the shadows on them): both read as
     // background here, while ambient occlusion still reads their depth.
     std::vector<uint32_t> object_id;
-    // Set: intersection lines only between these object pairs (sorted keys,
-    // the smaller id in the high 32 bits), the ones that really cross. An
-    // image alone cannot tell flush contact from crossing.
-    const std::vector<uint64_t>* crossing_pairs = nullptr;
 
     // Sets the size and fills everything with background.
     void reset(int w, int h);
@@ -104,15 +100,21 @@ struct OutlineScratch {
     std::vector<uint8_t> near_row;     // 1 where an edge in the same row is within reach
 };
 
+// Object pairs that really cross (sorted keys, the smaller id in the high
+// 32 bits; render/crossing_stage.hpp): when given, intersection lines are
+// drawn only between them, since an image alone cannot tell flush contact
+// from crossing. Null: between any two objects that meet in the image.
+using CrossingPairs = const std::vector<uint64_t>*;
+
 // Pass 1 alone: scratch.edges gets the flags, for enabled kinds only.
 // Throws facet::Error (runtime_failure) if the buffers do not match their size.
 void find_edges(const OutlineBuffers& buffers, const OutlineStyle& style, OutlineScratch& scratch,
-                ThreadPool& pool);
+                ThreadPool& pool, CrossingPairs crossing = nullptr);
 
 // All passes. `lines` gets the buffers' size (reused if it has it already):
 // rgb the line colour (linear, not premultiplied), a its coverage in [0, 1].
 void draw_outlines(const OutlineBuffers& buffers, const OutlineStyle& style, ColorImage& lines,
-                   ThreadPool& pool, OutlineScratch& scratch);
+                   ThreadPool& pool, OutlineScratch& scratch, CrossingPairs crossing = nullptr);
 
 // Lines over a linear RGBA image of the same size: rgb mixed by coverage,
 // alpha = a + alpha · (1 − a).

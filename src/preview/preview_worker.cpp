@@ -7,6 +7,7 @@
 #include <tuple>
 
 #include "core/display_transform.hpp"
+#include "core/elapsed.hpp"
 #include "core/error.hpp"
 #include "core/thread_pool.hpp"
 #include "job/pass_files.hpp"
@@ -46,11 +47,6 @@ std::string request_key(const PreviewRequest& r) {
 
 int resolved_frame(int frame, const SceneDesc& scene) {
     return frame == kSceneFirstFrame ? scene.output.frames.front() : frame;
-}
-
-double ms_since(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
 }
 
 // The pass's PNG view as a user opening the file would see it: the

@@ -83,16 +83,17 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
                                vertices, lights.all, lights.casting_shadows,
                                side_,    edge_mask,  paths_};
     const ShadeTarget shade_out = shade_target(out);
-    const SurfacePassInputs surface_in{world_,
-                                       inputs,
-                                       vertices,
-                                       previous_clip(frame, camera_index),
-                                       side_,
-                                       scene_.output.passes,
-                                       scene_.output.normals_in_camera_space,
-                                       scene_.output.width,
-                                       scene_.output.height,
-                                       plan.object_normal_mapped};
+    const SurfacePassInputs surface_in{
+        .world = world_,
+        .frame = inputs,
+        .vertices = vertices,
+        .previous_clip = previous_clip(frame, camera_index),
+        .samples_per_side = side_,
+        .passes = scene_.output.passes,
+        .normals_in_camera_space = scene_.output.normals_in_camera_space,
+        .width = scene_.output.width,
+        .height = scene_.output.height,
+        .normal_mapped = plan.object_normal_mapped};
     if (targets_.surface_passes) fit_surface_passes(surface_in, out.surface);
     const AlphaCoverage alpha(world_, inputs.materials);
     batches_ = 0;
@@ -227,23 +228,24 @@ void FrameRenderer::fit_targets(const FrameInputs& inputs, FrameImages& out) {
 }
 
 ShadeTarget FrameRenderer::shade_target(FrameImages& out) {
+    OutlineBuffers* gbuffer = targets_.gbuffer ? &gbuffer_ : nullptr;
     if (targets_.shading == ShadeResolution::pixels)
-        return {ShadeResolution::pixels,
-                &out.color,
-                nullptr,
-                out.depth,
-                targets_.gbuffer ? &gbuffer_ : nullptr,
-                targets_.alpha ? &out.alpha : nullptr,
-                nullptr,
-                targets_.gbuffer ? &surface_share_ : nullptr};
-    return {ShadeResolution::samples,
-            nullptr,
-            &sample_color_,
-            sample_depth_,
-            targets_.gbuffer ? &gbuffer_ : nullptr,
-            nullptr,
-            targets_.line_samples ? &sample_lines_ : nullptr,
-            nullptr};
+        return {.resolution = ShadeResolution::pixels,
+                .pixels = &out.color,
+                .samples = nullptr,
+                .depth = out.depth,
+                .gbuffer = gbuffer,
+                .pixels_over_nothing = targets_.alpha ? &out.alpha : nullptr,
+                .line_samples = nullptr,
+                .surface_share = gbuffer ? &surface_share_ : nullptr};
+    return {.resolution = ShadeResolution::samples,
+            .pixels = nullptr,
+            .samples = &sample_color_,
+            .depth = sample_depth_,
+            .gbuffer = gbuffer,
+            .pixels_over_nothing = nullptr,
+            .line_samples = targets_.line_samples ? &sample_lines_ : nullptr,
+            .surface_share = nullptr};
 }
 
 // The previous frame's clip positions, for the motion pass; else empty.
@@ -265,12 +267,11 @@ void FrameRenderer::apply_sample_stages(const FrameInputs& inputs,
                            sample_color_, sample_lines_);
     if (!plan.outlines) return;
     // Stage 8b: intersection lines only where objects really cross.
-    std::vector<uint64_t> crossing;
-    if (inputs.outlines.intersection.enabled) crossing = crossing_object_pairs(world_, vertices);
-    gbuffer_.crossing_pairs = inputs.outlines.intersection.enabled ? &crossing : nullptr;
-    outlines_.draw(inputs.outlines, gbuffer_, sample_color_, pool_,
-                   targets_.lines ? &sample_lines_ : nullptr);
-    gbuffer_.crossing_pairs = nullptr;
+    const bool intersections = inputs.outlines.intersection.enabled;
+    const std::vector<uint64_t> crossing =
+        intersections ? crossing_object_pairs(world_, vertices) : std::vector<uint64_t>{};
+    outlines_.draw(inputs.outlines, gbuffer_, intersections ? &crossing : nullptr, sample_color_,
+                   pool_, targets_.lines ? &sample_lines_ : nullptr);
 }
 
 }  // namespace facet

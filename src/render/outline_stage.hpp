@@ -11,9 +11,10 @@ namespace facet {
 class OutlineStage {
   public:
     // Lines from the G-buffer over `color` (the same size), and over
-    // `lines` (premultiplied strokes alone, the lines pass) when given.
-    void draw(const OutlineStyle& style, const OutlineBuffers& gbuffer, ColorImage& color,
-              ThreadPool& pool, ColorImage* lines = nullptr);
+    // `lines` (premultiplied strokes alone, the lines pass) when given;
+    // intersection lines only between `crossing`'s pairs when given.
+    void draw(const OutlineStyle& style, const OutlineBuffers& gbuffer, CrossingPairs crossing,
+              ColorImage& color, ThreadPool& pool, ColorImage* lines = nullptr);
 
   private:
     OutlineScratch scratch_;

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/enum_names.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "core/suggest.hpp"
@@ -23,11 +24,7 @@ namespace {
 constexpr size_t kMaxExtendsDepth = 16;
 
 // Each model's name in style files; also what `facet validate` prints.
-struct ShadingName {
-    ShadingModel model;
-    const char* name;
-};
-constexpr ShadingName kShadingNames[] = {
+constexpr EnumName<ShadingModel> kShadingNames[] = {
     {ShadingModel::flat, "flat"},     {ShadingModel::gouraud, "gouraud"},
     {ShadingModel::phong, "phong"},   {ShadingModel::blinn_phong, "blinn_phong"},
     {ShadingModel::unlit, "unlit"},   {ShadingModel::depth, "depth"},
@@ -39,12 +36,8 @@ constexpr ShadingName kShadingNames[] = {
 ShadingModel parse_shading(const Field& f) {
     std::string name = f.text();
     if (name == "blinn-phong") return ShadingModel::blinn_phong;  // the preset's spelling
-    std::vector<std::string_view> names;
-    for (const ShadingName& entry : kShadingNames) {
-        if (name == entry.name) return entry.model;
-        names.push_back(entry.name);
-    }
-    f.fail_not_one_of(name, names);
+    if (const std::optional<ShadingModel> model = value_of(kShadingNames, name)) return *model;
+    f.fail_not_one_of(name, names_of(kShadingNames));
 }
 
 void apply_toon(const Field& f, ToonDesc& toon) {
@@ -235,9 +228,7 @@ StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
 }  // namespace
 
 const char* shading_model_name(ShadingModel model) {
-    for (const ShadingName& entry : kShadingNames)
-        if (entry.model == model) return entry.name;
-    return "?";
+    return name_of(kShadingNames, model).data();  // the table's literals end in '\0'
 }
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,

@@ -121,10 +121,10 @@ ModelSurvey survey_model(const SurveyRequest& request) {
     if (request.up) {
         const bool same = *request.up == survey.up.axis;
         survey.up = {*request.up, false,
-                     std::string("--up ") + up_axis_name(*request.up) +
+                     std::string("--up ") + std::string(name_of(kUpAxes, *request.up)) +
                          (same ? ""
                                : " (the file alone would be read " +
-                                     std::string(up_axis_name(survey.up.axis)) + "-up)")};
+                                     std::string(name_of(kUpAxes, survey.up.axis)) + "-up)")};
     }
     survey.bounds = posed_bounds(mesh, request, survey.up.axis, survey.animation_seconds);
     check_size(survey);

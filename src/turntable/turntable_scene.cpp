@@ -16,6 +16,7 @@ namespace fs = std::filesystem;
 // are shares of the model's size (the largest side of its bounds).
 constexpr double kFieldOfView = 30;       // degrees: a product shot's long lens
 constexpr double kElevation = 20;         // degrees above the model's centre
+constexpr double kTurns = 1;              // turns of the camera over the frames
 constexpr double kOcclusionRadius = 0.1;  // creases and contact, not the whole model
 constexpr double kGroundSize = 10;        // wide enough for any shadow of the key light
 constexpr double kGroundDrop = 0.001;     // below the lowest point, see write_ground
@@ -130,7 +131,7 @@ void write_camera(YamlWriter& w) {
     w.end_map();
     w.begin_map("orbit");
     w.value("elevation", yaml_number(kElevation), "degrees above its centre: --elevation DEG");
-    w.value("turns", "1", "--turns N");
+    w.value("turns", yaml_number(kTurns), "--turns N");
     w.end_map();
     w.end_map();
     w.comment("");
@@ -194,18 +195,6 @@ void write_variant(YamlWriter& w, const ModelSurvey& s) {
 
 }  // namespace
 
-const char* ground_kind_name(GroundKind kind) {
-    switch (kind) {
-        case GroundKind::shadow:
-            return "shadow";
-        case GroundKind::floor:
-            return "floor";
-        case GroundKind::none:
-            return "none";
-    }
-    return "shadow";
-}
-
 std::string path_from_scene(const std::string& scene_dir, const std::string& file) {
     std::error_code ec;
     const fs::path target = fs::weakly_canonical(fs::absolute(file, ec), ec);
@@ -251,15 +240,16 @@ std::vector<std::pair<std::string, std::string>> turntable_option_record(
     auto given = [](const std::string& value, const std::string& otherwise) {
         return value.empty() ? otherwise : value;
     };
-    return {{"turns", given(options.turns, "1")},
-            {"elevation", given(options.elevation, yaml_number(kElevation))},
-            {"background", given(options.background, "gradient")},
-            {"ground", ground_kind_name(options.ground.value_or(GroundKind::shadow))},
-            {"environment", given(options.environment, "studio")},
-            {"up", up_axis_name(survey.up.axis)},
-            {"up_from", options.up           ? "--up"
-                        : survey.up.detected ? "the model's shape"
-                                             : "the format's convention"}};
+    return {
+        {"turns", given(options.turns, yaml_number(kTurns))},
+        {"elevation", given(options.elevation, yaml_number(kElevation))},
+        {"background", given(options.background, "gradient")},
+        {"ground", std::string(name_of(kGroundKinds, options.ground.value_or(GroundKind::shadow)))},
+        {"environment", given(options.environment, "studio")},
+        {"up", std::string(name_of(kUpAxes, survey.up.axis))},
+        {"up_from", options.up           ? "--up"
+                    : survey.up.detected ? "the model's shape"
+                                         : "the format's convention"}};
 }
 
 std::string turntable_scene_yaml(const ModelSurvey& survey, const std::string& mesh_reference,

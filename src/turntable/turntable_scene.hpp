@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/enum_names.hpp"
 #include "scene/scene_desc.hpp"
 #include "turntable/model_survey.hpp"
 
@@ -21,7 +22,8 @@ inline constexpr double kTurntableFps = 24;
 // `--ground`: a ground that shows only the model's shadow and occlusion
 // (the default), a grey floor that fades into the background, or none.
 enum class GroundKind { shadow, floor, none };
-const char* ground_kind_name(GroundKind kind);
+inline constexpr EnumName<GroundKind> kGroundKinds[] = {
+    {GroundKind::shadow, "shadow"}, {GroundKind::floor, "floor"}, {GroundKind::none, "none"}};
 
 // The turntable's options as given on the command line; "" or unset: not
 // given (the built-in scene's own value).

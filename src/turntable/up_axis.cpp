@@ -40,10 +40,6 @@ std::string format_convention(MeshFormat format) {
 
 }  // namespace
 
-const char* up_axis_name(UpAxis axis) {
-    return axis == UpAxis::y ? "y" : "z";
-}
-
 double flat_base_share(const Mesh& mesh, UpAxis axis) {
     const Bounds bounds = mesh.bounds();
     if (bounds.empty()) return 0;

@@ -8,13 +8,12 @@
 
 #include "assets/mesh.hpp"
 #include "assets/mesh_format.hpp"
+#include "core/enum_names.hpp"
 
 namespace facet {
 
 enum class UpAxis { y, z };
-
-// "y" or "z".
-const char* up_axis_name(UpAxis axis);
+inline constexpr EnumName<UpAxis> kUpAxes[] = {{UpAxis::y, "y"}, {UpAxis::z, "z"}};
 
 struct UpChoice {
     UpAxis axis = UpAxis::y;
