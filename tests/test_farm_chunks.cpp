@@ -1,6 +1,6 @@
-// Chunk arithmetic, chunks from the environment, frame list text, and the
-// job files facet farm writes (their content, and what they do when run
-// without a scheduler).
+// Chunk arithmetic, chunks from the environment, frame list text, and what
+// the job files facet farm writes do: the Slurm script run with stubs, the
+// OpenJD template loaded as YAML.
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -13,6 +13,9 @@
 #include "farm/job_scripts.hpp"
 #include "farm/shell_word.hpp"
 #include "farm_support.hpp"
+
+#include <nlohmann/json.hpp>
+#include <sstream>
 
 using namespace facet;
 
@@ -114,11 +117,16 @@ TEST_CASE("frame lists are written as range text that reads back exactly", "[far
     }
 }
 
-TEST_CASE("job files quote every word and pass the render options through", "[farm]") {
+TEST_CASE("job files run the render and the merge with every word as given", "[farm]") {
+    // What the files do, not how they read: the Slurm script is run with
+    // stubs for sbatch and facet that record their words (as a user
+    // submits it, then as a render task and as the merge), and the Open
+    // Job Description template is loaded as OpenJD loads it (YAML).
+    test::FarmFolder farm;
     FarmJob job;
     job.name = "facet-spin";
-    job.facet = "/opt/facet/bin/facet";
-    job.working_dir = "/home/me/shots";
+    job.facet = farm.dir.file("bin/facet-stub");
+    job.working_dir = farm.dir.path();
     job.render_args = {"scenes/spin.yaml", "-o", "out dir", "-D", "style.palette.0=it's"};
     job.frames = "1-48";
     job.frame_count = 48;
@@ -131,30 +139,71 @@ TEST_CASE("job files quote every word and pass the render options through", "[fa
     slurm.time = "30:00";
     slurm.max_running = 2;
     const std::string script = slurm_script(job, slurm);
-    for (const char* line :
-         {"#SBATCH --partition=render\n", "#SBATCH --cpus-per-task=4\n", "#SBATCH --time=30:00\n",
-          "folder=/home/me/shots\n", "--chdir=\"$folder\"", "chunks=6\n", "tasks=0-5\n",
-          "--array=\"$tasks\"%2", "--dependency=afterok:\"$array\" --kill-on-invalid-dep=yes",
-          "render scenes/spin.yaml -o 'out dir' -D 'style.palette.0=it'\\''s' --frames 1-48",
-          "--chunk-from-env --chunks \"$chunks\" --skip-existing", "merge 'out dir/spin'\n",
-          "facet=${FACET:-/opt/facet/bin/facet}\n"}) {
-        INFO(line);
-        CHECK(script.find(line) != std::string::npos);
-    }
+    test::write_text(farm.dir.file("job.sh"), script);
+    // sbatch reads its options from the script's #SBATCH lines.
+    std::vector<std::string> directives;
+    std::istringstream lines(script);
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("#SBATCH ", 0) == 0) directives.push_back(line.substr(8));
+    CHECK(directives == std::vector<std::string>{"--job-name=facet-spin", "--partition=render",
+                                                 "--cpus-per-task=4", "--time=30:00"});
+    // Submitted: the render array (six chunks, two at once), then the merge
+    // after it, both from the working folder.
+    REQUIRE(farm.run_script().exit_code == 0);
+    const std::vector<std::string> submitted = farm.recorded("sbatch");
+    const std::vector<std::string> expected = {"--parsable",
+                                               "--chdir=" + farm.dir.path(),
+                                               "--array=0-5%2",
+                                               farm.dir.file("job.sh"),
+                                               "--job-name=facet-spin-merge",
+                                               "--chdir=" + farm.dir.path(),
+                                               "--dependency=afterok:4242",
+                                               "--kill-on-invalid-dep=yes",
+                                               farm.dir.file("job.sh")};
+    CHECK(submitted == expected);
+    // A render task: facet render with the job's words, its frames and the
+    // chunk from the environment; the merge: facet merge of the folder.
+    REQUIRE(farm.run_script("FACET_FARM_STEP=render SLURM_ARRAY_TASK_ID=3").exit_code == 0);
+    REQUIRE(farm.run_script("FACET_FARM_STEP=merge").exit_code == 0);
+    CHECK(farm.recorded("facet-stub") ==
+          std::vector<std::string>{"render", "scenes/spin.yaml", "-o", "out dir", "-D",
+                                   "style.palette.0=it's", "--frames", "1-48", "--chunk-from-env",
+                                   "--chunks", "6", "--skip-existing", "merge", "out dir/spin"});
+
     OpenJobSettings openjd;
     openjd.chunk_size = 8;
     openjd.target_runtime = 600;
-    const std::string t = openjd_template(job, openjd);
-    for (const char* line :
-         {"specificationVersion: 'jobtemplate-2023-09'\n", "  - TASK_CHUNKING\n",
-          "type: CHUNK[INT]\n", "range: \"{{Param.Frames}}\"\n", "defaultTaskCount: 8\n",
-          "rangeConstraint: CONTIGUOUS\n", "targetRuntimeSeconds: 600\n", "default: \"1-48\"\n",
-          "\"--frames\", \"{{Param.Frames}}\", \"--chunk-frames\", \"{{Task.Param.Frame}}\"",
-          "- dependsOn: Render\n", "args: [\"merge\", \"out dir/spin\"]\n",
-          "\"style.palette.0=it's\""}) {
-        INFO(line);
-        CHECK(t.find(line) != std::string::npos);
-    }
+    test::write_text(farm.dir.file("job.yaml"), openjd_template(job, openjd));
+    const test::RunResult loaded = test::run_command(
+        "python3 -c 'import sys, json, yaml; "
+        "print(json.dumps(yaml.safe_load(open(sys.argv[1]))))' " +
+        test::shell_quote(farm.dir.file("job.yaml")) + " 2>&1");
+    if (loaded.exit_code != 0 && loaded.output.find("No module named") != std::string::npos)
+        FACET_SKIP("python3-yaml is not installed (scripts/setup.sh --tests)");
+    REQUIRE(loaded.exit_code == 0);
+    const nlohmann::json t = nlohmann::json::parse(loaded.output);
+    CHECK(t["specificationVersion"] == "jobtemplate-2023-09");
+    const nlohmann::json& render = t["steps"][0];
+    const nlohmann::json& frame = render["parameterSpace"]["taskParameterDefinitions"][0];
+    CHECK(frame["type"] == "CHUNK[INT]");
+    CHECK(frame["range"] == "{{Param.Frames}}");
+    CHECK(frame["chunks"]["defaultTaskCount"] == 8);
+    CHECK(frame["chunks"]["targetRuntimeSeconds"] == 600);
+    CHECK(frame["chunks"]["rangeConstraint"] == "CONTIGUOUS");
+    CHECK(render["script"]["actions"]["onRun"]["command"] == job.facet);
+    std::vector<std::string> args = render["script"]["actions"]["onRun"]["args"];
+    CHECK(args == std::vector<std::string>{"render", "scenes/spin.yaml", "-o", "out dir", "-D",
+                                           "style.palette.0=it's", "--frames", "{{Param.Frames}}",
+                                           "--chunk-frames", "{{Task.Param.Frame}}",
+                                           "--skip-existing"});
+    const nlohmann::json& merge = t["steps"][1];
+    CHECK(merge["dependencies"][0]["dependsOn"] == "Render");
+    CHECK(merge["script"]["actions"]["onRun"]["args"] ==
+          nlohmann::json::array({"merge", "out dir/spin"}));
+    bool frames_default = false;
+    for (const nlohmann::json& p : t["parameterDefinitions"])
+        frames_default |= p["name"] == "Frames" && p["default"] == "1-48";
+    CHECK(frames_default);
     CHECK(shell_word("plain/path-1.yaml") == "plain/path-1.yaml");
     CHECK(shell_word("") == "''");
     CHECK(shell_word("$HOME") == "'$HOME'");
