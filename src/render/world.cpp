@@ -360,17 +360,6 @@ void add_variant_names(const Mesh& mesh, std::vector<std::string>& names) {
         if (std::find(names.begin(), names.end(), name) == names.end()) names.push_back(name);
 }
 
-// What reading the scene's meshes may touch: their folders, the scene's
-// file size limit, and `budget` for their textures.
-AssetContext scene_assets(const SceneDesc& scene, TextureBudget& budget, unsigned load_threads) {
-    AssetContext assets;
-    assets.paths.allow_outside = scene.assets.allow_paths_outside;
-    assets.paths.max_file_bytes = scene.assets.max_file_bytes;
-    assets.textures = &budget;
-    assets.threads = load_threads;
-    return assets;
-}
-
 // The style that draws each object: its own, else the scene's.
 const StyleDesc& object_style(const SceneDesc& scene, const ObjectDesc& obj) {
     return obj.style ? *obj.style : scene.style;
@@ -452,7 +441,7 @@ std::shared_ptr<const Mesh> with_object_tangents(World& world, uint32_t material
 std::vector<std::string> scene_variants(const SceneDesc& scene, unsigned load_threads,
                                         LoadedMeshes& loaded) {
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
-    const AssetContext assets = scene_assets(scene, texture_budget, load_threads);
+    const AssetContext assets = asset_context(scene.assets, texture_budget, load_threads);
     std::vector<std::string> names;
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const std::string& path = scene.objects[o].mesh;
@@ -477,7 +466,7 @@ World build_world(const SceneDesc& scene, unsigned load_threads, const LoadedMes
     MeshesByPath meshes;
     std::map<std::string, std::shared_ptr<const Texture>> textures;
     TextureBudget texture_budget(scene.assets.texture_budget_bytes);
-    const AssetContext assets = scene_assets(scene, texture_budget, load_threads);
+    const AssetContext assets = asset_context(scene.assets, texture_budget, load_threads);
     std::vector<std::string> variants;  // that the scene's models declare
     for (uint32_t o = 0; o < scene.objects.size(); ++o) {
         const ObjectDesc& obj = scene.objects[o];

@@ -292,9 +292,25 @@ struct ObjectDesc {
 // `assets`): paths named inside meshes, per-file size, texture memory.
 struct AssetSettings {
     bool allow_paths_outside = false;
-    uint64_t max_file_bytes = uint64_t(2) << 30;
-    uint64_t texture_budget_bytes = uint64_t(1) << 30;
+    uint64_t max_file_bytes = AssetPathPolicy{}.max_file_bytes;
+    uint64_t texture_budget_bytes = kDefaultTextureBudget;
+    bool operator==(const AssetSettings&) const = default;
 };
+
+// What reading meshes under `settings` may touch: their folders, the file
+// size limit, and `budget` for their textures (sized by the settings'
+// budget). The one way a reading is set up: a scene's world, and the
+// turntable's survey of a model, which its world then reuses only when
+// both were read under equal settings.
+inline AssetContext asset_context(const AssetSettings& settings, TextureBudget& budget,
+                                  unsigned threads) {
+    AssetContext assets;
+    assets.paths.allow_outside = settings.allow_paths_outside;
+    assets.paths.max_file_bytes = settings.max_file_bytes;
+    assets.textures = &budget;
+    assets.threads = threads;
+    return assets;
+}
 
 // The light that surrounds the scene (docs/pbr.md, "Environment"): an
 // image, a colour or facet's studio, lighting the `pbr` model.

@@ -11,15 +11,22 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// The asset settings the model is surveyed under: a scene's defaults, with
+// the command line's --allow-asset-paths-outside.
+AssetSettings survey_settings(const TurntableRequest& request) {
+    AssetSettings settings;
+    settings.allow_paths_outside = request.allow_asset_paths_outside;
+    return settings;
+}
+
 ModelSurvey survey_of(const TurntableRequest& request) {
     // The model is read as a scene's mesh is: its paths kept to its folder
     // and its textures to the default budget.
-    TextureBudget textures(kDefaultTextureBudget);
+    const AssetSettings settings = survey_settings(request);
+    TextureBudget textures(settings.texture_budget_bytes);
     SurveyRequest survey;
     survey.path = request.model;
-    survey.assets.paths.allow_outside = request.allow_asset_paths_outside;
-    survey.assets.textures = &textures;
-    survey.assets.threads = request.threads;
+    survey.assets = asset_context(settings, textures, request.threads);
     survey.up = request.options.up;
     survey.frames = kTurntableFrames;
     survey.fps = kTurntableFps;
@@ -55,13 +62,8 @@ SceneDesc read_scene(const std::string& text, const std::string& name, const std
 // that names the model, when the survey read it as the scene would.
 LoadedMeshes surveyed_meshes(const TurntableRequest& request, const SceneDesc& scene,
                              const ModelSurvey& survey) {
-    const AssetPathPolicy policy;
-    const bool same_settings =
-        scene.assets.allow_paths_outside == request.allow_asset_paths_outside &&
-        scene.assets.max_file_bytes == policy.max_file_bytes &&
-        scene.assets.texture_budget_bytes == kDefaultTextureBudget;
     LoadedMeshes meshes;
-    if (!same_settings || !survey.mesh) return meshes;
+    if (scene.assets != survey_settings(request) || !survey.mesh) return meshes;
     // The same path, not merely the same file: a link elsewhere would
     // resolve the model's own references (mtllib, textures) from its folder.
     const fs::path model = fs::absolute(request.model).lexically_normal();
