@@ -313,6 +313,16 @@ TEST_CASE(
     const World factors = build_world(load(write_text(
         dir.file("factors.yaml"), cube_scene("blinn-phong", "{ metallic: 1, roughness: 0.2 }"))));
     CHECK_FALSE(warned(factors.warnings, "objects.0", "only `shading: pbr` draws"));
+    // So is a metal-rough map: the Phong family reads it (docs/styles.md).
+    const World metal_map = build_world(load(write_text(
+        dir.file("metal_map.yaml"),
+        cube_scene("blinn-phong", "{ metallic: 1, roughness: 0.5, metal_rough_map: bump.png }"))));
+    CHECK_FALSE(warned(metal_map.warnings, "objects.0", "only `shading: pbr` draws"));
+    // A stylised model does not: there the map is lost, and the warning names metal.
+    const World toon = build_world(load(write_text(
+        dir.file("toon.yaml"),
+        cube_scene("toon", "{ metallic: 1, roughness: 0.5, metal_rough_map: bump.png }"))));
+    CHECK(warned(toon.warnings, "objects.0", "occlusion, metal, specular"));
     // A sheen, a thin film and an anisotropy are lost the same way.
     for (const char* lobe :
          {"{ sheen_color: [0.8, 0.1, 0.1] }", "{ iridescence: 0.6 }",

@@ -1,5 +1,6 @@
 #include "render/frame_inputs.hpp"
 
+#include "core/exact_trig.hpp"
 #include "render/framing_shapes.hpp"
 #include "shade/shading_models.hpp"
 
@@ -7,7 +8,6 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <glm/trigonometric.hpp>
 
 namespace facet {
 namespace {
@@ -49,7 +49,9 @@ float camera_heading_degrees(const CameraMatrices& camera) {
     const glm::vec3& f = camera.forward;
     // Straight up or down has no heading: 0, rather than noise.
     if (f.x * f.x + f.z * f.z < 1e-8f) return 0.0f;
-    return glm::degrees(std::atan2(-f.x, -f.z));
+    // The exact series (core/exact_trig.hpp), as the rotation's cosine and
+    // sine are: the same bits on every CPU and C library.
+    return static_cast<float>(360.0 * atan2_turns(-f.x, -f.z));
 }
 
 StylePlan plan_styles(const SceneDesc& scene) {

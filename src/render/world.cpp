@@ -397,12 +397,15 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
                                std::span<const Material> materials, Warnings& warnings) {
     const StyleDesc& style = object_style(scene, scene.objects[object]);
     if (style.shading == ShadingModel::pbr) return;
-    // Metal and roughness factors alone are read as a Phong highlight
-    // (docs/scene-format.md, "glTF files"); the features only pbr draws
-    // (its maps, sheen, thin film, anisotropy and both transmissions) and
-    // coats are lost: glass is drawn opaque.
-    const bool lost = std::any_of(materials.begin(), materials.end(), [](const Material& m) {
-        return (m.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
+    // The Phong family reads metal and roughness, their map included
+    // (shade/metal_rough_phong.hpp); the features only pbr draws (its other
+    // maps, sheen, thin film, anisotropy and both transmissions) and coats
+    // are lost: glass is drawn opaque.
+    const bool reads_metal = phong_family(style.shading);
+    const bool lost = std::any_of(materials.begin(), materials.end(), [&](const Material& m) {
+        Material drawn_as = m;
+        if (reads_metal && m.metal_rough) drawn_as.metal_rough_map = {};
+        return (drawn_as.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
     });
     if (!lost) return;
     const ObjectDesc& obj = scene.objects[object];
@@ -411,9 +414,10 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
                             "' has physically based maps, a clear coat, a sheen, a thin film, "
                             "an anisotropy, a diffuse transmission or glass that only "
                             "`shading: pbr` draws: under " +
-                            shading_model_name(style.shading) +
-                            " its relief, occlusion, metal, specular colour, coat, sheen, "
-                            "film, anisotropy and light through it are lost (glass is opaque)"});
+                            shading_model_name(style.shading) + " its relief, occlusion, " +
+                            (reads_metal ? "" : "metal, ") +
+                            "specular colour, coat, sheen, film, anisotropy and light through it "
+                            "are lost (glass is opaque)"});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials
