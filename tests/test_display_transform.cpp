@@ -110,7 +110,7 @@ TEST_CASE("exposure +1 doubles the linear values of the PNG and leaves the EXR a
 
 TEST_CASE("tone curves keep black, rise monotonically and roll off below white", "[display]") {
     for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral, Tonemap::agx}) {
-        INFO(tonemap_name(curve));
+        INFO(name_of(kTonemaps, curve));
         const DisplayTransform t{0, curve};
         CHECK(display_color({0, 0, 0, 1}, t) == glm::vec4(0, 0, 0, 1));
         float previous = 0;
@@ -191,8 +191,8 @@ TEST_CASE("neutral is Khronos PBR Neutral: base colours pass, highlights compres
     CHECK(bright.g > bright.b);
     CHECK(bright.r < 1.0f);
     CHECK(bright.b / bright.r > 1.0f / 4.0f);  // desaturated
-    CHECK(std::string(tonemap_name(Tonemap::neutral)) == "neutral");
-    CHECK(tonemap_from_name("neutral") == Tonemap::neutral);
+    CHECK(name_of(kTonemaps, Tonemap::neutral) == "neutral");
+    CHECK(value_of(kTonemaps, "neutral") == Tonemap::neutral);
 }
 
 namespace {
@@ -271,8 +271,8 @@ TEST_CASE("agx is Blender 4's AgX: grey to its pivot, bright colours to white", 
     CHECK(linear_to_srgb(red.b) * 255 == Approx(45.35).margin(0.1));
     const glm::vec3 blinding = shown(orange * 1000.0f);
     CHECK(std::min({blinding.r, blinding.g, blinding.b}) > 0.999f);
-    CHECK(std::string(tonemap_name(Tonemap::agx)) == "agx");
-    CHECK(tonemap_from_name("agx") == Tonemap::agx);
+    CHECK(name_of(kTonemaps, Tonemap::agx) == "agx");
+    CHECK(value_of(kTonemaps, "agx") == Tonemap::agx);
 }
 
 TEST_CASE(
@@ -293,8 +293,8 @@ TEST_CASE(
         for (float exposure : {0.0f, 10.0f}) {
             const DisplayTransform t{exposure, curve};
             for (const glm::vec3& colour : colours) {
-                INFO(tonemap_name(curve) << " exposure " << exposure << " colour " << colour.r
-                                         << "," << colour.g << "," << colour.b);
+                INFO(name_of(kTonemaps, curve) << " exposure " << exposure << " colour " << colour.r
+                                               << "," << colour.g << "," << colour.b);
                 float previous = -1.0f;
                 for (float s : scales) {
                     // An infinite channel times 0 is NaN, not a colour: the
@@ -323,7 +323,7 @@ TEST_CASE(
 TEST_CASE("a colour past the half-float range is shown as white, not black", "[display]") {
     // The frame's colour is stored as half floats, saturated at 65504.
     for (Tonemap curve : {Tonemap::aces, Tonemap::filmic, Tonemap::neutral, Tonemap::agx}) {
-        INFO(tonemap_name(curve));
+        INFO(name_of(kTonemaps, curve));
         HalfColorImage image(2, 1);
         image.at(0, 0) = to_half(glm::vec4(7e4f, 7e4f, 7e4f, 1));
         image.at(1, 0) = to_half(glm::vec4(std::numeric_limits<float>::infinity(), 1.6e9f, 1, 1));

@@ -13,6 +13,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "assets/gltf_accessors.hpp"
+#include "core/enum_names.hpp"
 
 namespace facet::gltf_detail {
 namespace {
@@ -130,35 +131,22 @@ void read_skins(const tinygltf::Model& model, const std::string& path, MeshRig& 
     }
 }
 
+// The names of §3.11.1's paths and §5.24's interpolations.
+constexpr EnumName<RigChannelPath> kChannelPaths[] = {{RigChannelPath::translation, "translation"},
+                                                      {RigChannelPath::rotation, "rotation"},
+                                                      {RigChannelPath::scale, "scale"},
+                                                      {RigChannelPath::weights, "weights"}};
+constexpr EnumName<RigInterpolation> kInterpolations[] = {
+    {RigInterpolation::linear, "LINEAR"},
+    {RigInterpolation::step, "STEP"},
+    {RigInterpolation::cubic_spline, "CUBICSPLINE"}};
+
 RigInterpolation interpolation_of(const std::string& name, const std::string& path,
                                   const std::string& what) {
-    if (name == "LINEAR" || name.empty()) return RigInterpolation::linear;  // the default
-    if (name == "STEP") return RigInterpolation::step;
-    if (name == "CUBICSPLINE") return RigInterpolation::cubic_spline;
+    if (name.empty()) return RigInterpolation::linear;  // the default
+    if (const std::optional<RigInterpolation> known = value_of(kInterpolations, name))
+        return *known;
     bad(path, what + " has unknown interpolation '" + name + "'");
-}
-
-const char* path_name(RigChannelPath p) {
-    switch (p) {
-        case RigChannelPath::translation:
-            return "translation";
-        case RigChannelPath::rotation:
-            return "rotation";
-        case RigChannelPath::scale:
-            return "scale";
-        case RigChannelPath::weights:
-            return "weights";
-    }
-    return "";
-}
-
-// The paths of §3.11.1; anything else comes from an extension.
-std::optional<RigChannelPath> channel_path(const std::string& name) {
-    if (name == "translation") return RigChannelPath::translation;
-    if (name == "rotation") return RigChannelPath::rotation;
-    if (name == "scale") return RigChannelPath::scale;
-    if (name == "weights") return RigChannelPath::weights;
-    return std::nullopt;
 }
 
 // Channels may share a sampler when they read its output the same way:
@@ -231,7 +219,8 @@ RigAnimation read_animation(const tinygltf::Model& model, int index, const MeshR
     for (size_t c = 0; c < anim.channels.size(); ++c) {
         const tinygltf::AnimationChannel& ch = anim.channels[c];
         const std::string cw = what + " channel " + std::to_string(c);
-        const std::optional<RigChannelPath> known = channel_path(ch.target_path);
+        const std::optional<RigChannelPath> known =
+            value_of(kChannelPaths, ch.target_path);  // else an extension's
         // §3.11.1: without a node the target is defined by an extension;
         // other paths come from extensions too. Neither moves a mesh here.
         if (ch.target_node < 0 || !known) {
@@ -246,7 +235,8 @@ RigAnimation read_animation(const tinygltf::Model& model, int index, const MeshR
             bad(path, cw + " refers to missing sampler " + std::to_string(ch.sampler));
         RigChannel channel{ch.target_node, *known, ch.sampler};
         const RigNode& node = rig.nodes[channel.node];
-        const std::string target = node_name(channel.node) + " " + path_name(channel.path);
+        const std::string target =
+            node_name(channel.node) + " " + std::string(name_of(kChannelPaths, channel.path));
         if (!targets.insert({channel.node, channel.path}).second)
             bad(path, cw + ": " + target + " is animated twice");
         if (channel.path != RigChannelPath::weights && node.has_matrix)

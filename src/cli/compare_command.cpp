@@ -130,10 +130,7 @@ int run_comparison(const CompareArgs& args, const CompareThresholds& thresholds,
                    const std::optional<std::set<std::pair<std::string, int>>>& only) {
     std::optional<UpdateMode> mode;
     if (!args.update_reference.empty()) {
-        mode = update_mode_from_name(args.update_reference);
-        if (!mode)
-            fail_input(command_line("--update-reference " + args.update_reference), "",
-                       "expected failed, missing or all");
+        mode = parse_choice(args.update_reference, "--update-reference", kUpdateModes);
         std::error_code ec;
         if (!std::filesystem::is_directory(args.candidate, ec))
             fail_input(command_line("--update-reference"), "",

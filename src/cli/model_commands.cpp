@@ -61,11 +61,8 @@ TurntableOptions turntable_options(const TurntableArgs& args) {
     options.elevation = args.elevation;
     options.background = args.background;
     options.environment = args.environment;
-    if (!args.ground.empty())
-        options.ground =
-            value_of(kGroundKinds, parse_word(args.ground, "--ground", names_of(kGroundKinds)));
-    if (!args.up.empty())
-        options.up = value_of(kUpAxes, parse_word(args.up, "--up", names_of(kUpAxes)));
+    if (!args.ground.empty()) options.ground = parse_choice(args.ground, "--ground", kGroundKinds);
+    if (!args.up.empty()) options.up = parse_choice(args.up, "--up", kUpAxes);
     return options;
 }
 

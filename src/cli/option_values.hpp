@@ -13,6 +13,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/enum_names.hpp"
 #include "core/error.hpp"
 
 namespace facet {
@@ -44,6 +45,13 @@ std::pair<int, int> parse_size(std::string_view text, const std::string& option)
 // or none, got 'flor'; did you mean 'floor'?".
 std::string parse_word(std::string_view text, const std::string& option,
                        std::span<const std::string_view> words);
+
+// The value whose name `text` is, from the enum's one table; else the error
+// parse_word gives.
+template <typename E, size_t N>
+E parse_choice(std::string_view text, const std::string& option, const EnumName<E> (&table)[N]) {
+    return *value_of(table, parse_word(text, option, names_of(table)));
+}
 
 // Comma-separated items, each kept as typed (names may hold spaces):
 // "front,side" -> {"front", "side"}. "" is the option not given: no items.

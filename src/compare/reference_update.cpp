@@ -37,13 +37,6 @@ std::string manifest_path(const std::string& dir) {
 
 }  // namespace
 
-std::optional<UpdateMode> update_mode_from_name(std::string_view name) {
-    if (name == "failed") return UpdateMode::failed;
-    if (name == "missing") return UpdateMode::missing;
-    if (name == "all") return UpdateMode::all;
-    return std::nullopt;
-}
-
 void prepare_reference_folder(const std::string& ref_dir, const std::string& new_dir) {
     std::error_code ec;
     if (fs::is_regular_file(manifest_path(ref_dir), ec)) return;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "compare/compare_run.hpp"
+#include "core/enum_names.hpp"
 
 namespace facet {
 
@@ -16,7 +17,8 @@ enum class UpdateMode {
     missing,  // files NEW has and the reference lacks
     all,      // every file of NEW (reference files NEW lacks are kept)
 };
-std::optional<UpdateMode> update_mode_from_name(std::string_view name);
+inline constexpr EnumName<UpdateMode> kUpdateModes[] = {
+    {UpdateMode::failed, "failed"}, {UpdateMode::missing, "missing"}, {UpdateMode::all, "all"}};
 
 struct UpdateResult {
     std::vector<std::string> written;  // labels of the files written

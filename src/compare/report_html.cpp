@@ -101,9 +101,9 @@ std::string thresholds_table(const CompareThresholds& t) {
     std::string html = "<h2>Thresholds</h2>\n<table><tr><th>kind</th>";
     for (std::string_view key : kToleranceKeys) html += "<th>" + std::string(key) + "</th>";
     html += "</tr>\n";
-    for (ImageKind kind : kAllImageKinds) {
+    for (const auto& [kind, name] : kImageKinds) {
         const Tolerance& v = t.defaults.at(kind);
-        html += "<tr><td>" + std::string(image_kind_name(kind)) + "</td>";
+        html += "<tr><td>" + std::string(name) + "</td>";
         for (double value : {v.warn, v.fail, v.warn_percent, v.fail_percent,
                              static_cast<double>(v.allowed_failures), v.hard_fail, v.relative,
                              static_cast<double>(v.position), v.ssim_min, v.floor})

@@ -85,8 +85,8 @@ std::string report_json(const CompareReport& report) {
     j["counts"] = Json::object();
     for (const auto& [name, count] : named_counts(report.counts)) j["counts"][name] = count;
     Json thresholds = Json::object();
-    for (ImageKind kind : kAllImageKinds)
-        thresholds[image_kind_name(kind)] = tolerance_json(report.thresholds.defaults.at(kind));
+    for (const auto& [kind, name] : kImageKinds)
+        thresholds[std::string(name)] = tolerance_json(report.thresholds.defaults.at(kind));
     Json cameras = Json::object();
     for (const auto& [camera, kinds] : report.thresholds.cameras)
         for (const auto& [kind, values] : kinds)

@@ -7,32 +7,6 @@
 
 namespace facet {
 
-const char* image_kind_name(ImageKind kind) {
-    switch (kind) {
-        case ImageKind::color:
-            return "color";
-        case ImageKind::color_float:
-            return "color_float";
-        case ImageKind::alpha:
-            return "alpha";
-        case ImageKind::depth:
-            return "depth";
-        case ImageKind::normal:
-            return "normal";
-        case ImageKind::id:
-            return "id";
-        case ImageKind::float_data:
-            return "float";
-    }
-    return "?";
-}
-
-std::optional<ImageKind> image_kind_from_name(std::string_view name) {
-    for (ImageKind kind : kAllImageKinds)
-        if (name == image_kind_name(kind)) return kind;
-    return std::nullopt;
-}
-
 std::string set_tolerance_value(Tolerance& t, std::string_view key, double value) {
     if (!std::isfinite(value) || value < 0)
         return "expected a number of at least 0, got " + std::to_string(value);
@@ -137,12 +111,14 @@ std::string apply_threshold_override(CompareThresholds& thresholds, std::string_
         camera = std::string(head.substr(0, dot));
         head = head.substr(dot + 1);
     }
-    const auto kind = image_kind_from_name(head);
+    const std::optional<ImageKind> kind = value_of(kImageKinds, head);
     if (!kind) {
-        std::vector<std::string_view> names;
-        for (ImageKind k : kAllImageKinds) names.push_back(image_kind_name(k));
+        const std::vector<std::string_view> names = names_of(kImageKinds);
+        std::string known;
+        for (std::string_view name : names)
+            known += (known.empty() ? "" : ", ") + std::string(name);
         return "unknown kind '" + std::string(head) + "'" + did_you_mean(head, names) +
-               " (known: color, color_float, alpha, depth, normal, id, float)";
+               " (known: " + known + ")";
     }
     const std::optional<double> number = read_finite_number(value_text);
     if (!number) return "expected a number, got '" + std::string(value_text) + "'";

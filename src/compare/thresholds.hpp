@@ -11,6 +11,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/enum_names.hpp"
+
 namespace facet {
 
 // How a pair of files is judged. The kind follows from the manifest's pass
@@ -24,12 +26,16 @@ enum class ImageKind {
     id,           // object or material ids: exact
     float_data,   // uv, position, motion and other float data: absolute + relative
 };
-const char* image_kind_name(
-    ImageKind kind);  // "color", "color_float", ... ("float" for float_data)
-std::optional<ImageKind> image_kind_from_name(std::string_view name);
-inline constexpr ImageKind kAllImageKinds[] = {
-    ImageKind::color,  ImageKind::color_float, ImageKind::alpha,     ImageKind::depth,
-    ImageKind::normal, ImageKind::id,          ImageKind::float_data};
+// The kinds' names, as thresholds files, `--threshold` and reports write them.
+inline constexpr EnumName<ImageKind> kImageKinds[] = {
+    {ImageKind::color, "color"},     {ImageKind::color_float, "color_float"},
+    {ImageKind::alpha, "alpha"},     {ImageKind::depth, "depth"},
+    {ImageKind::normal, "normal"},   {ImageKind::id, "id"},
+    {ImageKind::float_data, "float"}};
+// The table's literal, for messages built with +.
+inline const char* image_kind_name(ImageKind kind) {
+    return name_of(kImageKinds, kind).data();
+}
 
 // One kind's limits. A sample's difference is measured in the kind's unit
 // (colour 0..1, EXR colour relative, depth and float data in scene units,

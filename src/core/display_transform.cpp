@@ -288,30 +288,6 @@ glm::vec3 tone(glm::vec3 c, Tonemap tonemap) {
 
 }  // namespace
 
-Tonemap tonemap_from_name(std::string_view name) {
-    if (name == "aces") return Tonemap::aces;
-    if (name == "filmic") return Tonemap::filmic;
-    if (name == "neutral") return Tonemap::neutral;
-    if (name == "agx") return Tonemap::agx;
-    return Tonemap::none;
-}
-
-const char* tonemap_name(Tonemap tonemap) {
-    switch (tonemap) {
-        case Tonemap::aces:
-            return "aces";
-        case Tonemap::filmic:
-            return "filmic";
-        case Tonemap::neutral:
-            return "neutral";
-        case Tonemap::agx:
-            return "agx";
-        case Tonemap::none:
-            break;
-    }
-    return "none";
-}
-
 float exposure_gain(const DisplayTransform& transform) {
     // exp2 of a whole number of stops is exact, so +1 doubles exactly.
     return std::exp2(transform.exposure);

@@ -6,6 +6,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "core/enum_names.hpp"
 #include "core/half.hpp"
 #include "core/image.hpp"
 
@@ -20,9 +21,12 @@ struct DisplayTransform {
     bool is_identity() const { return exposure == 0 && tonemap == Tonemap::none; }
 };
 
-// "none", "aces", "filmic", "neutral", "agx"; the parser checks the name first.
-Tonemap tonemap_from_name(std::string_view name);
-const char* tonemap_name(Tonemap tonemap);
+// The curves' names, as scenes and manifests write them.
+inline constexpr EnumName<Tonemap> kTonemaps[] = {{Tonemap::none, "none"},
+                                                  {Tonemap::aces, "aces"},
+                                                  {Tonemap::filmic, "filmic"},
+                                                  {Tonemap::neutral, "neutral"},
+                                                  {Tonemap::agx, "agx"}};
 
 // One premultiplied linear colour, exposed and tone-mapped; alpha kept.
 // The curve applies to the straight colour, so a half-covered edge pixel

@@ -254,7 +254,10 @@ Manifest parse_manifest(const std::string& text, const std::string& where) {
         m.fps = j.value("fps", 24.0);
         if (j.contains("display")) {
             m.display.exposure = j["display"].value("exposure", 0.0f);
-            m.display.tonemap = tonemap_from_name(j["display"].value("tonemap", "none"));
+            const std::string tonemap = j["display"].value("tonemap", "none");
+            const std::optional<Tonemap> curve = value_of(kTonemaps, tonemap);
+            if (!curve) invalid("tonemap '" + text_for_message(tonemap) + "' is not one facet has");
+            m.display.tonemap = *curve;
         }
         for (const auto& o : j.value("overrides", nlohmann::json::array()))
             m.overrides.push_back({o.at("key").get<std::string>(), o.at("value").get<std::string>(),
@@ -382,7 +385,7 @@ std::string manifest_json(Manifest manifest, bool indented) {
     j["size"] = {manifest.width, manifest.height};
     j["fps"] = manifest.fps;
     j["display"] = {{"exposure", manifest.display.exposure},
-                    {"tonemap", tonemap_name(manifest.display.tonemap)}};
+                    {"tonemap", name_of(kTonemaps, manifest.display.tonemap)}};
     j["output_template"] = manifest.output_template;
     j["overrides"] = Json::array();
     for (const ManifestOverride& o : manifest.overrides)

@@ -13,10 +13,6 @@
 namespace facet {
 namespace {
 
-constexpr Placeholder kAllPlaceholders[] = {Placeholder::scene, Placeholder::camera,
-                                            Placeholder::pass,  Placeholder::frame,
-                                            Placeholder::ext,   Placeholder::variant};
-
 // Wider frame numbers than this are not padding but a typo.
 constexpr int kMaxFramePadding = 9;
 
@@ -39,20 +35,16 @@ std::string quoted(std::string_view text) {
 
 std::string known_placeholders() {
     std::string list;
-    for (Placeholder p : kAllPlaceholders) {
+    for (const auto& [placeholder, name] : kPlaceholders) {
         if (!list.empty()) list += ", ";
-        list += '{';
-        list += placeholder_name(p);
-        list += '}';
+        list += '{' + std::string(name) + '}';
     }
     return list + ", {frame:06}, ####";
 }
 
 // The known placeholder the user probably meant, or "" if none is close.
 std::string closest_placeholder(const std::string& typed) {
-    std::vector<std::string_view> names;
-    for (Placeholder p : kAllPlaceholders) names.push_back(placeholder_name(p));
-    return closest_name(typed, names);
+    return closest_name(typed, names_of(kPlaceholders));
 }
 
 [[noreturn]] void fail_unknown_placeholder(const std::string& text, const std::string& name) {
@@ -85,14 +77,12 @@ TemplateSegment parse_placeholder(const std::string& text, const std::string& in
     const std::string whole = "{" + inside + "}";
     size_t colon = inside.find(':');
     std::string name = inside.substr(0, colon);
-    for (Placeholder p : kAllPlaceholders) {
-        if (name != placeholder_name(p)) continue;
-        if (colon == std::string::npos) return placeholder_segment(p, kDefaultFramePadding);
-        if (p != Placeholder::frame)
-            fail(text, "'" + whole + "' has a padding width, but only {frame} takes one");
-        return placeholder_segment(p, parse_frame_padding(text, inside.substr(colon + 1), whole));
-    }
-    fail_unknown_placeholder(text, name);
+    const std::optional<Placeholder> p = value_of(kPlaceholders, name);
+    if (!p) fail_unknown_placeholder(text, name);
+    if (colon == std::string::npos) return placeholder_segment(*p, kDefaultFramePadding);
+    if (*p != Placeholder::frame)
+        fail(text, "'" + whole + "' has a padding width, but only {frame} takes one");
+    return placeholder_segment(*p, parse_frame_padding(text, inside.substr(colon + 1), whole));
 }
 
 using Component = std::vector<const TemplateSegment*>;
@@ -180,8 +170,8 @@ void append_segment(std::string& out, const TemplateSegment& segment,
     const std::string& value = field_value(segment.placeholder, fields);
     // A '/' from a value would add directories the template does not have.
     if (value.find('/') != std::string::npos)
-        fail(text, std::string("{") + placeholder_name(segment.placeholder) + "} is '" + value +
-                       "', which contains '/'; rename it");
+        fail(text, "{" + std::string(name_of(kPlaceholders, segment.placeholder)) + "} is '" +
+                       value + "', which contains '/'; rename it");
     out += value;
 }
 
@@ -208,24 +198,6 @@ std::string describe(int frame, const std::string& camera, const std::string& pa
 }
 
 }  // namespace
-
-const char* placeholder_name(Placeholder placeholder) {
-    switch (placeholder) {
-        case Placeholder::scene:
-            return "scene";
-        case Placeholder::camera:
-            return "camera";
-        case Placeholder::pass:
-            return "pass";
-        case Placeholder::frame:
-            return "frame";
-        case Placeholder::ext:
-            return "ext";
-        case Placeholder::variant:
-            return "variant";
-    }
-    return "?";
-}
 
 bool OutputTemplate::uses(Placeholder placeholder) const {
     return std::any_of(segments.begin(), segments.end(), [&](const TemplateSegment& segment) {

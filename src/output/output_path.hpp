@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/enum_names.hpp"
+
 namespace facet {
 
 // The default reproduces the names facet has always written: <scene>/color.0001.png.
@@ -22,8 +24,11 @@ inline constexpr int kDefaultFramePadding = 4;
 
 enum class Placeholder { scene, camera, pass, frame, ext, variant };
 
-// "scene", "camera", ... as written between braces.
-const char* placeholder_name(Placeholder placeholder);
+// The names written between braces.
+inline constexpr EnumName<Placeholder> kPlaceholders[] = {
+    {Placeholder::scene, "scene"}, {Placeholder::camera, "camera"},
+    {Placeholder::pass, "pass"},   {Placeholder::frame, "frame"},
+    {Placeholder::ext, "ext"},     {Placeholder::variant, "variant"}};
 
 struct TemplateSegment {
     enum class Kind {

@@ -9,6 +9,9 @@
 namespace facet {
 namespace {
 
+constexpr EnumName<Wrap> kWraps[] = {
+    {Wrap::repeat, "repeat"}, {Wrap::clamp, "clamp"}, {Wrap::mirror, "mirror"}};
+
 // A map's file, where the scene names it and its key.
 MaterialDesc::Map map_of(const Field& f, const std::string& base_dir) {
     return {existing_file(f, base_dir), f.where(), f.path()};
@@ -124,11 +127,7 @@ MaterialDesc parse_material(const Field& f, const std::string& base_dir) {
     if (auto v = coefficient("specular", "ks")) m.specular = v->animated_number(0, 1000);
     if (f.has("shininess")) m.shininess = f["shininess"].animated_number(0, 100000);
     if (f.has("texture")) m.texture = map_of(f["texture"], base_dir);
-    if (f.has("wrap"))
-        m.wrap =
-            std::map<std::string, Wrap>{
-                {"repeat", Wrap::repeat}, {"clamp", Wrap::clamp}, {"mirror", Wrap::mirror}}
-                .at(f["wrap"].choice({"repeat", "clamp", "mirror"}));
+    if (f.has("wrap")) m.wrap = f["wrap"].choice_of(kWraps);
     if (f.has("uv_scale")) {
         Field s = f["uv_scale"];
         m.uv_scale = s.is_scalar() ? glm::vec2(static_cast<float>(s.number(-1e6, 1e6))) : s.vec2();

@@ -11,6 +11,9 @@
 namespace facet {
 namespace {
 
+constexpr EnumName<TextureFilter> kTextureFilters[] = {{TextureFilter::anisotropic, "anisotropic"},
+                                                       {TextureFilter::trilinear, "trilinear"}};
+
 PassSet parse_passes(const Field& f) {
     const std::vector<std::string_view> names(kPassNames.begin(), kPassNames.end());
     PassSet passes;
@@ -109,9 +112,7 @@ OutputDesc parse_output(const Field& f) {
     }
     check_pass_formats(f, out);
     if (f.has("texture_filter"))
-        out.texture_filter = f["texture_filter"].choice({"anisotropic", "trilinear"}) == "trilinear"
-                                 ? TextureFilter::trilinear
-                                 : TextureFilter::anisotropic;
+        out.texture_filter = f["texture_filter"].choice_of(kTextureFilters);
     if (f.has("normals"))
         out.normals_in_camera_space = f["normals"].choice({"world", "camera"}) == "camera";
     if (f.has("exr"))
@@ -127,9 +128,7 @@ OutputDesc parse_output(const Field& f) {
                               std::to_string(kMaxImageSide) + " on a side");
     }
     if (f.has("exposure")) out.display.exposure = static_cast<float>(f["exposure"].number(-20, 20));
-    if (f.has("tonemap"))
-        out.display.tonemap =
-            tonemap_from_name(f["tonemap"].choice({"none", "aces", "filmic", "neutral", "agx"}));
+    if (f.has("tonemap")) out.display.tonemap = f["tonemap"].choice_of(kTonemaps);
     if (f.has("png_compression")) out.png_compression = f["png_compression"].integer(0, 9);
     if (f.has("exr_compression")) out.exr_compression = parse_exr_compression(f["exr_compression"]);
     if (f.has("depth_range")) out.depth_range = f["depth_range"].distance_range();

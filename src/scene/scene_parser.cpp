@@ -26,6 +26,9 @@ OutputDesc parse_output(const Field& f);                         // output_parse
 
 namespace {
 
+constexpr EnumName<FramingFit> kFramingFits[] = {
+    {FramingFit::sphere, "sphere"}, {FramingFit::box, "box"}, {FramingFit::geometry, "geometry"}};
+
 glm::vec3 nonzero_direction(const Field& field) {
     glm::vec3 v = field.vec3();
     if (v.x == 0 && v.y == 0 && v.z == 0) field.fail("direction must not be [0, 0, 0]");
@@ -113,12 +116,7 @@ FramingDesc parse_framing(const Field& f) {
     f.check_keys({"objects", "margin", "fit"});
     if (f.has("objects")) add_names(f["objects"]);
     if (f.has("margin")) framing.margin = static_cast<float>(f["margin"].number(0, 10));
-    if (f.has("fit")) {
-        const std::string fit = f["fit"].choice({"sphere", "box", "geometry"});
-        framing.fit = fit == "box"        ? FramingFit::box
-                      : fit == "geometry" ? FramingFit::geometry
-                                          : FramingFit::sphere;
-    }
+    if (f.has("fit")) framing.fit = f["fit"].choice_of(kFramingFits);
     return framing;
 }
 

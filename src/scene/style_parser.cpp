@@ -24,6 +24,13 @@ namespace {
 constexpr size_t kMaxExtendsDepth = 16;
 
 // Each model's name in style files; also what `facet validate` prints.
+constexpr EnumName<HatchSpace> kHatchSpaces[] = {
+    {HatchSpace::object, "object"}, {HatchSpace::uv, "uv"}, {HatchSpace::screen, "screen"}};
+constexpr EnumName<HatchDirection> kHatchDirections[] = {{HatchDirection::curvature, "curvature"},
+                                                         {HatchDirection::uv, "uv"},
+                                                         {HatchDirection::axis, "axis"},
+                                                         {HatchDirection::fixed, "fixed"}};
+
 constexpr EnumName<ShadingModel> kShadingNames[] = {
     {ShadingModel::flat, "flat"},     {ShadingModel::gouraud, "gouraud"},
     {ShadingModel::phong, "phong"},   {ShadingModel::blinn_phong, "blinn_phong"},
@@ -95,17 +102,10 @@ void apply_hatching(const Field& f, std::optional<HatchingDesc>& hatching) {
     if (f.has("scale")) h.scale = static_cast<float>(f["scale"].number(0.01, 1000));
     if (f.has("tile_pixels")) h.tile_pixels = static_cast<float>(f["tile_pixels"].number(4, 4096));
     if (f.has("space")) {
-        const std::string space = f["space"].choice({"object", "uv", "screen"});
-        h.space = space == "object" ? HatchSpace::object
-                  : space == "uv"   ? HatchSpace::uv
-                                    : HatchSpace::screen;
+        h.space = f["space"].choice_of(kHatchSpaces);
     }
     if (f.has("direction")) {
-        const std::string d = f["direction"].choice({"curvature", "uv", "axis", "fixed"});
-        h.direction = d == "curvature" ? HatchDirection::curvature
-                      : d == "uv"      ? HatchDirection::uv
-                      : d == "axis"    ? HatchDirection::axis
-                                       : HatchDirection::fixed;
+        h.direction = f["direction"].choice_of(kHatchDirections);
     }
     if (f.has("axis")) {
         h.axis = f["axis"].vec3();

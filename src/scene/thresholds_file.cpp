@@ -7,8 +7,12 @@
 namespace facet {
 namespace {
 
-constexpr std::initializer_list<const char*> kKindNames = {
-    "color", "color_float", "alpha", "depth", "normal", "id", "float"};
+// The kinds' names as keys (the table's literals end in '\0').
+std::vector<const char*> kind_keys() {
+    std::vector<const char*> keys;
+    for (const auto& [kind, name] : kImageKinds) keys.push_back(name.data());
+    return keys;
+}
 
 // One kind's mapping: `apply(key, value)` per entry, after range checks.
 template <typename Apply>
@@ -48,7 +52,7 @@ CompareMask read_mask(const Field& field, const std::string& folder) {
             image.fail("no such mask image: " + mask.image);
     }
     if (field.has("camera")) mask.camera = field["camera"].text();
-    if (field.has("kind")) mask.kind = image_kind_from_name(field["kind"].choice(kKindNames));
+    if (field.has("kind")) mask.kind = field["kind"].choice_of(kImageKinds);
     return mask;
 }
 
@@ -60,13 +64,14 @@ CompareThresholds load_thresholds_file(const std::string& path) {
     const Field root = root_field(doc);
     if (root.is_null()) return thresholds;
     root.expect_map();
-    root.check_keys({"version", "cameras", "masks", "diff_scale", "color", "color_float", "alpha",
-                     "depth", "normal", "id", "float"});
+    std::vector<const char*> keys = {"version", "cameras", "masks", "diff_scale"};
+    for (const char* kind : kind_keys()) keys.push_back(kind);
+    root.check_keys(keys);
     if (root.has("version")) root["version"].integer(1, 1);
-    for (const char* name : kKindNames)
-        if (root.has(name)) {
-            Tolerance& target = thresholds.defaults.at(*image_kind_from_name(name));
-            read_tolerance(root[name], [&](const std::string& key, double value) {
+    for (const auto& [kind, name] : kImageKinds)
+        if (root.has(std::string(name))) {
+            Tolerance& target = thresholds.defaults.at(kind);
+            read_tolerance(root[std::string(name)], [&](const std::string& key, double value) {
                 set_tolerance_value(target, key, value);
             });
         }
@@ -76,9 +81,9 @@ CompareThresholds load_thresholds_file(const std::string& path) {
         for (const std::string& camera : cameras.keys()) {
             const Field kinds = cameras[camera];
             kinds.expect_map();
-            kinds.check_keys(kKindNames);
+            kinds.check_keys(kind_keys());
             for (const std::string& name : kinds.keys()) {
-                auto& values = thresholds.cameras[camera][*image_kind_from_name(name)];
+                auto& values = thresholds.cameras[camera][*value_of(kImageKinds, name)];
                 read_tolerance(kinds[name],
                                [&](const std::string& key, double value) { values[key] = value; });
             }

@@ -16,24 +16,17 @@ constexpr double kMaxKeyTime = 1e7;
 
 using ValueReader = std::function<glm::dvec4(const Field&)>;
 
-TrackInterpolation parse_interpolation(const Field& f) {
-    std::string name =
-        f.choice({"step", "linear", "smooth", "ease_in", "ease_out", "ease_in_out", "bezier"});
-    if (name == "step") return TrackInterpolation::step;
-    if (name == "smooth") return TrackInterpolation::smooth;
-    if (name == "ease_in") return TrackInterpolation::ease_in;
-    if (name == "ease_out") return TrackInterpolation::ease_out;
-    if (name == "ease_in_out") return TrackInterpolation::ease_in_out;
-    if (name == "bezier") return TrackInterpolation::bezier;
-    return TrackInterpolation::linear;
-}
-
-TrackExtrapolation parse_extrapolation(const Field& f) {
-    std::string name = f.choice({"hold", "cycle", "linear"});
-    if (name == "cycle") return TrackExtrapolation::cycle;
-    if (name == "linear") return TrackExtrapolation::linear;
-    return TrackExtrapolation::hold;
-}
+constexpr EnumName<TrackInterpolation> kInterpolations[] = {
+    {TrackInterpolation::step, "step"},         {TrackInterpolation::linear, "linear"},
+    {TrackInterpolation::smooth, "smooth"},     {TrackInterpolation::ease_in, "ease_in"},
+    {TrackInterpolation::ease_out, "ease_out"}, {TrackInterpolation::ease_in_out, "ease_in_out"},
+    {TrackInterpolation::bezier, "bezier"}};
+constexpr EnumName<TrackExtrapolation> kExtrapolations[] = {{TrackExtrapolation::hold, "hold"},
+                                                            {TrackExtrapolation::cycle, "cycle"},
+                                                            {TrackExtrapolation::linear, "linear"}};
+constexpr EnumName<RotationPath> kRotationPaths[] = {{RotationPath::automatic, "auto"},
+                                                     {RotationPath::shortest, "shortest"},
+                                                     {RotationPath::angles, "angles"}};
 
 double parse_key_time(const Field& key, bool seconds) {
     const std::string text = key.text();
@@ -85,7 +78,8 @@ std::shared_ptr<const Track> parse_track(const Field& f, int components, const V
         track->at.push_back(k.at.where());
     }
 
-    if (f.has("interpolation")) track->interpolation = parse_interpolation(f["interpolation"]);
+    if (f.has("interpolation"))
+        track->interpolation = f["interpolation"].choice_of(kInterpolations);
     if (f.has("bezier")) {
         if (track->interpolation != TrackInterpolation::bezier)
             f["bezier"].fail("bezier handles need `interpolation: bezier`");
@@ -102,17 +96,13 @@ std::shared_ptr<const Track> parse_track(const Field& f, int components, const V
         Field e = f["extrapolation"];
         if (e.is_map()) {
             e.check_keys({"before", "after"});
-            if (e.has("before")) track->before = parse_extrapolation(e["before"]);
-            if (e.has("after")) track->after = parse_extrapolation(e["after"]);
+            if (e.has("before")) track->before = e["before"].choice_of(kExtrapolations);
+            if (e.has("after")) track->after = e["after"].choice_of(kExtrapolations);
         } else {
-            track->before = track->after = parse_extrapolation(e);
+            track->before = track->after = e.choice_of(kExtrapolations);
         }
     }
-    if (rotation && f.has("rotation"))
-        track->rotation = f["rotation"].choice({"auto", "shortest", "angles"}) == "angles"
-                              ? RotationPath::angles
-                          : f["rotation"].text() == "shortest" ? RotationPath::shortest
-                                                               : RotationPath::automatic;
+    if (rotation && f.has("rotation")) track->rotation = f["rotation"].choice_of(kRotationPaths);
     return track;
 }
 

@@ -5,6 +5,7 @@
 #include <initializer_list>
 #include <map>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
+#include "core/enum_names.hpp"
 #include "core/error.hpp"
 #include "scene/animated.hpp"
 
@@ -80,6 +82,14 @@ class Field {
     glm::vec4 background() const;      // a color4, or `transparent`: [0, 0, 0, 0]
     // One of the given words.
     std::string choice(std::initializer_list<const char*> words) const;
+    // The value whose name the text is, from the enum's one table
+    // (core/enum_names.hpp).
+    template <typename E, size_t N>
+    E choice_of(const EnumName<E> (&table)[N]) const {
+        const std::string value = text();
+        if (const std::optional<E> named = value_of(table, value)) return *named;
+        fail_not_one_of(value, names_of(table));
+    }
     // "got 'x'; did you mean 'y'? (one of: ...)": the one message for a
     // word outside its set.
     [[noreturn]] void fail_not_one_of(const std::string& value,
