@@ -80,7 +80,8 @@ TEST_CASE("scene metallic and roughness follow their keys from frame to frame", 
                                            "{ metallic: { keys: { 1: 0, 11: 1 } }, "
                                            "roughness: { keys: { 1: 0.2, 11: 0.8 } } }")));
     const World world = build_world(scene);
-    FrameEvaluator evaluator(scene, world, 1);
+    const StylePlan plan = plan_styles(scene);
+    FrameEvaluator evaluator(scene, world, plan, 1);
     const uint32_t box = world.draws.at(0).material;
     // Linear keys (the default): halfway at frame 6.
     struct Expected {

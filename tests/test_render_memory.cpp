@@ -40,7 +40,9 @@ uint64_t estimate(const std::string& path) {
     const facet::SceneDesc scene = facet::test::load(path);
     const facet::World world = facet::build_world(scene);
     uint64_t total = 0;
-    for (const auto& [part, bytes] : facet::render_memory(scene, world, 2)) total += bytes;
+    for (const auto& [part, bytes] :
+         facet::render_memory(scene, world, facet::plan_render(scene, world), 2))
+        total += bytes;
     return total;
 }
 

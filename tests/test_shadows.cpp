@@ -378,7 +378,8 @@ ShadowMap floating_cube_shadow_map(const std::string& light, bool floor_casts = 
     ThreadPool pool(2);
     const FrameState state = evaluate_frame(scene, world.object_bounds, 1);
     PoseStage pose(scene, world);
-    ShadowStage stage(scene, world, plan_styles(scene));
+    const RenderPlan plan = plan_render(scene, world);
+    ShadowStage stage(scene, world, plan.transmitting);
     const std::span<const ShadowMap* const> maps = stage.render(state, pose.pose(state), pool);
     REQUIRE(maps.size() == 1);
     REQUIRE(maps[0] != nullptr);

@@ -173,8 +173,8 @@ objects:
 )");
     const SceneDesc scene = test::load(path);
     const World world = build_world(scene);
-    FrameEvaluator evaluator(scene, world, 1);
-    const StylePlan& plan = evaluator.plan();
+    const StylePlan plan = plan_styles(scene);
+    FrameEvaluator evaluator(scene, world, plan, 1);
     REQUIRE(plan.styles.size() == 2);
     CHECK(plan.object_style == std::vector<uint32_t>{0, 1});
     CHECK_FALSE(plan.outlines);

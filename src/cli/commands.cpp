@@ -132,8 +132,9 @@ CheckedRun check_render_inputs(const RenderCheck& check) {
             if (is_new(w)) std::fprintf(stderr, "facet: warning: %s\n", w.describe().c_str());
     refuse_warnings(check.args.strict, warnings);
     const unsigned threads = check.options.threads == 0 ? available_cores() : check.options.threads;
-    check_render_memory(check.scene, world, threads);
-    return {std::move(plan), std::move(world)};
+    RenderPlan render_plan = plan_render(check.scene, world);
+    check_render_memory(check.scene, world, render_plan, threads);
+    return {std::move(plan), std::move(world), std::move(render_plan)};
 }
 
 namespace {
@@ -263,7 +264,7 @@ void check_single_run(const RenderArgs& args, bool compare, size_t runs) {
 // meshes read for it are let go.
 RenderResult render_run(const RenderArgs& args, const SceneDesc& scene, RenderOptions options,
                         LoadedMeshes& meshes, const Warnings& extra, Warnings& said, bool last) {
-    const CheckedRun run =
+    CheckedRun run =
         check_render_inputs({args, scene, options, &meshes, extra, !args.quiet, &said});
     const World& world = run.world;
     if (last) meshes.clear();  // the world holds what it uses
@@ -277,7 +278,8 @@ RenderResult render_run(const RenderArgs& args, const SceneDesc& scene, RenderOp
         progress.start(to_render, what + " to " + args.out);
     };
     RenderResult result = render_scene(
-        scene, world, options, run.plan, [&](const FrameProgress& p) { progress.frame_done(p); },
+        scene, world, options, run.plan, std::move(run.render_plan),
+        [&](const FrameProgress& p) { progress.frame_done(p); },
         [&](const FrameWritten& w) { progress.frame_written(w); });
     progress.finish();
     if (!args.quiet && !args.video_only)
@@ -375,8 +377,10 @@ int validate_command(const RenderArgs& args) {
         options.several_variants = runs.size() > 1;
         ValidateFacts facts;
         for (const SceneDesc& run : runs) {
-            const World world = check_render_inputs(
-                {args, run, options, &meshes, {}, !args.json && !args.quiet, &warnings}).world;
+            const World world =
+                check_render_inputs(
+                    {args, run, options, &meshes, {}, !args.json && !args.quiet, &warnings})
+                    .world;
             if (!run.variant.empty()) facts.variants.push_back(run.variant);
             facts.triangles = world.triangle_count();
             if (!args.json && !args.quiet) print_validation(run, world, options);

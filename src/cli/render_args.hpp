@@ -7,6 +7,7 @@
 #include "cli/compare_command.hpp"
 #include "cli/options.hpp"
 #include "job/render_job.hpp"
+#include "render/render_plan.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -111,6 +112,7 @@ struct RenderCheck {
 struct CheckedRun {
     JobPlan plan;
     World world;
+    RenderPlan render_plan;  // of the world, for the memory estimate and the frames
 };
 CheckedRun check_render_inputs(const RenderCheck& check);
 

@@ -260,8 +260,7 @@ JobPlan plan_job(const SceneDesc& scene, const RenderOptions& options) {
     plan.cameras = select_cameras(scene, options.cameras);
     plan.layout = plan_outputs(scene, plan.cameras, named_frames(scene, options), options.out_dir,
                                options.several_variants);
-    plan.output_dir =
-        (std::filesystem::path(options.out_dir) / plan.layout.manifest_dir).string();
+    plan.output_dir = (std::filesystem::path(options.out_dir) / plan.layout.manifest_dir).string();
     plan.ledger =
         ledger_request(scene, plan.layout, options, plan.output_dir, plan.frames, plan.cameras);
     check_manifest_claims(plan.ledger);
@@ -343,11 +342,12 @@ namespace {
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written) {
-    return render_scene(scene, world, options, plan_job(scene, options), on_frame, on_written);
+    return render_scene(scene, world, options, plan_job(scene, options), plan_render(scene, world),
+                        on_frame, on_written);
 }
 
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
-                          const JobPlan& plan,
+                          const JobPlan& plan, RenderPlan render_plan,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written) {
     const std::vector<int>& frames = plan.frames;
@@ -357,7 +357,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     result.output_dir = plan.output_dir;
     const LedgerRequest& request = plan.ledger;
     ThreadPool pool(options.threads);
-    check_render_memory(scene, world, static_cast<unsigned>(pool.size()));
+    check_render_memory(scene, world, render_plan, static_cast<unsigned>(pool.size()));
     make_directories(result.output_dir);
     RunLedger ledger(request);
     std::vector<std::pair<int, size_t>> todo;
@@ -367,7 +367,7 @@ RenderResult render_scene(const SceneDesc& scene, const World& world, const Rend
     result.images_skipped = kept.frames.size();
     if (options.on_plan) options.on_plan(todo.size(), result.images_skipped);
 
-    FrameRenderer renderer(scene, world, pool);
+    FrameRenderer renderer(scene, world, std::move(render_plan), pool);
     // Encoding a 1080p frame can take longer than rendering it, so with
     // more than one thread two frames are encoded at once.
     FrameEncoder encoder(scene, layout, encoder_workers(pool.size()), ledger, request.header.host,

@@ -10,6 +10,7 @@
 
 #include "job/output_layout.hpp"
 #include "output/run_ledger.hpp"
+#include "render/render_plan.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -127,12 +128,15 @@ JobPlan plan_job(const SceneDesc& scene, const RenderOptions& options);
 // paths under options.out_dir. For --dry-run and the farm's job files.
 std::vector<std::string> planned_files(const SceneDesc& scene, const JobPlan& plan);
 
+// `plan` and `render_plan` are the run's, made once: the render's memory
+// is checked, and its frames drawn, from them.
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
-                          const JobPlan& plan,
+                          const JobPlan& plan, RenderPlan render_plan,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written = nullptr);
 
-// The same, planning the job itself (tests, the bench, the preview).
+// The same, planning the job and the render itself (tests, the bench, the
+// preview).
 RenderResult render_scene(const SceneDesc& scene, const World& world, const RenderOptions& options,
                           const std::function<void(const FrameProgress&)>& on_frame,
                           const std::function<void(const FrameWritten&)>& on_written = nullptr);

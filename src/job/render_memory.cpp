@@ -87,14 +87,14 @@ uint64_t screen_space_bytes(const FrameTargets& targets, uint64_t pixels, uint64
 
 }  // namespace
 
-MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned threads) {
+MemoryParts render_memory(const SceneDesc& scene, const World& world, const RenderPlan& plan,
+                          unsigned threads) {
     const OutputDesc& out = scene.output;
     const uint64_t pixels = static_cast<uint64_t>(out.width) * out.height;
     const uint64_t side = static_cast<uint64_t>(out.samples_per_side());
     const uint64_t samples = pixels * side * side;
-    const StylePlan plan = plan_styles(scene);
-    const FrameTargets targets = plan_frame_targets(plan, out.passes);
-    const bool glass = !transmitting_triangles(world, plan).empty();
+    const FrameTargets& targets = plan.targets;
+    const bool glass = !plan.transmitting.empty();
     MemoryParts parts;
     parts.push_back(
         {"output images", pixels * output_pixel_bytes(out.passes) * frames_in_flight(threads)});
@@ -129,8 +129,9 @@ MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned t
     return parts;
 }
 
-void check_render_memory(const SceneDesc& scene, const World& world, unsigned threads) {
-    check_memory("rendering " + scene.path, render_memory(scene, world, threads),
+void check_render_memory(const SceneDesc& scene, const World& world, const RenderPlan& plan,
+                         unsigned threads) {
+    check_memory("rendering " + scene.path, render_memory(scene, world, plan, threads),
                  memory_available(),
                  "a smaller output.size or output.samples, or --threads 1 (fewer frames in "
                  "flight), needs less");

@@ -4,6 +4,7 @@
 // machine stops with an error naming the parts instead of meeting the
 // out-of-memory killer halfway through a sequence.
 #include "core/memory.hpp"
+#include "render/render_plan.hpp"
 #include "render/world.hpp"
 #include "scene/scene_desc.hpp"
 
@@ -12,10 +13,13 @@ namespace facet {
 // What rendering adds to the loaded world: frame buffers (output images in
 // flight, screen-space buffers: samples and G-buffer), per-triangle and per-vertex working
 // records, shadow maps.
-MemoryParts render_memory(const SceneDesc& scene, const World& world, unsigned threads);
+// `plan`: the run's (plan_render), which the frames are drawn from.
+MemoryParts render_memory(const SceneDesc& scene, const World& world, const RenderPlan& plan,
+                          unsigned threads);
 
 // Throws facet::Error (runtime_failure) when render_memory adds up to more
 // than memory_available().
-void check_render_memory(const SceneDesc& scene, const World& world, unsigned threads);
+void check_render_memory(const SceneDesc& scene, const World& world, const RenderPlan& plan,
+                         unsigned threads);
 
 }  // namespace facet

@@ -16,6 +16,7 @@
 #include "output/encoders.hpp"
 #include "render/frame_renderer.hpp"
 #include "render/framing_shapes.hpp"
+#include "render/render_plan.hpp"
 #include "render/world.hpp"
 
 namespace facet {
@@ -270,7 +271,7 @@ std::string PreviewWorker::load(const PreviewRequest& request) {
         }
         // As render does: a size or sample count the machine cannot hold is
         // an error to show, not a crash.
-        check_render_memory(*scene, *world, loaded.pool.size());
+        check_render_memory(*scene, *world, plan_render(*scene, *world), loaded.pool.size());
         loaded.renderers.clear();
         loaded.scene = scene;
         loaded.world = world;

@@ -96,11 +96,12 @@ glm::vec2 fit_depth_view_range(const World& world, const FrameState& state,
     return {near, far};
 }
 
-FrameEvaluator::FrameEvaluator(const SceneDesc& scene, const World& world, int samples_per_side)
+FrameEvaluator::FrameEvaluator(const SceneDesc& scene, const World& world, const StylePlan& plan,
+                               int samples_per_side)
     : scene_(scene),
       world_(world),
       samples_per_side_(samples_per_side),
-      plan_(plan_styles(scene)),
+      plan_(plan),
       framing_(framing_shapes(scene, world)) {}
 
 FrameInputs FrameEvaluator::evaluate(int frame, size_t camera_index) {

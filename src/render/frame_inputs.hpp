@@ -79,10 +79,10 @@ struct FrameInputs {
 // same across frames (tonal art maps), so evaluate() is not const.
 class FrameEvaluator {
   public:
-    // `samples_per_side` scales outline widths to the sample grid.
-    FrameEvaluator(const SceneDesc& scene, const World& world, int samples_per_side);
-
-    const StylePlan& plan() const { return plan_; }
+    // `samples_per_side` scales outline widths to the sample grid; `plan`
+    // (plan_styles of `scene`) must outlive the evaluator.
+    FrameEvaluator(const SceneDesc& scene, const World& world, const StylePlan& plan,
+                   int samples_per_side);
 
     FrameInputs evaluate(int frame, size_t camera_index);
 
@@ -90,7 +90,7 @@ class FrameEvaluator {
     const SceneDesc& scene_;
     const World& world_;
     int samples_per_side_;
-    StylePlan plan_;
+    const StylePlan& plan_;
     TamCache tams_;
     std::vector<FramingShape> framing_;  // render/framing_shapes.hpp
 };

@@ -1,5 +1,7 @@
 #include "render/frame_renderer.hpp"
 
+#include <utility>
+
 #include "post/resolve.hpp"
 #include "render/alpha_coverage.hpp"
 #include "render/crossing_stage.hpp"
@@ -42,33 +44,33 @@ struct FrameRenderer::FrameLights {
 
 FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool,
                              ShadingPaths paths)
+    : FrameRenderer(scene, world, plan_render(scene, world), pool, paths) {}
+
+FrameRenderer::FrameRenderer(const SceneDesc& scene, const World& world, RenderPlan plan,
+                             ThreadPool& pool, ShadingPaths paths)
     : scene_(scene),
       world_(world),
       pool_(pool),
       paths_(paths),
       side_(scene.output.samples_per_side()),
-      evaluator_(scene, world, side_),
-      targets_(plan_frame_targets(evaluator_.plan(), scene.output.passes)),
+      plan_(std::move(plan)),
+      evaluator_(scene, world, plan_.styles, side_),
       pose_(scene, world),
-      shadows_(scene, world, evaluator_.plan()),
+      shadows_(scene, world, plan_.transmitting),
       vertices_(world),
       // Tiles hold whole pixels of the k x k sample grid.
       rasterizer_(scene.output.width * side_, scene.output.height * side_,
                   kTileSize - kTileSize % side_),
       feature_edges_(world),
       hidden_edges_(world),
-      glass_(world, evaluator_.plan()),
-      coverage_tested_(coverage_tested_triangles(world)) {
-    const std::vector<uint8_t>& glass = glass_.transmitting();
-    if (!glass.empty() && coverage_tested_.empty()) coverage_tested_.assign(glass.size(), 0);
-    for (size_t t = 0; t < glass.size(); ++t) coverage_tested_[t] |= glass[t];
+      glass_(plan_.transmitting, plan_.alpha_tested) {
     if (scene.output.writes(Pass::motion)) previous_.emplace(scene, world);
 }
 
 void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
                            const std::function<bool()>& stop) {
     const auto stopped = [&stop] { return stop && stop(); };
-    const StylePlan& plan = evaluator_.plan();
+    const StylePlan& plan = plan_.styles;
     const FrameInputs inputs = evaluator_.evaluate(frame, camera_index);
     // Animated meshes and cloth take this frame's pose first: the shadow
     // maps and the image are both drawn from it.
@@ -76,7 +78,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
     const FrameLights lights = light(inputs, posed);
     const TransformedVertices& vertices =
         vertices_.transform(inputs, posed, lights.all, plan.any_gouraud ? &plan : nullptr, pool_);
-    rasterizer_.set_geometry(raster_input(world_, vertices, posed, coverage_tested_), pool_);
+    rasterizer_.set_geometry(raster_input(world_, vertices, posed, plan_.coverage_tested), pool_);
     fit_targets(inputs, out);
     const std::span<const uint8_t> edge_mask = feature_edges_.classify(vertices.clip, inputs, plan);
     const ShadeInputs shade_in{world_,   inputs,     plan,
@@ -94,7 +96,7 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
         .width = scene_.output.width,
         .height = scene_.output.height,
         .normal_mapped = plan.object_normal_mapped};
-    if (targets_.surface_passes) fit_surface_passes(surface_in, out.surface);
+    if (plan_.targets.surface_passes) fit_surface_passes(surface_in, out.surface);
     const AlphaCoverage alpha(world_, inputs.materials);
     batches_ = 0;
     plain_batches_ = 0;
@@ -107,16 +109,16 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
             const ShadeCounts counts = shade_tile(tile, rasterizer_, shade_in, shade_out);
             batches_ += counts.batches;
             plain_batches_ += counts.plain;
-            if (targets_.surface_passes)
+            if (plan_.targets.surface_passes)
                 write_surface_passes(tile, rasterizer_, surface_in, out.surface);
         },
         glass_.test(0, alpha));
     if (stopped()) return;
-    if (targets_.shading == ShadeResolution::pixels && plan.occlusion)
+    if (plan_.targets.shading == ShadeResolution::pixels && plan.occlusion)
         occlusion_.apply_to_pixels(gbuffer_, surface_share_, inputs.camera, inputs.occlusion,
                                    inputs.background, out.color,
-                                   targets_.alpha ? &out.alpha : nullptr, pool_);
-    if (targets_.shading == ShadeResolution::samples)
+                                   plan_.targets.alpha ? &out.alpha : nullptr, pool_);
+    if (plan_.targets.shading == ShadeResolution::samples)
         apply_sample_stages(inputs, vertices, edge_mask);
     finish_colour(inputs, out);
     if (glass_.any_in(0)) draw_glass(alpha, shade_in, surface_in, out, stopped);
@@ -125,11 +127,11 @@ void FrameRenderer::render(int frame, size_t camera_index, FrameImages& out,
 // The samples resolved into the output's pixels, and the environment
 // composited behind: the finished colour, over which glass is drawn.
 void FrameRenderer::finish_colour(const FrameInputs& inputs, FrameImages& out) {
-    if (targets_.shading == ShadeResolution::samples) {
-        ColorImage* lines = targets_.lines ? &sample_lines_ : nullptr;
+    if (plan_.targets.shading == ShadeResolution::samples) {
+        ColorImage* lines = plan_.targets.lines ? &sample_lines_ : nullptr;
         resolve_supersampled({sample_color_, sample_depth_, lines, side_, inputs.background},
-                             {out.color, out.depth, targets_.alpha ? &out.alpha : nullptr,
-                              targets_.lines ? &out.lines : nullptr},
+                             {out.color, out.depth, plan_.targets.alpha ? &out.alpha : nullptr,
+                              plan_.targets.lines ? &out.lines : nullptr},
                              pool_);
     }
     if (inputs.environment_background)
@@ -152,7 +154,7 @@ int FrameRenderer::peel_glass(const AlphaCoverage& alpha, const SurfacePassInput
             pool_,
             [&](const TileVisibility& tile) {
                 glass_.keep_layer(layer, tile, rasterizer_);
-                if (layer == 1 && targets_.surface_passes)
+                if (layer == 1 && plan_.targets.surface_passes)
                     write_surface_passes(tile, rasterizer_, surface_in, out.surface);
             },
             glass_.test(layer, alpha), tiles);
@@ -188,7 +190,7 @@ void FrameRenderer::draw_glass(const AlphaCoverage& alpha, const ShadeInputs& sh
         });
         // At the samples the layer is resolved again; at the pixels it
         // was drawn over the finished colour.
-        if (targets_.shading == ShadeResolution::samples) finish_colour(inputs, out);
+        if (plan_.targets.shading == ShadeResolution::samples) finish_colour(inputs, out);
     }
 }
 
@@ -211,10 +213,10 @@ void FrameRenderer::fit_targets(const FrameInputs& inputs, FrameImages& out) {
     out.depth_view_range = inputs.depth_view_range;
     out.view = inputs.camera.view;
     out.projection = inputs.camera.projection;
-    if (targets_.alpha) fit(out.alpha, width, height);
-    if (targets_.lines) fit(out.lines, width, height);
-    if (targets_.shading == ShadeResolution::pixels) {
-        if (!targets_.gbuffer) return;
+    if (plan_.targets.alpha) fit(out.alpha, width, height);
+    if (plan_.targets.lines) fit(out.lines, width, height);
+    if (plan_.targets.shading == ShadeResolution::pixels) {
+        if (!plan_.targets.gbuffer) return;
         if (gbuffer_.width != width || gbuffer_.height != height) gbuffer_.reset(width, height);
         fit(surface_share_, width, height);
         return;
@@ -222,20 +224,21 @@ void FrameRenderer::fit_targets(const FrameInputs& inputs, FrameImages& out) {
     const int sample_width = rasterizer_.width(), sample_height = rasterizer_.height();
     fit(sample_color_, sample_width, sample_height);
     fit(sample_depth_, sample_width, sample_height);
-    if (targets_.line_samples) fit(sample_lines_, sample_width, sample_height);
-    if (targets_.gbuffer && (gbuffer_.width != sample_width || gbuffer_.height != sample_height))
+    if (plan_.targets.line_samples) fit(sample_lines_, sample_width, sample_height);
+    if (plan_.targets.gbuffer &&
+        (gbuffer_.width != sample_width || gbuffer_.height != sample_height))
         gbuffer_.reset(sample_width, sample_height);
 }
 
 ShadeTarget FrameRenderer::shade_target(FrameImages& out) {
-    OutlineBuffers* gbuffer = targets_.gbuffer ? &gbuffer_ : nullptr;
-    if (targets_.shading == ShadeResolution::pixels)
+    OutlineBuffers* gbuffer = plan_.targets.gbuffer ? &gbuffer_ : nullptr;
+    if (plan_.targets.shading == ShadeResolution::pixels)
         return {.resolution = ShadeResolution::pixels,
                 .pixels = &out.color,
                 .samples = nullptr,
                 .depth = out.depth,
                 .gbuffer = gbuffer,
-                .pixels_over_nothing = targets_.alpha ? &out.alpha : nullptr,
+                .pixels_over_nothing = plan_.targets.alpha ? &out.alpha : nullptr,
                 .line_samples = nullptr,
                 .surface_share = gbuffer ? &surface_share_ : nullptr};
     return {.resolution = ShadeResolution::samples,
@@ -244,7 +247,7 @@ ShadeTarget FrameRenderer::shade_target(FrameImages& out) {
             .depth = sample_depth_,
             .gbuffer = gbuffer,
             .pixels_over_nothing = nullptr,
-            .line_samples = targets_.line_samples ? &sample_lines_ : nullptr,
+            .line_samples = plan_.targets.line_samples ? &sample_lines_ : nullptr,
             .surface_share = nullptr};
 }
 
@@ -258,7 +261,7 @@ std::span<const glm::vec4> FrameRenderer::previous_clip(int frame, size_t camera
 void FrameRenderer::apply_sample_stages(const FrameInputs& inputs,
                                         const TransformedVertices& vertices,
                                         std::span<const uint8_t> edge_mask) {
-    const StylePlan& plan = evaluator_.plan();
+    const StylePlan& plan = plan_.styles;
     if (plan.occlusion)
         occlusion_.apply_to_samples(gbuffer_, side_, inputs.camera, inputs.occlusion, sample_color_,
                                     pool_);
@@ -271,7 +274,7 @@ void FrameRenderer::apply_sample_stages(const FrameInputs& inputs,
     const std::vector<uint64_t> crossing =
         intersections ? crossing_object_pairs(world_, vertices) : std::vector<uint64_t>{};
     outlines_.draw(inputs.outlines, gbuffer_, intersections ? &crossing : nullptr, sample_color_,
-                   pool_, targets_.lines ? &sample_lines_ : nullptr);
+                   pool_, plan_.targets.lines ? &sample_lines_ : nullptr);
 }
 
 }  // namespace facet

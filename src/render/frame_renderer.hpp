@@ -23,6 +23,7 @@
 #include "render/outline_stage.hpp"
 #include "render/pose_stage.hpp"
 #include "render/previous_frame_stage.hpp"
+#include "render/render_plan.hpp"
 #include "render/shade_stage.hpp"
 #include "render/shadow_stage.hpp"
 #include "render/surface_pass_stage.hpp"
@@ -46,6 +47,11 @@ struct FrameImages {
 
 class FrameRenderer {
   public:
+    // `plan`: plan_render(scene, world), made once per run and read by the
+    // memory estimate too.
+    FrameRenderer(const SceneDesc& scene, const World& world, RenderPlan plan, ThreadPool& pool,
+                  ShadingPaths paths = ShadingPaths::specialised);
+    // Plans the run itself: for callers that estimate no memory.
     FrameRenderer(const SceneDesc& scene, const World& world, ThreadPool& pool,
                   ShadingPaths paths = ShadingPaths::specialised);
 
@@ -82,9 +88,9 @@ class FrameRenderer {
     ThreadPool& pool_;
     ShadingPaths paths_;
     std::atomic<uint64_t> batches_{0}, plain_batches_{0};  // shading_counts()
-    int side_;  // samples per pixel side: output.samples = side_ * side_
+    int side_;               // samples per pixel side: output.samples = side_ * side_
+    const RenderPlan plan_;  // which styles and buffers, glass and cut-outs, decided once
     FrameEvaluator evaluator_;
-    FrameTargets targets_;  // which buffers exist, decided once
     PoseStage pose_;
     ShadowStage shadows_;
     VertexStage vertices_;
@@ -98,9 +104,6 @@ class FrameRenderer {
     OcclusionStage occlusion_;
     OutlineStage outlines_;
     TransmissionStage glass_;
-    // Per triangle: 1 for cut-out and transparent materials
-    // (render/alpha_coverage.hpp) and for glass (TransmissionStage).
-    std::vector<uint8_t> coverage_tested_;
     std::optional<PreviousFrameStage> previous_;  // for the motion pass only
     // Every sample in float, when the targets shade at the sample resolution.
     ColorImage sample_color_;

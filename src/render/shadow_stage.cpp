@@ -44,9 +44,8 @@ void nearest_in_blocks(const float* texels, int size, const TileVisibility& tile
 
 }  // namespace
 
-ShadowStage::ShadowStage(const SceneDesc& scene, const World& world, const StylePlan& plan)
+ShadowStage::ShadowStage(const SceneDesc& scene, const World& world, std::span<const uint8_t> glass)
     : world_(world) {
-    const std::vector<uint8_t> glass = transmitting_triangles(world, plan);
     for (const Draw& d : world.draws) {
         if (!world.casts_shadows[d.object]) continue;
         const uint32_t* first = world.indices.data() + 3 * static_cast<size_t>(d.first_triangle);

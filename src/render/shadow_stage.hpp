@@ -22,9 +22,9 @@ namespace facet {
 
 class ShadowStage {
   public:
-    // `plan` says which objects `pbr` draws: their glass casts lighter
-    // shadows (ShadowMap::glass).
-    ShadowStage(const SceneDesc& scene, const World& world, const StylePlan& plan);
+    // `transmitting` (RenderPlan::transmitting): the triangles of glass
+    // `pbr` draws, which cast lighter shadows (ShadowMap::glass).
+    ShadowStage(const SceneDesc& scene, const World& world, std::span<const uint8_t> transmitting);
 
     // Renders this frame's maps from the frame's pose and returns, per
     // scene light, its map or null when it casts no shadows (off, an ambient

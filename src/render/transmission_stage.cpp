@@ -27,9 +27,9 @@ float shadow_pass(const Material& m) {
     return std::clamp((1.0f - m.metallic) * m.transmission * sum / 3.0f, 0.0f, 1.0f);
 }
 
-TransmissionStage::TransmissionStage(const World& world, const StylePlan& plan)
-    : transmitting_(transmitting_triangles(world, plan)),
-      alpha_tested_(coverage_tested_triangles(world)) {}
+TransmissionStage::TransmissionStage(std::span<const uint8_t> transmitting,
+                                     std::span<const uint8_t> alpha_tested)
+    : transmitting_(transmitting), alpha_tested_(alpha_tested) {}
 
 void TransmissionStage::begin_frame(const Rasterizer& raster) {
     raster_ = &raster;

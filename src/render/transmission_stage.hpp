@@ -44,11 +44,9 @@ constexpr int kMaxGlassLayers = 4;
 
 class TransmissionStage {
   public:
-    TransmissionStage(const World& world, const StylePlan& plan);
-
-    // Per triangle of the world: 1 where a transmitting material is drawn
-    // by `pbr`; empty when none is.
-    const std::vector<uint8_t>& transmitting() const { return transmitting_; }
+    // Reads the run's per-triangle flags, RenderPlan::transmitting and
+    // RenderPlan::alpha_tested, which must outlive the stage.
+    TransmissionStage(std::span<const uint8_t> transmitting, std::span<const uint8_t> alpha_tested);
 
     // Before a frame's opaque pass, for `raster`'s tiles.
     void begin_frame(const Rasterizer& raster);
@@ -87,8 +85,8 @@ class TransmissionStage {
     };
     static bool keep(const void* context, uint32_t triangle, float b1, float b2, int x, int y);
 
-    std::vector<uint8_t> transmitting_;
-    std::vector<uint8_t> alpha_tested_;
+    std::span<const uint8_t> transmitting_;
+    std::span<const uint8_t> alpha_tested_;
     // shown_[k][tile]: layer k (0: the opaque pass) had glass in the tile.
     std::vector<uint8_t> shown_[kMaxGlassLayers + 1];
     // ids_[k - 1][tile] and depths_[k - 1][tile]: layer k's triangle ids
