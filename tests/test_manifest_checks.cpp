@@ -59,6 +59,7 @@ TEST_CASE("render, compare, merge and video refuse the same invalid manifests wi
         {"fps 0", [](nlohmann::json& m) { m["fps"] = 0; }},
         {"pass 'evil'", [](nlohmann::json& m) { m["files"][0]["pass"] = "evil"; }},
         {"format 'tiff'", [](nlohmann::json& m) { m["files"][0]["format"] = "tiff"; }},
+        {"tonemap 'sepia'", [](nlohmann::json& m) { m["display"]["tonemap"] = "sepia"; }},
         {"listed twice", [](nlohmann::json& m) { m["files"].push_back(m["files"][0]); }},
         {"leaves the manifest's folder",
          [](nlohmann::json& m) { m["files"][0]["path"] = "../../spin.yaml"; }},
