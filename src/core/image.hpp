@@ -12,6 +12,8 @@ namespace facet {
 
 template <typename Pixel>
 struct Image {
+    static constexpr size_t kPixelBytes = sizeof(Pixel);  // for the memory estimate
+
     int width = 0;
     int height = 0;
     BulkVector<Pixel> pixels;  // see core/bulk_buffer.hpp

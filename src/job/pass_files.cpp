@@ -1,5 +1,7 @@
 #include "job/pass_files.hpp"
 
+#include <algorithm>
+
 namespace facet {
 namespace {
 
@@ -122,6 +124,27 @@ std::vector<ManifestId> pass_ids(const SceneDesc& scene, const World& world) {
         }
     }
     return ids;
+}
+
+uint64_t encoding_bytes(const OutputDesc& out) {
+    const uint64_t pixels = static_cast<uint64_t>(out.width) * out.height;
+    uint64_t largest = 0;
+    for (const PassFile& file : frame_files(out)) {
+        uint64_t bytes = 0;
+        if (file.format == "png") {
+            bytes = 4 * pixels * (file.pass == "depth" ? 2 : 4);
+        } else if (file.pass == "multilayer") {
+            for (const Pass pass : kAllPasses)
+                if (out.writes(pass)) bytes += pixels * frame_image_pixel_bytes(pass);
+            bytes *= written_by_facet(out.exr_compression.all) ? 1 : 2;
+        } else {
+            const Pass pass = *pass_from_name(file.pass);
+            bytes = pixels * frame_image_pixel_bytes(pass) *
+                    (written_by_facet(out.exr_compression.of(pass)) ? 1 : 2);
+        }
+        largest = std::max(largest, bytes);
+    }
+    return largest;
 }
 
 std::vector<PassFile> frame_files(const OutputDesc& out) {

@@ -25,6 +25,15 @@ struct PassFile {
 // EXR; with `exr: multilayer` one EXR of every pass last instead.
 std::vector<PassFile> frame_files(const OutputDesc& out);
 
+// What one encoder holds while it writes the largest of a frame's files,
+// for the memory estimate; the samples themselves are read where the frame
+// keeps them. An EXR: the file (a multi-layer one holds every pass), as
+// large as its samples from facet's writer (zip, zips, none), up to twice
+// that from OpenEXR's (rle, piz, dwaa). A PNG: its view's samples (8-bit
+// RGB or RGBA, 16-bit grey for depth), the filtered rows, the compressed
+// bytes and the file, four times the view.
+uint64_t encoding_bytes(const OutputDesc& out);
+
 // What the files carry besides the pixels.
 struct PassFileFacts {
     glm::vec2 depth_range;  // near..far of the depth PNG

@@ -61,6 +61,11 @@ struct OutlineBuffers {
     void reset(int w, int h);
     size_t index(int x, int y) const { return static_cast<size_t>(y) * width + x; }
 };
+// What one element of an OutlineBuffers holds: its depth, normal and object.
+inline constexpr size_t kOutlineElementBytes =
+    sizeof(decltype(OutlineBuffers::depth)::value_type) +
+    sizeof(decltype(OutlineBuffers::normal)::value_type) +
+    sizeof(decltype(OutlineBuffers::object_id)::value_type);
 
 // In order of precedence, lowest first. Where kinds overlap, coverage is
 // the largest of theirs, and a lower kind shows only where it reaches

@@ -87,6 +87,20 @@ class Rasterizer {
     // Triangles that survived culling and clipping in the last set_geometry.
     size_t setup_triangle_count() const;
 
+    // What set_geometry keeps for `triangles` and `vertices`, for the
+    // memory estimate: per vertex its screen position; per triangle its
+    // set-up and shading records and its bin entries, counted for
+    // kBinnedTilesPerTriangle tiles (a small triangle of a dense mesh lies
+    // in one tile, one on a tile's edge in two; a large one in many, but
+    // large ones are few).
+    static uint64_t bytes(uint64_t triangles, uint64_t vertices) {
+        constexpr uint64_t kBinnedTilesPerTriangle = 2;
+        constexpr uint64_t kBinEntryBytes = 3 * sizeof(uint32_t);  // (tile, triangle), item
+        return vertices * sizeof(ScreenVertex) +
+               triangles * (sizeof(SetupTriangle) + sizeof(ShadeSetup) +
+                            kBinnedTilesPerTriangle * kBinEntryBytes);
+    }
+
   private:
     // A vertex on screen, computed once per frame by project_vertices.
     struct ScreenVertex {

@@ -34,6 +34,78 @@ RasterInput raster_input(const World& world, const TransformedVertices& vertices
 
 }  // namespace
 
+uint64_t frame_image_pixel_bytes(Pass pass) {
+    switch (pass) {
+        case Pass::color:
+            return decltype(FrameImages::color)::kPixelBytes;
+        case Pass::alpha:
+            return decltype(FrameImages::alpha)::kPixelBytes;
+        case Pass::lines:
+            return decltype(FrameImages::lines)::kPixelBytes;
+        case Pass::depth:
+            return decltype(FrameImages::depth)::kPixelBytes;
+        default:
+            return surface_pass_pixel_bytes(pass);
+    }
+}
+
+uint64_t frame_images_bytes(const OutputDesc& out) {
+    uint64_t pixel_bytes = 0;
+    for (int p = 0; p < kPassCount; ++p) {
+        const Pass pass = static_cast<Pass>(p);
+        if (pass == Pass::color || pass == Pass::depth || out.passes.has(pass))
+            pixel_bytes += frame_image_pixel_bytes(pass);
+    }
+    return static_cast<uint64_t>(out.width) * out.height * pixel_bytes;
+}
+
+namespace {
+
+// The renderer's own screen-space buffers (fit_targets): every sample's
+// colour, depth and strokes when a stage needs the samples, and the
+// G-buffer at the shading's resolution (with each pixel's surface share at
+// the pixels).
+uint64_t screen_space_bytes(const FrameTargets& targets, uint64_t pixels, uint64_t samples) {
+    if (targets.shading == ShadeResolution::pixels)
+        return targets.gbuffer ? pixels * (kOutlineElementBytes + Image<float>::kPixelBytes) : 0;
+    return samples * (ColorImage::kPixelBytes + DepthImage::kPixelBytes +
+                      (targets.line_samples ? ColorImage::kPixelBytes : 0) +
+                      (targets.gbuffer ? kOutlineElementBytes : 0));
+}
+
+}  // namespace
+
+MemoryParts FrameRenderer::memory(const SceneDesc& scene, const World& world,
+                                  const RenderPlan& plan) {
+    const OutputDesc& out = scene.output;
+    const uint64_t pixels = static_cast<uint64_t>(out.width) * out.height;
+    const uint64_t side = static_cast<uint64_t>(out.samples_per_side());
+    const uint64_t samples = pixels * side * side;
+    const uint64_t triangles = world.triangle_count(), vertices = world.positions.size();
+    const bool glass = !plan.transmitting.empty();
+    MemoryParts parts;
+    if (const uint64_t bytes = screen_space_bytes(plan.targets, pixels, samples))
+        parts.push_back({"screen-space buffers", bytes});
+    if (plan.styles.occlusion) {
+        // A value per G-buffer element; cells of a pixel, or of 2 x 2 pixels.
+        const uint64_t elements =
+            plan.targets.shading == ShadeResolution::pixels ? pixels : samples;
+        const uint64_t cells = scene.style.occlusion.half_resolution ? pixels / 4 : pixels;
+        parts.push_back({"ambient occlusion", OcclusionStage::bytes(elements, cells)});
+    }
+    if (glass) parts.push_back({"glass layers", TransmissionStage::bytes(pixels, samples)});
+    parts.push_back({"triangles", Rasterizer::bytes(triangles, 0)});
+    const uint64_t vertex_bytes =
+        VertexStage::bytes(vertices, !world.tangents.empty(), plan.styles.any_gouraud);
+    parts.push_back({"vertices", vertex_bytes + Rasterizer::bytes(0, vertices)});
+    // The motion pass poses and transforms the frame before each frame
+    // afresh, with a vertex stage of its own (PreviousFrameStage).
+    if (out.writes(Pass::motion))
+        parts.push_back({"previous frame's vertices", VertexStage::bytes(vertices, false, false)});
+    parts.push_back({"shadow maps", ShadowStage::bytes(scene, world, glass)});
+    return parts;
+}
+
 // This frame's lights, with their shadow maps (the shadow stage's, until
 // its next frame).
 struct FrameRenderer::FrameLights {

@@ -13,6 +13,7 @@
 
 #include "core/half.hpp"
 #include "core/image.hpp"
+#include "core/memory.hpp"
 #include "core/thread_pool.hpp"
 #include "raster/rasterizer.hpp"
 #include "render/feature_edge_stage.hpp"
@@ -45,6 +46,12 @@ struct FrameImages {
     glm::mat4 view{1.0f}, projection{1.0f};  // the camera, for the files' metadata
 };
 
+// Bytes per pixel of `pass` in FrameImages.
+uint64_t frame_image_pixel_bytes(Pass pass);
+// The bytes of a FrameImages of `out`: colour and depth always, and every
+// other pass `out` asks for, at the output's size.
+uint64_t frame_images_bytes(const OutputDesc& out);
+
 class FrameRenderer {
   public:
     // `plan`: plan_render(scene, world), made once per run and read by the
@@ -63,6 +70,11 @@ class FrameRenderer {
     // interactive view that has moved on). Answering false changes nothing.
     void render(int frame, size_t camera_index, FrameImages& out,
                 const std::function<bool()>& stop = {});
+
+    // What a renderer of `plan` keeps from frame to frame, part by part
+    // (its stages' buffers and working records): for the memory estimate
+    // (job/render_memory.hpp), which adds the frames in flight.
+    static MemoryParts memory(const SceneDesc& scene, const World& world, const RenderPlan& plan);
 
     // The shading batches of the last frame rendered, and how many took
     // the plain path: for tests and the bench.

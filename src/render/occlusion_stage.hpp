@@ -5,6 +5,7 @@
 // them, so the resolve anti-aliases it with the surfaces. Alone, it runs on
 // the resolved pixels: each pixel takes the value of its nearest sample's
 // surface, and only its samples that show a surface are darkened.
+#include <cstdint>
 #include <vector>
 
 #include "core/half.hpp"
@@ -18,6 +19,14 @@ namespace facet {
 
 class OcclusionStage {
   public:
+    // What the stage holds for `elements` G-buffer elements and `cells`
+    // cells (a pixel's, or 2 x 2 pixels' at half resolution): a factor per
+    // element; per cell a depth, normal and object, the raw and the blurred
+    // occlusion.
+    static uint64_t bytes(uint64_t elements, uint64_t cells) {
+        return elements * sizeof(float) + cells * (kOutlineElementBytes + 2 * sizeof(float));
+    }
+
     // `samples` and `gbuffer` have the same size; the background (alpha 0)
     // is left alone.
     void apply_to_samples(const OutlineBuffers& gbuffer, int samples_per_side,

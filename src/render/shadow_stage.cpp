@@ -44,6 +44,19 @@ void nearest_in_blocks(const float* texels, int size, const TileVisibility& tile
 
 }  // namespace
 
+uint64_t ShadowStage::bytes(const SceneDesc& scene, const World& world, bool glass) {
+    const uint64_t triangles = world.triangle_count(), vertices = world.positions.size();
+    uint64_t bytes = 0;
+    for (const LightDesc& light : scene.lights) {
+        if (!light.shadows) continue;
+        const uint64_t faces = light.type == LightType::point ? 6 : 1;
+        const uint64_t side = static_cast<uint64_t>(light.shadow_resolution);
+        const uint64_t texel_bytes = sizeof(float) * (glass ? 3 : 1);  // depth; glass depth, share
+        bytes += side * side * faces * texel_bytes + Rasterizer::bytes(triangles, vertices);
+    }
+    return bytes == 0 ? 0 : bytes + vertices * sizeof(glm::vec4);
+}
+
 ShadowStage::ShadowStage(const SceneDesc& scene, const World& world, std::span<const uint8_t> glass)
     : world_(world) {
     for (const Draw& d : world.draws) {

@@ -26,6 +26,12 @@ class ShadowStage {
     // `pbr` draws, which cast lighter shadows (ShadowMap::glass).
     ShadowStage(const SceneDesc& scene, const World& world, std::span<const uint8_t> transmitting);
 
+    // What the stage keeps for `scene`'s lights over `world`: per light
+    // with shadows, its map's depth per texel of every face (with `glass`,
+    // the glass's depth and share too) and its rasterizer's records of the
+    // casters (counted as every triangle); the casters' clip positions.
+    static uint64_t bytes(const SceneDesc& scene, const World& world, bool glass);
+
     // Renders this frame's maps from the frame's pose and returns, per
     // scene light, its map or null when it casts no shadows (off, an ambient
     // light, or nothing in the scene casts); valid until the next call. The

@@ -106,6 +106,25 @@ void fit_surface_passes(const SurfacePassInputs& in, SurfacePassImages& images) 
     fit(images.motion, p.has(Pass::motion), in.width, in.height);
 }
 
+uint64_t surface_pass_pixel_bytes(Pass pass) {
+    switch (pass) {
+        case Pass::normal:
+            return decltype(SurfacePassImages::normal)::kPixelBytes;
+        case Pass::object_id:
+            return decltype(SurfacePassImages::object_id)::kPixelBytes;
+        case Pass::material_id:
+            return decltype(SurfacePassImages::material_id)::kPixelBytes;
+        case Pass::uv:
+            return decltype(SurfacePassImages::uv)::kPixelBytes;
+        case Pass::position:
+            return decltype(SurfacePassImages::position)::kPixelBytes;
+        case Pass::motion:
+            return decltype(SurfacePassImages::motion)::kPixelBytes;
+        default:
+            return 0;
+    }
+}
+
 void write_surface_passes(const TileVisibility& tile, const Rasterizer& raster,
                           const SurfacePassInputs& in, SurfacePassImages& out) {
     const int side = in.samples_per_side;

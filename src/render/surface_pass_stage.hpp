@@ -55,6 +55,9 @@ struct SurfacePassInputs {
 // Gives each asked-for image of `images` the output size, reusing buffers.
 void fit_surface_passes(const SurfacePassInputs& in, SurfacePassImages& images);
 
+// Bytes per pixel of `pass` in SurfacePassImages; 0 for a pass not kept there.
+uint64_t surface_pass_pixel_bytes(Pass pass);
+
 // Writes the tile's pixels of every asked-for pass. Called for different
 // tiles on several threads at once: writes only the tile's own pixels.
 void write_surface_passes(const TileVisibility& tile, const Rasterizer& raster,

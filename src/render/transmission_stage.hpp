@@ -48,6 +48,14 @@ class TransmissionStage {
     // RenderPlan::alpha_tested, which must outlive the stage.
     TransmissionStage(std::span<const uint8_t> transmitting, std::span<const uint8_t> alpha_tested);
 
+    // What the stage holds for a frame of `pixels` and `samples`: the
+    // backdrop's pyramid; per sample the count of glass asked about, and
+    // (at most, for every sample) each layer's triangle id and depth.
+    static uint64_t bytes(uint64_t pixels, uint64_t samples) {
+        return BackdropPyramid::bytes(pixels) +
+               samples * (sizeof(uint8_t) + kMaxGlassLayers * (sizeof(uint32_t) + sizeof(float)));
+    }
+
     // Before a frame's opaque pass, for `raster`'s tiles.
     void begin_frame(const Rasterizer& raster);
 

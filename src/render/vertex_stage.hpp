@@ -43,6 +43,16 @@ class VertexStage {
   public:
     explicit VertexStage(const World& world) : world_(world) {}
 
+    // What transform() keeps for `vertices`: each one's clip and world
+    // position and normal; its tangent when `tangents` (normal maps); its
+    // lighting, and its direct share for per-pixel shadows, when `lit`
+    // (Gouraud).
+    static uint64_t bytes(uint64_t vertices, bool tangents, bool lit) {
+        return vertices *
+               (sizeof(glm::vec4) + 2 * sizeof(glm::vec3) + (tangents ? sizeof(glm::vec4) : 0) +
+                (lit ? 2 * sizeof(LightingResult) : 0));
+    }
+
     // Valid until the next call. `light_for`, when some style lights
     // vertices: fill `lit` (Blinn-Phong with the frame's materials and
     // lights, a metal-rough material read as its object's style reads it).

@@ -7,6 +7,7 @@
 // opaque surfaces first, a mip chain of their colour, then the glass
 // reading it (render/transmission_stage.hpp draws the layers). docs/pbr.md,
 // "Transmission", gives the formulas.
+#include <cstdint>
 #include <vector>
 
 #include <glm/mat4x4.hpp>
@@ -37,6 +38,10 @@ class BackdropPyramid {
     // `lod` log2 of the pixels a lookup spans; uv (0, 0) the frame's
     // top-left corner, (1, 1) its bottom-right.
     glm::vec3 sample(glm::vec2 uv, float lod) const;
+
+    // What the pyramid of a frame of `pixels` holds: its levels add up to
+    // 4/3 of the frame.
+    static uint64_t bytes(uint64_t pixels) { return pixels * sizeof(glm::vec3) * 4 / 3; }
 
   private:
     struct Level {
