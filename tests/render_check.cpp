@@ -61,7 +61,7 @@ std::vector<uint8_t> pass_png(const std::string& pass, const FrameImages& images
     out.passes.add(*pass_from_name(pass));
     out.png_compression = 6;
     std::vector<uint8_t> png;
-    encode_frame_files(out, images, {images.depth_view_range, {}, {}},
+    encode_frame_files(out, frame_files(out), images, {images.depth_view_range, {}, {}},
                        [&](const PassFile&, const std::vector<uint8_t>& bytes) { png = bytes; });
     return png;
 }

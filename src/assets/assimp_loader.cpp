@@ -369,10 +369,7 @@ Mesh assimp_mesh(const MeshFile& file, const AssetContext& context,
 }  // namespace
 
 Mesh load_assimp(const std::string& path, const AssetContext& context) {
-    MeshFile file{path, read_input_file(path, "mesh", context.paths.max_file_bytes)};
-    const auto format = mesh_format_of_bytes(file.bytes, file.bytes.size());
-    file.format = format ? *format : mesh_format_of_name(path).value_or(MeshFormat::stl);
-    return load_assimp(file, context);
+    return load_assimp(read_mesh_file(path, context), context);
 }
 
 Mesh load_assimp(const MeshFile& file, const AssetContext& context) {

@@ -101,7 +101,8 @@ std::string bash_completion(const CLI::App& app, const std::vector<std::string>&
            value_case("--formats", std::vector<std::string_view>{"png", "exr"}) +
            value_case("--update-reference", names_of(kUpdateModes)) +
            value_case("--ground", names_of(kGroundKinds)) + value_case("--up", names_of(kUpAxes)) +
-           value_case("--background", std::vector<std::string_view>{"transparent", "gradient"}) +
+           value_case("--background",
+                      std::vector<std::string_view>{"transparent", kTurntableDefaults.background}) +
            "    esac\n"
            "    case \"${COMP_WORDS[1]}\" in\n" +
            cases +

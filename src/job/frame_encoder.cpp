@@ -119,7 +119,7 @@ Manifest FrameEncoder::encode(const EncodeJob& job) const {
     const PassFileFacts file_facts{out.depth_range.value_or(job.images.depth_view_range),
                                    png_metadata(facts), exr_metadata(facts)};
     try {
-        encode_frame_files(out, job.images, file_facts,
+        encode_frame_files(out, layout_.frame_files, job.images, file_facts,
                            [&](const PassFile& file, const std::vector<uint8_t>& bytes) {
                                write(file.pass, file.format, bytes);
                            });

@@ -160,11 +160,12 @@ std::vector<PassFile> frame_files(const OutputDesc& out) {
 }
 
 void encode_frame_files(
-    const OutputDesc& out, const FrameImages& images, const PassFileFacts& facts,
+    const OutputDesc& out, std::span<const PassFile> files, const FrameImages& images,
+    const PassFileFacts& facts,
     const std::function<void(const PassFile&, const std::vector<uint8_t>&)>& write) {
     const int width = images.color.width, height = images.color.height;
     std::vector<ExrChannel> layers;
-    for (const PassFile& file : frame_files(out)) {
+    for (const PassFile& file : files) {
         if (file.pass == "multilayer") {
             for (Pass pass : kAllPasses)
                 if (out.writes(pass)) {

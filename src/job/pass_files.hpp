@@ -3,22 +3,19 @@
 // which format, with which EXR channels, in the order they are written.
 #include <functional>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
 #include <glm/vec2.hpp>
 
+#include "job/output_layout.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "render/frame_renderer.hpp"
 #include "scene/scene_desc.hpp"
 
 namespace facet {
-
-// One file of a frame: a pass name (or "multilayer") and a format.
-struct PassFile {
-    std::string pass, format;
-};
 
 // The files each frame gets from the scene's passes and formats: per pass
 // in output/passes.hpp's order its PNG view (passes that have one), then its
@@ -41,9 +38,11 @@ struct PassFileFacts {
     std::vector<ExrAttribute> exr_attributes;
 };
 
-// Encodes the frame's files in frame_files' order, handing each to `write`.
+// Encodes the frame's files `files` (frame_files of `out`, as the job's
+// layout keeps them), in order, handing each to `write`.
 void encode_frame_files(
-    const OutputDesc& out, const FrameImages& images, const PassFileFacts& facts,
+    const OutputDesc& out, std::span<const PassFile> files, const FrameImages& images,
+    const PassFileFacts& facts,
     const std::function<void(const PassFile&, const std::vector<uint8_t>&)>& write);
 
 // The samples of one pass's PNG view, as its file holds them, with depth

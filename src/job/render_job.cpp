@@ -197,7 +197,8 @@ OutputLayout plan_outputs(const SceneDesc& scene, const std::vector<size_t>& cam
     layout.template_text = text;
     std::vector<std::string> camera_names, passes, exts;
     for (size_t c : cameras) camera_names.push_back(scene.cameras[c].name);
-    for (const PassFile& file : frame_files(out)) {
+    layout.frame_files = frame_files(out);
+    for (const PassFile& file : layout.frame_files) {
         if (std::find(passes.begin(), passes.end(), file.pass) == passes.end())
             passes.push_back(file.pass);
         if (std::find(exts.begin(), exts.end(), file.format) == exts.end())
@@ -246,7 +247,7 @@ const std::vector<int>& named_frames(const SceneDesc& scene, const RenderOptions
 std::vector<std::string> image_files(const SceneDesc& scene, const OutputLayout& layout, int frame,
                                      const std::string& camera) {
     std::vector<std::string> names;
-    for (const PassFile& file : frame_files(scene.output))
+    for (const PassFile& file : layout.frame_files)
         names.push_back(
             expand(layout.names, file_fields(scene, camera, file.pass, frame, file.format)));
     return names;

@@ -663,8 +663,8 @@ SceneInputKind scene_input_kind(const std::string& path) {
     if (has_yaml_name(path)) return SceneInputKind::scene;
     // A mesh's name says so without a read; the bytes of a file without
     // one are looked at (the loader reads the file once, later).
-    if (mesh_format_of_name(path) || !input_file_problem(path).empty())
-        return mesh_format_of_name(path) ? SceneInputKind::mesh : SceneInputKind::scene;
+    if (mesh_format_of_name(path)) return SceneInputKind::mesh;
+    if (!input_file_problem(path).empty()) return SceneInputKind::scene;  // its reader says why
     if (recognise_mesh_file(path)) return SceneInputKind::mesh;
     // A YAML scene is text: a NUL byte at its start says it is not one.
     std::ifstream in(path, std::ios::binary);

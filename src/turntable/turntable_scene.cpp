@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cstdio>
 #include <filesystem>
+#include <stdexcept>
 
 #include "core/plain_text.hpp"
 #include "turntable/yaml_writer.hpp"
@@ -15,8 +16,6 @@ namespace fs = std::filesystem;
 // The choices a turntable makes for a model nobody has looked at. Lengths
 // are shares of the model's size (the largest side of its bounds).
 constexpr double kFieldOfView = 30;       // degrees: a product shot's long lens
-constexpr double kElevation = 20;         // degrees above the model's centre
-constexpr double kTurns = 1;              // turns of the camera over the frames
 constexpr double kOcclusionRadius = 0.1;  // creases and contact, not the whole model
 constexpr double kGroundSize = 10;        // wide enough for any shadow of the key light
 constexpr double kGroundDrop = 0.001;     // below the lowest point, see write_ground
@@ -130,8 +129,9 @@ void write_camera(YamlWriter& w) {
     w.value("fit", "geometry", "its vertices, from 72 places round the circle");
     w.end_map();
     w.begin_map("orbit");
-    w.value("elevation", yaml_number(kElevation), "degrees above its centre: --elevation DEG");
-    w.value("turns", yaml_number(kTurns), "--turns N");
+    w.value("elevation", yaml_number(kTurntableDefaults.elevation),
+            "degrees above its centre: --elevation DEG");
+    w.value("turns", yaml_number(kTurntableDefaults.turns), "--turns N");
     w.end_map();
     w.end_map();
     w.comment("");
@@ -217,20 +217,18 @@ std::vector<Override> turntable_overrides(const TurntableOptions& options,
     auto add = [&](const std::string& key, const std::string& value, const std::string& option) {
         out.push_back({key, value, "command line " + option});
     };
-    if (!options.turns.empty())
-        add("camera.orbit.turns", options.turns, "--turns " + options.turns);
+    if (!options.turns.empty()) add(kTurnsKey, options.turns, "--turns " + options.turns);
     if (!options.elevation.empty())
-        add("camera.orbit.elevation", options.elevation, "--elevation " + options.elevation);
-    if (!options.background.empty() && options.background != "gradient") {
+        add(kElevationKey, options.elevation, "--elevation " + options.elevation);
+    if (!options.background.empty() && options.background != kTurntableDefaults.background) {
         const std::string option = "--background " + options.background;
-        add("output.background", options.background, option);
-        add("environment.background", "false", option);
+        add(kBackgroundKey, options.background, option);
+        add(kEnvironmentShownKey, "false", option);
     }
-    if (options.ground == GroundKind::floor)
-        add("objects.ground.material.shadow_catcher", "false", "--ground floor");
-    if (options.ground == GroundKind::none) add("objects.ground.visible", "false", "--ground none");
+    if (options.ground == GroundKind::floor) add(kGroundCatcherKey, "false", "--ground floor");
+    if (options.ground == GroundKind::none) add(kGroundVisibleKey, "false", "--ground none");
     if (!options.environment.empty())
-        add("environment.file", yaml_quoted(path_from_scene(scene_dir, options.environment)),
+        add(kEnvironmentFileKey, yaml_quoted(path_from_scene(scene_dir, options.environment)),
             "--environment " + options.environment);
     return out;
 }
@@ -241,11 +239,12 @@ std::vector<std::pair<std::string, std::string>> turntable_option_record(
         return value.empty() ? otherwise : value;
     };
     return {
-        {"turns", given(options.turns, yaml_number(kTurns))},
-        {"elevation", given(options.elevation, yaml_number(kElevation))},
-        {"background", given(options.background, "gradient")},
-        {"ground", std::string(name_of(kGroundKinds, options.ground.value_or(GroundKind::shadow)))},
-        {"environment", given(options.environment, "studio")},
+        {"turns", given(options.turns, yaml_number(kTurntableDefaults.turns))},
+        {"elevation", given(options.elevation, yaml_number(kTurntableDefaults.elevation))},
+        {"background", given(options.background, std::string(kTurntableDefaults.background))},
+        {"ground",
+         std::string(name_of(kGroundKinds, options.ground.value_or(kTurntableDefaults.ground)))},
+        {"environment", given(options.environment, std::string(kTurntableDefaults.environment))},
         {"up", std::string(name_of(kUpAxes, survey.up.axis))},
         {"up_from", options.up           ? "--up"
                     : survey.up.detected ? "the model's shape"
@@ -275,6 +274,12 @@ std::string turntable_scene_yaml(const ModelSurvey& survey, const std::string& m
             w.optional_value(key);
         w.end_map();
     }
+    // Each key an option sets is one the text has (written, or written
+    // when set): else an option would be refused as a -D of an unknown key.
+    for (const char* key : {kTurnsKey, kElevationKey, kBackgroundKey, kEnvironmentShownKey,
+                            kEnvironmentFileKey, kGroundCatcherKey, kGroundVisibleKey})
+        if (!w.has_key(key))
+            throw std::logic_error(std::string("the turntable's text lacks ") + key);
     unused = w.unused();
     return w.text();
 }

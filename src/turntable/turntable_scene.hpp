@@ -6,6 +6,7 @@
 // with them written in, so the two give the same scene.
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -24,6 +25,29 @@ inline constexpr double kTurntableFps = 24;
 enum class GroundKind { shadow, floor, none };
 inline constexpr EnumName<GroundKind> kGroundKinds[] = {
     {GroundKind::shadow, "shadow"}, {GroundKind::floor, "floor"}, {GroundKind::none, "none"}};
+
+// The turntable's choices where an option is not given: what the scene's
+// text writes, what the options' words for them mean, and what the
+// manifest's `model` block records.
+struct TurntableDefaults {
+    double turns = 1;                          // turns of the camera over the frames
+    double elevation = 20;                     // degrees above the model's centre
+    std::string_view background = "gradient";  // the environment, shown blurred
+    GroundKind ground = GroundKind::shadow;
+    std::string_view environment = "studio";  // facet's own
+};
+inline constexpr TurntableDefaults kTurntableDefaults{};
+
+// The scene keys the options set, as -D names them. The scene's text has
+// every one (turntable_scene_yaml checks, each time it writes), so an
+// option cannot set a key the text lacks.
+inline constexpr const char* kTurnsKey = "camera.orbit.turns";
+inline constexpr const char* kElevationKey = "camera.orbit.elevation";
+inline constexpr const char* kBackgroundKey = "output.background";
+inline constexpr const char* kEnvironmentShownKey = "environment.background";
+inline constexpr const char* kEnvironmentFileKey = "environment.file";
+inline constexpr const char* kGroundCatcherKey = "objects.ground.material.shadow_catcher";
+inline constexpr const char* kGroundVisibleKey = "objects.ground.visible";
 
 // The turntable's options as given on the command line; "" or unset: not
 // given (the built-in scene's own value).

@@ -1,5 +1,6 @@
 #include "turntable/yaml_writer.hpp"
 
+#include <algorithm>
 #include <charconv>
 
 namespace facet {
@@ -60,6 +61,10 @@ std::string YamlWriter::path_of(const std::string& key) const {
     return levels_.empty() ? key : levels_.back().path + "." + key;
 }
 
+bool YamlWriter::has_key(const std::string& path) const {
+    return std::find(keys_.begin(), keys_.end(), path) != keys_.end();
+}
+
 const Override* YamlWriter::override_of(const std::string& path) {
     const Override* last = nullptr;
     for (size_t i = 0; i < overrides_.size(); ++i)
@@ -94,21 +99,26 @@ void YamlWriter::comment(const std::string& text) {
 }
 
 void YamlWriter::value(const std::string& key, const std::string& yaml, const std::string& note) {
+    const std::string path = path_of(key);
+    keys_.push_back(path);
     if (skipping()) return;
-    if (const Override* o = override_of(path_of(key)))
+    if (const Override* o = override_of(path))
         write_line(indent(), key + ": " + value_text(o->value), o->origin);
     else
         write_line(indent(), key + ": " + yaml, note);
 }
 
 void YamlWriter::optional_value(const std::string& key) {
+    const std::string path = path_of(key);
+    keys_.push_back(path);
     if (skipping()) return;
-    if (const Override* o = override_of(path_of(key)))
+    if (const Override* o = override_of(path))
         write_line(indent(), key + ": " + value_text(o->value), o->origin);
 }
 
 void YamlWriter::begin_map(const std::string& key, const std::string& note) {
     const std::string path = path_of(key);
+    keys_.push_back(path);
     const bool skipped = skipping();
     const Override* whole = skipped ? nullptr : override_of(path);
     if (whole)

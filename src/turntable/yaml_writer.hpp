@@ -37,6 +37,9 @@ class YamlWriter {
     // Whether an override names a key under `path` (a mapping the text
     // writes only when something sets a key in it).
     bool has_override_under(const std::string& path) const;
+    // Whether the text has `path` (dotted, list items by name): a key or
+    // mapping written so far, or a key it writes when an override sets it.
+    bool has_key(const std::string& path) const;
 
     const std::string& text() const { return text_; }
     // The overrides whose keys the text does not have.
@@ -57,7 +60,8 @@ class YamlWriter {
     std::vector<Override> overrides_;
     std::vector<bool> used_;
     std::vector<Level> levels_;
-    bool item_first_line_ = false;  // the next key opens a list item ("- ")
+    std::vector<std::string> keys_;  // has_key: every path value, optional_value, begin_map saw
+    bool item_first_line_ = false;   // the next key opens a list item ("- ")
     std::string text_;
 };
 
