@@ -10,6 +10,7 @@
 #include <stb/stb_image.h>
 #include <webp/decode.h>
 
+#include "core/enum_names.hpp"
 #include "core/error.hpp"
 #include "core/limits.hpp"
 
@@ -218,23 +219,12 @@ ImageFormat sniff_image(const uint8_t* bytes, size_t size) {
 }
 
 std::string image_format_name(ImageFormat format) {
-    switch (format) {
-        case ImageFormat::png:
-            return "PNG";
-        case ImageFormat::jpeg:
-            return "JPEG";
-        case ImageFormat::webp:
-            return "WebP";
-        case ImageFormat::avif:
-            return "AVIF";
-        case ImageFormat::ktx2:
-            return "KTX2";
-        case ImageFormat::other:
-            return "image";
-        case ImageFormat::unknown:
-            break;
-    }
-    return "unknown";
+    constexpr EnumName<ImageFormat> kNames[] = {
+        {ImageFormat::png, "PNG"},        {ImageFormat::jpeg, "JPEG"},
+        {ImageFormat::webp, "WebP"},      {ImageFormat::avif, "AVIF"},
+        {ImageFormat::ktx2, "KTX2"},      {ImageFormat::other, "image"},
+        {ImageFormat::unknown, "unknown"}};
+    return std::string(name_of(kNames, format));
 }
 
 Texture decode_texture(const uint8_t* bytes, size_t size, const std::string& name,

@@ -281,24 +281,6 @@ std::string FileKey::label() const {
     return (camera.empty() ? "" : camera + "/") + pass + "/" + frame_text + "." + format;
 }
 
-const char* file_status_name(FileStatus status) {
-    switch (status) {
-        case FileStatus::identical:
-            return "identical";
-        case FileStatus::compared:
-            return "compared";
-        case FileStatus::missing:
-            return "missing";
-        case FileStatus::extra:
-            return "extra";
-        case FileStatus::size_mismatch:
-            return "size_mismatch";
-        case FileStatus::unreadable:
-            return "unreadable";
-    }
-    return "?";
-}
-
 CompareReport run_compare(const CompareRequest& request) {
     CompareReport report;
     report.ref = request.ref;

@@ -13,6 +13,7 @@
 
 #include "compare/judge.hpp"
 #include "compare/thresholds.hpp"
+#include "core/enum_names.hpp"
 
 namespace facet {
 
@@ -26,7 +27,16 @@ struct FileKey {
 
 // What became of one pair, worst last.
 enum class FileStatus { identical, compared, missing, extra, size_mismatch, unreadable };
-const char* file_status_name(FileStatus status);
+inline constexpr EnumName<FileStatus> kFileStatuses[] = {
+    {FileStatus::identical, "identical"},
+    {FileStatus::compared, "compared"},
+    {FileStatus::missing, "missing"},
+    {FileStatus::extra, "extra"},
+    {FileStatus::size_mismatch, "size_mismatch"},
+    {FileStatus::unreadable, "unreadable"}};
+inline const char* file_status_name(FileStatus status) {
+    return name_of(kFileStatuses, status).data();  // the table's literals end in '\0'
+}
 
 struct FileResult {
     FileKey key;

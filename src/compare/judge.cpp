@@ -201,18 +201,6 @@ CompareImage alpha_image(const CompareImage& image) {
 
 }  // namespace
 
-const char* outcome_name(Outcome outcome) {
-    switch (outcome) {
-        case Outcome::pass:
-            return "pass";
-        case Outcome::warn:
-            return "warn";
-        case Outcome::fail:
-            return "fail";
-    }
-    return "?";
-}
-
 std::vector<float> display_values(const CompareImage& image, ImageKind kind, double white) {
     if (kind != ImageKind::color_float) return image.samples;
     std::vector<float> out(image.samples.size());

@@ -11,11 +11,16 @@
 #include "compare/compare_image.hpp"
 #include "compare/difference_stats.hpp"
 #include "compare/thresholds.hpp"
+#include "core/enum_names.hpp"
 
 namespace facet {
 
 enum class Outcome { pass, warn, fail };
-const char* outcome_name(Outcome outcome);  // "pass", "warn", "fail"
+inline constexpr EnumName<Outcome> kOutcomes[] = {
+    {Outcome::pass, "pass"}, {Outcome::warn, "warn"}, {Outcome::fail, "fail"}};
+inline const char* outcome_name(Outcome outcome) {
+    return name_of(kOutcomes, outcome).data();  // the table's literals end in '\0'
+}
 
 struct JudgeInputs {
     ImageKind kind = ImageKind::color;
