@@ -60,24 +60,6 @@ class NoFileSystem : public Assimp::DefaultIOSystem {
     Assimp::IOStream* Open(const char*, const char*) override { return nullptr; }
 };
 
-// The extension assimp chooses its reader by, for the format the bytes show.
-const char* assimp_hint(MeshFormat format) {
-    switch (format) {
-        case MeshFormat::stl:
-            return "stl";
-        case MeshFormat::ply:
-            return "ply";
-        case MeshFormat::fbx:
-            return "fbx";
-        case MeshFormat::collada:
-            return "dae";
-        case MeshFormat::max3ds:
-            return "3ds";
-        default:
-            return "";
-    }
-}
-
 glm::mat4 to_glm(const aiMatrix4x4& m) {
     // assimp's matrices are row-major; glm's columns are assimp's rows.
     return glm::mat4(m.a1, m.b1, m.c1, m.d1, m.a2, m.b2, m.c2, m.d2, m.a3, m.b3, m.c3, m.d3, m.a4,
@@ -313,8 +295,9 @@ Mesh assimp_mesh(const MeshFile& file, const AssetContext& context,
     // Read as the file has it, checked, then processed: joining vertices
     // would merge a NaN position into another vertex without a word. The
     // reader is the one the bytes call for, whatever the file's name.
-    const aiScene* scene = importer.ReadFileFromMemory(file.bytes.data(), file.bytes.size(), 0,
-                                                       assimp_hint(file.format));
+    const aiScene* scene =
+        importer.ReadFileFromMemory(file.bytes.data(), file.bytes.size(), 0,
+                                    std::string(mesh_format_extension(file.format)).c_str());
     if (!scene || !scene->mRootNode || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE))
         bad(path, assimp_error(importer));
     check_raw_meshes(*scene, path);

@@ -130,6 +130,12 @@ std::string mesh_format_name(MeshFormat format) {
     return "mesh";
 }
 
+std::string_view mesh_format_extension(MeshFormat format) {
+    for (const FormatNames& f : kFormats)
+        if (f.format == format) return f.extensions.front().substr(1);
+    return "";
+}
+
 std::string mesh_formats_read() {
     return "glTF (.gltf, .glb), OBJ (.obj), STL (.stl), PLY (.ply), FBX (.fbx), Collada (.dae) "
            "and 3DS (.3ds)";

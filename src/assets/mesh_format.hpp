@@ -17,6 +17,8 @@ std::string mesh_format_name(MeshFormat format);
 
 // The formats facet reads, for messages: "glTF (.gltf, .glb), OBJ (.obj), ...".
 std::string mesh_formats_read();
+// The format's usual extension, without the dot ("stl").
+std::string_view mesh_format_extension(MeshFormat format);
 
 // The format a file's first bytes show, if they show one. `head` is the
 // start of the file (up to kMeshSniffBytes), `file_size` its whole size

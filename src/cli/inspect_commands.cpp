@@ -9,6 +9,7 @@
 #include "cli/commands.hpp"
 #include "core/error.hpp"
 #include "core/input_file.hpp"
+#include "core/plain_text.hpp"
 #include "core/suggest.hpp"
 
 namespace facet {
@@ -202,9 +203,7 @@ void print_mesh_text(const std::string& path, const Mesh& mesh) {
                     m->color.b, extra.c_str());
     }
     auto list = [](const std::vector<std::string>& names) {
-        std::string text;
-        for (const std::string& n : names) text += (text.empty() ? "" : ", ") + n;
-        return text.empty() ? std::string("none") : text;
+        return names.empty() ? std::string("none") : comma_list(names);
     };
     std::printf("variants:   %zu%s\n", mesh.variants.size(),
                 mesh.variants.empty() ? "" : " (render one with --variant NAME, each with all)");
@@ -285,14 +284,10 @@ int styles_command(const std::string& name, bool json) {
                 return 0;
             }
         std::vector<std::string_view> known;
-        std::string list;
-        for (const auto& [preset, path] : presets) {
-            known.push_back(preset);
-            list += (list.empty() ? "" : ", ") + preset;
-        }
+        for (const auto& [preset, path] : presets) known.push_back(preset);
         fail_input({"", 0, 0, "command line styles " + name}, "",
                    "no style preset named '" + name + "'" + did_you_mean(name, known) +
-                       " (available: " + list + ")");
+                       " (available: " + comma_list(known) + ")");
     }
     Json list = Json::array();
     size_t widest = 0;

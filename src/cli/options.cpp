@@ -9,6 +9,7 @@
 
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
+#include "core/plain_text.hpp"
 #include "core/suggest.hpp"
 
 namespace facet {
@@ -226,11 +227,9 @@ void check_subcommand_name(const CLI::App& app, int argc, char** argv) {
         names.push_back(sub->get_name());
     if (std::find(names.begin(), names.end(), word) != names.end()) return;
     std::vector<std::string_view> views(names.begin(), names.end());
-    std::string list;
-    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
-    fail_input(
-        command_line(word), "",
-        "unknown command '" + word + "'" + did_you_mean(word, views) + " (commands: " + list + ")");
+    fail_input(command_line(word), "",
+               "unknown command '" + word + "'" + did_you_mean(word, views) +
+                   " (commands: " + comma_list(names) + ")");
 }
 
 }  // namespace facet

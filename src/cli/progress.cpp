@@ -9,6 +9,7 @@
 
 #include "cli/options.hpp"
 #include "core/number_text.hpp"
+#include "core/plain_text.hpp"
 
 namespace facet {
 namespace {
@@ -128,8 +129,7 @@ void ProgressReporter::frame_written(const FrameWritten& w) {
     const double seconds = elapsed();
     const double eta = seconds / static_cast<double>(written_) *
                        static_cast<double>(total_ - std::min(total_, written_));
-    std::string files;
-    for (const std::string& f : w.files) files += (files.empty() ? "" : ", ") + f;
+    const std::string files = comma_list(w.files);
     std::fprintf(
         stream_,
         "[%s] frame %d%s%s (%zu/%zu, %d%%) rendered in %.1f ms, wrote %s in %.1f ms, eta %s\n",

@@ -9,6 +9,7 @@
 #include "cli/options.hpp"
 #include "core/display_transform.hpp"
 #include "core/error.hpp"
+#include "core/plain_text.hpp"
 #include "output/atomic_file.hpp"
 #include "output/encoders.hpp"
 #include "output/manifest.hpp"
@@ -31,10 +32,9 @@ std::vector<ManifestFile> colour_files(const Manifest& m, const std::string& fol
     std::string camera = camera_asked;
     if (camera.empty()) {
         if (cameras.size() > 1) {
-            std::string list;
-            for (const auto& c : cameras) list += (list.empty() ? "" : ", ") + c;
             fail_input(command_line("video"), "",
-                       "the run has several cameras (" + list + "); choose one with --camera");
+                       "the run has several cameras (" + comma_list(cameras) +
+                           "); choose one with --camera");
         }
         camera = *cameras.begin();
     } else if (!cameras.count(camera)) {

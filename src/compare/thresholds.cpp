@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/number_text.hpp"
+#include "core/plain_text.hpp"
 #include "core/suggest.hpp"
 
 namespace facet {
@@ -114,11 +115,8 @@ std::string apply_threshold_override(CompareThresholds& thresholds, std::string_
     const std::optional<ImageKind> kind = value_of(kImageKinds, head);
     if (!kind) {
         const std::vector<std::string_view> names = names_of(kImageKinds);
-        std::string known;
-        for (std::string_view name : names)
-            known += (known.empty() ? "" : ", ") + std::string(name);
         return "unknown kind '" + std::string(head) + "'" + did_you_mean(head, names) +
-               " (known: " + known + ")";
+               " (known: " + comma_list(names) + ")";
     }
     const std::optional<double> number = read_finite_number(value_text);
     if (!number) return "expected a number, got '" + std::string(value_text) + "'";

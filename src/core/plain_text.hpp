@@ -6,6 +6,7 @@
 // '\r', U+0085, U+2028 and U+2029 (YAML 1.1, section 5.4), and refuse the
 // other C0 and C1 control characters and text that is not UTF-8.
 #include <cstddef>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -33,5 +34,17 @@ std::string with_long_words_cut(std::string_view text, size_t max_chars = 80);
 
 // "1 file", "3 files": a count and the word that goes with it.
 std::string count_of(size_t n, const char* singular, const char* plural);
+
+// "a, b, c": the names of `items` for a message, each `name(item)` (a
+// string, a string_view or a C string), in order.
+template <typename Items, typename Name = std::identity>
+std::string comma_list(const Items& items, Name name = {}) {
+    std::string list;
+    for (const auto& item : items) {
+        if (!list.empty()) list += ", ";
+        list += std::string_view(name(item));
+    }
+    return list;
+}
 
 }  // namespace facet

@@ -8,6 +8,7 @@
 #include "core/error.hpp"
 #include "core/frame_range.hpp"
 #include "core/host_name.hpp"
+#include "core/plain_text.hpp"
 #include "output/atomic_file.hpp"
 #include "output/manifest.hpp"
 #include "output/manifest_journal.hpp"
@@ -122,9 +123,8 @@ void check_same_job(const std::vector<NamedManifest>& parts, MergeReport& report
                                       " here)");
     }
     if (builds.size() > 1) {
-        std::string list;
-        for (const std::string& b : builds) list += (list.empty() ? "" : ", ") + b;
-        report.warnings.push_back("the parts were rendered by different facet builds: " + list);
+        report.warnings.push_back("the parts were rendered by different facet builds: " +
+                                  comma_list(builds));
     }
 }
 
@@ -165,10 +165,9 @@ void check_coverage(const std::vector<NamedManifest>& parts, MergeReport& report
             report.problems.push_back(names.front() + " lists frame " + std::to_string(key.second) +
                                       " (camera " + key.first + "), which is not part of the job");
         if (names.size() > 1) {
-            std::string list;
-            for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
             report.problems.push_back("frame " + std::to_string(key.second) + " (camera " +
-                                      key.first + ") is listed more than once: " + list);
+                                      key.first +
+                                      ") is listed more than once: " + comma_list(names));
         }
     }
 }

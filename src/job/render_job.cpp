@@ -114,8 +114,8 @@ std::vector<size_t> select_cameras(const SceneDesc& scene, const std::vector<std
         auto it = std::find_if(scene.cameras.begin(), scene.cameras.end(),
                                [&](const CameraDesc& c) { return c.name == name; });
         if (it == scene.cameras.end()) {
-            std::string list;
-            for (const auto& c : scene.cameras) list += (list.empty() ? "" : ", ") + c.name;
+            const std::string list =
+                comma_list(scene.cameras, [](const CameraDesc& c) { return c.name; });
             throw Error(ExitCode::invalid_input, "--camera " + name + ": " + scene.path +
                                                      " has no camera named '" + name +
                                                      "' (cameras: " + list + ", or all)");

@@ -9,6 +9,7 @@
 #include "core/display_transform.hpp"
 #include "core/elapsed.hpp"
 #include "core/error.hpp"
+#include "core/plain_text.hpp"
 #include "core/thread_pool.hpp"
 #include "job/pass_files.hpp"
 #include "job/render_job.hpp"
@@ -388,8 +389,7 @@ void PreviewWorker::write_snapshot(const SnapshotRequest& snapshot) {
             [&](const FrameWritten& w) {
                 for (const std::string& f : w.files) files.push_back(f);
             });
-        std::string list;
-        for (const std::string& f : files) list += (list.empty() ? "" : ", ") + f;
+        const std::string list = comma_list(files);
         publish([&](PreviewUpdate& u) {
             u.messages.push_back({"snapshot of frame " + std::to_string(frame) + ": wrote " + list +
                                   " in " + result.output_dir});

@@ -17,6 +17,7 @@
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "core/memory.hpp"
+#include "core/plain_text.hpp"
 #include "output/encoders.hpp"
 #include "render/environment_file.hpp"
 
@@ -71,9 +72,7 @@ EquirectRadiance read_openexr(const std::string& path) {
                    : static_cast<int>(found - exr.channel_names.begin());
     };
     if (channel(header, "R") < 0 || channel(header, "G") < 0 || channel(header, "B") < 0) {
-        std::string names;
-        for (const std::string& name : header.channel_names)
-            names += (names.empty() ? "" : ", ") + name;
+        const std::string names = comma_list(header.channel_names);
         refuse(path, "an environment EXR needs channels R, G and B; this one has " +
                          (names.empty() ? std::string("none") : names));
     }

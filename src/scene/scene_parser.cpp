@@ -11,6 +11,7 @@
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
 #include "core/number_text.hpp"
+#include "core/plain_text.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
 #include "scene/yaml_field.hpp"
@@ -503,9 +504,9 @@ void check_object_references(const SceneDesc& scene) {
     auto check = [&](const std::string& name, const SourceLocation& at, const std::string& key) {
         for (const ObjectDesc& obj : scene.objects)
             if (obj.name == name) return;
-        std::string names;
-        for (const ObjectDesc& obj : scene.objects) names += (names.empty() ? "" : ", ") + obj.name;
-        fail_input(at, key, "no object named '" + name + "' (objects: " + names + ")");
+        fail_input(at, key,
+                   "no object named '" + name + "' (objects: " +
+                       comma_list(scene.objects, [](const ObjectDesc& o) { return o.name; }) + ")");
     };
     for (const CameraDesc& cam : scene.cameras) {
         if (!cam.target_object.empty())
@@ -646,8 +647,7 @@ void check_variant(const SceneDesc& scene, const std::vector<std::string>& decla
         fail_input(scene.variant_at, "variant",
                    "no model in the scene declares variants (KHR_materials_variants): each is "
                    "drawn in its default materials without `variant:`");
-    std::string list;
-    for (const std::string& name : declared) list += (list.empty() ? "" : ", ") + name;
+    const std::string list = comma_list(declared);
     if (!all)
         fail_input(scene.variant_at, "variant",
                    "no model in the scene declares the variant '" + scene.variant +

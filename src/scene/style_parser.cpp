@@ -10,6 +10,7 @@
 #include "core/enum_names.hpp"
 #include "core/input_file.hpp"
 #include "core/limits.hpp"
+#include "core/plain_text.hpp"
 #include "core/suggest.hpp"
 #include "scene/scene_desc.hpp"
 #include "scene/style_layers.hpp"
@@ -212,12 +213,9 @@ std::string find_style(const Field& field, const std::string& base_dir,
     auto presets = list_style_presets(style_dirs);
     for (const auto& [name, path] : presets)
         if (name == text) return path;
-    std::string names;
     std::vector<std::string_view> known;
-    for (const auto& preset : presets) {
-        names += (names.empty() ? "" : ", ") + preset.first;
-        known.push_back(preset.first);
-    }
+    for (const auto& preset : presets) known.push_back(preset.first);
+    const std::string names = comma_list(known);
     field.fail("no style preset named '" + text + "'" + did_you_mean(text, known) +
                " (available: " + (names.empty() ? "none found" : names) + ")");
 }

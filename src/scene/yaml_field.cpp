@@ -129,15 +129,10 @@ void Field::check_keys(std::span<const char* const> allowed) const {
         bool known = false;
         for (const char* name : allowed) known = known || key == name;
         if (!known) {
-            std::string list;
-            std::vector<std::string_view> names;
-            for (const char* name : allowed) {
-                list += std::string(list.empty() ? "" : ", ") + name;
-                names.push_back(name);
-            }
+            const std::vector<std::string_view> names(allowed.begin(), allowed.end());
             Field key_field(doc_, it->first, join_path(path_, key));
-            key_field.fail("unknown key" + did_you_mean(key, names) + " (expected one of: " + list +
-                           ")");
+            key_field.fail("unknown key" + did_you_mean(key, names) +
+                           " (expected one of: " + comma_list(names) + ")");
         }
     }
 }
@@ -299,9 +294,8 @@ std::string Field::choice(std::initializer_list<const char*> words) const {
 
 void Field::fail_not_one_of(const std::string& value,
                             const std::vector<std::string_view>& words) const {
-    std::string list;
-    for (std::string_view word : words) list += (list.empty() ? "" : ", ") + std::string(word);
-    fail("got '" + value + "'" + did_you_mean(value, words) + " (must be one of: " + list + ")");
+    fail("got '" + value + "'" + did_you_mean(value, words) +
+         " (must be one of: " + comma_list(words) + ")");
 }
 
 std::vector<std::string> Field::choices(std::initializer_list<const char*> words) const {
@@ -332,8 +326,7 @@ long list_item_index(const YAML::Node& list, const std::string& part, const Sour
                           " items; use an index from 0 to " + std::to_string(list.size() - 1);
     if (!names.empty()) {
         std::vector<std::string_view> views(names.begin(), names.end());
-        std::string list_text;
-        for (const std::string& n : names) list_text += (list_text.empty() ? "" : ", ") + n;
+        const std::string list_text = comma_list(names);
         message = "'" + parent + "' has no item " + (numeric ? part : "named '" + part + "'") +
                   (numeric ? "" : did_you_mean(part, views)) + " (use an index from 0 to " +
                   std::to_string(list.size() - 1) + " or a name: " + list_text + ")";

@@ -183,9 +183,8 @@ void write_ground(YamlWriter& w, double size) {
 // the key that chooses them is written when --variant or -D gives it.
 void write_variant(YamlWriter& w, const ModelSurvey& s) {
     if (s.mesh && !s.mesh->variants.empty()) {
-        std::string names;
-        for (const std::string& name : s.mesh->variants)
-            names += (names.empty() ? "" : ", ") + text_for_message(name);
+        const std::string names = comma_list(
+            s.mesh->variants, [](const std::string& name) { return text_for_message(name); });
         w.comment("");
         w.comment("The model's variants: " + names + ". `variant: NAME` draws one (--variant");
         w.comment("NAME); `variant: all` renders each into a folder of its own.");
