@@ -326,3 +326,22 @@ TEST_CASE("turntable: --video writes a movie of the turntable", "[turntable][vid
     CHECK(v.width == 64);
     CHECK(v.fps == Approx(24));
 }
+
+TEST_CASE(
+    "turntable: -D replacing a whole mapping that holds an option's key (environment: none) "
+    "renders, and facet scene writes it",
+    "[turntable]") {
+    // The keys the options set are checked against the turntable's text
+    // each time it is written; a key under a mapping that -D replaces is
+    // still one the text has.
+    TempDir dir("turntable-whole-mapping");
+    const std::string model = write_binary_stl(dir.file("column.stl"), z_up_column());
+    const std::string run =
+        render_model(model, dir.file("out"), " --size 48x27 --frames 1 -D environment=none -q");
+    CHECK(std::filesystem::exists(run + "/color.0001.png"));
+    const RunResult written = run_facet("scene '" + model + "' -D environment=none --turns 2 -q");
+    INFO(written.output);
+    REQUIRE(written.exit_code == 0);
+    CHECK_THAT(written.output, Contains("environment: none"));
+    CHECK_THAT(written.output, Contains("turns: 2"));
+}
