@@ -89,3 +89,43 @@ TEST_CASE("the memory estimate is within 0.45 to 1.4 times what a render really 
         CHECK(measured <= 1.4 * estimated);
     }
 }
+
+namespace {
+
+// The estimate's shadow-map part for one spot light of `outer_angle` (a
+// number, or a track) at `resolution` texels a side.
+uint64_t spot_shadow_bytes(const std::string& outer_angle, int resolution) {
+    facet::test::TempDir dir("memory-spot");
+    const std::string path = facet::test::write_text(
+        dir.file("spot.yaml"),
+        "output: { size: [64, 36], frames: \"1-10\" }\n"
+        "camera: { position: [0, 1, 4], target: [0, 0, 0] }\n"
+        "lights:\n  - { type: spot, position: [0, 3, 0], direction: [0, -1, 0], outer_angle: " +
+            outer_angle + ", shadows: true, shadow_resolution: " + std::to_string(resolution) +
+            " }\n"
+            "objects:\n  - primitive: sphere\n"
+            "  - { primitive: { type: plane, size: 10 }, translate: [0, -1, 0] }\n");
+    const facet::SceneDesc scene = facet::test::load(path);
+    const facet::World world = facet::build_world(scene);
+    for (const auto& [part, bytes] :
+         facet::render_memory(scene, world, facet::plan_render(scene, world), 2))
+        if (part == "shadow maps") return bytes;
+    FAIL("no shadow maps part");
+    return 0;
+}
+
+}  // namespace
+
+TEST_CASE("the shadow estimate counts six faces for a spot that is, or widens to, a cube map",
+          "[render][memory]") {
+    // A spot wider than 60 degrees is drawn into a cube map (render/shadow_stage.cpp):
+    // its texels grow six times as fast with the resolution as a narrow one's.
+    auto growth = [](const std::string& angle) {
+        return spot_shadow_bytes(angle, 1024) - spot_shadow_bytes(angle, 512);
+    };
+    const uint64_t narrow = growth("50");
+    REQUIRE(narrow > 0);
+    CHECK(growth("80") == 6 * narrow);
+    CHECK(growth("{ keys: { 1: 50, 10: 80 } }") == 6 * narrow);
+    CHECK(growth("{ keys: { 1: 30, 10: 60 } }") == narrow);
+}

@@ -18,6 +18,22 @@ constexpr size_t kVerticesPerChunk = 16384;  // fixed: the same cut for any thre
 // Spots wider than this (half-angle, degrees) get a cube map: one
 // perspective map would spread its texels too thin near the edge.
 constexpr float kMaxPerspectiveSpotAngle = 60.0f;
+
+// Whether a light's map is a cube of six faces: a point light's, and a
+// spot's wider than kMaxPerspectiveSpotAngle.
+bool cube_map(LightType type, float outer_angle) {
+    return type == LightType::point ||
+           (type == LightType::spot && outer_angle > kMaxPerspectiveSpotAngle);
+}
+
+// The widest a spot's cone gets: its constant, or its track's widest key.
+float widest_outer_angle(const Animated<float>& angle) {
+    float widest = angle.value;
+    if (angle.track)
+        for (const glm::dvec4& key : angle.track->values)
+            widest = std::max(widest, static_cast<float>(key.x));
+    return widest;
+}
 // Texels round a spot map's cone, and round each cube face past 90 degrees
 // (plus the filter radius), so filters near an edge read real texels.
 constexpr int kEdgeTexels = 2;
@@ -49,7 +65,7 @@ uint64_t ShadowStage::bytes(const SceneDesc& scene, const World& world, bool gla
     uint64_t bytes = 0;
     for (const LightDesc& light : scene.lights) {
         if (!light.shadows) continue;
-        const uint64_t faces = light.type == LightType::point ? 6 : 1;
+        const uint64_t faces = cube_map(light.type, widest_outer_angle(light.outer_angle)) ? 6 : 1;
         const uint64_t side = static_cast<uint64_t>(light.shadow_resolution);
         const uint64_t texel_bytes = sizeof(float) * (glass ? 3 : 1);  // depth; glass depth, share
         bytes += side * side * faces * texel_bytes + Rasterizer::bytes(triangles, vertices);
@@ -116,7 +132,7 @@ void ShadowStage::fit(LightMap& lm, const LightState& light, const Sphere& caste
     const float near = std::max((distance - radius) * 0.99f, far * kMinNearOverFar);
     const int reach = std::min(size / 4, kEdgeTexels + static_cast<int>(std::ceil(map.softness)));
     const float widen = static_cast<float>(size) / static_cast<float>(size - 2 * reach);
-    if (light.type == LightType::spot && light.outer_angle <= kMaxPerspectiveSpotAngle) {
+    if (!cube_map(light.type, light.outer_angle)) {  // a spot's perspective map
         const float tan_half = std::tan(glm::radians(light.outer_angle)) * widen;
         set_perspective(map, size, light.position, glm::normalize(light.direction), tan_half, near,
                         far);
