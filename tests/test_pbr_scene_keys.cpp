@@ -319,6 +319,23 @@ TEST_CASE(
         dir.file("metal_map.yaml"),
         cube_scene("blinn-phong", "{ metallic: 1, roughness: 0.5, metal_rough_map: bump.png }"))));
     CHECK_FALSE(warned(metal_map.warnings, "objects.0", "only `shading: pbr` draws"));
+    // A metal-rough map alone makes a metallic-roughness material too.
+    const World map_alone = build_world(load(write_text(
+        dir.file("map_alone.yaml"), cube_scene("blinn-phong", "{ metal_rough_map: bump.png }"))));
+    CHECK_FALSE(warned(map_alone.warnings, "objects.0", "only `shading: pbr` draws"));
+    // `shininess` makes a Phong material, whose metal the Phong family does
+    // not draw: that loss is named, and why.
+    const World phong_metal =
+        build_world(load(write_text(dir.file("phong_metal.yaml"),
+                                    cube_scene("blinn-phong", "{ metallic: 1, shininess: 64 }"))));
+    INFO(all_warnings(phong_metal.warnings));
+    CHECK(warned(phong_metal.warnings, "objects.0", "'box' has metal, "));
+    CHECK(warned(phong_metal.warnings, "objects.0", "occlusion, metal, specular"));
+    CHECK(warned(phong_metal.warnings, "objects.0", "draws as a dielectric"));
+    // A preset's own base colour replaces the material's on purpose.
+    const World clay = build_world(load(
+        write_text(dir.file("clay.yaml"), cube_scene("clay", "{ metallic: 1, shininess: 64 }"))));
+    CHECK_FALSE(warned(clay.warnings, "objects.0", "only `shading: pbr` draws"));
     // A stylised model does not: there the map is lost, and the warning names metal.
     const World toon = build_world(load(write_text(
         dir.file("toon.yaml"),

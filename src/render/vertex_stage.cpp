@@ -40,9 +40,7 @@ glm::vec4 world_tangent(const DrawTransform& t, const glm::vec4& model_tangent,
 float VertexStage::vertex_roughness(const Material& m, const Draw& draw, size_t v) const {
     const TextureSlot& map = m.metal_rough_map;
     if (!map || !draw.has_uvs) return m.roughness;
-    const bool second = map.uv_set == 1 && !world_.uvs1.empty();
-    const glm::vec2 uv = second ? world_.uvs1[v] : world_.uvs[v];
-    return m.roughness * map.texture->sample(map.map(uv)).g;
+    return m.roughness * map.texture->sample(map.map(world_.uv_set(map)[v])).g;
 }
 
 // Gouraud: Blinn-Phong at each vertex, eight at a time, through the same
@@ -67,8 +65,11 @@ void VertexStage::light(size_t first, size_t last, const FrameInputs& frame, con
             s.specular[i] = m.specular, s.shininess[i] = m.shininess;
             // The highlight's colour and the map's metal are the pixels'
             // (render/shade_batch.cpp); the highlight's width the vertex's.
-            const size_t row = plan.object_style[draw.object] * world_.draws.size();
-            if (frame.draw_features[row + d] & kMetalRough) {
+            // Only a Gouraud object's vertex lighting is drawn: others keep
+            // their Phong terms here, and skip the map.
+            const uint32_t style = plan.object_style[draw.object];
+            if (plan.styles[style]->shading == ShadingModel::gouraud &&
+                (frame.draw_features[style * world_.draws.size() + d] & kMetalRough)) {
                 s.shininess[i] = roughness_exponent(vertex_roughness(m, draw, v));
                 s.specular[i] = normalised_highlight(s.shininess[i]);
                 s.ambient_specular[i] = m.ambient;

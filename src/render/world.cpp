@@ -76,7 +76,7 @@ Material resolve_material(const Material& base, const MaterialDesc& desc, int ma
     if (desc.shininess) m.shininess = desc.shininess->value;
     // Metal and roughness make a metallic-roughness material; a Phong
     // term makes a Phong one, whatever the file said (Material::metal_rough).
-    if (desc.metallic || desc.roughness) m.metal_rough = true;
+    if (desc.metallic || desc.roughness || desc.metal_rough_map) m.metal_rough = true;
     if (desc.specular || desc.shininess) m.metal_rough = false;
     if (desc.double_sided) m.double_sided = *desc.double_sided;
     if (desc.emissive) m.emissive = *desc.emissive;
@@ -397,27 +397,40 @@ void warn_unlit_physical_terms(const SceneDesc& scene, uint32_t object,
                                std::span<const Material> materials, Warnings& warnings) {
     const StyleDesc& style = object_style(scene, scene.objects[object]);
     if (style.shading == ShadingModel::pbr) return;
-    // The Phong family reads metal and roughness, their map included
-    // (shade/metal_rough_phong.hpp); the features only pbr draws (its other
-    // maps, sheen, thin film, anisotropy and both transmissions) and coats
-    // are lost: glass is drawn opaque.
+    // The Phong family reads the metal and roughness of metallic-roughness
+    // materials, their map included (shade/metal_rough_phong.hpp); the
+    // features only pbr draws (its other maps, sheen, thin film, anisotropy
+    // and both transmissions) and coats are lost: glass is drawn opaque.
+    // Whether the metal is drawn is drawn_features' answer, the shading
+    // stage's own; a style's base colour replaces it on purpose, and an
+    // unlit material shows its colour alone.
     const bool reads_metal = phong_family(style.shading);
-    const bool lost = std::any_of(materials.begin(), materials.end(), [&](const Material& m) {
+    const bool own_color = style.base_color.has_value();
+    bool lost = false, metal_lost = false;
+    for (const Material& m : materials) {
+        const bool metal_drawn =
+            (drawn_features(style.shading, own_color, m.features()) & kMetalRough) != 0;
         Material drawn_as = m;
-        if (reads_metal && m.metal_rough) drawn_as.metal_rough_map = {};
-        return (drawn_as.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
-    });
-    if (!lost) return;
+        if (metal_drawn) drawn_as.metal_rough_map = {};
+        lost = lost || (drawn_as.features() & kPbrOnlyFeatures) != 0 || m.clearcoat > 0.0f;
+        metal_lost = metal_lost || (reads_metal && !metal_drawn && !own_color && !m.unlit &&
+                                    (m.metallic > 0.0f || m.metal_rough_map));
+    }
+    if (!lost && !metal_lost) return;
     const ObjectDesc& obj = scene.objects[object];
     warnings.push_back({obj.where, "objects." + std::to_string(object),
-                        "'" + obj.name +
-                            "' has physically based maps, a clear coat, a sheen, a thin film, "
+                        "'" + obj.name + "' has " + (metal_lost ? "metal, " : "") +
+                            "physically based maps, a clear coat, a sheen, a thin film, "
                             "an anisotropy, a diffuse transmission or glass that only "
                             "`shading: pbr` draws: under " +
                             shading_model_name(style.shading) + " its relief, occlusion, " +
-                            (reads_metal ? "" : "metal, ") +
+                            (metal_lost || !reads_metal ? "metal, " : "") +
                             "specular colour, coat, sheen, film, anisotropy and light through it "
-                            "are lost (glass is opaque)"});
+                            "are lost (glass is opaque)" +
+                            (metal_lost ? "; its metal is a Phong material's (one that gives "
+                                          "`specular` or `shininess`, or an OBJ's), which the "
+                                          "Phong family draws as a dielectric"
+                                        : "")});
 }
 
 // `mesh` with tangent frames for the parts that the object's materials

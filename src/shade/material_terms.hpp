@@ -67,12 +67,15 @@ template <bool Single>
 }
 
 // The dielectric's reflectance at normal incidence, from its ior and
-// KHR_materials_specular: min(f0(ior) * colour, 1) * weight.
-inline glm::vec3 dielectric_f0(const Material& m) {
+// KHR_materials_specular: min(f0(ior) * colour * map colour, 1) * weight *
+// map weight (the maps' 1 where a material has none).
+inline glm::vec3 dielectric_f0(const Material& m, const glm::vec3& map_color = glm::vec3(1.0f),
+                               float map_weight = 1.0f) {
     const float f0 = pbr::f0_from_ior(m.ior);
     glm::vec3 out;
     for (int a = 0; a < 3; ++a)
-        out[a] = std::min(f0 * m.specular_color[a], 1.0f) * m.specular_weight;
+        out[a] = std::min(f0 * m.specular_color[a] * map_color[a], 1.0f) * m.specular_weight *
+                 map_weight;
     return out;
 }
 
@@ -230,10 +233,8 @@ void apply_physical_maps(LaneMaterials material, int count, Lookup&& lookup, Sur
     for (int i = 0; i < count; ++i) {
         const Material& m = *material[i];
         if (!m.specular_weight_map && !m.specular_color_map) continue;
-        const float f0 = pbr::f0_from_ior(m.ior);
-        for (int a = 0; a < 3; ++a)
-            p.f0[a][i] = std::min(f0 * m.specular_color[a] * tint[a][i], 1.0f) * m.specular_weight *
-                         weight[i];
+        const glm::vec3 f0 = dielectric_f0(m, {tint[0][i], tint[1][i], tint[2][i]}, weight[i]);
+        for (int a = 0; a < 3; ++a) p.f0[a][i] = f0[a];
         p.f90[i] = m.specular_weight * weight[i];
     }
     lookup(slot_of(material, &Material::clearcoat_map),

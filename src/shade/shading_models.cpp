@@ -104,13 +104,17 @@ bool phong_family(ShadingModel m) {
            m == ShadingModel::gouraud;
 }
 
-uint32_t drawn_features(const StyleState& style, uint32_t features) {
-    if (style.base_color) features &= ~(kBaseColorMap | kVertexColors | kMetalRough);
-    if (style.model != ShadingModel::pbr) features &= ~kPbrOnlyFeatures;
-    if (!phong_family(style.model)) features &= ~kMetalRough;
+uint32_t drawn_features(ShadingModel model, bool style_base_color, uint32_t features) {
+    if (style_base_color) features &= ~(kBaseColorMap | kVertexColors | kMetalRough);
+    if (model != ShadingModel::pbr) features &= ~kPbrOnlyFeatures;
+    if (!phong_family(model)) features &= ~kMetalRough;
     // The unlit, normal and depth models show no emission: views stay measurements.
-    if (!needs_of(style.model).position) features &= ~kEmission;
+    if (!needs_of(model).position) features &= ~kEmission;
     return features;
+}
+
+uint32_t drawn_features(const StyleState& style, uint32_t features) {
+    return drawn_features(style.model, style.base_color.has_value(), features);
 }
 
 bool plain_style(const StyleState& style) {

@@ -97,6 +97,9 @@ bool phong_family(ShadingModel model);
 // and only the models that light a surface add emission. Asked once per
 // draw, style and frame.
 uint32_t drawn_features(const StyleState& style, uint32_t features);
+// The same rule for a style's model and whether it gives its own base
+// colour, before any frame (the world's warnings of what is lost).
+uint32_t drawn_features(ShadingModel model, bool style_base_color, uint32_t features);
 
 // Whether `style`'s batches with no drawn feature take the plain path, the
 // surface path compiled without any (render/shade_batch.cpp): a Phong,
