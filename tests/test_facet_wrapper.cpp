@@ -74,3 +74,43 @@ TEST_CASE("./facet runs setup.sh again once a source is newer than the stamp", "
     c.run();
     CHECK(c.setup_runs() == 3);
 }
+
+TEST_CASE("./facet runs setup.sh again once a style preset or a worktree's branch is newer",
+          "[cli][wrapper]") {
+    // Presets are read from the checkout at run time, and the build's
+    // commit check says whether the checkout is dirty: an edited preset
+    // must reach that check, as a new commit must, also in a linked
+    // worktree, whose .git is a file naming its folder.
+    const Checkout c;
+    fs::create_directories(c.root + "/styles");
+    fs::create_directories(c.root + "/gitdirs/wt");
+    fs::create_directories(c.root + "/gitdirs/common/refs/heads");
+    write_text(c.root + "/styles/clay.yaml", "shading: phong\n");
+    write_text(c.root + "/gitdirs/wt/HEAD", "ref: refs/heads/main\n");
+    write_text(c.root + "/gitdirs/wt/commondir", "../common\n");
+    write_text(c.root + "/gitdirs/common/refs/heads/main", "0123\n");
+    write_text(c.root + "/.git", "gitdir: gitdirs/wt\n");
+    c.run();
+    REQUIRE(c.setup_runs() == 1);
+    // Everything older than the stamp: no setup.
+    auto age_all = [&] {
+        REQUIRE(run_command("find '" + c.root +
+                            "' -exec touch -d '1990-01-01' {} + && touch -d "
+                            "'2000-01-01' '" +
+                            c.root + "/build/setup.stamp'")
+                    .exit_code == 0);
+    };
+    age_all();
+    c.run();
+    CHECK(c.setup_runs() == 1);
+    write_text(c.root + "/styles/clay.yaml", "shading: blinn_phong\n");
+    c.run();
+    CHECK(c.setup_runs() == 2);
+    age_all();
+    write_text(c.root + "/gitdirs/common/refs/heads/main", "4567\n");
+    c.run();
+    CHECK(c.setup_runs() == 3);
+    age_all();
+    c.run();
+    CHECK(c.setup_runs() == 3);
+}
