@@ -591,7 +591,7 @@ PbrPeer::PbrPeer(const Gl& gl, const facet::SceneDesc& scene, const facet::World
     const facet::Tonemap tonemap = scene.output.display.tonemap;
     if (tonemap != facet::Tonemap::none && tonemap != facet::Tonemap::neutral)
         throw std::runtime_error(std::string("the llvmpipe pbr port has no tone curve ") +
-                                 facet::name_of(facet::kTonemaps, tonemap).data());
+                                 facet::c_name_of(facet::kTonemaps, tonemap));
     bool ambient = false;
     for (const facet::LightDesc& l : scene.lights)
         ambient = ambient || l.type == facet::LightType::ambient;

@@ -35,7 +35,7 @@ inline constexpr EnumName<FileStatus> kFileStatuses[] = {
     {FileStatus::size_mismatch, "size_mismatch"},
     {FileStatus::unreadable, "unreadable"}};
 inline const char* file_status_name(FileStatus status) {
-    return name_of(kFileStatuses, status).data();  // the table's literals end in '\0'
+    return c_name_of(kFileStatuses, status);
 }
 
 struct FileResult {

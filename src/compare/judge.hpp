@@ -19,7 +19,7 @@ enum class Outcome { pass, warn, fail };
 inline constexpr EnumName<Outcome> kOutcomes[] = {
     {Outcome::pass, "pass"}, {Outcome::warn, "warn"}, {Outcome::fail, "fail"}};
 inline const char* outcome_name(Outcome outcome) {
-    return name_of(kOutcomes, outcome).data();  // the table's literals end in '\0'
+    return c_name_of(kOutcomes, outcome);
 }
 
 struct JudgeInputs {

@@ -34,7 +34,7 @@ inline constexpr EnumName<ImageKind> kImageKinds[] = {
     {ImageKind::float_data, "float"}};
 // The table's literal, for messages built with +.
 inline const char* image_kind_name(ImageKind kind) {
-    return name_of(kImageKinds, kind).data();
+    return c_name_of(kImageKinds, kind);
 }
 
 // One kind's limits. A sample's difference is measured in the kind's unit

@@ -24,6 +24,13 @@ constexpr std::string_view name_of(const EnumName<E> (&table)[N], E value) {
     return "?";
 }
 
+// The same name as a C string, for messages built with `+` and for lists
+// of keys: a table's names are string literals, which end in '\0'.
+template <typename E, size_t N>
+constexpr const char* c_name_of(const EnumName<E> (&table)[N], E value) {
+    return name_of(table, value).data();
+}
+
 template <typename E, size_t N>
 constexpr std::optional<E> value_of(const EnumName<E> (&table)[N], std::string_view name) {
     for (const EnumName<E>& entry : table)

@@ -5,10 +5,6 @@
 namespace facet {
 namespace {
 
-constexpr Pass kAllPasses[] = {Pass::color,     Pass::alpha,       Pass::depth, Pass::normal,
-                               Pass::object_id, Pass::material_id, Pass::uv,    Pass::position,
-                               Pass::motion,    Pass::lines};
-
 // Channels `names` of an image whose pixels hold them in that order.
 template <typename Pixel>
 void add_channels(std::vector<ExrChannel>& out, const Image<Pixel>& image,

@@ -2,28 +2,20 @@
 
 #include <algorithm>
 #include <chrono>
-#include <condition_variable>
-#include <deque>
 #include <exception>
 #include <filesystem>
-#include <mutex>
 #include <set>
-#include <thread>
 
 #include "core/elapsed.hpp"
 #include "core/error.hpp"
 #include "core/host_name.hpp"
-#include "core/input_file.hpp"
 #include "core/plain_text.hpp"
-#include "core/sha256.hpp"
 #include "core/thread_pool.hpp"
 #include "core/version.hpp"
-#include "job/file_metadata.hpp"
 #include "job/frame_encoder.hpp"
 #include "job/pass_files.hpp"
 #include "job/render_memory.hpp"
 #include "output/atomic_file.hpp"
-#include "output/encoders.hpp"
 #include "output/manifest.hpp"
 #include "output/output_path.hpp"
 #include "output/run_ledger.hpp"

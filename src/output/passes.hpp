@@ -28,6 +28,12 @@ inline constexpr std::array<std::string_view, kPassCount> kPassNames = {
     "color",       "alpha", "depth",    "normal", "object_id",
     "material_id", "uv",    "position", "motion", "lines"};
 
+// Every pass, in the enum's order.
+inline constexpr Pass kAllPasses[] = {
+    Pass::color,       Pass::alpha, Pass::depth,    Pass::normal, Pass::object_id,
+    Pass::material_id, Pass::uv,    Pass::position, Pass::motion, Pass::lines};
+static_assert(std::size(kAllPasses) == kPassCount);
+
 constexpr std::string_view pass_name(Pass p) {
     return kPassNames[static_cast<size_t>(p)];
 }

@@ -51,8 +51,7 @@ uint64_t frame_image_pixel_bytes(Pass pass) {
 
 uint64_t frame_images_bytes(const OutputDesc& out) {
     uint64_t pixel_bytes = 0;
-    for (int p = 0; p < kPassCount; ++p) {
-        const Pass pass = static_cast<Pass>(p);
+    for (const Pass pass : kAllPasses) {
         if (pass == Pass::color || pass == Pass::depth || out.passes.has(pass))
             pixel_bytes += frame_image_pixel_bytes(pass);
     }

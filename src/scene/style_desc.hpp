@@ -77,8 +77,9 @@ struct HatchingDesc {
     float stroke_width = 1.5f;               // pixels
     std::optional<Animated<glm::vec3>> ink;  // unset: the object's colour, darkened
     Animated<float> strength = 1.0f;         // 0 no strokes .. 1 full
-    // The share of its full light at and above which a surface gets no
-    // strokes: lit faces stay paper, as an illustrator leaves them.
+    // The lightness (CIE L*/100 of the shaded light) at and above which a
+    // surface gets no strokes: the tone is that lightness over `white`, so
+    // lit faces stay paper, as an illustrator leaves them.
     Animated<float> white = 1.0f;
     // Stops: the light is scaled by 2^exposure before the tone curve that
     // turns it into strokes (docs/styles.md, "hatching", "Tone").

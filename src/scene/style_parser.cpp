@@ -226,7 +226,7 @@ StyleDesc load_style_chain(const std::string& path, const StyleContext& context,
 }  // namespace
 
 const char* shading_model_name(ShadingModel model) {
-    return name_of(kShadingNames, model).data();  // the table's literals end in '\0'
+    return c_name_of(kShadingNames, model);
 }
 
 void apply_style_layer(const Field& f, StyleDesc& style, const StyleContext& context,

@@ -7,10 +7,10 @@
 namespace facet {
 namespace {
 
-// The kinds' names as keys (the table's literals end in '\0').
+// The kinds' names as keys.
 std::vector<const char*> kind_keys() {
     std::vector<const char*> keys;
-    for (const auto& [kind, name] : kImageKinds) keys.push_back(name.data());
+    for (const auto& [kind, name] : kImageKinds) keys.push_back(c_name_of(kImageKinds, kind));
     return keys;
 }
 

@@ -275,8 +275,7 @@ std::string turntable_scene_yaml(const ModelSurvey& survey, const std::string& m
     }
     // Each key an option sets is one the text has (written, or written
     // when set): else an option would be refused as a -D of an unknown key.
-    for (const char* key : {kTurnsKey, kElevationKey, kBackgroundKey, kEnvironmentShownKey,
-                            kEnvironmentFileKey, kGroundCatcherKey, kGroundVisibleKey})
+    for (const char* key : kOptionKeys)
         if (!w.has_key(key))
             throw std::logic_error(std::string("the turntable's text lacks ") + key);
     unused = w.unused();

@@ -48,6 +48,9 @@ inline constexpr const char* kEnvironmentShownKey = "environment.background";
 inline constexpr const char* kEnvironmentFileKey = "environment.file";
 inline constexpr const char* kGroundCatcherKey = "objects.ground.material.shadow_catcher";
 inline constexpr const char* kGroundVisibleKey = "objects.ground.visible";
+inline constexpr const char* kOptionKeys[] = {
+    kTurnsKey,           kElevationKey,     kBackgroundKey,   kEnvironmentShownKey,
+    kEnvironmentFileKey, kGroundCatcherKey, kGroundVisibleKey};
 
 // The turntable's options as given on the command line; "" or unset: not
 // given (the built-in scene's own value).
